@@ -1,0 +1,113 @@
+// archgeo — topology helpers: boundary, corners, mesh polylines.
+#include "mesh/topology.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glog/logging.h>
+
+namespace archgeo {
+namespace {
+
+constexpr double kCornerTurnDegrees = 60.0;
+
+Vector Direction(const Mesh& mesh, HalfedgeIndex h) {
+  return mesh.point(mesh.target(h)) - mesh.point(mesh.source(h));
+}
+
+// The halfedge leaving target(h) that continues the polyline arriving by h,
+// or null if the polyline ends at target(h) (see MeshPolylines).
+HalfedgeIndex Continuation(const Mesh& mesh, const std::vector<bool>& boundary, HalfedgeIndex h) {
+  const VertexIndex v = mesh.target(h);
+  const auto degree = mesh.degree(v);
+  if (!boundary[v.idx()]) {
+    if (degree != 4) return Mesh::null_halfedge();
+    // Two steps around v from the outgoing opposite(h): the opposite edge.
+    HalfedgeIndex out = mesh.opposite(h);
+    for (int step = 0; step < 2; ++step) out = mesh.next(mesh.opposite(out));
+    return out;
+  }
+  if (degree != 3 || !mesh.is_border(mesh.edge(h))) return Mesh::null_halfedge();
+  // Along the boundary: the other border edge at v.
+  int border_edges = 0;
+  HalfedgeIndex other = Mesh::null_halfedge();
+  for (HalfedgeIndex in : mesh.halfedges_around_target(mesh.halfedge(v))) {
+    if (!mesh.is_border(mesh.edge(in))) continue;
+    ++border_edges;
+    if (mesh.edge(in) != mesh.edge(h)) other = mesh.opposite(in);
+  }
+  return border_edges == 2 ? other : Mesh::null_halfedge();
+}
+
+}  // namespace
+
+std::vector<bool> BoundaryVertices(const Mesh& mesh) {
+  std::vector<bool> boundary(mesh.num_vertices(), false);
+  for (HalfedgeIndex h : mesh.halfedges()) {
+    if (mesh.is_border(h)) boundary[mesh.target(h).idx()] = true;
+  }
+  return boundary;
+}
+
+std::vector<VertexIndex> Corners(const Mesh& mesh) {
+  const double min_cos = std::cos(kCornerTurnDegrees * M_PI / 180.0);
+  std::vector<VertexIndex> corners;
+  for (HalfedgeIndex h : mesh.halfedges()) {
+    if (!mesh.is_border(h)) continue;
+    const VertexIndex v = mesh.target(h);
+    int faces = 0;
+    for (FaceIndex f : mesh.faces_around_target(h)) faces += f != Mesh::null_face();
+    const Vector in = Direction(mesh, h), out = Direction(mesh, mesh.next(h));
+    const double norms = std::sqrt(in.squared_length() * out.squared_length());
+    const bool turns = norms > 0 && in * out < min_cos * norms;
+    if (faces == 1 || turns) corners.push_back(v);
+  }
+  std::sort(corners.begin(), corners.end());
+  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  return corners;
+}
+
+std::vector<std::vector<VertexIndex>> MeshPolylines(const Mesh& mesh) {
+  const std::vector<bool> boundary = BoundaryVertices(mesh);
+  std::vector<bool> used(mesh.num_edges(), false);
+  // Follows continuations from `start`, marking edges, until the polyline ends
+  // or returns to `start`'s edge; appends the targets. Returns true if closed.
+  const auto walk = [&](HalfedgeIndex start, std::vector<VertexIndex>& vertices) {
+    for (HalfedgeIndex h = start;;) {
+      used[mesh.edge(h).idx()] = true;
+      vertices.push_back(mesh.target(h));
+      h = Continuation(mesh, boundary, h);
+      if (h == Mesh::null_halfedge()) return false;
+      if (mesh.edge(h) == mesh.edge(start)) return true;
+      CHECK(!used[mesh.edge(h).idx()]) << "MeshPolylines: continuation is not symmetric";
+    }
+  };
+  std::vector<std::vector<VertexIndex>> polylines;
+  for (EdgeIndex e : mesh.edges()) {
+    if (used[e.idx()]) continue;
+    const HalfedgeIndex h = mesh.halfedge(e);
+    std::vector<VertexIndex> forward{mesh.source(h)};
+    if (!walk(h, forward)) {
+      std::vector<VertexIndex> backward;
+      walk(mesh.opposite(h), backward);  // starts with source(h), already in `forward`
+      forward.insert(forward.begin(), backward.rbegin(), backward.rend() - 1);
+    }
+    polylines.push_back(std::move(forward));
+  }
+  return polylines;
+}
+
+std::vector<std::array<VertexIndex, 3>> PolylineTriples(
+    const std::vector<std::vector<VertexIndex>>& polylines) {
+  std::vector<std::array<VertexIndex, 3>> triples;
+  for (const auto& line : polylines) {
+    for (size_t i = 1; i + 1 < line.size(); ++i) {
+      triples.push_back({line[i - 1], line[i], line[i + 1]});
+    }
+    const bool closed = line.size() > 3 && line.front() == line.back();
+    if (closed) triples.push_back({line[line.size() - 2], line[0], line[1]});
+  }
+  return triples;
+}
+
+}  // namespace archgeo

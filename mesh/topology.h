@@ -1,0 +1,29 @@
+// archgeo — topology helpers: boundary, corners, mesh polylines.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "mesh/surface_mesh.h"
+
+namespace archgeo {
+
+// true for each vertex (indexed by vertex index) on a boundary.
+std::vector<bool> BoundaryVertices(const Mesh& mesh);
+
+// Boundary vertices with a single incident face (quad-mesh corners) or where
+// the boundary polyline turns by more than 60 degrees.
+std::vector<VertexIndex> Corners(const Mesh& mesh);
+
+// Maximal mesh polylines: a polyline continues straight through a regular
+// vertex — across an interior vertex of valence 4 (entering by one edge,
+// leaving by the opposite one) and along the boundary through a boundary
+// vertex of valence 3 — and ends at any other vertex. Every edge lies on
+// exactly one polyline. A closed polyline repeats its first vertex at the end.
+std::vector<std::vector<VertexIndex>> MeshPolylines(const Mesh& mesh);
+
+// Consecutive vertex triples (u, v, w) along the polylines (second differences).
+std::vector<std::array<VertexIndex, 3>> PolylineTriples(
+    const std::vector<std::vector<VertexIndex>>& polylines);
+
+}  // namespace archgeo
