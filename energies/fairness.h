@@ -1,0 +1,65 @@
+// Polyline fairness, one 3-vector residual per triple (u, v, w) of consecutive
+// vertices on a mesh polyline:
+//
+//   r = ((u − 2v + w) − Δ⁰) / L
+//
+//   [Zadravec 2010, §6 eq. 8, f_fair = Σ_(uvw) ‖Δ²_uvw − Δ²,orig_uvw‖²]
+//
+// Δ⁰ = target is a constant: the original second difference Δ²,orig_uvw
+// computed at build time (relative fairness, Zadravec's f_fair: keeps the
+// initial spacing and bending of the polylines), or zero (absolute fairness:
+// straight, evenly spaced polylines are optimal).
+//
+// Units / normalisation: L = 1/inv_length is a fixed length chosen by the
+// builder (e.g. the mean edge length), so r is unit-free. Ceres minimises ½Σ‖r‖².
+//
+// Singular configurations: none; r is affine in (u, v, w), so coincident or
+// collinear points give finite residuals and constant Jacobians
+// (±I/L, −2I/L). Never returns false.
+//
+// Invariances: translation (with Δ⁰ unchanged); rotation x → R x with
+// Δ⁰ → R Δ⁰ (r → R r, so ‖r‖ is unchanged); uniform scaling x → s x with
+// Δ⁰ → s Δ⁰ and inv_length → inv_length / s (r unchanged). Reversing the
+// triple (w, v, u) leaves r unchanged.
+#ifndef ARCHGEO_ENERGIES_FAIRNESS_H_
+#define ARCHGEO_ENERGIES_FAIRNESS_H_
+
+#include <Eigen/Core>
+
+namespace ceres {
+class CostFunction;
+}  // namespace ceres
+
+namespace archgeo {
+
+struct Fairness {
+  // target: 3 doubles, the second difference Δ⁰ to keep (or zero);
+  // inv_length: 1/L.
+  Fairness(const double target[3], double inv_length)
+      : target(target[0], target[1], target[2]), inv_length(inv_length) {}
+
+  // u, v, w: 3 doubles each, consecutive polyline vertices; residual: 3 doubles.
+  template <typename T>
+  bool operator()(const T* u_ptr, const T* v_ptr, const T* w_ptr,
+                  T* residual_ptr) const {
+    using Vec3 = Eigen::Matrix<T, 3, 1>;
+    const Eigen::Map<const Vec3> u(u_ptr);
+    const Eigen::Map<const Vec3> v(v_ptr);
+    const Eigen::Map<const Vec3> w(w_ptr);
+    Eigen::Map<Vec3> residual(residual_ptr);
+    residual = ((u - T(2.0) * v + w) - target.cast<T>()) * T(inv_length);
+    return true;
+  }
+
+  Eigen::Vector3d target;
+  double inv_length;
+};
+
+// Returns a new AutoDiffCostFunction<Fairness, 3, 3, 3, 3> (blocks u, v, w);
+// the caller takes ownership. Preconditions (CHECKed): target finite,
+// inv_length finite and > 0.
+ceres::CostFunction* MakeFairness(const double target[3], double inv_length);
+
+}  // namespace archgeo
+
+#endif  // ARCHGEO_ENERGIES_FAIRNESS_H_
