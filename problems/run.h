@@ -1,0 +1,33 @@
+// archgeo — one `archgeo solve` run: read the spec's files, build and solve
+// the problem in the canonical frame, measure before and after, write the
+// outputs atomically.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "problems/planar_quads.h"
+#include "problems/spec.h"
+
+namespace archgeo {
+
+struct RunResult {
+  int exit_code = 0;       // 0 success, 3 no usable solution (bad input throws InputError)
+  nlohmann::json report;   // the JSON run report (also written to output.report)
+  std::string summary;     // human-readable summary for the terminal
+};
+
+// Throws InputError for bad input (nothing is written then).
+RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress);
+
+// `archgeo measure`: metrics of `mesh_path`, against `reference_path` if not
+// empty (displacement too when the vertex counts agree). Throws InputError.
+RunResult MeasureFiles(const std::string& mesh_path, const std::string& reference_path);
+
+// `archgeo generate`: a (nu x nv) quad grid on RoofSurface with vertex noise
+// (in mean edge lengths), scaled by `scale`, written atomically to `path`.
+RunResult GenerateRoofGrid(const std::string& path, int nu, int nv, double noise, double scale,
+                           unsigned seed);
+
+}  // namespace archgeo

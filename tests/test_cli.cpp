@@ -1,0 +1,234 @@
+// End to end through the `archgeo` binary: planarising a generated grid,
+// invariance under similarity, and every class of bad input (exit 2, a
+// message naming the file, no output, the input untouched).
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "mesh/io.h"
+
+namespace archgeo {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int code;
+  std::string output;  // stdout + stderr
+};
+
+Outcome Archgeo(const std::string& args) {
+  const std::string cmd = std::string(ARCHGEO_BINARY) + " " + args + " 2>&1";
+  Outcome o{0, ""};
+  FILE* pipe = popen(cmd.c_str(), "r");
+  std::array<char, 4096> buf;
+  while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) o.output.append(buf.data(), n);
+  const int status = pclose(pipe);
+  o.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return o;
+}
+
+std::string Slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+class CliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("archgeo_cli_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string WriteFile(const std::string& name, const std::string& text) const {
+    std::ofstream(Path(name)) << text;
+    return Path(name);
+  }
+  std::string Spec(const std::string& mesh, const std::string& extra = "") const {
+    return WriteFile("spec.yaml", "mesh: " + mesh +
+                                      "\noutput:\n  mesh: out.ply\n  report: out.json\n" + extra);
+  }
+  // Asserts the bad-input contract for `args`: exit 2, the message names
+  // `needle`, no output files, and every file in `inputs` unchanged.
+  void ExpectBadInput(const std::string& args, const std::string& needle,
+                      const std::vector<std::string>& inputs) const {
+    std::vector<std::string> before;
+    for (const auto& f : inputs) before.push_back(Slurp(f));
+    const Outcome o = Archgeo(args);
+    EXPECT_EQ(o.code, 2) << o.output;
+    EXPECT_NE(o.output.find(needle), std::string::npos) << "missing '" << needle << "' in\n"
+                                                        << o.output;
+    EXPECT_FALSE(fs::exists(Path("out.ply")));
+    EXPECT_FALSE(fs::exists(Path("out.json")));
+    for (const auto& entry : fs::directory_iterator(dir_)) {
+      EXPECT_EQ(entry.path().string().find(".tmp-"), std::string::npos) << entry.path();
+    }
+    for (size_t i = 0; i < inputs.size(); ++i) EXPECT_EQ(Slurp(inputs[i]), before[i]);
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(CliTest, PlanarisesAGeneratedNonPlanarGrid) {
+  ASSERT_EQ(Archgeo("generate " + Path("grid.obj") + " --nu 16 --nv 12 --noise 0.03").code, 0);
+  const std::string spec = Spec("grid.obj");
+  const Outcome o = Archgeo("solve " + spec + " --quiet");
+  ASSERT_EQ(o.code, 0) << o.output;
+  const auto report = nlohmann::json::parse(Slurp(Path("out.json")));
+  EXPECT_GT(report["before"]["pq_normalized_max"].get<double>(), 1e-2);
+  EXPECT_LE(report["after"]["pq_normalized_max"].get<double>(), 1e-3);
+  EXPECT_TRUE(report["tolerance"]["met"].get<bool>());
+  EXPECT_LT(report["after"]["displacement_max_relative"].get<double>(), 0.02);
+  EXPECT_LT(report["after"]["surface_distance_max_relative"].get<double>(), 0.003);
+  const Mesh in = ReadMesh(Path("grid.obj"));
+  const Mesh out = ReadMesh(Path("out.ply"));
+  EXPECT_EQ(out.number_of_vertices(), in.number_of_vertices());
+  EXPECT_EQ(out.number_of_faces(), in.number_of_faces());
+
+  // `measure` on the output gives the report's numbers.
+  const Outcome m = Archgeo("measure " + Path("out.ply") + " --reference " + Path("grid.obj") +
+                        " --json");
+  ASSERT_EQ(m.code, 0) << m.output;
+  const auto measured = nlohmann::json::parse(m.output);
+  EXPECT_NEAR(measured["metrics"]["pq_normalized_max"].get<double>(),
+              report["after"]["pq_normalized_max"].get<double>(), 1e-12);
+  EXPECT_NEAR(measured["metrics"]["displacement_max"].get<double>(),
+              report["after"]["displacement_max"].get<double>(), 1e-12);
+}
+
+// The same problem scaled by 1000 and rotated: same relative metrics, same
+// output up to the similarity.
+TEST_F(CliTest, SimilarInputGivesSimilarOutput) {
+  ASSERT_EQ(Archgeo("generate " + Path("a.obj") + " --nu 14 --nv 10 --noise 0.03").code, 0);
+  Mesh mesh = ReadMesh(Path("a.obj"));
+  const double s = 1000, c = std::cos(0.7), sn = std::sin(0.7);
+  auto similar = [&](const Point& p) {
+    return Point(s * (c * p.x() - sn * p.z()) + 5, s * p.y() - 3, s * (sn * p.x() + c * p.z()));
+  };
+  for (VertexIndex v : mesh.vertices()) mesh.point(v) = similar(mesh.point(v));
+  WriteMesh(Path("b.obj"), mesh);
+
+  ASSERT_EQ(Archgeo("solve " + Spec("a.obj") + " --quiet").code, 0);
+  fs::rename(Path("out.json"), Path("a.json"));
+  fs::rename(Path("out.ply"), Path("a.ply"));
+  ASSERT_EQ(Archgeo("solve " + Spec("b.obj") + " --quiet").code, 0);
+  const auto ra = nlohmann::json::parse(Slurp(Path("a.json")));
+  const auto rb = nlohmann::json::parse(Slurp(Path("out.json")));
+  for (const char* key : {"pq_normalized_max", "pq_normalized_mean", "warp_max",
+                          "displacement_max_relative", "surface_distance_max_relative",
+                          "prox_max_relative"}) {
+    const double a = ra["after"][key].get<double>(), b = rb["after"][key].get<double>();
+    EXPECT_NEAR(a, b, 1e-4 * std::abs(a)) << key;
+  }
+  const Mesh oa = ReadMesh(Path("a.ply"));
+  const Mesh ob = ReadMesh(Path("out.ply"));
+  double worst = 0;
+  for (VertexIndex v : oa.vertices()) {
+    worst = std::max(worst, std::sqrt(CGAL::squared_distance(similar(oa.point(v)), ob.point(v))));
+  }
+  EXPECT_LT(worst / s, 1e-6);
+}
+
+TEST_F(CliTest, SetOverridesMeshAndOutputs) {
+  ASSERT_EQ(Archgeo("generate " + Path("g.obj") + " --nu 6 --nv 5").code, 0);
+  const std::string spec = WriteFile("s.yaml", "mesh: missing.obj\n");
+  const Outcome o = Archgeo("solve " + spec + " --quiet --set mesh=" + Path("g.obj") +
+                        " --set output.mesh=" + Path("o.obj") + " --set solver.threads=1");
+  EXPECT_EQ(o.code, 0) << o.output;
+  EXPECT_TRUE(fs::exists(Path("o.obj")));
+}
+
+TEST_F(CliTest, BadInputMissingMesh) {
+  const std::string spec = Spec("nowhere.obj");
+  ExpectBadInput("solve " + spec, "nowhere.obj", {spec});
+}
+
+TEST_F(CliTest, BadInputMissingSpec) { ExpectBadInput("solve " + Path("no.yaml"), "no.yaml", {}); }
+
+TEST_F(CliTest, BadInputMalformedYaml) {
+  const std::string spec = WriteFile("spec.yaml", "mesh: a.obj\nsolver: {threads: 1\n");
+  ExpectBadInput("solve " + spec, "spec.yaml:", {spec});
+}
+
+TEST_F(CliTest, BadInputUnknownKey) {
+  ASSERT_EQ(Archgeo("generate " + Path("g.obj") + " --nu 4 --nv 4").code, 0);
+  const std::string spec = Spec("g.obj", "solver:\n  treads: 1\n");
+  ExpectBadInput("solve " + spec, "spec.yaml:6: key 'solver.treads'", {spec, Path("g.obj")});
+}
+
+TEST_F(CliTest, BadInputWrongType) {
+  ASSERT_EQ(Archgeo("generate " + Path("g.obj") + " --nu 4 --nv 4").code, 0);
+  const std::string spec = Spec("g.obj", "terms: {anchor: heavy}\n");
+  ExpectBadInput("solve " + spec, "key 'terms.anchor'", {spec, Path("g.obj")});
+  ExpectBadInput("solve " + spec + " --set terms.anchor=[1]", "--set", {spec});
+}
+
+TEST_F(CliTest, BadInputNanCoordinates) {
+  const std::string mesh = WriteFile("nan.obj", "v 0 0 0\nv 1 0 0\nv 1 1 nan\nv 0 1 0\nf 1 2 3 4\n");
+  const std::string spec = Spec("nan.obj");
+  ExpectBadInput("solve " + spec, "nan.obj", {spec, mesh});
+}
+
+TEST_F(CliTest, BadInputEmptyMesh) {
+  const std::string mesh = WriteFile("empty.off", "OFF\n0 0 0\n");
+  const std::string spec = Spec("empty.off");
+  ExpectBadInput("solve " + spec, "empty.off", {spec, mesh});
+}
+
+TEST_F(CliTest, BadInputNonManifold) {
+  // Three quads sharing one edge.
+  const std::string mesh = WriteFile(
+      "nm.obj",
+      "v 0 0 0\nv 0 1 0\nv 1 0 0\nv 1 1 0\nv -1 0 0\nv -1 1 0\nv 0 0 1\nv 0 1 1\n"
+      "f 1 3 4 2\nf 2 6 5 1\nf 1 7 8 2\n");
+  const std::string spec = Spec("nm.obj");
+  ExpectBadInput("solve " + spec, "nm.obj", {spec, mesh});
+}
+
+TEST_F(CliTest, BadInputDegenerateFace) {
+  const std::string mesh =
+      WriteFile("deg.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 3 0 0\nf 1 2 3 4\n");
+  const std::string spec = Spec("deg.obj");
+  ExpectBadInput("solve " + spec, "deg.obj", {spec, mesh});
+}
+
+TEST_F(CliTest, BadInputTrianglesWhereQuadsAreNeeded) {
+  const std::string mesh = WriteFile("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0.2\nf 1 2 3\nf 2 4 3\n");
+  const std::string spec = Spec("tri.obj");
+  ExpectBadInput("solve " + spec, "only triangles", {spec, mesh});
+}
+
+TEST_F(CliTest, BadInputFixedVertexOutOfRange) {
+  ASSERT_EQ(Archgeo("generate " + Path("g.obj") + " --nu 4 --nv 4").code, 0);
+  const std::string spec = Spec("g.obj", "fixed: [0, 999]\n");
+  ExpectBadInput("solve " + spec, "spec.yaml:5: key 'fixed'", {spec, Path("g.obj")});
+}
+
+TEST_F(CliTest, OutputNeverOverwritesTheInput) {
+  ASSERT_EQ(Archgeo("generate " + Path("g.obj") + " --nu 4 --nv 4").code, 0);
+  const std::string spec = WriteFile("spec.yaml", "mesh: g.obj\noutput: {mesh: g.obj}\n");
+  ExpectBadInput("solve " + spec, "g.obj", {spec, Path("g.obj")});
+}
+
+TEST_F(CliTest, BadCommandLine) {
+  EXPECT_EQ(Archgeo("frobnicate").code, 2);
+  EXPECT_EQ(Archgeo("solve").code, 2);
+  EXPECT_EQ(Archgeo("measure " + Path("none.off")).code, 2);
+  EXPECT_EQ(Archgeo("solve --help").code, 0);
+}
+
+}  // namespace
+}  // namespace archgeo

@@ -1,0 +1,147 @@
+// The YAML problem spec: defaults, overrides and every class of bad input.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "mesh/input_error.h"
+#include "problems/spec.h"
+
+namespace archgeo {
+namespace {
+
+namespace fs = std::filesystem;
+
+class SpecTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("archgeo_spec_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string Write(const std::string& text) {
+    const std::string path = (dir_ / "spec.yaml").string();
+    std::ofstream(path) << text;
+    return path;
+  }
+
+  // The InputError thrown by ReadSpec, or a failure.
+  InputError Error(const std::string& text, const std::vector<std::string>& overrides = {}) {
+    const std::string path = Write(text);
+    try {
+      ReadSpec(path, overrides);
+    } catch (const InputError& e) {
+      return e;
+    }
+    ADD_FAILURE() << "no error for:\n" << text;
+    return InputError("", 0, "", "");
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(SpecTest, DefaultsAndPathsRelativeToTheSpec) {
+  const ProblemSpec s = ReadSpec(Write("mesh: roof.obj\noutput: {mesh: out/r.ply}\n"));
+  EXPECT_EQ(s.mesh, (dir_ / "roof.obj").string());
+  EXPECT_EQ(s.output_mesh, (dir_ / "out/r.ply").string());
+  EXPECT_EQ(s.problem, "planar_quads");
+  EXPECT_DOUBLE_EQ(s.pq_normalized_max, 1e-3);
+  EXPECT_GT(s.terms.proximity, 0);
+  EXPECT_EQ(s.solver.linear_solver, "sparse_normal_cholesky");
+  EXPECT_EQ(s.fixed, "none");
+}
+
+TEST_F(SpecTest, ListedTermsTurnTheOthersOff) {
+  const ProblemSpec s =
+      ReadSpec(Write("mesh: a.obj\nterms:\n  pq_diagonal: 2\n  fairness: {weight: 0.5}\n"));
+  EXPECT_DOUBLE_EQ(s.terms.pq_diagonal, 2);
+  EXPECT_DOUBLE_EQ(s.terms.fairness, 0.5);
+  EXPECT_TRUE(s.terms.fairness_relative);
+  EXPECT_DOUBLE_EQ(s.terms.proximity, 0);
+  EXPECT_DOUBLE_EQ(s.terms.anchor, 0);
+}
+
+TEST_F(SpecTest, SetOverridesByDottedPath) {
+  const ProblemSpec s = ReadSpec(Write("mesh: a.obj\nsolver: {threads: 2}\n"),
+                                 {"solver.threads=1", "mesh=/data/b.off",
+                                  "tolerance.pq_normalized_max=5e-3", "fixed=[0, 3]"});
+  EXPECT_EQ(s.solver.threads, 1);
+  EXPECT_EQ(s.mesh, "/data/b.off");
+  EXPECT_DOUBLE_EQ(s.pq_normalized_max, 5e-3);
+  EXPECT_EQ(s.fixed, "ids");
+  EXPECT_EQ(s.fixed_ids, (std::vector<int>{0, 3}));
+  EXPECT_EQ(s.fixed_file, "--set");
+}
+
+TEST_F(SpecTest, SetPathsAreRelativeToTheCurrentFolder) {
+  const ProblemSpec s = ReadSpec(Write("mesh: a.obj\n"), {"output.mesh=x/y.obj"});
+  EXPECT_EQ(s.output_mesh, (fs::current_path() / "x/y.obj").string());
+}
+
+TEST_F(SpecTest, MissingFile) {
+  try {
+    ReadSpec((dir_ / "nope.yaml").string());
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("nope.yaml"), std::string::npos);
+  }
+}
+
+TEST_F(SpecTest, MalformedYamlNamesTheLine) {
+  const InputError e = Error("mesh: a.obj\nsolver: {threads: 2\nterms: [\n");
+  EXPECT_GE(e.line(), 2);
+  EXPECT_NE(std::string(e.what()).find("malformed YAML"), std::string::npos);
+}
+
+TEST_F(SpecTest, UnknownKeyNamesLineAndKey) {
+  const InputError e = Error("mesh: a.obj\nsolver:\n  treads: 2\n");
+  EXPECT_EQ(e.line(), 3);
+  EXPECT_EQ(e.key(), "solver.treads");
+  EXPECT_NE(std::string(e.what()).find("unknown key"), std::string::npos);
+}
+
+TEST_F(SpecTest, UnknownTopLevelAndTermKeys) {
+  EXPECT_EQ(Error("mesh: a.obj\nmesch: b\n").key(), "mesch");
+  EXPECT_EQ(Error("mesh: a.obj\nterms: {planarity: 1}\n").key(), "terms.planarity");
+}
+
+TEST_F(SpecTest, WrongTypesNameLineAndKey) {
+  InputError e = Error("mesh: a.obj\nsolver:\n  threads: two\n");
+  EXPECT_EQ(e.line(), 3);
+  EXPECT_EQ(e.key(), "solver.threads");
+  EXPECT_NE(std::string(e.what()).find("expected an integer"), std::string::npos);
+  EXPECT_EQ(Error("mesh: a.obj\nterms: {proximity: [1]}\n").key(), "terms.proximity");
+  EXPECT_EQ(Error("mesh: [a.obj]\n").key(), "mesh");
+  EXPECT_EQ(Error("mesh: a.obj\noutput: {ascii_ply: maybe}\n").key(), "output.ascii_ply");
+  EXPECT_EQ(Error("mesh: a.obj\nsolver: {linear_solver: lu}\n").key(), "solver.linear_solver");
+  EXPECT_EQ(Error("mesh: a.obj\nfixed: some\n").key(), "fixed");
+}
+
+TEST_F(SpecTest, OutOfRangeValues) {
+  EXPECT_EQ(Error("mesh: a.obj\nterms: {anchor: -1}\n").key(), "terms.anchor");
+  EXPECT_EQ(Error("mesh: a.obj\nsolver: {threads: 0}\n").key(), "solver.threads");
+  EXPECT_EQ(Error("mesh: a.obj\ntolerance: {pq_normalized_max: .nan}\n").key(),
+            "tolerance.pq_normalized_max");
+}
+
+TEST_F(SpecTest, MissingMeshKey) {
+  const InputError e = Error("problem: planar_quads\n");
+  EXPECT_EQ(e.key(), "mesh");
+}
+
+TEST_F(SpecTest, NotAMapping) { EXPECT_NE(Error("- a\n- b\n").line(), -1); }
+
+TEST_F(SpecTest, BadOverridesNameTheOption) {
+  InputError e = Error("mesh: a.obj\n", {"solver.threads=zwei"});
+  EXPECT_EQ(e.file(), "--set");
+  EXPECT_EQ(e.key(), "solver.threads");
+  EXPECT_EQ(Error("mesh: a.obj\n", {"noequals"}).file(), "--set");
+  EXPECT_EQ(Error("mesh: a.obj\n", {"solver.bogus=1"}).key(), "solver.bogus");
+  EXPECT_EQ(Error("mesh: a.obj\n", {"mesh.x=1"}).file(), "--set");
+}
+
+}  // namespace
+}  // namespace archgeo
