@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "mesh/surface_mesh.h"
+#include "problems/progress.h"
 #include "problems/solver_options.h"
 #include "problems/spec.h"
 
@@ -70,8 +71,6 @@ struct PlanarQuadsResult {
          seconds_projection = 0;
   std::vector<OuterIterationLog> log;
 };
-
-using ProgressSink = std::function<void(const std::string& line)>;
 
 // Optimises `mesh` in place. `mesh` and `reference` must be in the same
 // canonical frame. `progress` (may be empty) receives one line per Ceres

@@ -12,6 +12,7 @@
 #include "mesh/reference.h"
 #include "mesh/similarity.h"
 #include "mesh/topology.h"
+#include "problems/planar_quads.h"
 #include "problems/report.h"
 #include "problems/solver_options.h"
 
@@ -93,7 +94,12 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   const double read_seconds = Since(start);
 
   const ReferenceSurface reference(reference_mesh);
-  const Metrics before = ComputeMetrics(input, &reference, &input);
+  // Without a separate reference the input is its own reference surface:
+  // its Hausdorff distance to it is 0 and need not be sampled.
+  MetricsOptions before_options;
+  before_options.hausdorff = !spec.reference.empty();
+  Metrics before = ComputeMetrics(input, &reference, &input, before_options);
+  if (spec.reference.empty()) before.hausdorff = 0;
   const double scale = before.bbox_diagonal;
 
   const auto solve_start = Clock::now();

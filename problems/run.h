@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "problems/planar_quads.h"
+#include "problems/progress.h"
 #include "problems/spec.h"
 
 namespace archgeo {

@@ -20,11 +20,11 @@
 //     face_planarity: 10        the same for faces with more than 4 sides.
 //     fairness: {weight: 0, relative_to_original: true}   (or a number):
 //                               second differences along mesh polylines.
-//     proximity: {weight: 10, point_weight: 0.01}   distance to the reference's
+//     proximity: {weight: 2, point_weight: 0.01}   distance to the reference's
 //                               tangent plane; the point part pulls towards the
 //                               closest point itself.
-//     boundary_proximity: 10    distance to the reference's boundary tangent.
-//     anchor: 0.01              pull towards each vertex's original position
+//     boundary_proximity: 2     distance to the reference's boundary tangent.
+//     anchor: 0.1               pull towards each vertex's original position
 //                               (keeps vertices from sliding along the surface).
 //   continuation:
 //     band: 0                   a face whose δ_PQ,n is within band × tolerance
@@ -70,10 +70,10 @@ struct TermWeights {
   double face_planarity = 10.0;
   double fairness = 0.0;
   bool fairness_relative = true;
-  double proximity = 10.0;
+  double proximity = 2.0;
   double proximity_point = 0.01;
-  double boundary_proximity = 10.0;
-  double anchor = 0.01;
+  double boundary_proximity = 2.0;
+  double anchor = 0.1;
 };
 
 struct ProblemSpec {
