@@ -31,6 +31,13 @@ const std::vector<Row>& Rows() {
   return rows;
 }
 
+// Pads to `width` characters as displayed (UTF-8 code points, not bytes).
+std::string Pad(const std::string& text, size_t width) {
+  size_t shown = 0;
+  for (unsigned char c : text) shown += (c & 0xC0) != 0x80;
+  return text + std::string(width > shown ? width - shown : 0, ' ');
+}
+
 std::string Cell(double value, bool length, double scale) {
   char buf[64];
   if (value < 0) return "-";
@@ -55,17 +62,13 @@ std::string FormatMetrics(const Metrics& before, const Metrics* after, double sc
                 before.vertices, before.faces, before.quads, before.triangles, before.polygons,
                 before.bbox_diagonal, before.aabb_diagonal, before.mean_edge_length, scale);
   out += line;
-  std::snprintf(line, sizeof line, "%-32s %-26s %s\n", "metric", after ? "before" : "value",
-                after ? "after" : "");
-  out += line;
+  out += Pad("metric", 32) + Pad(after ? "before" : "value", 26) + (after ? "after" : "") + "\n";
   for (const Row& row : Rows()) {
     const double b = before.*row.field;
     const double a = after ? (*after).*row.field : -1;
     if (b < 0 && a < 0) continue;
-    std::snprintf(line, sizeof line, "%-32s %-26s %s\n", row.name,
-                  Cell(b, row.length, scale).c_str(),
-                  after ? Cell(a, row.length, scale).c_str() : "");
-    out += line;
+    out += Pad(row.name, 32) + Pad(Cell(b, row.length, scale), 26) +
+           (after ? Cell(a, row.length, scale) : "") + "\n";
   }
   return out;
 }
