@@ -1,0 +1,170 @@
+// The planar_quads builder in process: polygons, fixed vertices, mixed
+// meshes, fixed-weight convergence and agreement between linear solvers.
+#include <gtest/gtest.h>
+
+#include <CGAL/boost/graph/Euler_operations.h>
+
+#include <cmath>
+#include <memory>
+
+#include "mesh/generators.h"
+#include "mesh/metrics.h"
+#include "mesh/reference.h"
+#include "mesh/similarity.h"
+#include "energies/pq_diagonal.h"
+#include "problems/planar_quads.h"
+#include "problems/tolerance_band.h"
+
+namespace archgeo {
+namespace {
+
+constexpr double kTolerance = 1e-3;
+
+// A noisy grid in its canonical frame, with its own reference.
+struct Case {
+  Mesh mesh;
+  Mesh original;
+};
+
+Case NoisyGrid(int nu, int nv, double noise) {
+  Case c{QuadGrid(nu, nv, RoofSurface, noise, 3), {}};
+  ToCanonical(CanonicalFrame(c.mesh), c.mesh);
+  c.original = c.mesh;
+  return c;
+}
+
+double MaxPlanarity(const Mesh& mesh) {
+  return ComputeMetrics(mesh, nullptr, nullptr).pq_normalized_max;
+}
+
+TEST(PlanarQuads, MeetsTheToleranceOnANoisyGrid) {
+  Case c = NoisyGrid(12, 9, 0.05);
+  ASSERT_GT(MaxPlanarity(c.mesh), 10 * kTolerance);
+  const ReferenceSurface reference(c.original);
+  PlanarQuadsSettings settings;
+  const PlanarQuadsResult r = SolvePlanarQuads(c.mesh, reference, settings, {});
+  EXPECT_TRUE(r.usable);
+  EXPECT_TRUE(r.tolerance_met);
+  EXPECT_LE(MaxPlanarity(c.mesh), kTolerance);
+  EXPECT_EQ(r.variables, 3 * int(c.mesh.number_of_vertices()));
+  EXPECT_GT(r.objective.at("total"), 0);
+  const Metrics m = ComputeMetrics(c.mesh, &reference, &c.original);
+  EXPECT_LT(m.surface_distance_max, 0.1);  // mean edge lengths: the canonical unit
+}
+
+TEST(PlanarQuads, HexagonsBecomePlanar) {
+  Case c = NoisyGrid(8, 6, 0.05);
+  // Merge pairs of quads into hexagons by removing a shared interior edge.
+  int merged = 0;
+  for (int j = 1; j < 6; j += 2) {
+    for (int i = 1; i + 1 < 8; i += 3) {
+      const VertexIndex a(j * 9 + i + 1), b((j + 1) * 9 + i + 1);
+      const HalfedgeIndex h = c.mesh.halfedge(a, b);
+      ASSERT_NE(h, Mesh::null_halfedge());
+      CGAL::Euler::join_face(h, c.mesh);
+      ++merged;
+    }
+  }
+  c.mesh.collect_garbage();
+  c.original = c.mesh;
+  const Metrics before = ComputeMetrics(c.mesh, nullptr, nullptr);
+  ASSERT_EQ(before.polygons, merged);
+  ASSERT_GT(before.pq_normalized_max, 10 * kTolerance);
+  const ReferenceSurface reference(c.original);
+  const PlanarQuadsResult r = SolvePlanarQuads(c.mesh, reference, PlanarQuadsSettings{}, {});
+  EXPECT_TRUE(r.tolerance_met);
+  const PlanarityMeasure p = MeasureFacePlanarity(c.mesh);
+  for (FaceIndex f : c.mesh.faces()) {
+    EXPECT_LE(p.normalized[f.idx()], kTolerance) << "face " << f.idx() << " of degree "
+                                                 << c.mesh.degree(f);
+  }
+  EXPECT_GT(r.objective.count("face_planarity"), 0u);
+}
+
+TEST(PlanarQuads, FixedVerticesDoNotMove) {
+  Case c = NoisyGrid(10, 8, 0.05);
+  const ReferenceSurface reference(c.original);
+  PlanarQuadsSettings settings;
+  settings.fixed.assign(c.mesh.number_of_vertices(), false);
+  for (int i : {0, 10, 98, 5, 40}) settings.fixed[i] = true;
+  SolvePlanarQuads(c.mesh, reference, settings, {});
+  for (int i : {0, 10, 98, 5, 40}) {
+    EXPECT_EQ(c.mesh.point(VertexIndex(i)), c.original.point(VertexIndex(i)));
+  }
+  EXPECT_LE(MaxPlanarity(c.mesh), kTolerance);
+}
+
+TEST(PlanarQuads, TrianglesInAQuadDominantMeshAreAllowed) {
+  Case c = NoisyGrid(6, 5, 0.05);
+  // Split one quad into two triangles.
+  const FaceIndex f(7);
+  const HalfedgeIndex h = c.mesh.halfedge(f);
+  CGAL::Euler::split_face(h, c.mesh.next(c.mesh.next(h)), c.mesh);
+  c.original = c.mesh;
+  ASSERT_EQ(ComputeMetrics(c.mesh, nullptr, nullptr).triangles, 2);
+  const ReferenceSurface reference(c.original);
+  const PlanarQuadsResult r = SolvePlanarQuads(c.mesh, reference, PlanarQuadsSettings{}, {});
+  EXPECT_TRUE(r.tolerance_met);
+  EXPECT_LE(MaxPlanarity(c.mesh), kTolerance);
+}
+
+TEST(PlanarQuads, FixedWeightsRunToRest) {
+  Case c = NoisyGrid(8, 6, 0.05);
+  const ReferenceSurface reference(c.original);
+  PlanarQuadsSettings settings;
+  settings.tolerance = 0;
+  settings.solver.outer_iterations = 30;
+  const PlanarQuadsResult r = SolvePlanarQuads(c.mesh, reference, settings, {});
+  EXPECT_FALSE(r.tolerance_met);
+  EXPECT_LT(r.outer_iterations, 30);
+  EXPECT_LT(r.log.back().max_move, 1e-6);
+  EXPECT_DOUBLE_EQ(r.log.back().weight_max, settings.terms.pq_diagonal);
+}
+
+// Fixed weights, one round: every linear solver reaches the same minimum.
+TEST(PlanarQuads, LinearSolversReachTheSameFinalCost) {
+  const Case c = NoisyGrid(6, 5, 0.05);
+  const ReferenceSurface reference(c.original);
+  std::vector<double> costs;
+  for (const auto& [solver, library] : std::vector<std::pair<std::string, std::string>>{
+           {"sparse_normal_cholesky", "suite_sparse"},
+           {"sparse_normal_cholesky", "eigen_sparse"},
+           {"dense_qr", "suite_sparse"},
+           {"cgnr", "suite_sparse"}}) {
+    Mesh mesh = c.mesh;
+    PlanarQuadsSettings settings;
+    settings.tolerance = 0;
+    settings.solver.outer_iterations = 1;
+    settings.solver.max_iterations = 500;
+    settings.solver.linear_solver = solver;
+    settings.solver.sparse_library = library;
+    const PlanarQuadsResult r = SolvePlanarQuads(mesh, reference, settings, {});
+    ASSERT_TRUE(r.usable) << solver;
+    costs.push_back(r.objective.at("total"));
+  }
+  for (double cost : costs) EXPECT_NEAR(cost, costs[0], 1e-6 * costs[0]);
+}
+
+// The band removes ±b from the residual and zeroes the Jacobian inside it.
+TEST(ToleranceBand, ShiftsTheResidualAndZeroesTheJacobianInside) {
+  const double kBand = 0.05;
+  ToleranceBand banded(MakePqDiagonal(1.0), kBand);
+  std::unique_ptr<ceres::CostFunction> plain(MakePqDiagonal(1.0));
+  for (double h : {0.0, 0.03, 0.3, -0.3}) {
+    double b0[3] = {0, 0, 0}, b1[3] = {1, 0, 0}, b2[3] = {1, 1, h}, b3[3] = {0, 1, 0};
+    const double* params[4] = {b0, b1, b2, b3};
+    double r_plain, r_band, j_plain[4][3], j_band[4][3];
+    double* jp[4] = {j_plain[0], j_plain[1], j_plain[2], j_plain[3]};
+    double* jb[4] = {j_band[0], j_band[1], j_band[2], j_band[3]};
+    ASSERT_TRUE(plain->Evaluate(params, &r_plain, jp));
+    ASSERT_TRUE(banded.Evaluate(params, &r_band, jb));
+    const bool inside = std::abs(r_plain) <= kBand;
+    EXPECT_DOUBLE_EQ(r_band, inside ? 0.0 : r_plain - std::copysign(kBand, r_plain)) << h;
+    for (int k = 0; k < 4; ++k) {
+      for (int d = 0; d < 3; ++d) EXPECT_DOUBLE_EQ(j_band[k][d], inside ? 0.0 : j_plain[k][d]);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace archgeo
