@@ -53,7 +53,7 @@ std::string Cell(double value, bool length, double scale) {
 
 std::string FormatMetrics(const Metrics& before, const Metrics* after, double scale) {
   std::string out;
-  char line[256];
+  char line[512];
   std::snprintf(line, sizeof line,
                 "mesh: %d vertices, %d faces (%d quads, %d triangles, %d polygons > 4 sides)\n"
                 "bounding-box diagonal %.6g (principal axes; axis-aligned %.6g), mean edge "

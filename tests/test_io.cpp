@@ -139,6 +139,8 @@ struct FormatCase {
   std::string format;  // ReadInfo::format
 };
 
+void PrintTo(const FormatCase& c, std::ostream* os) { *os << c.file; }
+
 class RoundTrip : public ::testing::TestWithParam<FormatCase> {};
 
 TEST_P(RoundTrip, WriteThenReadGivesTheSameMesh) {
@@ -258,6 +260,8 @@ struct RealMesh {
   std::size_t vertices, faces;
   Point first_vertex;
 };
+
+void PrintTo(const RealMesh& m, std::ostream* os) { *os << m.file; }
 
 class RealData : public ::testing::TestWithParam<RealMesh> {};
 
