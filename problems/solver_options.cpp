@@ -4,50 +4,65 @@
 #include <omp.h>
 
 #include <stdexcept>
+#include <vector>
 
 namespace archgeo {
 
+namespace {
+
+template <typename E>
+struct Named {
+  const char* name;
+  E value;
+};
+
+const Named<ceres::LinearSolverType> kLinearSolvers[] = {
+    {"sparse_normal_cholesky", ceres::SPARSE_NORMAL_CHOLESKY},
+    {"dense_qr", ceres::DENSE_QR},
+    {"dense_normal_cholesky", ceres::DENSE_NORMAL_CHOLESKY},
+    {"cgnr", ceres::CGNR},
+    {"iterative_schur", ceres::ITERATIVE_SCHUR}};
+const Named<ceres::SparseLinearAlgebraLibraryType> kSparseLibraries[] = {
+    {"suite_sparse", ceres::SUITE_SPARSE}, {"eigen_sparse", ceres::EIGEN_SPARSE}};
+const Named<ceres::TrustRegionStrategyType> kTrustRegions[] = {
+    {"levenberg_marquardt", ceres::LEVENBERG_MARQUARDT}, {"dogleg", ceres::DOGLEG}};
+const Named<ceres::PreconditionerType> kPreconditioners[] = {{"jacobi", ceres::JACOBI},
+                                                             {"identity", ceres::IDENTITY}};
+
+template <typename E, size_t N>
+std::vector<std::string> Names(const Named<E> (&table)[N]) {
+  std::vector<std::string> names;
+  for (const auto& entry : table) names.push_back(entry.name);
+  return names;
+}
+
+template <typename E, size_t N>
+E Lookup(const Named<E> (&table)[N], const std::string& key, const std::string& name) {
+  for (const auto& entry : table) {
+    if (name == entry.name) return entry.value;
+  }
+  std::string list;
+  for (const std::string& n : Names(table)) list += (list.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown " + key + " '" + name + "' (" + list + ")");
+}
+
+}  // namespace
+
+std::vector<std::string> SolverChoices(const std::string& key) {
+  if (key == "linear_solver") return Names(kLinearSolvers);
+  if (key == "sparse_library") return Names(kSparseLibraries);
+  if (key == "trust_region") return Names(kTrustRegions);
+  if (key == "preconditioner") return Names(kPreconditioners);
+  return {};
+}
+
 ceres::Solver::Options ToCeresOptions(const SolverSettings& s) {
   ceres::Solver::Options o;
-  if (s.linear_solver == "sparse_normal_cholesky") {
-    o.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
-  } else if (s.linear_solver == "dense_qr") {
-    o.linear_solver_type = ceres::DENSE_QR;
-  } else if (s.linear_solver == "dense_normal_cholesky") {
-    o.linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;
-  } else if (s.linear_solver == "cgnr") {
-    o.linear_solver_type = ceres::CGNR;
-  } else if (s.linear_solver == "iterative_schur") {
-    o.linear_solver_type = ceres::ITERATIVE_SCHUR;
-  } else {
-    throw std::invalid_argument("unknown linear_solver '" + s.linear_solver +
-                                "' (sparse_normal_cholesky, dense_qr, dense_normal_cholesky, cgnr, "
-                                "iterative_schur)");
-  }
-  if (s.sparse_library == "suite_sparse") {
-    o.sparse_linear_algebra_library_type = ceres::SUITE_SPARSE;
-  } else if (s.sparse_library == "eigen_sparse") {
-    o.sparse_linear_algebra_library_type = ceres::EIGEN_SPARSE;
-  } else {
-    throw std::invalid_argument("unknown sparse_library '" + s.sparse_library +
-                                "' (suite_sparse, eigen_sparse)");
-  }
-  if (s.trust_region == "levenberg_marquardt") {
-    o.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-  } else if (s.trust_region == "dogleg") {
-    o.trust_region_strategy_type = ceres::DOGLEG;
-  } else {
-    throw std::invalid_argument("unknown trust_region '" + s.trust_region +
-                                "' (levenberg_marquardt, dogleg)");
-  }
-  if (s.preconditioner == "jacobi") {
-    o.preconditioner_type = ceres::JACOBI;
-  } else if (s.preconditioner == "identity") {
-    o.preconditioner_type = ceres::IDENTITY;
-  } else {
-    throw std::invalid_argument("unknown preconditioner '" + s.preconditioner +
-                                "' (jacobi, identity)");
-  }
+  o.linear_solver_type = Lookup(kLinearSolvers, "linear_solver", s.linear_solver);
+  o.sparse_linear_algebra_library_type =
+      Lookup(kSparseLibraries, "sparse_library", s.sparse_library);
+  o.trust_region_strategy_type = Lookup(kTrustRegions, "trust_region", s.trust_region);
+  o.preconditioner_type = Lookup(kPreconditioners, "preconditioner", s.preconditioner);
   if (s.max_iterations < 1) throw std::invalid_argument("max_iterations must be >= 1");
   if (s.threads < 1) throw std::invalid_argument("threads must be >= 1");
   for (double t : {s.function_tolerance, s.gradient_tolerance, s.parameter_tolerance}) {

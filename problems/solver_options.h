@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <ceres/solver.h>
 
@@ -21,6 +22,10 @@ struct SolverSettings {
   double parameter_tolerance = 1e-10;
   int threads = 2;
 };
+
+// The accepted names of a string key of SolverSettings ("linear_solver",
+// "sparse_library", "trust_region", "preconditioner"), for the spec parser.
+std::vector<std::string> SolverChoices(const std::string& key);
 
 // Throws std::invalid_argument naming the bad value (the spec parser wraps it
 // with file/line/key).

@@ -195,22 +195,14 @@ void ReadSolver(const Reader& r, const YAML::Node& s, SolverSettings& out) {
               {"linear_solver", "sparse_library", "trust_region", "preconditioner",
                "max_iterations", "outer_iterations", "function_tolerance", "gradient_tolerance",
                "parameter_tolerance", "threads"});
-  if (s["linear_solver"]) {
-    out.linear_solver = r.String(s["linear_solver"], "solver.linear_solver",
-                                 {"sparse_normal_cholesky", "dense_qr", "dense_normal_cholesky",
-                                  "cgnr", "iterative_schur"});
-  }
-  if (s["sparse_library"]) {
-    out.sparse_library =
-        r.String(s["sparse_library"], "solver.sparse_library", {"suite_sparse", "eigen_sparse"});
-  }
-  if (s["trust_region"]) {
-    out.trust_region = r.String(s["trust_region"], "solver.trust_region",
-                                {"levenberg_marquardt", "dogleg"});
-  }
-  if (s["preconditioner"]) {
-    out.preconditioner =
-        r.String(s["preconditioner"], "solver.preconditioner", {"jacobi", "identity"});
+  for (auto [key, field] : {std::pair{"linear_solver", &out.linear_solver},
+                             std::pair{"sparse_library", &out.sparse_library},
+                             std::pair{"trust_region", &out.trust_region},
+                             std::pair{"preconditioner", &out.preconditioner}}) {
+    if (s[key]) {
+      const std::vector<std::string> choices = SolverChoices(key);
+      *field = r.String(s[key], std::string("solver.") + key, {choices.begin(), choices.end()});
+    }
   }
   if (s["max_iterations"]) {
     out.max_iterations = r.Integer(s["max_iterations"], "solver.max_iterations", 1, 100000);
