@@ -1,0 +1,200 @@
+// archgeo benchmarks — shared helpers (header-only: benchmarks/CMakeLists.txt
+// builds every .cpp here into its own program).
+//
+//   Solve(...)        one `archgeo solve` in process (ReadSpec + RunSpec), no outputs
+//   RunProcess(...)   a subprocess with wall-clock time, peak RSS and a timeout
+//   SolveCommand(...) `archgeo solve --quiet` as a subprocess, report read back
+//   Table             a left-aligned text table
+#pragma once
+
+#include <fcntl.h>
+#include <glog/logging.h>
+#include <nlohmann/json.hpp>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "problems/run.h"
+#include "problems/solver_options.h"
+#include "problems/spec.h"
+
+namespace bench {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+using Clock = std::chrono::steady_clock;
+
+inline std::string Source(const std::string& rel) {
+  return std::string(ARCHGEO_SOURCE_DIR) + "/" + rel;
+}
+inline std::string Data(const std::string& name) {
+  return fs::path(ARCHGEO_DATA_DIR + std::string("/") + name).lexically_normal().string();
+}
+inline double Seconds(Clock::time_point since) {
+  return std::chrono::duration<double>(Clock::now() - since).count();
+}
+
+// glog as in tools/archgeo.cpp: errors only, to stderr.
+inline void InitLogging(const char* argv0) {
+  google::InitGoogleLogging(argv0);
+  FLAGS_minloglevel = google::GLOG_ERROR;
+  FLAGS_logtostderr = true;
+}
+
+// A scratch folder under $TMPDIR (or /tmp), created on first use.
+inline fs::path Scratch() {
+  static const fs::path dir = [] {
+    fs::path d = fs::temp_directory_path() / ("archgeo_bench_" + std::to_string(getuid()));
+    fs::create_directories(d);
+    return d;
+  }();
+  return dir;
+}
+
+// One solve in this process: the spec with `overrides`, no output files.
+// Returns the run report plus "wall_seconds" (around RunSpec) and "exit_code".
+// `progress` is called once per Ceres iteration, on the solving thread.
+inline Json Solve(const std::string& spec_path, const std::vector<std::string>& overrides,
+                  const archgeo::ProgressSink& progress = {}) {
+  archgeo::ProblemSpec spec = archgeo::ReadSpec(spec_path, overrides);
+  spec.output_mesh.clear();  // "output.mesh=" is rejected by the spec (empty path)
+  spec.output_report.clear();
+  const auto start = Clock::now();
+  const archgeo::RunResult run = archgeo::RunSpec(spec, progress);
+  Json report = run.report;
+  report["wall_seconds"] = Seconds(start);
+  report["exit_code"] = run.exit_code;
+  return report;
+}
+
+struct ProcessResult {
+  int exit_code = -1;  // -1: killed by a signal (or the timeout)
+  bool timed_out = false;
+  double seconds = 0;     // wall clock, fork to reap
+  double max_rss_mb = 0;  // peak resident set (wait4 ru_maxrss)
+};
+
+// Runs argv[0] with `argv` (PATH not searched), stdout and stderr to `log`;
+// killed after `timeout` seconds if > 0.
+inline ProcessResult RunProcess(const std::vector<std::string>& argv, double timeout = 0,
+                                const std::string& log = "/dev/null") {
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  ProcessResult r;
+  const auto start = Clock::now();
+  const pid_t pid = fork();
+  if (pid < 0) return r;
+  if (pid == 0) {
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd >= 0) {
+      dup2(fd, 1);
+      dup2(fd, 2);
+    }
+    execv(args[0], args.data());  // only async-signal-safe calls after fork
+    _exit(127);
+  }
+  int status = 0;
+  rusage usage{};
+  while (wait4(pid, &status, WNOHANG, &usage) == 0) {  // poll: ≤ 1 ms of error
+    if (timeout > 0 && !r.timed_out && Seconds(start) > timeout) {
+      r.timed_out = true;
+      kill(pid, SIGKILL);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  r.seconds = Seconds(start);
+  r.max_rss_mb = usage.ru_maxrss / 1024.0;  // kB on Linux
+  if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
+  return r;
+}
+
+// `archgeo solve SPEC --quiet --set ...` as a subprocess, writing the report
+// (and the mesh if `write_mesh`) to the scratch folder; the report is read back
+// into `report` (null if the run failed) and the files are removed (the
+// subprocess's output log is kept if it failed).
+inline ProcessResult SolveCommand(const std::string& spec, std::vector<std::string> sets,
+                                  Json* report, bool write_mesh = false, double timeout = 0) {
+  const fs::path out = Scratch() / ("run_" + std::to_string(getpid()));
+  const std::string rep = (out.string() + ".json"), mesh = out.string() + ".ply";
+  fs::remove(rep);
+  std::vector<std::string> argv = {ARCHGEO_BINARY, "solve", spec, "--quiet"};
+  sets.push_back(write_mesh ? "output={mesh: " + mesh + ", report: " + rep + "}"
+                            : "output={report: " + rep + "}");
+  for (const std::string& s : sets) argv.insert(argv.end(), {"--set", s});
+  const ProcessResult r = RunProcess(argv, timeout, out.string() + ".log");
+  *report = nullptr;
+  if (r.exit_code == 0 && fs::exists(rep)) *report = Json::parse(std::ifstream(rep));
+  for (const std::string& f : {rep, mesh}) fs::remove(f);
+  if (r.exit_code == 0) fs::remove(out.string() + ".log");  // kept for a failed run
+  return r;
+}
+
+// printf into a std::string.
+template <typename... Args>
+std::string Fmt(const char* format, Args... args) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, format, args...);
+  return buf;
+}
+
+// A number from the report at a JSON pointer ("/after/pq_normalized_max"), NaN if absent.
+inline double Get(const Json& j, const char* pointer) {
+  const Json::json_pointer p(pointer);
+  return j.contains(p) && j.at(p).is_number() ? j.at(p).get<double>() : std::nan("");
+}
+
+inline std::string Met(const Json& report) {
+  if (report.is_null()) return "-";
+  return report.contains("tolerance") && report["tolerance"].value("met", false) ? "yes" : "NO";
+}
+
+// A text table: add rows of cells, print with columns padded to the widest
+// cell (width counted in UTF-8 code points, so δ and ∂ line up).
+class Table {
+ public:
+  explicit Table(std::vector<std::string> header) { rows_.push_back(std::move(header)); }
+  void Add(std::vector<std::string> row) { rows_.push_back(std::move(row)); }
+  void Print(std::ostream& os = std::cout) const {
+    std::vector<size_t> width;
+    for (const auto& row : rows_) {
+      width.resize(std::max(width.size(), row.size()));
+      for (size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], Width(row[c]));
+    }
+    for (size_t i = 0; i < rows_.size(); ++i) {
+      std::string line;
+      for (size_t c = 0; c < rows_[i].size(); ++c) {
+        line += rows_[i][c] + std::string(width[c] - Width(rows_[i][c]) + 2, ' ');
+      }
+      os << line.substr(0, line.find_last_not_of(' ') + 1) << "\n";
+      if (i == 0) {
+        size_t total = 0;
+        for (size_t w : width) total += w + 2;
+        os << std::string(total - 2, '-') << "\n";
+      }
+    }
+  }
+
+ private:
+  static size_t Width(const std::string& s) {
+    size_t n = 0;
+    for (unsigned char ch : s) n += (ch & 0xC0) != 0x80;
+    return n;
+  }
+  std::vector<std::vector<std::string>> rows_;
+};
+
+}  // namespace bench
