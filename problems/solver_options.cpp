@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 #include <omp.h>
 
+#include <cstdlib>
 #include <stdexcept>
 #include <vector>
 
@@ -79,8 +80,9 @@ ceres::Solver::Options ToCeresOptions(const SolverSettings& s) {
 }
 
 void ConfigureThreading() {
-  // Let libgomp shrink CHOLMOD's hard-coded 4-thread teams to the cores we have.
-  omp_set_dynamic(1);
+  // Let libgomp shrink CHOLMOD's hard-coded 4-thread teams to the cores we
+  // have, unless the user decided with OMP_DYNAMIC.
+  if (!std::getenv("OMP_DYNAMIC")) omp_set_dynamic(1);
 }
 
 std::string BlasLibrary() {

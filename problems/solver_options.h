@@ -33,7 +33,8 @@ ceres::Solver::Options ToCeresOptions(const SolverSettings& settings);
 
 // Configures OpenMP and BLAS threading once per process: Debian's CHOLMOD
 // hard-codes 4 OpenMP threads, which on 2 cores is ~3x slower than letting
-// the runtime adapt (omp_set_dynamic(1)).
+// the runtime adapt (omp_set_dynamic(1)). An OMP_DYNAMIC environment
+// variable, if set, is left in charge.
 void ConfigureThreading();
 
 // Path of the shared library that provides the BLAS dgemm_ symbol in this
