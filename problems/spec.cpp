@@ -284,8 +284,11 @@ ProblemSpec ReadSpec(const std::string& path, const std::vector<std::string>& ov
   if (root["solver"]) ReadSolver(r, root["solver"], spec.solver);
   if (const YAML::Node o = root["output"]) {
     r.CheckKeys(o, "output", {"mesh", "report", "color_max", "ascii_ply"});
-    if (o["mesh"]) spec.output_mesh = r.Path(o["mesh"], "output.mesh");
-    if (o["report"]) spec.output_report = r.Path(o["report"], "output.report");
+    // An empty value (`mesh:` or --set output.mesh=) writes no file.
+    if (o["mesh"] && !o["mesh"].IsNull()) spec.output_mesh = r.Path(o["mesh"], "output.mesh");
+    if (o["report"] && !o["report"].IsNull()) {
+      spec.output_report = r.Path(o["report"], "output.report");
+    }
     if (o["color_max"]) spec.color_max = r.Number(o["color_max"], "output.color_max", 1e-12, 1);
     if (o["ascii_ply"]) spec.ascii_ply = r.Bool(o["ascii_ply"], "output.ascii_ply");
   }

@@ -53,6 +53,7 @@
 //     color_max: 0.01
 //     ascii_ply: false
 //     report: PATH              JSON run report
+//                               (an empty mesh: or report: writes no file)
 //
 // Relative paths inside the YAML file are relative to the YAML file's folder;
 // paths given with --set are relative to the current directory.

@@ -76,6 +76,13 @@ TEST_F(SpecTest, SetOverridesByDottedPath) {
   EXPECT_EQ(s.fixed_file, "--set");
 }
 
+TEST_F(SpecTest, EmptyOutputsAreNotWritten) {
+  const ProblemSpec s = ReadSpec(Write("mesh: a.obj\noutput: {mesh: out.ply, report: r.json}\n"),
+                                 {"output.mesh=", "output.report="});
+  EXPECT_TRUE(s.output_mesh.empty());
+  EXPECT_TRUE(s.output_report.empty());
+}
+
 TEST_F(SpecTest, SetPathsAreRelativeToTheCurrentFolder) {
   const ProblemSpec s = ReadSpec(Write("mesh: a.obj\n"), {"output.mesh=x/y.obj"});
   EXPECT_EQ(s.output_mesh, (fs::current_path() / "x/y.obj").string());
