@@ -1,12 +1,11 @@
 // archgeo — mesh files through CGAL's polygon-soup IO.
 //
 // ReadMesh runs four steps:
-//  1. ScanObj / ScanOff / ScanPly (ASCII files only). CGAL's soup readers answer only true/false,
-//     and std::istream cannot parse "nan" or "inf". The scan records the line
-//     of every vertex and face record, rejects garbage and non-finite numbers
-//     with their line, and joins OFF face lists wrapped over several lines
-//     (CGAL's OFF reader reads one face per line; libigl's *_quads_*.off
-//     files wrap them).
+//  1. ScanObj / ScanOff / ScanPly (mesh/text_scan.h; ASCII files only): a
+//     plain-text pre-scan, since CGAL's soup readers answer only true/false
+//     and std::istream cannot parse "nan" or "inf". It records the line of
+//     every vertex and face record, rejects garbage and non-finite numbers
+//     with their line, and joins OFF face lists wrapped over several lines.
 //  2. CGAL::IO::read_OBJ / read_OFF / read_PLY into a polygon soup. These
 //     readers fill a soup, never a partial mesh.
 //  3. CheckSoup: non-finite points (binary files), faces with fewer than 3
@@ -29,18 +28,14 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <optional>
 #include <sstream>
-#include <string_view>
 
-#include "mesh/input_error.h"
+#include "mesh/text_scan.h"
 
 namespace archgeo {
 namespace {
@@ -55,20 +50,6 @@ struct Soup {
   std::vector<std::vector<std::size_t>> polygons;
 };
 
-// 1-based lines of the vertex and face records of an ASCII file (empty for
-// binary files); used only to point messages at the file.
-struct LineMap {
-  std::vector<int> vertex, face;
-  int Vertex(std::size_t i) const { return i < vertex.size() ? vertex[i] : 0; }
-  int Face(std::size_t i) const { return i < face.size() ? face[i] : 0; }
-};
-
-[[noreturn]] void Fail(const std::string& path, int line, const std::string& message) {
-  throw InputError(path, line, "", message);
-}
-
-std::string Quote(std::string_view token) { return "'" + std::string(token) + "'"; }
-
 Format FormatOf(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
@@ -76,9 +57,10 @@ Format FormatOf(const std::string& path) {
   if (ext == ".obj") return Format::kObj;
   if (ext == ".off") return Format::kOff;
   if (ext == ".ply") return Format::kPly;
-  Fail(path, 0,
-       (ext.empty() ? std::string("no file extension") : "unknown extension " + Quote(ext)) +
-           "; supported mesh formats: .obj, .off, .ply");
+  FailInput(
+      path, 0,
+      (ext.empty() ? std::string("no file extension") : "unknown extension " + QuoteToken(ext)) +
+          "; supported mesh formats: .obj, .off, .ply");
 }
 
 const char* FormatName(Format format) {
@@ -91,237 +73,6 @@ const char* FormatName(Format format) {
       return "ply";
   }
   return "";
-}
-
-std::string NoFaces(std::size_t vertices) {
-  return "empty mesh: the file has " + std::to_string(vertices) + " vertices but no faces";
-}
-
-std::string OutOfRange(std::size_t face, std::size_t vertices) {
-  return "face " + std::to_string(face) + " refers to a vertex index out of range (the file has " +
-         std::to_string(vertices) + " vertices)";
-}
-
-// Walks a text line by line (lines numbered from 1), dropping '#' comments
-// and splitting the rest into whitespace-separated tokens ('\r' included).
-class LineReader {
- public:
-  explicit LineReader(std::string_view text) : text_(text) {}
-
-  // Advances to the next line with at least one token; false at the end.
-  bool Next() {
-    while (pos_ < text_.size()) {
-      std::size_t end = std::min(text_.find('\n', pos_), text_.size());
-      std::string_view line = text_.substr(pos_, end - pos_);
-      pos_ = end + 1;
-      ++line_;
-      line = line.substr(0, line.find('#'));
-      tokens_.clear();
-      for (std::size_t i = 0; i < line.size();) {
-        while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
-        std::size_t start = i;
-        while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
-        if (i > start) tokens_.push_back(line.substr(start, i - start));
-      }
-      if (!tokens_.empty()) return true;
-    }
-    return false;
-  }
-  int line() const { return line_; }
-  const std::vector<std::string_view>& tokens() const { return tokens_; }
-
- private:
-  std::string_view text_;
-  std::size_t pos_ = 0;
-  int line_ = 0;
-  std::vector<std::string_view> tokens_;
-};
-
-// The whole token as a decimal integer, or nothing.
-std::optional<long long> ParseInteger(std::string_view token) {
-  long long value = 0;
-  const char* end = token.data() + token.size();
-  auto [ptr, error] = std::from_chars(token.data(), end, value);
-  if (error != std::errc() || ptr != end) return std::nullopt;
-  return value;
-}
-
-// Checks the values tokens[first..] of vertex `index` (at `line`): at least
-// three, each a finite number.
-void CheckVertexTokens(const std::string& path, int line, std::size_t index,
-                       const std::vector<std::string_view>& tokens, std::size_t first) {
-  const std::string vertex = "vertex " + std::to_string(index);
-  if (tokens.size() < first + 3) {
-    Fail(path, line,
-         vertex + " has " + std::to_string(tokens.size() - first) + " coordinates; expected 3");
-  }
-  for (std::size_t k = first; k < tokens.size(); ++k) {
-    const std::string token(tokens[k]);
-    char* end = nullptr;
-    const double value = std::strtod(token.c_str(), &end);
-    if (end == token.c_str() || *end != '\0') {
-      Fail(path, line, "cannot parse " + Quote(token) + " as a number in " + vertex);
-    }
-    if (!std::isfinite(value))
-      Fail(path, line, "non-finite coordinate " + Quote(token) + " in " + vertex);
-  }
-}
-
-void FailIndex(const std::string& path, int line, std::string_view token, std::size_t face) {
-  Fail(path, line,
-       "cannot parse " + Quote(token) + " as a vertex index in face " + std::to_string(face));
-}
-
-// OBJ: `v` and `f` records. Tabs become spaces in `text`: CGAL's OBJ reader
-// skips from one face index to the next by looking for a space.
-LineMap ScanObj(const std::string& path, std::string* text) {
-  LineMap lines;
-  for (LineReader reader(*text); reader.Next();) {
-    const auto& tokens = reader.tokens();
-    if (tokens[0] == "v") {
-      CheckVertexTokens(path, reader.line(), lines.vertex.size(), tokens, 1);
-      lines.vertex.push_back(reader.line());
-    } else if (tokens[0] == "f") {
-      for (std::size_t k = 1; k < tokens.size(); ++k) {
-        const std::string_view index = tokens[k].substr(0, tokens[k].find('/'));
-        const auto value = ParseInteger(index);
-        if (!value || *value == 0) FailIndex(path, reader.line(), tokens[k], lines.face.size());
-      }
-      lines.face.push_back(reader.line());
-    }
-  }
-  if (lines.face.empty()) Fail(path, 0, NoFaces(lines.vertex.size()));
-  std::replace(text->begin(), text->end(), '\t', ' ');
-  return lines;
-}
-
-void AppendLine(const std::vector<std::string_view>& tokens, std::string* out) {
-  for (std::string_view token : tokens) {
-    out->append(token);
-    out->push_back(' ');
-  }
-  out->back() = '\n';
-}
-
-// OFF: the header, then one vertex per line, then faces "n i1 ... in [colour]"
-// whose indices may wrap onto following lines. ASCII `text` is rewritten with
-// one record per line and no comments; binary OFF is left to CGAL.
-LineMap ScanOff(const std::string& path, std::string* text) {
-  LineMap lines;
-  LineReader reader(*text);
-  if (!reader.Next()) Fail(path, 0, "not an OFF file: no header");
-  const std::string keyword(reader.tokens()[0]);
-  if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0) {
-    Fail(path, reader.line(),
-         "not an OFF file: expected the keyword 'OFF', found " + Quote(keyword));
-  }
-  if (reader.tokens().size() > 1 && reader.tokens()[1] == "BINARY") return lines;
-  if (keyword.find('n') != std::string::npos) {
-    Fail(path, reader.line(), "n-dimensional OFF (" + keyword + ") is not supported");
-  }
-  std::vector<std::string_view> counts(reader.tokens().begin() + 1, reader.tokens().end());
-  if (counts.empty() && reader.Next()) counts = reader.tokens();
-  const auto num_vertices = counts.size() >= 2 ? ParseInteger(counts[0]) : std::nullopt;
-  const auto num_faces = counts.size() >= 2 ? ParseInteger(counts[1]) : std::nullopt;
-  if (!num_vertices || !num_faces || *num_vertices < 0 || *num_faces < 0) {
-    Fail(path, reader.line(), "cannot read the vertex and face counts of the OFF header");
-  }
-  std::string normalized =
-      keyword + "\n" + std::to_string(*num_vertices) + " " + std::to_string(*num_faces) + " 0\n";
-  for (long long i = 0; i < *num_vertices; ++i) {
-    if (!reader.Next()) {
-      Fail(path, 0,
-           "the header declares " + std::to_string(*num_vertices) +
-               " vertices, but the file has only " + std::to_string(i));
-    }
-    CheckVertexTokens(path, reader.line(), lines.vertex.size(), reader.tokens(), 0);
-    lines.vertex.push_back(reader.line());
-    AppendLine(reader.tokens(), &normalized);
-  }
-  for (long long j = 0; j < *num_faces; ++j) {
-    if (!reader.Next()) {
-      Fail(path, 0,
-           "the header declares " + std::to_string(*num_faces) + " faces, but the file has only " +
-               std::to_string(j));
-    }
-    const int line = reader.line();
-    std::vector<std::string_view> tokens = reader.tokens();
-    const auto size = ParseInteger(tokens[0]);
-    if (!size || *size < 0) {
-      Fail(
-          path, line,
-          "cannot parse " + Quote(tokens[0]) + " as the vertex count of face " + std::to_string(j));
-    }
-    while (tokens.size() < static_cast<std::size_t>(*size) + 1) {
-      if (!reader.Next()) {
-        Fail(path, line,
-             "face " + std::to_string(j) + " declares " + std::to_string(*size) +
-                 " vertices, but the file ends first");
-      }
-      tokens.insert(tokens.end(), reader.tokens().begin(), reader.tokens().end());
-    }
-    for (long long k = 1; k <= *size; ++k) {
-      const auto index = ParseInteger(tokens[k]);
-      if (!index || *index < 0) FailIndex(path, line, tokens[k], lines.face.size());
-      if (*index >= *num_vertices) Fail(path, line, OutOfRange(lines.face.size(), *num_vertices));
-    }
-    lines.face.push_back(line);
-    AppendLine(tokens, &normalized);
-  }
-  *text = std::move(normalized);
-  return lines;
-}
-
-// PLY: a header up to "end_header"; in ASCII PLY each element is one line, in
-// the header's element order. Binary PLY is left to CGAL.
-LineMap ScanPly(const std::string& path, const std::string& text) {
-  LineReader reader(text);
-  if (!reader.Next() || reader.tokens()[0] != "ply") {
-    Fail(path, 1, "not a PLY file: the first line must be 'ply'");
-  }
-  std::string format;
-  std::vector<std::pair<std::string, long long>> elements;
-  while (true) {
-    if (!reader.Next()) Fail(path, 0, "the PLY header has no 'end_header' line");
-    const auto& tokens = reader.tokens();
-    if (tokens[0] == "end_header") break;
-    if (tokens[0] == "format" && tokens.size() > 1) format = tokens[1];
-    if (tokens[0] == "element") {
-      const auto count = tokens.size() > 2 ? ParseInteger(tokens[2]) : std::nullopt;
-      if (!count || *count < 0) Fail(path, reader.line(), "cannot read the PLY element count");
-      elements.emplace_back(tokens[1], *count);
-    }
-  }
-  LineMap lines;
-  if (format != "ascii") return lines;
-  for (const auto& [name, count] : elements) {
-    const bool is_vertex = name == "vertex" || name == "vertices";
-    const bool is_face = name == "face" || name == "faces";
-    for (long long k = 0; k < count; ++k) {
-      if (!reader.Next()) {
-        Fail(path, 0,
-             "the header declares " + std::to_string(count) + " " + name +
-                 " elements, but the file has only " + std::to_string(k));
-      }
-      if (is_vertex) {
-        CheckVertexTokens(path, reader.line(), lines.vertex.size(), reader.tokens(), 0);
-        lines.vertex.push_back(reader.line());
-      }
-      if (is_face) lines.face.push_back(reader.line());
-    }
-  }
-  return lines;
-}
-
-std::string ReadFile(const std::string& path) {
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error)) Fail(path, 0, "cannot open: it is a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) Fail(path, 0, std::string("cannot open: ") + std::strerror(errno));
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) Fail(path, 0, "cannot read the file");
-  return buffer.str();
 }
 
 // Reads the (pre-scanned) `text` with CGAL's soup reader for `format`.
@@ -343,9 +94,9 @@ Soup ReadSoup(const std::string& path, Format format, const std::string& text) {
       break;
   }
   if (!ok) {
-    Fail(path, 0,
-         std::string("cannot parse the file as ") + FormatName(format) +
-             ": CGAL's reader rejected it (unsupported content or a truncated file)");
+    FailInput(path, 0,
+              std::string("cannot parse the file as ") + FormatName(format) +
+                  ": CGAL's reader rejected it (unsupported content or a truncated file)");
   }
   return soup;
 }
@@ -363,19 +114,20 @@ void CheckFaceIndices(const std::string& path, const Soup& soup, std::size_t j, 
   const auto& polygon = soup.polygons[j];
   const std::string face = "face " + std::to_string(j);
   if (polygon.size() < 3) {
-    Fail(path, line,
-         face + " has " + std::to_string(polygon.size()) + " vertices; a face needs at least 3");
+    FailInput(
+        path, line,
+        face + " has " + std::to_string(polygon.size()) + " vertices; a face needs at least 3");
   }
   for (std::size_t v : polygon) {
     if (v >= soup.points.size()) {
-      Fail(path, line, OutOfRange(j, soup.points.size()));
+      FailInput(path, line, OutOfRangeMessage(j, soup.points.size()));
     }
   }
   std::vector<std::size_t> sorted = polygon;
   std::sort(sorted.begin(), sorted.end());
   const auto repeated = std::adjacent_find(sorted.begin(), sorted.end());
   if (repeated != sorted.end()) {
-    Fail(path, line, face + " uses vertex " + std::to_string(*repeated) + " more than once");
+    FailInput(path, line, face + " uses vertex " + std::to_string(*repeated) + " more than once");
   }
 }
 
@@ -392,24 +144,24 @@ void CheckFaceShape(const std::string& path, const Soup& soup, std::size_t j, in
   for (std::size_t k = 0; k < polygon.size(); ++k) {
     const std::size_t a = polygon[k], b = polygon[(k + 1) % polygon.size()];
     if ((soup.points[b] - soup.points[a]).squared_length() <= tiny) {
-      Fail(path, line,
-           face + " is degenerate: its vertices " + std::to_string(a) + " and " +
-               std::to_string(b) + " coincide");
+      FailInput(path, line,
+                face + " is degenerate: its vertices " + std::to_string(a) + " and " +
+                    std::to_string(b) + " coincide");
     }
     twice_area = twice_area + CGAL::cross_product(soup.points[a] - origin, soup.points[b] - origin);
   }
   if (0.5 * std::sqrt(twice_area.squared_length()) <= tiny) {
-    Fail(path, line, face + " is degenerate: zero area (collinear vertices)");
+    FailInput(path, line, face + " is degenerate: zero area (collinear vertices)");
   }
 }
 
 // Checks what CGAL's readers accept but a mesh cannot have.
 void CheckSoup(const std::string& path, const Soup& soup, const LineMap& lines) {
-  if (soup.polygons.empty()) Fail(path, 0, NoFaces(soup.points.size()));
+  if (soup.polygons.empty()) FailInput(path, 0, NoFacesMessage(soup.points.size()));
   for (std::size_t i = 0; i < soup.points.size(); ++i) {
     const Point& p = soup.points[i];
     if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z())) {
-      Fail(path, lines.Vertex(i), "non-finite coordinate in vertex " + std::to_string(i));
+      FailInput(path, lines.Vertex(i), "non-finite coordinate in vertex " + std::to_string(i));
     }
   }
   const double diagonal = BoundingBoxDiagonal(soup.points);
@@ -447,19 +199,20 @@ int Orient(const std::string& path, Soup* soup, const LineMap& lines) {
       PMP::orient_polygon_soup(soup->points, soup->polygons, CGAL::parameters::visitor(visitor));
   if (!report.singular_edges.empty()) {
     const auto [a, b, faces] = report.singular_edges.front();
-    Fail(path, 0,
-         "non-manifold edge between vertices " + std::to_string(a) + " and " + std::to_string(b) +
-             ": " + std::to_string(faces) + " faces share it");
+    FailInput(path, 0,
+              "non-manifold edge between vertices " + std::to_string(a) + " and " +
+                  std::to_string(b) + ": " + std::to_string(faces) + " faces share it");
   }
   if (!report.singular_vertices.empty()) {
     const std::size_t v = report.singular_vertices.front();
-    Fail(path, lines.Vertex(v),
-         "non-manifold vertex " + std::to_string(v) +
-             ": its faces do not form one consistently oriented fan"
-             " (two fans touch there, or the surface is not orientable)");
+    FailInput(path, lines.Vertex(v),
+              "non-manifold vertex " + std::to_string(v) +
+                  ": its faces do not form one consistently oriented fan"
+                  " (two fans touch there, or the surface is not orientable)");
   }
   if (!no_duplicates || !PMP::is_polygon_soup_a_polygon_mesh(soup->polygons)) {
-    Fail(path, 0, "non-manifold or non-orientable mesh: the faces cannot be oriented consistently");
+    FailInput(path, 0,
+              "non-manifold or non-orientable mesh: the faces cannot be oriented consistently");
   }
   return static_cast<int>(std::count(report.flipped.begin(), report.flipped.end(), true));
 }
@@ -503,7 +256,9 @@ bool WritePly(std::ostream& out, const Soup& soup, const std::vector<Rgb>* color
 Mesh ReadMesh(const std::string& path, ReadInfo* info) {
   const Format format = FormatOf(path);
   std::string text = ReadFile(path);
-  if (text.find_first_not_of(" \t\r\n") == std::string::npos) Fail(path, 0, "the file is empty");
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) {
+    FailInput(path, 0, "the file is empty");
+  }
   LineMap lines;
   switch (format) {
     case Format::kObj:
@@ -533,13 +288,13 @@ void WriteMesh(const std::string& path, const Mesh& mesh, const std::vector<Rgb>
   const Soup soup = ToSoup(mesh);
   for (std::size_t j = 0; format == Format::kPly && j < soup.polygons.size(); ++j) {
     if (soup.polygons[j].size() > 255) {
-      Fail(path, 0,
-           "face " + std::to_string(j) + " has more than 255 vertices, more than PLY" +
-               " (a uchar vertex count) can store");
+      FailInput(path, 0,
+                "face " + std::to_string(j) + " has more than 255 vertices, more than PLY" +
+                    " (a uchar vertex count) can store");
     }
   }
   std::ofstream out(path, std::ios::binary);
-  if (!out) Fail(path, 0, std::string("cannot open for writing: ") + std::strerror(errno));
+  if (!out) FailInput(path, 0, std::string("cannot open for writing: ") + std::strerror(errno));
   const auto precision = CGAL::parameters::stream_precision(17);
   bool ok = false;
   switch (format) {
@@ -562,7 +317,7 @@ void WriteMesh(const std::string& path, const Mesh& mesh, const std::vector<Rgb>
     }
   }
   out.close();
-  if (!ok || out.fail()) Fail(path, 0, "cannot write the mesh file");
+  if (!ok || out.fail()) FailInput(path, 0, "cannot write the mesh file");
 }
 
 }  // namespace archgeo
