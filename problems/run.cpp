@@ -194,8 +194,8 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
                 solved.inner_iterations, Since(start), solve_seconds, spec.pq_normalized_max,
                 spec.pq_normalized_max <= 0 ? "off"
                 : solved.tolerance_met      ? "met"
-                                            : "NOT met (raise solver.outer_iterations or the "
-                                              "planarity weights)",
+                                            : "NOT met within solver.outer_iterations rounds "
+                                              "(weaker anchor/proximity pulls let it move more)",
                 solved.objective.count("total") ? solved.objective.at("total") : 0.0);
   run.summary = head + FormatMetrics(before, &after, scale);
   return run;
