@@ -253,6 +253,8 @@ bool WritePly(std::ostream& out, const Soup& soup, const std::vector<Rgb>* color
 
 }  // namespace
 
+void CheckMeshExtension(const std::string& path) { FormatOf(path); }
+
 Mesh ReadMesh(const std::string& path, ReadInfo* info) {
   const Format format = FormatOf(path);
   std::string text = ReadFile(path);

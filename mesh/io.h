@@ -27,6 +27,11 @@ struct ReadInfo {
 // Surface_mesh without duplicating vertices).
 Mesh ReadMesh(const std::string& path, ReadInfo* info = nullptr);
 
+// Throws InputError unless `path` ends in a supported mesh extension
+// (.obj, .off, .ply, any case): lets a run reject a bad output name before
+// doing any work.
+void CheckMeshExtension(const std::string& path);
+
 using Rgb = std::array<unsigned char, 3>;
 
 // Writes `mesh` to `path` (format from the extension: .obj, .off, .ply),

@@ -74,6 +74,18 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   const auto start = Clock::now();
   ConfigureThreading();
 
+  // Outputs are checked and staged before any work: a bad output name or an
+  // output that would overwrite an input fails at once.
+  StagedOutputs staged(spec.reference.empty()
+                           ? std::vector<std::string>{spec.spec_path, spec.mesh}
+                           : std::vector<std::string>{spec.spec_path, spec.mesh, spec.reference});
+  std::string mesh_temporary, report_temporary;
+  if (!spec.output_mesh.empty()) {
+    CheckMeshExtension(spec.output_mesh);
+    mesh_temporary = staged.Stage(spec.output_mesh);
+  }
+  if (!spec.output_report.empty()) report_temporary = staged.Stage(spec.output_report);
+
   ReadInfo info;
   const Mesh input = ReadMesh(spec.mesh, &info);
   const Mesh reference_mesh = spec.reference.empty() ? input : ReadMesh(spec.reference);
@@ -161,11 +173,9 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   const double metrics_seconds = Since(metrics_start);
 
   const auto write_start = Clock::now();
-  StagedOutputs staged(spec.reference.empty() ? std::vector<std::string>{spec.spec_path, spec.mesh}
-                                              : std::vector<std::string>{spec.spec_path, spec.mesh, spec.reference});
   if (!spec.output_mesh.empty()) {
     const auto colors = PlanarityColors(MeasureFacePlanarity(output), spec.color_max);
-    WriteMesh(staged.Stage(spec.output_mesh), output, &colors, spec.ascii_ply);
+    WriteMesh(mesh_temporary, output, &colors, spec.ascii_ply);
     rep["output_mesh"] = spec.output_mesh;
   }
   rep["seconds"] = {{"read", read_seconds},
@@ -179,7 +189,7 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
                     {"total", Since(start)}};
   if (!spec.output_report.empty()) {
     rep["output_report"] = spec.output_report;
-    std::ofstream out(staged.Stage(spec.output_report));
+    std::ofstream out(report_temporary);
     out << std::setw(2) << rep << "\n";
     if (!out) throw InputError(spec.output_report, 0, "output.report", "cannot write the report");
   }

@@ -223,6 +223,19 @@ TEST_F(CliTest, OutputNeverOverwritesTheInput) {
   ExpectBadInput("solve " + spec, "g.obj", {spec, Path("g.obj")});
 }
 
+TEST_F(CliTest, BadOutputNamesFailBeforeAnyWork) {
+  ASSERT_EQ(Archgeo("generate " + Path("g.obj") + " --nu 4 --nv 4").code, 0);
+  const std::string spec = WriteFile("spec.yaml", "mesh: g.obj\noutput: {mesh: out.stl}\n");
+  const Outcome o = Archgeo("solve " + spec);
+  EXPECT_EQ(o.code, 2);
+  EXPECT_NE(o.output.find("out.stl"), std::string::npos) << o.output;
+  EXPECT_EQ(o.output.find("iter"), std::string::npos) << "solved before failing:\n" << o.output;
+  const std::string over = WriteFile("over.yaml", "mesh: g.obj\noutput: {report: g.obj}\n");
+  const Outcome p = Archgeo("solve " + over);
+  EXPECT_EQ(p.code, 2);
+  EXPECT_EQ(p.output.find("iter"), std::string::npos) << "solved before failing:\n" << p.output;
+}
+
 TEST_F(CliTest, BadCommandLine) {
   EXPECT_EQ(Archgeo("frobnicate").code, 2);
   EXPECT_EQ(Archgeo("solve").code, 2);
