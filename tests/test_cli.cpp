@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "mesh/io.h"
+#include "tests/scratch_dir.h"
 
 namespace archgeo {
 namespace {
@@ -42,21 +43,8 @@ std::string Slurp(const fs::path& p) {
   return ss.str();
 }
 
-class CliTest : public ::testing::Test {
+class CliTest : public ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("archgeo_cli_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
-  std::string WriteFile(const std::string& name, const std::string& text) const {
-    std::ofstream(Path(name)) << text;
-    return Path(name);
-  }
   std::string Spec(const std::string& mesh, const std::string& extra = "") const {
     return WriteFile("spec.yaml", "mesh: " + mesh +
                                       "\noutput:\n  mesh: out.ply\n  report: out.json\n" + extra);
@@ -79,7 +67,6 @@ class CliTest : public ::testing::Test {
     for (size_t i = 0; i < inputs.size(); ++i) EXPECT_EQ(Slurp(inputs[i]), before[i]);
   }
 
-  fs::path dir_;
 };
 
 TEST_F(CliTest, PlanarisesAGeneratedNonPlanarGrid) {

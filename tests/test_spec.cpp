@@ -6,27 +6,16 @@
 
 #include "mesh/input_error.h"
 #include "problems/spec.h"
+#include "tests/scratch_dir.h"
 
 namespace archgeo {
 namespace {
 
 namespace fs = std::filesystem;
 
-class SpecTest : public ::testing::Test {
+class SpecTest : public ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("archgeo_spec_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string Write(const std::string& text) {
-    const std::string path = (dir_ / "spec.yaml").string();
-    std::ofstream(path) << text;
-    return path;
-  }
+  std::string Write(const std::string& text) { return WriteFile("spec.yaml", text); }
 
   // The InputError thrown by ReadSpec, or a failure.
   InputError Error(const std::string& text, const std::vector<std::string>& overrides = {}) {
@@ -40,7 +29,6 @@ class SpecTest : public ::testing::Test {
     return InputError("", 0, "", "");
   }
 
-  fs::path dir_;
 };
 
 TEST_F(SpecTest, DefaultsAndPathsRelativeToTheSpec) {
