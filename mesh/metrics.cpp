@@ -196,8 +196,10 @@ Metrics ComputeMetrics(const Mesh& mesh, const ReferenceSurface* reference, cons
       const ReferenceSurface::SurfacePoint closest = reference->Closest(x);
       const Vector offset = mesh.point(v) - ToPoint(closest.point);
       surface.Add(Length(offset));
-      if (!boundary[v.idx()]) {
+      if (!boundary[v.idx()] || !reference->HasBoundary()) {
         // δ_prox: distance to the tangent plane at π(v)   [Zadravec 2010, §6]
+        // (boundary vertices too when the reference has no boundary curve to
+        // measure them against, as the planar_quads builder treats them)
         const Vector n(closest.normal[0], closest.normal[1], closest.normal[2]);
         prox.Add(std::abs(offset * n));
       } else if (reference->HasBoundary()) {

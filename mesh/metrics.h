@@ -42,7 +42,8 @@ struct Metrics {
   double pq_max = 0, pq_mean = 0;                        // δ_PQ over quads (and n-gons)
   double pq_normalized_max = 0, pq_normalized_mean = 0;  // δ_PQ,n
   double warp_max = 0, warp_mean = 0;
-  double prox_max = -1;           // δ_prox: interior vertices to the tangent plane at π(v)
+  double prox_max = -1;           // δ_prox: interior vertices (all if the reference is
+                                  // closed) to the tangent plane at π(v)
   double boundary_prox_max = -1;  // δ∂_prox: boundary vertices to the tangent line at π̃(v)
   double surface_distance_max = -1, surface_distance_mean = -1;  // vertices to the reference
   double hausdorff = -1;          // symmetric Hausdorff distance to the reference (sampled)
