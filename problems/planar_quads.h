@@ -33,11 +33,46 @@
 #include "mesh/surface_mesh.h"
 #include "problems/progress.h"
 #include "problems/solver_options.h"
-#include "problems/spec.h"
 
 namespace archgeo {
 
 class ReferenceSurface;
+
+// The `terms:` of a planar_quads spec (weights w; ½ Σ_terms w Σ r²).
+// If `terms` is given, a term not listed is off.
+//   pq_diagonal: 10        starting planarity weight (× continuation.factor
+//                          after every round short of the tolerance).
+//   face_planarity: 10     the same for faces with more than 4 sides.
+//   fairness: {weight: 0, relative_to_original: true}   (or a number):
+//                          second differences along mesh polylines.
+//   proximity: {weight: 2, point_weight: 0.01}   distance to the reference's
+//                          tangent plane; the point part pulls towards the
+//                          closest point itself.
+//   boundary_proximity: 2  distance to the reference's boundary tangent.
+//   anchor: 0.1            pull towards each vertex's original position
+//                          (keeps vertices from sliding along the surface).
+// Other keys of the builder:
+//   tolerance:
+//     pq_normalized_max: 1e-3   stop as soon as every quad has δ_PQ,n ≤ this;
+//                               0 turns the tolerance off: fixed weights, all
+//                               outer iterations.
+//   continuation:
+//     band: 0                   a face whose δ_PQ,n is within band × tolerance
+//                               costs nothing (only the excess is penalised):
+//                               less movement for a loose tolerance, slower for
+//                               a tight one. 0 pulls every face to planarity.
+//     factor: 10                planarity weight growth per round short of
+//                               the tolerance.
+struct TermWeights {
+  double pq_diagonal = 10.0;
+  double face_planarity = 10.0;
+  double fairness = 0.0;
+  bool fairness_relative = true;
+  double proximity = 2.0;
+  double proximity_point = 0.01;
+  double boundary_proximity = 2.0;
+  double anchor = 0.1;
+};
 
 struct PlanarQuadsSettings {
   TermWeights terms;

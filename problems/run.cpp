@@ -1,6 +1,11 @@
 #include "problems/run.h"
 
 #include <chrono>
+#include <cstdio>
+#include <map>
+#include <set>
+
+#include <glog/logging.h>
 #include <fstream>
 #include <iomanip>
 
@@ -11,8 +16,9 @@
 #include "mesh/output_files.h"
 #include "mesh/reference.h"
 #include "mesh/similarity.h"
+#include "mesh/subdivision.h"
 #include "mesh/topology.h"
-#include "problems/planar_quads.h"
+#include "problems/analysis.h"
 #include "problems/report.h"
 #include "problems/solver_options.h"
 
@@ -50,22 +56,39 @@ nlohmann::json SolverJson(const SolverSettings& s) {
           {"parameter_tolerance", s.parameter_tolerance}, {"threads", s.threads}};
 }
 
-nlohmann::json TermsJson(const TermWeights& w) {
-  return {{"pq_diagonal", w.pq_diagonal},
-          {"face_planarity", w.face_planarity},
-          {"fairness", {{"weight", w.fairness}, {"relative_to_original", w.fairness_relative}}},
-          {"proximity", {{"weight", w.proximity}, {"point_weight", w.proximity_point}}},
-          {"boundary_proximity", w.boundary_proximity},
-          {"anchor", w.anchor}};
-}
-
-// The optimised positions on a clean copy of the input (no solver properties).
-Mesh WithPositions(const Mesh& input, const Mesh& solved, const Similarity& frame) {
-  Mesh out = input;
+// `solved` (canonical frame) moved back to file units, without any solver
+// property: on a copy of the input when the topology is the input's, else
+// rebuilt from positions and faces (after subdivision).
+Mesh InFileFrame(const Mesh& input, const Mesh& solved, const Similarity& frame) {
+  Mesh out;
+  if (solved.number_of_vertices() == input.number_of_vertices() &&
+      solved.number_of_faces() == input.number_of_faces()) {
+    out = input;
+  } else {
+    for (VertexIndex v : solved.vertices()) out.add_vertex(solved.point(v));
+    for (FaceIndex f : solved.faces()) {
+      std::vector<VertexIndex> vs;
+      for (VertexIndex v : CGAL::vertices_around_face(solved.halfedge(f), solved)) vs.push_back(v);
+      out.add_face(vs);
+    }
+  }
   for (VertexIndex v : out.vertices()) {
     out.point(v) = ToPoint(frame.FromCanonical(ToVec3(solved.point(v))));
   }
   return out;
+}
+
+// Adds `level` to the running totals in `total`.
+void Accumulate(const SolveOutcome& level, SolveOutcome& total) {
+  total.usable = level.usable;
+  total.message = level.message;
+  total.variables = level.variables;
+  total.residuals = level.residuals;
+  total.outer_iterations += level.outer_iterations;
+  total.inner_iterations += level.inner_iterations;
+  total.objective = level.objective;
+  for (const auto& [k, v] : level.seconds) total.seconds[k] += v;
+  total.headline = level.headline;
 }
 
 }  // namespace
@@ -73,6 +96,8 @@ Mesh WithPositions(const Mesh& input, const Mesh& solved, const Similarity& fram
 RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   const auto start = Clock::now();
   ConfigureThreading();
+  CHECK(spec.builder) << "RunSpec: the spec has no builder (use ReadSpec)";
+  const Builder& builder = *spec.builder;
 
   // Outputs are checked and staged before any work: a bad output name or an
   // output that would overwrite an input fails at once.
@@ -85,24 +110,19 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
     mesh_temporary = staged.Stage(spec.output_mesh);
   }
   if (!spec.output_report.empty()) report_temporary = staged.Stage(spec.output_report);
+  std::map<std::string, std::string> extra_temporary;
+  for (const auto& [key, path] : spec.extra_outputs) extra_temporary[key] = staged.Stage(path);
 
   ReadInfo info;
   const Mesh input = ReadMesh(spec.mesh, &info);
   const Mesh reference_mesh = spec.reference.empty() ? input : ReadMesh(spec.reference);
-  int planar_faces = 0;
-  for (FaceIndex f : input.faces()) planar_faces += input.degree(f) >= 4;
-  if (planar_faces == 0) {
-    throw InputError(spec.mesh, 0, "mesh",
-                     "planar_quads needs quads (or larger polygons); this mesh has only "
-                     "triangles");
+  builder.CheckInput(input, spec.mesh);
+  if (spec.multiresolution_levels > 0 && !CanSubdivide(input, spec.multiresolution_scheme)) {
+    throw InputError(spec.spec_path, 0, "multiresolution.scheme",
+                     spec.multiresolution_scheme + " subdivision needs a triangle mesh; " +
+                         spec.mesh + " has other faces (use catmull_clark or doo_sabin)");
   }
-  PlanarQuadsSettings settings;
-  settings.terms = spec.terms;
-  settings.tolerance = spec.pq_normalized_max;
-  settings.continuation_band = spec.continuation_band;
-  settings.continuation_factor = spec.continuation_factor;
-  settings.fixed = FixedVertices(spec, input);
-  settings.solver = spec.solver;
+  std::vector<bool> fixed = FixedVertices(spec, input);
   const double read_seconds = Since(start);
 
   const auto setup_start = Clock::now();
@@ -114,8 +134,10 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   Metrics before = ComputeMetrics(input, &reference, &input, before_options);
   if (spec.reference.empty()) before.hausdorff = 0;
   const double scale = before.bbox_diagonal;
-
+  const std::set<std::string> analyses = builder.Analyses();
+  const AnalysisRows extra_before = Analyse(input, analyses);
   const double setup_seconds = Since(setup_start);
+
   const auto solve_start = Clock::now();
   const Similarity frame = CanonicalFrame(input);
   Mesh work = input;
@@ -123,7 +145,53 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   Mesh reference_canonical = reference_mesh;
   ToCanonical(frame, reference_canonical);
   const ReferenceSurface reference_in_frame(reference_canonical);
-  const PlanarQuadsResult solved = SolvePlanarQuads(work, reference_in_frame, settings, progress);
+  SolveContext context;
+  context.reference = &reference_in_frame;
+  context.solver = spec.solver;
+  context.progress = progress;
+  SolveOutcome solved;
+  nlohmann::json levels = nlohmann::json::array();
+  for (int level = 0; level <= spec.multiresolution_levels; ++level) {
+    if (level > 0) {
+      work = Subdivide(work, spec.multiresolution_scheme);
+      // Boundary and corners are recomputed on the finer mesh; listed ids
+      // keep their vertex (Loop and Catmull–Clark keep the old indices).
+      const bool keeps_ids =
+          spec.multiresolution_scheme == "loop" || spec.multiresolution_scheme == "catmull_clark";
+      if (spec.fixed == "ids" && !keeps_ids) {
+        throw InputError(spec.fixed_file, spec.fixed_line, "fixed",
+                         "vertex ids cannot be kept through " + spec.multiresolution_scheme +
+                             " subdivision (it renumbers vertices); use loop or catmull_clark");
+      }
+      std::vector<bool> finer = FixedVertices(spec, work);
+      if (spec.fixed == "ids") {
+        finer.assign(work.number_of_vertices(), false);
+        for (size_t i = 0; i < fixed.size(); ++i) finer[i] = fixed[i];
+      }
+      fixed = finer;
+      if (progress) {
+        progress("multiresolution level " + std::to_string(level) + ": " +
+                 spec.multiresolution_scheme + " subdivision -> " +
+                 std::to_string(work.number_of_vertices()) + " vertices, " +
+                 std::to_string(work.number_of_faces()) + " faces");
+      }
+    }
+    context.fixed = fixed;
+    const auto level_start = Clock::now();
+    const SolveOutcome outcome = builder.Solve(work, context);
+    Accumulate(outcome, solved);
+    levels.push_back({{"level", level},
+                      {"vertices", work.number_of_vertices()},
+                      {"faces", work.number_of_faces()},
+                      {"variables", outcome.variables},
+                      {"residuals", outcome.residuals},
+                      {"outer_iterations", outcome.outer_iterations},
+                      {"inner_iterations", outcome.inner_iterations},
+                      {"objective", outcome.objective},
+                      {"details", outcome.details},
+                      {"seconds", Since(level_start)}});
+    if (!outcome.usable) break;
+  }
   const double solve_seconds = Since(solve_start);
 
   RunResult run;
@@ -137,28 +205,28 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   rep["units"] = {{"lengths", "file units"},
                   {"relative", "file units / bounding-box diagonal of the input"},
                   {"bbox_diagonal", scale},
+                  {"angles", "degrees"},
                   {"objective", "0.5 * sum_terms w * sum r^2, in the canonical frame (unit mean "
                                 "edge length), at the last linearisation"}};
-  rep["terms"] = TermsJson(spec.terms);
+  rep["settings"] = builder.SettingsJson();
+  if (rep["settings"].contains("terms")) rep["terms"] = rep["settings"]["terms"];
+  rep["fixed"] = spec.fixed;
   rep["solver"] = SolverJson(spec.solver);
   rep["blas"] = BlasLibrary();
-  rep["tolerance"] = {{"pq_normalized_max", spec.pq_normalized_max},
-                      {"met", solved.tolerance_met}};
+  for (const auto& [key, value] : solved.details.items()) rep[key] = value;
+  if (!levels.empty()) {
+    for (const auto& [key, value] : levels.back()["details"].items()) rep[key] = value;
+  }
+  if (spec.multiresolution_levels > 0) {
+    rep["multiresolution"] = {{"scheme", spec.multiresolution_scheme}, {"levels", levels}};
+  }
   rep["usable"] = solved.usable;
   rep["variables"] = solved.variables;
   rep["residuals"] = solved.residuals;
   rep["iterations"] = {{"outer", solved.outer_iterations}, {"inner", solved.inner_iterations}};
   rep["objective"] = solved.objective;
-  nlohmann::json log = nlohmann::json::array();
-  for (const OuterIterationLog& l : solved.log) {
-    log.push_back({{"outer", l.outer}, {"iterations", l.inner_iterations}, {"cost", l.cost},
-                   {"pq_normalized_max", l.pq_normalized_max},
-                   {"faces_above_tolerance", l.faces_above_tolerance},
-                   {"weight_max", l.weight_max}, {"max_move_mean_edges", l.max_move},
-                   {"seconds", l.seconds}});
-  }
-  rep["outer_log"] = log;
   rep["before"] = MetricsToJson(before, scale);
+  AnalysisToJson(extra_before, scale, rep["before"]);
 
   if (!solved.usable) {
     run.exit_code = 3;
@@ -168,28 +236,32 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
     return run;
   }
 
-  const Mesh output = WithPositions(input, work, frame);
+  const Mesh output = InFileFrame(input, work, frame);
   const auto metrics_start = Clock::now();
-  const Metrics after = ComputeMetrics(output, &reference, &input);
+  const bool same_vertices = output.number_of_vertices() == input.number_of_vertices();
+  const Metrics after = ComputeMetrics(output, &reference, same_vertices ? &input : nullptr);
+  const AnalysisRows extra_after = Analyse(output, analyses);
   rep["after"] = MetricsToJson(after, scale);
+  AnalysisToJson(extra_after, scale, rep["after"]);
   const double metrics_seconds = Since(metrics_start);
 
   const auto write_start = Clock::now();
   if (!spec.output_mesh.empty()) {
-    const auto colors = PlanarityColors(MeasureFacePlanarity(output), spec.color_max);
+    FaceColors colors = builder.Colors(output, spec.color_max);
+    if (colors.empty()) colors = PlanarityColors(MeasureFacePlanarity(output), spec.color_max);
     WriteMesh(mesh_temporary, output, &colors, spec.ascii_ply);
     rep["output_mesh"] = spec.output_mesh;
   }
-  rep["seconds"] = {{"read", read_seconds},
-                    {"reference_and_metrics_before", setup_seconds},
-                    {"solve", solve_seconds},
-                    {"ceres", solved.seconds_solver},
-                    {"linear_solver", solved.seconds_linear_solver},
-                    {"jacobian", solved.seconds_jacobian},
-                    {"projection", solved.seconds_projection},
-                    {"metrics_after", metrics_seconds},
-                    {"write", Since(write_start)},
-                    {"total", Since(start)}};
+  builder.WriteOutputs(output, extra_temporary, rep);
+  for (const auto& [key, path] : spec.extra_outputs) rep["output_" + key] = path;
+  nlohmann::json seconds = {{"read", read_seconds},
+                            {"reference_and_metrics_before", setup_seconds},
+                            {"solve", solve_seconds},
+                            {"metrics_after", metrics_seconds},
+                            {"write", Since(write_start)},
+                            {"total", Since(start)}};
+  for (const auto& [k, v] : solved.seconds) seconds[k] = v;
+  rep["seconds"] = seconds;
   if (!spec.output_report.empty()) {
     rep["output_report"] = spec.output_report;
     std::ofstream out(report_temporary);
@@ -200,17 +272,15 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
 
   char head[512];
   std::snprintf(head, sizeof head,
-                "planar_quads: %d variables, %d residuals, %d outer / %d Ceres iterations, "
-                "%.2f s (solve %.2f s)\ntolerance δ_PQ,n max <= %g: %s\nobjective (canonical "
-                "frame): %.6e\n",
-                solved.variables, solved.residuals, solved.outer_iterations,
-                solved.inner_iterations, Since(start), solve_seconds, spec.pq_normalized_max,
-                spec.pq_normalized_max <= 0 ? "off"
-                : solved.tolerance_met      ? "met"
-                                            : "NOT met within solver.outer_iterations rounds "
-                                              "(weaker anchor/proximity pulls let it move more)",
+                "%s: %d variables, %d residuals, %d outer / %d Ceres iterations, %.2f s (solve "
+                "%.2f s)\n",
+                spec.problem.c_str(), solved.variables, solved.residuals,
+                solved.outer_iterations, solved.inner_iterations, Since(start), solve_seconds);
+  char objective[128];
+  std::snprintf(objective, sizeof objective, "objective (canonical frame): %.6e\n",
                 solved.objective.count("total") ? solved.objective.at("total") : 0.0);
-  run.summary = head + FormatMetrics(before, &after, scale);
+  run.summary = head + solved.headline + objective + FormatMetrics(before, &after, scale) +
+                FormatAnalysis(extra_before, &extra_after, scale);
   return run;
 }
 

@@ -36,8 +36,9 @@ TEST_F(SpecTest, DefaultsAndPathsRelativeToTheSpec) {
   EXPECT_EQ(s.mesh, (dir_ / "roof.obj").string());
   EXPECT_EQ(s.output_mesh, (dir_ / "out/r.ply").string());
   EXPECT_EQ(s.problem, "planar_quads");
-  EXPECT_DOUBLE_EQ(s.pq_normalized_max, 1e-3);
-  EXPECT_GT(s.terms.proximity, 0);
+  const nlohmann::json settings = s.builder->SettingsJson();
+  EXPECT_DOUBLE_EQ(settings["tolerance"]["pq_normalized_max"].get<double>(), 1e-3);
+  EXPECT_GT(settings["terms"]["proximity"]["weight"].get<double>(), 0);
   EXPECT_EQ(s.solver.linear_solver, "sparse_normal_cholesky");
   EXPECT_EQ(s.fixed, "none");
 }
@@ -45,11 +46,12 @@ TEST_F(SpecTest, DefaultsAndPathsRelativeToTheSpec) {
 TEST_F(SpecTest, ListedTermsTurnTheOthersOff) {
   const ProblemSpec s =
       ReadSpec(Write("mesh: a.obj\nterms:\n  pq_diagonal: 2\n  fairness: {weight: 0.5}\n"));
-  EXPECT_DOUBLE_EQ(s.terms.pq_diagonal, 2);
-  EXPECT_DOUBLE_EQ(s.terms.fairness, 0.5);
-  EXPECT_TRUE(s.terms.fairness_relative);
-  EXPECT_DOUBLE_EQ(s.terms.proximity, 0);
-  EXPECT_DOUBLE_EQ(s.terms.anchor, 0);
+  const nlohmann::json terms = s.builder->SettingsJson()["terms"];
+  EXPECT_DOUBLE_EQ(terms["pq_diagonal"].get<double>(), 2);
+  EXPECT_DOUBLE_EQ(terms["fairness"]["weight"].get<double>(), 0.5);
+  EXPECT_TRUE(terms["fairness"]["relative_to_original"].get<bool>());
+  EXPECT_DOUBLE_EQ(terms["proximity"]["weight"].get<double>(), 0);
+  EXPECT_DOUBLE_EQ(terms["anchor"].get<double>(), 0);
 }
 
 TEST_F(SpecTest, SetOverridesByDottedPath) {
@@ -58,7 +60,8 @@ TEST_F(SpecTest, SetOverridesByDottedPath) {
                                   "tolerance.pq_normalized_max=5e-3", "fixed=[0, 3]"});
   EXPECT_EQ(s.solver.threads, 1);
   EXPECT_EQ(s.mesh, "/data/b.off");
-  EXPECT_DOUBLE_EQ(s.pq_normalized_max, 5e-3);
+  EXPECT_DOUBLE_EQ(
+      s.builder->SettingsJson()["tolerance"]["pq_normalized_max"].get<double>(), 5e-3);
   EXPECT_EQ(s.fixed, "ids");
   EXPECT_EQ(s.fixed_ids, (std::vector<int>{0, 3}));
   EXPECT_EQ(s.fixed_file, "--set");

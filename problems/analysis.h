@@ -1,0 +1,40 @@
+// archgeo — the analyses a report shows besides the planarity/proximity
+// metrics (mesh/metrics.h): visual smoothness [Pellis 2019] and A-net / H-net
+// quality [Shi 2014]. `archgeo solve` shows the ones its builder names
+// (Builder::Analyses), `archgeo measure` every one that applies to the mesh.
+#pragma once
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "mesh/surface_mesh.h"
+
+namespace archgeo {
+
+struct AnalysisRow {
+  enum class Kind { kLength, kDegrees, kCount, kRatio };
+  std::string key;    // JSON key
+  std::string label;  // table label
+  double value = 0;
+  Kind kind = Kind::kRatio;
+};
+using AnalysisRows = std::vector<AnalysisRow>;
+
+// Names of the analyses that apply to `mesh` ("smoothness": any mesh with an
+// interior edge; "hnet": pure quad meshes).
+std::set<std::string> ApplicableAnalyses(const Mesh& mesh);
+
+// The rows of the analyses in `names` that apply to `mesh`, in file units.
+AnalysisRows Analyse(const Mesh& mesh, const std::set<std::string>& names);
+
+// Adds every row to `json` (lengths also as "<key>_relative" = value / scale).
+void AnalysisToJson(const AnalysisRows& rows, double scale, nlohmann::json& json);
+
+// Table rows in the style of FormatMetrics (problems/report.h); with `after`,
+// before and after side by side (matched by key).
+std::string FormatAnalysis(const AnalysisRows& before, const AnalysisRows* after, double scale);
+
+}  // namespace archgeo

@@ -1,0 +1,90 @@
+// archgeo — the interface every problem builder implements.
+//
+// `archgeo solve` is the same for every problem (problems/run.cpp): stage the
+// outputs, read the mesh and the reference, measure, move to the canonical
+// frame (mesh/similarity.h), solve, measure again, write. A builder supplies
+// the parts that differ: its own spec keys (terms and options), the check that
+// the input suits it, the optimisation itself, and any extra output files.
+// Builders know nothing of file formats: they get meshes and paths to write.
+//
+// To add a problem: implement Builder in problems/<name>.cpp, declare its
+// factory in problems/builders.h and add it to the table in builders.cpp.
+#pragma once
+
+#include <array>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+#include <yaml-cpp/yaml.h>
+
+#include "mesh/surface_mesh.h"
+#include "problems/progress.h"
+#include "problems/solver_options.h"
+#include "problems/spec_reader.h"
+
+namespace archgeo {
+
+class ReferenceSurface;
+
+// What a builder's Solve gets besides the mesh.
+struct SolveContext {
+  const ReferenceSurface* reference = nullptr;  // in the canonical frame of the mesh
+  std::vector<bool> fixed;                      // per vertex index: hard-fixed
+  SolverSettings solver;
+  ProgressSink progress;  // may be empty
+};
+
+// What a builder's Solve reports. The generic run adds timing of its own,
+// the metrics before and after, and the settings.
+struct SolveOutcome {
+  bool usable = true;   // false: Ceres found no usable solution (exit 3, nothing written)
+  std::string message;  // Ceres' message when not usable
+  int variables = 0, residuals = 0;
+  int outer_iterations = 0, inner_iterations = 0;
+  // ½ Σ w r² per term at the output (last linearisation) and "total",
+  // in the canonical frame (unit mean edge length).
+  std::map<std::string, double> objective;
+  // Seconds spent in parts of the solve ("ceres", "linear_solver", ...).
+  std::map<std::string, double> seconds;
+  nlohmann::json details = nlohmann::json::object();  // builder-specific report entries
+  std::string headline;  // one or more lines for the terminal, ending in '\n'
+};
+
+using FaceColors = std::vector<std::array<unsigned char, 3>>;
+
+class Builder {
+ public:
+  virtual ~Builder() = default;
+
+  // Top-level spec keys this builder reads besides the common ones (mesh,
+  // reference, problem, fixed, solver, output, multiresolution).
+  virtual std::set<std::string> Keys() const = 0;
+  // Extra `output.<key>: PATH` entries this builder writes.
+  virtual std::set<std::string> OutputKeys() const { return {}; }
+  // Reads the builder's keys from the spec's root mapping (all optional;
+  // absent keys keep the documented defaults). Throws InputError.
+  virtual void Read(const SpecReader& reader, const YAML::Node& root) = 0;
+  // The settings in effect, for the report.
+  virtual nlohmann::json SettingsJson() const = 0;
+  // Throws InputError(path, 0, "mesh", ...) if the builder cannot work on `input`.
+  virtual void CheckInput(const Mesh& input, const std::string& path) const = 0;
+  // Optimises `mesh` in place; `mesh` is in the canonical frame (unit mean
+  // edge length) and may carry nothing but positions.
+  virtual SolveOutcome Solve(Mesh& mesh, const SolveContext& context) const = 0;
+  // Analyses the report shows before and after (see problems/analysis.h):
+  // "planarity" (always), "smoothness", "hnet".
+  virtual std::set<std::string> Analyses() const { return {}; }
+  // Per-face colours of the output mesh (PLY); empty: the planarity colours.
+  virtual FaceColors Colors(const Mesh& output, double color_max) const { return {}; }
+  // Writes the extra outputs: `temporary` maps each OutputKeys() entry the
+  // spec set to the staged file to write (committed by the caller). `output`
+  // is in file units. May add entries to `report`.
+  virtual void WriteOutputs(const Mesh& output, const std::map<std::string, std::string>& temporary,
+                            nlohmann::json& report) const {}
+};
+
+}  // namespace archgeo
