@@ -11,15 +11,13 @@
 #include <cstdio>
 #include <memory>
 
-#include "energies/anchor.h"
-#include "energies/boundary_proximity.h"
 #include "energies/face_planarity.h"
 #include "energies/fairness.h"
 #include "energies/pq_diagonal.h"
-#include "energies/proximity.h"
 #include "mesh/metrics.h"
 #include "mesh/reference.h"
 #include "mesh/topology.h"
+#include "problems/common_terms.h"
 #include "problems/tolerance_band.h"
 
 namespace archgeo {
@@ -115,44 +113,10 @@ Setup MakeSetup(Mesh& mesh, const PlanarQuadsSettings& s) {
   return setup;
 }
 
-// Closest points and their tangent planes/lines for every vertex.
-struct Projection {
-  std::vector<Vec3> point, direction;  // direction: normal (surface) or tangent (boundary)
-  std::vector<bool> on_boundary_curve;
-};
-
-Projection Project(const Mesh& mesh, const ReferenceSurface& reference,
-                   const std::vector<bool>& boundary) {
-  Projection p;
-  const size_t n = mesh.number_of_vertices();
-  p.point.resize(n);
-  p.direction.resize(n);
-  p.on_boundary_curve.assign(n, false);
-  const bool curves = reference.HasBoundary();
-  for (VertexIndex v : mesh.vertices()) {
-    const Vec3 x = ToVec3(mesh.point(v));
-    if (curves && boundary[v.idx()]) {
-      const auto c = reference.ClosestOnBoundary(x);
-      p.point[v.idx()] = c->point;
-      p.direction[v.idx()] = c->tangent;
-      p.on_boundary_curve[v.idx()] = true;
-    } else {
-      const auto c = reference.Closest(x);
-      p.point[v.idx()] = c.point;
-      p.direction[v.idx()] = c.normal;
-    }
-  }
-  return p;
-}
-
-ceres::LossFunction* Weight(double w) {
-  return new ceres::ScaledLoss(nullptr, w, ceres::TAKE_OWNERSHIP);
-}
-
 // One Ceres problem for the current linearisation; residual ids per term.
 struct Built {
   std::unique_ptr<ceres::Problem> problem;
-  std::map<std::string, std::vector<ceres::ResidualBlockId>> terms;
+  TermBlocks terms;
   double weight_max = 0;
 };
 
@@ -188,40 +152,19 @@ Built Build(Mesh& mesh, Setup& setup, const Projection& proj, const TermWeights&
     }
     problem.SetManifold(n, new ceres::SphereManifold<3>());
   }
-  for (VertexIndex v : mesh.vertices()) {
-    if (mesh.is_isolated(v)) continue;
-    const size_t i = v.idx();
-    if (proj.on_boundary_curve[i]) {
-      if (w.boundary_proximity > 0) {
-        b.terms["boundary_proximity"].push_back(problem.AddResidualBlock(
-            MakeBoundaryProximity(proj.point[i].data(), proj.direction[i].data(), 1.0),
-            Weight(w.boundary_proximity), pos(v)));
-      }
-    } else if (w.proximity > 0) {
-      b.terms["proximity"].push_back(problem.AddResidualBlock(
-          MakeProximity(proj.point[i].data(), proj.direction[i].data(), 1.0), Weight(w.proximity),
-          pos(v)));
-    }
-    if (w.proximity_point > 0 && (w.proximity > 0 || w.boundary_proximity > 0)) {
-      b.terms["proximity_point"].push_back(problem.AddResidualBlock(
-          MakeAnchor(proj.point[i].data(), 1.0), Weight(w.proximity_point), pos(v)));
-    }
-    if (w.anchor > 0) {
-      b.terms["anchor"].push_back(problem.AddResidualBlock(
-          MakeAnchor(setup.original[i].data(), 1.0), Weight(w.anchor), pos(v)));
-    }
-  }
+  ProximityWeights pw;
+  pw.proximity = w.proximity;
+  pw.proximity_point = w.proximity_point;
+  pw.boundary_proximity = w.boundary_proximity;
+  pw.anchor = w.anchor;
+  AddProximityTerms(problem, mesh, proj, setup.original, pw, b.terms);
   for (size_t t = 0; t < setup.triples.size(); ++t) {
     const auto& tr = setup.triples[t];
     b.terms["fairness"].push_back(problem.AddResidualBlock(
         MakeFairness(setup.triple_target[t].data(), 1.0), Weight(w.fairness), pos(tr[0]),
         pos(tr[1]), pos(tr[2])));
   }
-  for (VertexIndex v : mesh.vertices()) {
-    if (setup.fixed[v.idx()] && problem.HasParameterBlock(pos(v))) {
-      problem.SetParameterBlockConstant(pos(v));
-    }
-  }
+  FixVertices(problem, mesh, setup.fixed);
   return b;
 }
 
@@ -253,14 +196,6 @@ class IterationWatch : public ceres::IterationCallback {
   const ProgressSink& sink_;
   int outer_;
 };
-
-double EvaluateCost(ceres::Problem& problem, const std::vector<ceres::ResidualBlockId>* blocks) {
-  ceres::Problem::EvaluateOptions options;
-  if (blocks) options.residual_blocks = *blocks;
-  double cost = 0;
-  problem.Evaluate(options, &cost, nullptr, nullptr, nullptr);
-  return cost;
-}
 
 }  // namespace
 
@@ -346,12 +281,7 @@ PlanarQuadsResult SolvePlanarQuads(Mesh& mesh, const ReferenceSurface& reference
     }
   }
 
-  if (built.problem) {
-    for (const auto& [name, ids] : built.terms) {
-      result.objective[name] = EvaluateCost(*built.problem, &ids);
-    }
-    result.objective["total"] = EvaluateCost(*built.problem, nullptr);
-  }
+  if (built.problem) result.objective = TermObjective(*built.problem, built.terms);
   return result;
 }
 

@@ -213,7 +213,6 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   rep["fixed"] = spec.fixed;
   rep["solver"] = SolverJson(spec.solver);
   rep["blas"] = BlasLibrary();
-  for (const auto& [key, value] : solved.details.items()) rep[key] = value;
   if (!levels.empty()) {
     for (const auto& [key, value] : levels.back()["details"].items()) rep[key] = value;
   }
