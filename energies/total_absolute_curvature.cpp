@@ -1,0 +1,83 @@
+#include "energies/total_absolute_curvature.h"
+
+#include <cmath>
+
+#include <ceres/dynamic_autodiff_cost_function.h>
+#include <glog/logging.h>
+
+namespace archgeo {
+namespace {
+
+// Jet size of the dynamic autodiff: 8 of the 3(k + 1) parameters per pass.
+constexpr int kStride = 8;
+
+int MinValence(bool closed) { return closed ? 3 : 2; }
+
+}  // namespace
+
+double TotalAbsoluteCurvatureIrlsWeight(double lambda, double inv_length,
+                                        double epsilon) {
+  CHECK(std::isfinite(lambda))
+      << "TotalAbsoluteCurvatureIrlsWeight: non-finite lambda";
+  CHECK(std::isfinite(inv_length) && inv_length > 0.0)
+      << "TotalAbsoluteCurvatureIrlsWeight: inv_length must be finite and > 0,"
+         " got "
+      << inv_length;
+  CHECK(std::isfinite(epsilon) && epsilon > 0.0)
+      << "TotalAbsoluteCurvatureIrlsWeight: epsilon must be finite and > 0, got "
+      << epsilon;
+  return std::abs(lambda) * inv_length + epsilon;
+}
+
+ceres::CostFunction* MakeTotalAbsoluteCurvature(
+    int valence, bool closed, double inv_length, double omega1, double omega2,
+    TotalAbsoluteCurvature** functor) {
+  CHECK_GE(valence, MinValence(closed))
+      << "MakeTotalAbsoluteCurvature: valence too small (closed = " << closed
+      << ")";
+  CHECK(std::isfinite(inv_length) && inv_length > 0.0)
+      << "MakeTotalAbsoluteCurvature: inv_length must be finite and > 0, got "
+      << inv_length;
+  CHECK(std::isfinite(omega1) && omega1 > 0.0 && std::isfinite(omega2) &&
+        omega2 > 0.0)
+      << "MakeTotalAbsoluteCurvature: omegas must be finite and > 0, got "
+      << omega1 << ", " << omega2;
+  auto* f =
+      new TotalAbsoluteCurvature(valence, closed, inv_length, omega1, omega2);
+  if (functor != nullptr) *functor = f;
+  auto* cost =
+      new ceres::DynamicAutoDiffCostFunction<TotalAbsoluteCurvature, kStride>(
+          f);
+  for (int i = 0; i <= valence; ++i) cost->AddParameterBlock(3);
+  cost->SetNumResiduals(2);
+  return cost;
+}
+
+VertexShapeOperator EvaluateVertexShapeOperator(
+    const double* v, const std::vector<const double*>& ring, bool closed) {
+  CHECK(v != nullptr);
+  const int k = static_cast<int>(ring.size());
+  CHECK_GE(k, MinValence(closed))
+      << "EvaluateVertexShapeOperator: one-ring too small (closed = " << closed
+      << ")";
+  double mean = 0.0;
+  for (const double* w : ring) {
+    CHECK(w != nullptr);
+    mean += std::sqrt((w[0] - v[0]) * (w[0] - v[0]) +
+                      (w[1] - v[1]) * (w[1] - v[1]) +
+                      (w[2] - v[2]) * (w[2] - v[2]));
+  }
+  mean /= k;
+  const double length = mean > 0.0 && std::isfinite(mean) ? mean : 1.0;
+  VertexShapeOperator result;
+  TangentialShapeOperator<double>(v, ring.data(), k, closed, 1.0 / length,
+                                  /*gap_epsilon=*/0.0, &result.shape,
+                                  &result.normal, &result.lambda1,
+                                  &result.lambda2);
+  result.shape *= length;
+  result.lambda1 *= length;
+  result.lambda2 *= length;
+  return result;
+}
+
+}  // namespace archgeo
