@@ -2,6 +2,9 @@
 
 #include <cstdio>
 
+#include "mesh/hnet.h"
+#include "mesh/smoothness_metrics.h"
+
 namespace archgeo {
 namespace {
 
@@ -31,15 +34,58 @@ std::string Cell(const AnalysisRow& row, double scale) {
   return buf;
 }
 
+bool PureQuad(const Mesh& mesh) {
+  if (mesh.number_of_faces() == 0) return false;
+  for (FaceIndex f : mesh.faces()) {
+    if (mesh.degree(f) != 4) return false;
+  }
+  return true;
+}
+
+void AddSmoothness(const Mesh& mesh, AnalysisRows& rows) {
+  using K = AnalysisRow::Kind;
+  const SmoothnessMetrics m = ComputeSmoothnessMetrics(mesh);
+  rows.push_back({"E", "E = Σ ℓ ℓ* (Pellis §3)", m.E, K::kLength});
+  rows.push_back({"E_prime", "E′ = Σ ℓ |α|", m.E_prime, K::kLength});
+  rows.push_back({"C", "C = Σ |λ1|+|λ2| of W′ (§5.3)", m.C, K::kLength});
+  rows.push_back({"max_edge_energy", "max ℓ |α| of an edge", m.max_edge_energy, K::kLength});
+  rows.push_back({"saddles", "saddle vertices", double(m.saddles), K::kCount});
+  rows.push_back({"bad_saddles", "bad saddles (§2.2)", double(m.bad_saddles), K::kCount});
+  rows.push_back({"self_intersecting_pyramids", "self-intersecting pyramids",
+                  double(m.self_intersecting_pyramids), K::kCount});
+}
+
+void AddHNet(const Mesh& mesh, AnalysisRows& rows) {
+  using K = AnalysisRow::Kind;
+  const HNet h = BuildHNet(mesh);
+  rows.push_back({"star_planarity_max", "A-net star planarity max", h.star_planarity_max,
+                  K::kRatio});
+  rows.push_back({"star_planarity_mean", "A-net star planarity mean", h.star_planarity_mean,
+                  K::kRatio});
+  rows.push_back({"alpha_max", "H-net kink α_max (Shi Table 1)", h.kink_max, K::kDegrees});
+  rows.push_back({"alpha_mean", "H-net kink α_mean", h.kink_mean, K::kDegrees});
+  rows.push_back({"W_min", "H-net shape parameter W min", h.W_min, K::kRatio});
+  rows.push_back({"W_max", "H-net shape parameter W max", h.W_max, K::kRatio});
+  rows.push_back({"odd_valence_vertices", "odd interior valences",
+                  double(h.odd_valence_vertices.size()), K::kCount});
+  rows.push_back({"not_equitwist_edges", "edges not equitwist (Remark 2)",
+                  double(h.not_equitwist_edges.size()), K::kCount});
+}
+
 }  // namespace
 
 std::set<std::string> ApplicableAnalyses(const Mesh& mesh) {
   std::set<std::string> names;
+  if (mesh.number_of_faces() > 1) names.insert("smoothness");
+  if (PureQuad(mesh)) names.insert("hnet");
   return names;
 }
 
 AnalysisRows Analyse(const Mesh& mesh, const std::set<std::string>& names) {
   AnalysisRows rows;
+  const std::set<std::string> applicable = ApplicableAnalyses(mesh);
+  if (names.count("smoothness") && applicable.count("smoothness")) AddSmoothness(mesh, rows);
+  if (names.count("hnet") && applicable.count("hnet")) AddHNet(mesh, rows);
   return rows;
 }
 

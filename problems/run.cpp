@@ -295,13 +295,17 @@ RunResult MeasureFiles(const std::string& mesh_path, const std::string& referenc
     const bool same = reference_mesh.number_of_vertices() == mesh.number_of_vertices();
     metrics = ComputeMetrics(mesh, &reference, same ? &reference_mesh : nullptr);
   }
+  const AnalysisRows analysis = Analyse(mesh, ApplicableAnalyses(mesh));
   run.report = {{"archgeo", "measure"},
                 {"mesh", mesh_path},
                 {"reference", reference_path},
                 {"units", {{"lengths", "file units"},
-                           {"relative", "file units / bounding-box diagonal of the mesh"}}},
+                           {"relative", "file units / bounding-box diagonal of the mesh"},
+                           {"angles", "degrees"}}},
                 {"metrics", MetricsToJson(metrics, metrics.bbox_diagonal)}};
-  run.summary = FormatMetrics(metrics, nullptr, metrics.bbox_diagonal);
+  AnalysisToJson(analysis, metrics.bbox_diagonal, run.report["metrics"]);
+  run.summary = FormatMetrics(metrics, nullptr, metrics.bbox_diagonal) +
+                FormatAnalysis(analysis, nullptr, metrics.bbox_diagonal);
   return run;
 }
 
