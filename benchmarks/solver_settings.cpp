@@ -17,6 +17,7 @@
 
 #include "benchmarks/bench_util.h"
 #include "energies/pq_diagonal.h"
+#include "problems/generate.h"
 
 namespace {
 
@@ -103,7 +104,11 @@ void PrintTable(const std::vector<Setting>& settings, const std::vector<bench::J
 std::string SmallGrid() {
   static const std::string path = [] {
     const std::string p = (bench::Scratch() / "grid_20x15.obj").string();
-    archgeo::GenerateRoofGrid(p, 20, 15, 0.05, 1.0, 1);
+    archgeo::GenerateOptions grid;
+    grid.nu = 20;
+    grid.nv = 15;
+    grid.noise = 0.05;
+    archgeo::GenerateSurface(p, grid);
     return p;
   }();
   return path;

@@ -9,7 +9,6 @@
 #include <fstream>
 #include <iomanip>
 
-#include "mesh/generators.h"
 #include "mesh/input_error.h"
 #include "mesh/io.h"
 #include "mesh/metrics.h"
@@ -306,26 +305,6 @@ RunResult MeasureFiles(const std::string& mesh_path, const std::string& referenc
   AnalysisToJson(analysis, metrics.bbox_diagonal, run.report["metrics"]);
   run.summary = FormatMetrics(metrics, nullptr, metrics.bbox_diagonal) +
                 FormatAnalysis(analysis, nullptr, metrics.bbox_diagonal);
-  return run;
-}
-
-RunResult GenerateRoofGrid(const std::string& path, int nu, int nv, double noise, double scale,
-                           unsigned seed) {
-  if (nu < 1 || nv < 1) throw InputError("--nu/--nv", 0, "", "grid sizes must be >= 1");
-  if (!(noise >= 0) || !(scale > 0)) {
-    throw InputError("--noise/--scale", 0, "", "noise must be >= 0 and scale > 0");
-  }
-  Mesh mesh = QuadGrid(nu, nv, RoofSurface, noise, seed);
-  for (VertexIndex v : mesh.vertices()) {
-    const Point& p = mesh.point(v);
-    mesh.point(v) = Point(scale * p.x(), scale * p.y(), scale * p.z());
-  }
-  StagedOutputs staged;
-  WriteMesh(staged.Stage(path), mesh);
-  staged.Commit();
-  RunResult run;
-  run.summary = "wrote " + path + ": " + std::to_string(mesh.number_of_vertices()) +
-                " vertices, " + std::to_string(mesh.number_of_faces()) + " quads\n";
   return run;
 }
 

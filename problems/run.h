@@ -25,9 +25,4 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress);
 // empty (displacement too when the vertex counts agree). Throws InputError.
 RunResult MeasureFiles(const std::string& mesh_path, const std::string& reference_path);
 
-// `archgeo generate`: a (nu x nv) quad grid on RoofSurface with vertex noise
-// (in mean edge lengths), scaled by `scale`, written atomically to `path`.
-RunResult GenerateRoofGrid(const std::string& path, int nu, int nv, double noise, double scale,
-                           unsigned seed);
-
 }  // namespace archgeo

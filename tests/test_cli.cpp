@@ -232,3 +232,48 @@ TEST_F(CliTest, BadCommandLine) {
 
 }  // namespace
 }  // namespace archgeo
+
+namespace archgeo {
+namespace {
+
+// `archgeo measure` recognises the hyperbolic paraboloid sampled on its
+// rulings as an exact A-net whose H-net is the surface itself [Shi 2014].
+TEST_F(CliTest, MeasureRecognisesTheHyperbolicParaboloidAsAnHNet) {
+  ASSERT_EQ(Archgeo("generate " + Path("hp.obj") + " --surface hyperbolic_paraboloid").code, 0);
+  const Outcome o = Archgeo("measure " + Path("hp.obj") + " --json");
+  ASSERT_EQ(o.code, 0) << o.output;
+  const nlohmann::json m = nlohmann::json::parse(o.output)["metrics"];
+  EXPECT_LE(m["star_planarity_max"].get<double>(), 1e-12);
+  EXPECT_LE(m["alpha_max"].get<double>(), 1e-6);
+  EXPECT_NEAR(m["W_min"].get<double>(), 1.0, 1e-12);
+  EXPECT_NEAR(m["W_max"].get<double>(), 1.0, 1e-12);
+  EXPECT_EQ(m["odd_valence_vertices"].get<double>(), 0);
+  // Pellis' analysis is printed for any mesh.
+  EXPECT_GT(m["E"].get<double>(), 0);
+  EXPECT_GE(m["E_prime"].get<double>(), m["E"].get<double>());
+}
+
+// `archgeo darboux` (Shi 2014, eq. 12; the map itself is checked in
+// test_hnet_geometry): writes a PLY patchwork with normals, isophote colours
+// and rulings, and refuses c = 1, a non-PLY output and a singular projective
+// map without writing anything.
+TEST_F(CliTest, DarbouxWritesAPatchworkAndRefusesBadInput) {
+  ASSERT_EQ(Archgeo("generate " + Path("hp.obj") + " --surface hyperbolic_paraboloid").code, 0);
+  const Outcome o = Archgeo("darboux " + Path("hp.obj") + " " + Path("d.ply") +
+                            " --c -1 --samples 4 --isophotes 10 --rulings " + Path("r.obj"));
+  ASSERT_EQ(o.code, 0) << o.output;
+  const std::string ply = Slurp(Path("d.ply"));
+  EXPECT_EQ(ply.rfind("ply\n", 0), 0u);
+  EXPECT_NE(ply.find("property float nx"), std::string::npos);
+  EXPECT_NE(ply.find("property uchar red"), std::string::npos);
+  EXPECT_TRUE(fs::exists(Path("r.obj")));
+  ExpectBadInput("darboux " + Path("hp.obj") + " " + Path("out.ply") + " --c 1", "c must be",
+                 {Path("hp.obj")});
+  ExpectBadInput("darboux " + Path("hp.obj") + " " + Path("out.json"), "PLY", {Path("hp.obj")});
+  ExpectBadInput("darboux " + Path("hp.obj") + " " + Path("out.ply") +
+                     " --projective 1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 0",
+                 "singular", {Path("hp.obj")});
+}
+
+}  // namespace
+}  // namespace archgeo

@@ -3,7 +3,10 @@
 //
 //   archgeo solve SPEC.yaml [--set KEY=VALUE ...] [--quiet]
 //   archgeo measure MESH [--reference REF] [--json]
-//   archgeo generate OUT [--nu N] [--nv N] [--noise X] [--scale S] [--seed K]
+//   archgeo generate OUT [--surface NAME] [--nu N] [--nv N] [--noise X] [--scale S]
+//                        [--seed K] [--refinement K] [--reference REF_OUT]
+//   archgeo darboux NET OUT.ply [--c C] [--minus] [--projective 16 numbers]
+//                        [--samples N] [--isophotes DEG] [--direction X Y Z] [--rulings R.obj]
 //
 // Exit codes: 0 success, 2 bad input (file, YAML, argument), 3 the solver
 // found no usable solution, 1 an internal error.
@@ -14,6 +17,8 @@
 #include <iostream>
 
 #include "mesh/input_error.h"
+#include "problems/darboux.h"
+#include "problems/generate.h"
 #include "problems/run.h"
 #include "problems/spec.h"
 
@@ -78,18 +83,53 @@ int main(int argc, char** argv) {
   measure->add_flag("--json", json, "Print the metrics as JSON");
 
   std::string grid_path;
-  int nu = 20, nv = 15;
-  double noise = 0.1, grid_scale = 1.0;
-  unsigned seed = 1;
+  archgeo::GenerateOptions gen;
   CLI::App* generate = app.add_subcommand(
-      "generate", "Write a non-planar quad grid on a doubly curved roof (demos, tests, scaling)");
+      "generate", "Write an analytic test mesh (demos, tests, paper reproductions)");
   generate->add_option("out", grid_path, "Output mesh (.obj, .off, .ply)")->required();
-  generate->add_option("--nu", nu, "Quads along u (x in [0, 2])")->capture_default_str();
-  generate->add_option("--nv", nv, "Quads along v (y in [0, 1.5])")->capture_default_str();
-  generate->add_option("--noise", noise, "Random vertex offsets, in mean edge lengths")
+  generate->add_option("--surface", gen.surface, "Surface:\n" + archgeo::GenerateSurfaceNames())
       ->capture_default_str();
-  generate->add_option("--scale", grid_scale, "Uniform scale (file units)")->capture_default_str();
-  generate->add_option("--seed", seed, "Random seed")->capture_default_str();
+  generate->add_option("--nu", gen.nu, "Resolution along u (roof: x in [0, 2])")
+      ->capture_default_str();
+  generate->add_option("--nv", gen.nv, "Resolution along v (roof: y in [0, 1.5])")
+      ->capture_default_str();
+  generate->add_option("--noise", gen.noise, "roof: random vertex offsets, in mean edge lengths")
+      ->capture_default_str();
+  generate->add_option("--scale", gen.scale, "Uniform scale (file units)")->capture_default_str();
+  generate->add_option("--seed", gen.seed, "roof: random seed")->capture_default_str();
+  generate->add_option("--refinement", gen.refinement,
+                       "Asymptotic nets: subdivide each parameter step K times")
+      ->capture_default_str();
+  generate->add_option("--reference", gen.reference,
+                       "Asymptotic nets: also write the analytic surface (a fine triangle mesh) "
+                       "here, for proximity");
+
+  std::string net_path, patchwork_path;
+  archgeo::DarbouxOptions darboux_options;
+  std::vector<double> direction;
+  CLI::App* darboux = app.add_subcommand(
+      "darboux",
+      "Map an H-net's patchwork by a Darboux transformation (Shi 2014, eq. 12): smooth "
+      "Darboux-cyclide patches, sampled as a PLY mesh");
+  darboux->add_option("net", net_path, "Quad net (e.g. an hnet output), OBJ/OFF/PLY")->required();
+  darboux->add_option("out", patchwork_path, "Output patchwork (.ply)")->required();
+  darboux->add_option("--c", darboux_options.c, "Centre (0,0,0,c) of the projection; c != 1")
+      ->capture_default_str();
+  darboux->add_flag("--minus", darboux_options.minus_branch,
+                    "Take the other root of eq. 12 (the image inverted in the sphere Λ)");
+  darboux->add_option("--projective", darboux_options.projective,
+                      "A projective map applied first: 16 numbers, the 4x4 matrix row by row, "
+                      "acting on (x, y, z, 1)")
+      ->expected(16);
+  darboux->add_option("--samples", darboux_options.samples, "n x n quads per patch")
+      ->capture_default_str();
+  darboux->add_option("--isophotes", darboux_options.isophote_band,
+                      "Colour isophote bands of this width (degrees; 0 = no colours)")
+      ->capture_default_str();
+  darboux->add_option("--direction", direction, "Isophote direction (3 numbers)")->expected(3);
+  darboux->add_flag("--ascii", darboux_options.ascii, "ASCII PLY");
+  darboux->add_option("--rulings", darboux_options.rulings,
+                      "Also write the mapped rulings (circular arcs) as OBJ polylines");
 
   try {
     app.parse(argc, argv);
@@ -101,7 +141,14 @@ int main(int argc, char** argv) {
   try {
     if (*solve) return Solve(spec_path, overrides, quiet);
     if (*generate) {
-      std::cout << archgeo::GenerateRoofGrid(grid_path, nu, nv, noise, grid_scale, seed).summary;
+      std::cout << archgeo::GenerateSurface(grid_path, gen).summary;
+      return 0;
+    }
+    if (*darboux) {
+      if (direction.size() == 3) {
+        darboux_options.isophote_direction = {direction[0], direction[1], direction[2]};
+      }
+      std::cout << archgeo::RunDarboux(net_path, patchwork_path, darboux_options).summary;
       return 0;
     }
     return Measure(mesh_path, reference_path, json);
