@@ -1,0 +1,60 @@
+// mesh/subdivision: the multiresolution step [Pellis 2019, §6]. Loop and
+// Catmull–Clark keep the old vertices' indices (run.cpp relies on it to keep
+// `fixed` vertex ids through the levels), counts follow the schemes' rules,
+// and the refined mesh stays close to the coarse one.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "mesh/generators.h"
+#include "mesh/smoothness_surfaces.h"
+#include "mesh/subdivision.h"
+#include "mesh/topology.h"
+
+namespace archgeo {
+namespace {
+
+Vec3 Flat(double u, double v) { return {2 * u, 1.5 * v, 0.0}; }
+
+TEST(Subdivision, LoopKeepsIndicesAndQuadruplesTriangles) {
+  const Mesh coarse = RevolutionTriangles(RevolutionProfile{}, 12, 4);
+  ASSERT_TRUE(CanSubdivide(coarse, "loop"));
+  const Mesh fine = Subdivide(coarse, "loop");
+  EXPECT_EQ(fine.number_of_faces(), 4 * coarse.number_of_faces());
+  EXPECT_EQ(fine.number_of_vertices(), coarse.number_of_vertices() + coarse.number_of_edges());
+  // Old vertex i is still vertex i: repositioned by the Loop mask, so close.
+  const double h = 2 * M_PI * 0.5 / 12;  // roughly the shortest edge
+  for (VertexIndex v : coarse.vertices()) {
+    const Point& a = coarse.point(v);
+    const Point& b = fine.point(VertexIndex(v.idx()));
+    EXPECT_LT(std::sqrt(CGAL::squared_distance(a, b)), 0.5 * h) << v.idx();
+  }
+  // Boundary vertices stay boundary vertices.
+  const std::vector<bool> before = BoundaryVertices(coarse), after = BoundaryVertices(fine);
+  for (size_t i = 0; i < before.size(); ++i) EXPECT_EQ(before[i], after[i]) << i;
+}
+
+TEST(Subdivision, CatmullClarkKeepsIndicesOnAFlatGrid) {
+  const Mesh coarse = QuadGrid(4, 3, Flat);
+  EXPECT_FALSE(CanSubdivide(coarse, "loop"));
+  ASSERT_TRUE(CanSubdivide(coarse, "catmull_clark"));
+  const Mesh fine = Subdivide(coarse, "catmull_clark");
+  EXPECT_EQ(fine.number_of_faces(), 4 * coarse.number_of_faces());
+  EXPECT_EQ(fine.number_of_vertices(), coarse.number_of_vertices() + coarse.number_of_edges() +
+                                           coarse.number_of_faces());
+  // An interior vertex of a regular flat grid is a fixed point of the mask.
+  const VertexIndex interior(1 * 5 + 1);
+  EXPECT_NEAR(fine.point(interior).x(), coarse.point(interior).x(), 1e-12);
+  EXPECT_NEAR(fine.point(interior).y(), coarse.point(interior).y(), 1e-12);
+  for (VertexIndex v : fine.vertices()) EXPECT_NEAR(fine.point(v).z(), 0.0, 1e-12);
+}
+
+TEST(Subdivision, Sqrt3AndDooSabinRefine) {
+  const Mesh tri = RevolutionTriangles(RevolutionProfile{}, 8, 3);
+  EXPECT_EQ(Subdivide(tri, "sqrt3").number_of_faces(), 3 * tri.number_of_faces());
+  const Mesh quads = QuadGrid(3, 3, Flat);
+  EXPECT_GT(Subdivide(quads, "doo_sabin").number_of_faces(), quads.number_of_faces());
+}
+
+}  // namespace
+}  // namespace archgeo
