@@ -22,6 +22,8 @@
 #include <ceres/sphere_manifold.h>
 #include <gtest/gtest.h>
 
+#include "tests/energy_checks.h"
+
 #include "energies/anet_planarity.h"
 #include "energies/fairness.h"
 #include "energies/frame_coplanarity.h"
@@ -32,11 +34,6 @@ namespace {
 
 constexpr unsigned kSeed = 20140301;
 constexpr int kNumSamples = 25;
-// GradientChecker: relative precision of autodiff vs numeric Jacobians.
-constexpr double kRelativePrecision = 1e-6;
-// Ridders' default first step (32 × 1e-2 × |x|) exceeds a unit star placed a
-// few units from the origin; start well inside it.
-constexpr double kRiddersRelativeInitialStep = 1e-4;
 // Agreement of residuals that are equal in exact arithmetic.
 constexpr double kTolerance = 1e-10;
 // A residual that must be clearly non-zero (perturbations are >= 0.05 L).
@@ -46,82 +43,13 @@ constexpr double kClearlyNonZero = 1e-3;
 constexpr double kDifferenceStep = 1e-5;
 constexpr double kNormalTolerance = 1e-7;
 
-using Vec3 = Eigen::Vector3d;
-using Blocks = std::vector<std::vector<double>>;
-
-Vec3 RandomVec(std::mt19937& rng, double scale) {
-  std::uniform_real_distribution<double> u(-scale, scale);
-  return Vec3(u(rng), u(rng), u(rng));
-}
-
-Eigen::Matrix3d RandomRotation(std::mt19937& rng) {
-  std::normal_distribution<double> g;
-  Eigen::Quaterniond q(g(rng), g(rng), g(rng), g(rng));
-  q.normalize();
-  return q.toRotationMatrix();
-}
-
-std::vector<double> ToBlock(const Vec3& x) { return {x[0], x[1], x[2]}; }
+using namespace energy_checks;
 
 Blocks ToBlocks(const std::vector<Vec3>& points) {
   Blocks b;
   for (const Vec3& p : points) b.push_back(ToBlock(p));
   return b;
 }
-
-std::vector<const double*> Pointers(const Blocks& blocks) {
-  std::vector<const double*> p;
-  for (const auto& b : blocks) p.push_back(b.data());
-  return p;
-}
-
-std::vector<double> Evaluate(const ceres::CostFunction& cost,
-                             const Blocks& blocks,
-                             Blocks* jacobians = nullptr) {
-  const auto& sizes = cost.parameter_block_sizes();
-  EXPECT_EQ(sizes.size(), blocks.size());
-  std::vector<double> residuals(cost.num_residuals());
-  Blocks jac(blocks.size());
-  std::vector<double*> jac_ptrs;
-  for (size_t i = 0; i < blocks.size(); ++i) {
-    EXPECT_EQ(static_cast<size_t>(sizes[i]), blocks[i].size());
-    jac[i].assign(cost.num_residuals() * sizes[i], 0.0);
-    jac_ptrs.push_back(jac[i].data());
-  }
-  const auto params = Pointers(blocks);
-  EXPECT_TRUE(cost.Evaluate(params.data(), residuals.data(), jac_ptrs.data()));
-  if (jacobians != nullptr) *jacobians = jac;
-  return residuals;
-}
-
-bool AllFinite(const std::vector<double>& x) {
-  for (double v : x) {
-    if (!std::isfinite(v)) return false;
-  }
-  return true;
-}
-
-void ExpectFiniteEverywhere(const ceres::CostFunction& cost,
-                            const Blocks& blocks) {
-  Blocks jacobians;
-  const std::vector<double> r = Evaluate(cost, blocks, &jacobians);
-  EXPECT_TRUE(AllFinite(r));
-  for (const auto& j : jacobians) EXPECT_TRUE(AllFinite(j));
-}
-
-void ExpectGradientsMatch(
-    const ceres::CostFunction& cost, const Blocks& blocks,
-    const std::vector<const ceres::Manifold*>* manifolds = nullptr) {
-  ceres::NumericDiffOptions options;
-  options.ridders_relative_initial_step_size = kRiddersRelativeInitialStep;
-  ceres::GradientChecker checker(&cost, manifolds, options);
-  ceres::GradientChecker::ProbeResults results;
-  const auto params = Pointers(blocks);
-  EXPECT_TRUE(checker.Probe(params.data(), kRelativePrecision, &results))
-      << results.error_log;
-}
-
-Vec3 AsVec(const std::vector<double>& r) { return Vec3(r[0], r[1], r[2]); }
 
 // A random vertex star: centre v, n neighbours in cyclic order around v at
 // distance ~1 (angles evenly spread and jittered), lying in a random plane

@@ -18,6 +18,8 @@
 #include <ceres/sphere_manifold.h>
 #include <gtest/gtest.h>
 
+#include "tests/energy_checks.h"
+
 #include "energies/anchor.h"
 #include "energies/boundary_proximity.h"
 #include "energies/face_planarity.h"
@@ -30,98 +32,19 @@ namespace {
 
 constexpr unsigned kSeed = 20100501;
 constexpr int kNumSamples = 25;
-// GradientChecker: relative precision of autodiff vs numeric Jacobians.
-constexpr double kRelativePrecision = 1e-6;
-// GradientChecker differentiates numerically with Ridders' method, whose
-// default first step (32 × 1e-2 × |x|) exceeds the size of a unit quad placed
-// a few units from the origin; start from a step well inside the quad.
-constexpr double kRiddersRelativeInitialStep = 1e-4;
 // Agreement of residuals that are equal in exact arithmetic.
 constexpr double kTolerance = 1e-10;
 // The same for nearly parallel diagonals (angle θ ≈ 3e-6): c = d1 × d2 loses
 // ~log10(|x|²/(θ L²)) digits to cancellation, |x| ≈ 15 the coordinates.
 constexpr double kIllConditionedTolerance = 1e-7;
 
-using Vec3 = Eigen::Vector3d;
-using Blocks = std::vector<std::vector<double>>;
-
-Vec3 RandomVec(std::mt19937& rng, double scale) {
-  std::uniform_real_distribution<double> u(-scale, scale);
-  return Vec3(u(rng), u(rng), u(rng));
-}
-
-Eigen::Matrix3d RandomRotation(std::mt19937& rng) {
-  std::normal_distribution<double> g;
-  Eigen::Quaterniond q(g(rng), g(rng), g(rng), g(rng));
-  q.normalize();
-  return q.toRotationMatrix();
-}
-
-std::vector<double> ToBlock(const Vec3& x) { return {x[0], x[1], x[2]}; }
-
-std::vector<const double*> Pointers(const Blocks& blocks) {
-  std::vector<const double*> p;
-  for (const auto& b : blocks) p.push_back(b.data());
-  return p;
-}
-
-// Evaluates `cost` with Jacobians; returns residuals, fills `jacobians`
-// (row-major, one per block). Expects Evaluate to succeed.
-std::vector<double> Evaluate(const ceres::CostFunction& cost,
-                             const Blocks& blocks,
-                             Blocks* jacobians = nullptr) {
-  const auto& sizes = cost.parameter_block_sizes();
-  EXPECT_EQ(sizes.size(), blocks.size());
-  std::vector<double> residuals(cost.num_residuals());
-  Blocks jac(blocks.size());
-  std::vector<double*> jac_ptrs;
-  for (size_t i = 0; i < blocks.size(); ++i) {
-    EXPECT_EQ(static_cast<size_t>(sizes[i]), blocks[i].size());
-    jac[i].assign(cost.num_residuals() * sizes[i], 0.0);
-    jac_ptrs.push_back(jac[i].data());
-  }
-  const auto params = Pointers(blocks);
-  EXPECT_TRUE(cost.Evaluate(params.data(), residuals.data(), jac_ptrs.data()));
-  if (jacobians != nullptr) *jacobians = jac;
-  return residuals;
-}
-
-bool AllFinite(const std::vector<double>& x) {
-  for (double v : x) {
-    if (!std::isfinite(v)) return false;
-  }
-  return true;
-}
-
-// (b): residuals and every Jacobian entry finite.
-void ExpectFiniteEverywhere(const ceres::CostFunction& cost,
-                            const Blocks& blocks) {
-  Blocks jacobians;
-  const std::vector<double> r = Evaluate(cost, blocks, &jacobians);
-  EXPECT_TRUE(AllFinite(r));
-  for (const auto& j : jacobians) EXPECT_TRUE(AllFinite(j));
-}
-
-// (a): autodiff against numeric differences.
-void ExpectGradientsMatch(
-    const ceres::CostFunction& cost, const Blocks& blocks,
-    const std::vector<const ceres::Manifold*>* manifolds = nullptr) {
-  ceres::NumericDiffOptions options;
-  options.ridders_relative_initial_step_size = kRiddersRelativeInitialStep;
-  ceres::GradientChecker checker(&cost, manifolds, options);
-  ceres::GradientChecker::ProbeResults results;
-  const auto params = Pointers(blocks);
-  EXPECT_TRUE(checker.Probe(params.data(), kRelativePrecision, &results))
-      << results.error_log;
-}
+using namespace energy_checks;
 
 double Norm(const std::vector<double>& r) {
   double s = 0.0;
   for (double v : r) s += v * v;
   return std::sqrt(s);
 }
-
-Vec3 AsVec(const std::vector<double>& r) { return Vec3(r[0], r[1], r[2]); }
 
 // A well-shaped, moderately non-planar quad (cyclic order), randomly placed.
 std::vector<Vec3> RandomQuad(std::mt19937& rng) {

@@ -21,6 +21,8 @@
 #include <ceres/sphere_manifold.h>
 #include <gtest/gtest.h>
 
+#include "tests/energy_checks.h"
+
 #include "energies/dihedral_energy.h"
 #include "energies/principal_symmetric.h"
 #include "energies/total_absolute_curvature.h"
@@ -30,11 +32,6 @@ namespace {
 
 constexpr unsigned kSeed = 20190731;
 constexpr int kNumSamples = 20;
-// GradientChecker: relative precision of autodiff vs numeric Jacobians.
-constexpr double kRelativePrecision = 1e-6;
-// Ridders' default first step (32 × 1e-2 × |x|) exceeds the size of a unit
-// triangle placed a few units from the origin; start well inside it.
-constexpr double kRiddersRelativeInitialStep = 1e-4;
 // Agreement of quantities that are equal in exact arithmetic.
 constexpr double kTolerance = 1e-10;
 // Relative effect of the normal regularisation, ½(ε_n L²/‖c‖)² ≈ 1e-12 for
@@ -43,78 +40,12 @@ constexpr double kRegularisedTolerance = 1e-9;
 // λ with vs without the half-gap regularisation ε_g L: differ by ≤ ε_g L.
 constexpr double kGapTolerance = 2e-6;
 
-using Vec3 = Eigen::Vector3d;
-using Blocks = std::vector<std::vector<double>>;
+using namespace energy_checks;
 using Manifolds = std::vector<const ceres::Manifold*>;
-
-Vec3 RandomVec(std::mt19937& rng, double scale) {
-  std::uniform_real_distribution<double> u(-scale, scale);
-  return Vec3(u(rng), u(rng), u(rng));
-}
 
 Vec3 RandomUnit(std::mt19937& rng) {
   std::normal_distribution<double> g;
   return Vec3(g(rng), g(rng), g(rng)).normalized();
-}
-
-Eigen::Matrix3d RandomRotation(std::mt19937& rng) {
-  std::normal_distribution<double> g;
-  Eigen::Quaterniond q(g(rng), g(rng), g(rng), g(rng));
-  q.normalize();
-  return q.toRotationMatrix();
-}
-
-std::vector<double> ToBlock(const Vec3& x) { return {x[0], x[1], x[2]}; }
-
-std::vector<const double*> Pointers(const Blocks& blocks) {
-  std::vector<const double*> p;
-  for (const auto& b : blocks) p.push_back(b.data());
-  return p;
-}
-
-// Evaluates `cost` with Jacobians; returns residuals, fills `jacobians`.
-std::vector<double> Evaluate(const ceres::CostFunction& cost,
-                             const Blocks& blocks,
-                             Blocks* jacobians = nullptr) {
-  const auto& sizes = cost.parameter_block_sizes();
-  EXPECT_EQ(sizes.size(), blocks.size());
-  std::vector<double> residuals(cost.num_residuals());
-  Blocks jac(blocks.size());
-  std::vector<double*> jac_ptrs;
-  for (size_t i = 0; i < blocks.size(); ++i) {
-    EXPECT_EQ(static_cast<size_t>(sizes[i]), blocks[i].size());
-    jac[i].assign(cost.num_residuals() * sizes[i], 0.0);
-    jac_ptrs.push_back(jac[i].data());
-  }
-  const auto params = Pointers(blocks);
-  EXPECT_TRUE(cost.Evaluate(params.data(), residuals.data(), jac_ptrs.data()));
-  if (jacobians != nullptr) *jacobians = jac;
-  return residuals;
-}
-
-bool AllFinite(const std::vector<double>& x) {
-  return std::all_of(x.begin(), x.end(),
-                     [](double v) { return std::isfinite(v); });
-}
-
-void ExpectFiniteEverywhere(const ceres::CostFunction& cost,
-                            const Blocks& blocks) {
-  Blocks jacobians;
-  const std::vector<double> r = Evaluate(cost, blocks, &jacobians);
-  EXPECT_TRUE(AllFinite(r));
-  for (const auto& j : jacobians) EXPECT_TRUE(AllFinite(j));
-}
-
-void ExpectGradientsMatch(const ceres::CostFunction& cost,
-                          const Blocks& blocks,
-                          const Manifolds* manifolds = nullptr) {
-  ceres::NumericDiffOptions options;
-  options.ridders_relative_initial_step_size = kRiddersRelativeInitialStep;
-  ceres::GradientChecker checker(&cost, manifolds, options);
-  ceres::GradientChecker::ProbeResults results;
-  const auto params = Pointers(blocks);
-  EXPECT_TRUE(checker.Probe(params.data(), kRelativePrecision, &results))
-      << results.error_log;
 }
 
 double SquaredNorm(const std::vector<double>& r) {
@@ -122,8 +53,6 @@ double SquaredNorm(const std::vector<double>& r) {
   for (double v : r) s += v * v;
   return s;
 }
-
-Vec3 AsVec(const std::vector<double>& r) { return Vec3(r[0], r[1], r[2]); }
 
 Vec3 UnitNormal(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
   return (p1 - p0).cross(p2 - p0).normalized();
