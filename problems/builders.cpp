@@ -11,6 +11,8 @@ using Factory = std::unique_ptr<Builder> (*)();
 const std::vector<std::pair<std::string, Factory>>& Table() {
   static const std::vector<std::pair<std::string, Factory>> table = {
       {"planar_quads", &MakePlanarQuadsBuilder},
+      {"hnet", &MakeHNetBuilder},
+      {"total_absolute_curvature", &MakeTotalAbsoluteCurvatureBuilder},
   };
   return table;
 }

@@ -17,5 +17,7 @@ std::unique_ptr<Builder> MakeBuilder(const std::string& name);
 
 // One factory per builder (defined next to each builder).
 std::unique_ptr<Builder> MakePlanarQuadsBuilder();
+std::unique_ptr<Builder> MakeHNetBuilder();
+std::unique_ptr<Builder> MakeTotalAbsoluteCurvatureBuilder();
 
 }  // namespace archgeo
