@@ -20,6 +20,7 @@
 #include "energies/fairness.h"
 #include "energies/frame_coplanarity.h"
 #include "mesh/input_error.h"
+#include "mesh/patchwork_io.h"
 #include "mesh/metrics.h"
 #include "mesh/reference.h"
 #include "mesh/topology.h"
@@ -332,55 +333,6 @@ HNetPipelineResult SolveHNetPipeline(Mesh& mesh, const ReferenceSurface& referen
   result.tolerance_met = tol <= 0 || result.hnet.star_planarity_max <= tol;
   if (built.problem) result.objective = TermObjective(*built.problem, built.terms);
   return result;
-}
-
-void WritePatchworkPly(const std::string& path, const SampledPatchwork& patchwork,
-                       const std::vector<std::array<unsigned char, 3>>& colors, bool ascii) {
-  CHECK(colors.empty() || colors.size() == patchwork.positions.size());
-  std::ofstream out(path, std::ios::binary);
-  out << "ply\nformat " << (ascii ? "ascii" : "binary_little_endian") << " 1.0\n"
-      << "comment archgeo H-net patchwork (rational bilinear patches, Shi 2014)\n"
-      << "element vertex " << patchwork.positions.size() << "\n"
-      << "property double x\nproperty double y\nproperty double z\n"
-      << "property float nx\nproperty float ny\nproperty float nz\n";
-  if (!colors.empty()) {
-    out << "property uchar red\nproperty uchar green\nproperty uchar blue\n";
-  }
-  out << "element face " << patchwork.triangles.size() << "\n"
-      << "property list uchar int vertex_indices\nend_header\n";
-  auto raw = [&](const auto& value) {  // little-endian hosts only (x86-64, arm64)
-    out.write(reinterpret_cast<const char*>(&value), sizeof value);
-  };
-  for (size_t i = 0; i < patchwork.positions.size(); ++i) {
-    const Vec3& p = patchwork.positions[i];
-    const Vec3& n = patchwork.normals[i];
-    if (ascii) {
-      char line[200];
-      std::snprintf(line, sizeof line, "%.17g %.17g %.17g %.9g %.9g %.9g", p[0], p[1], p[2],
-                    n[0], n[1], n[2]);
-      out << line;
-      if (!colors.empty()) {
-        out << " " << int(colors[i][0]) << " " << int(colors[i][1]) << " " << int(colors[i][2]);
-      }
-      out << "\n";
-    } else {
-      for (double c : p) raw(c);
-      for (double c : n) raw(float(c));
-      if (!colors.empty()) {
-        for (unsigned char c : colors[i]) raw(c);
-      }
-    }
-  }
-  for (const auto& t : patchwork.triangles) {
-    if (ascii) {
-      out << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
-    } else {
-      raw(static_cast<unsigned char>(3));
-      for (int k : t) raw(static_cast<int32_t>(k));
-    }
-  }
-  out.flush();
-  if (!out) throw InputError(path, 0, "output.patchwork", "cannot write the patchwork PLY");
 }
 
 nlohmann::json HNetJson(const HNet& h) {

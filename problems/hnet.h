@@ -169,13 +169,6 @@ HNetPipelineResult SolveHNetPipeline(Mesh& mesh, const ReferenceSurface& referen
                                      const HNetPipelineSettings& settings,
                                      const ProgressSink& progress);
 
-// Writes a sampled patchwork as a PLY triangle mesh with per-vertex normals
-// (nx, ny, nz) and, if `colors` is non-empty (one per position), per-vertex
-// colours (red, green, blue); binary little-endian unless `ascii`. Throws
-// InputError if the file cannot be written.
-void WritePatchworkPly(const std::string& path, const SampledPatchwork& patchwork,
-                       const std::vector<std::array<unsigned char, 3>>& colors, bool ascii);
-
 // The report entries of an H-net [Shi 2014, Table 1]: star_planarity_max/
 // mean, alpha_max, alpha_mean (degrees), W_min, W_max, lambda, counts of odd
 // valences, not-equitwist edges, closing edges, bipartite, mismatch_max.
