@@ -13,6 +13,8 @@ const std::vector<std::pair<std::string, Factory>>& Table() {
       {"planar_quads", &MakePlanarQuadsBuilder},
       {"hnet", &MakeHNetBuilder},
       {"total_absolute_curvature", &MakeTotalAbsoluteCurvatureBuilder},
+      {"smooth_mesh", &MakeSmoothMeshBuilder},
+      {"principal_symmetric", &MakePrincipalSymmetricBuilder},
   };
   return table;
 }

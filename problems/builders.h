@@ -19,5 +19,7 @@ std::unique_ptr<Builder> MakeBuilder(const std::string& name);
 std::unique_ptr<Builder> MakePlanarQuadsBuilder();
 std::unique_ptr<Builder> MakeHNetBuilder();
 std::unique_ptr<Builder> MakeTotalAbsoluteCurvatureBuilder();
+std::unique_ptr<Builder> MakeSmoothMeshBuilder();
+std::unique_ptr<Builder> MakePrincipalSymmetricBuilder();
 
 }  // namespace archgeo

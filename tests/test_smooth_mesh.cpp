@@ -1,0 +1,251 @@
+// The smooth_mesh and principal_symmetric builders end to end (ReadSpec +
+// RunSpec) on small meshes [Pellis 2019, §5.1, §5.2]: E drops on a noisy
+// saddle, planar quads stay planar in a hybrid mesh, handles move the
+// surface, the shipped principal-symmetric example meets its conditions, and
+// bad principal-edge files are refused with their line.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <random>
+#include <set>
+#include <string>
+
+#include "mesh/generators.h"
+#include "mesh/input_error.h"
+#include "mesh/io.h"
+#include "mesh/metrics.h"
+#include "mesh/smoothness_metrics.h"
+#include "problems/principal_symmetric.h"
+#include "problems/run.h"
+#include "problems/smooth_mesh.h"
+#include "problems/spec.h"
+#include "tests/scratch_dir.h"
+
+namespace archgeo {
+namespace {
+
+// δ_PQ,n of the quads of the hybrid mesh after the solve.
+constexpr double kPlanarityTolerance = 1e-3;
+// Principal-symmetric residual maxima after the solve (unit-free).
+constexpr double kConditionTolerance = 1e-4;
+// A handle must end within this fraction of its offset from its target.
+constexpr double kHandleTolerance = 0.1;
+
+Vec3 Saddle(double u, double v) {
+  const double x = 2 * u - 1, y = 2 * v - 1;
+  return {x, y, 0.4 * (x * x - y * y)};
+}
+
+// A (n x n)-quad grid on `surface` split along one diagonal, with noise.
+Mesh TriangleGrid(int n, const std::function<Vec3(double, double)>& surface, double noise) {
+  std::vector<VertexPair> unused;
+  return SplitQuads(QuadGrid(n, n, surface, noise, 7), false, "diagonals", &unused, "", "");
+}
+
+class SmoothMeshTest : public ScratchDirTest {
+ protected:
+  nlohmann::json Run(const std::string& spec_text, const std::vector<std::string>& overrides = {}) {
+    const ProblemSpec spec = ReadSpec(WriteFile("spec.yaml", spec_text), overrides);
+    const RunResult run = RunSpec(spec, {});
+    EXPECT_EQ(run.exit_code, 0) << run.summary;
+    return run.report;
+  }
+};
+
+TEST_F(SmoothMeshTest, LowersEOnANoisySaddleWithoutNewPyramids) {
+  const Mesh input = TriangleGrid(14, Saddle, 0.15);
+  WriteMesh(Path("saddle.obj"), input);
+  const nlohmann::json report = Run(
+      "mesh: saddle.obj\nproblem: smooth_mesh\nsolver: {outer_iterations: 10, max_iterations: 20}\n"
+      "output: {mesh: out.obj, report: out.json}\n");
+  const Mesh output = ReadMesh(Path("out.obj"));
+  const SmoothnessMetrics before = ComputeSmoothnessMetrics(input);
+  const SmoothnessMetrics after = ComputeSmoothnessMetrics(output);
+  EXPECT_LT(after.E, 0.9 * before.E) << "E " << before.E << " -> " << after.E;
+  EXPECT_LE(after.self_intersecting_pyramids, before.self_intersecting_pyramids);
+  EXPECT_GT(before.self_intersecting_pyramids, 0);
+  // The per-round log starts at the input and ends at the output (canonical units).
+  const nlohmann::json& rounds = report.at("rounds");
+  ASSERT_GE(rounds.size(), 2u);
+  EXPECT_EQ(rounds.front().at("round"), 0);
+  EXPECT_LT(rounds.back().at("E").get<double>(), rounds.front().at("E").get<double>());
+  // Close to the input: below a third of a mean edge length.
+  const Metrics m = ComputeMetrics(output, nullptr, &input);
+  EXPECT_LT(m.displacement_max, m.mean_edge_length / 3);
+}
+
+TEST_F(SmoothMeshTest, HybridMeshKeepsItsQuadsPlanar) {
+  // Planar quads in the middle columns of a translational surface, triangles
+  // (noisy) elsewhere.
+  const int n = 10;
+  const Mesh grid = QuadGrid(n, n, RoofSurface, 0.0, 1);
+  Mesh hybrid;
+  for (VertexIndex v : grid.vertices()) hybrid.add_vertex(grid.point(v));
+  std::set<int> on_quad;
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const VertexIndex a(j * (n + 1) + i), b(j * (n + 1) + i + 1), c((j + 1) * (n + 1) + i + 1),
+          d((j + 1) * (n + 1) + i);
+      if (i >= 4 && i < 6) {
+        hybrid.add_face(a, b, c, d);
+        for (VertexIndex v : {a, b, c, d}) on_quad.insert(int(v.idx()));
+      } else {
+        hybrid.add_face(a, b, c);
+        hybrid.add_face(a, c, d);
+      }
+    }
+  }
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> noise(-0.02, 0.02);
+  for (VertexIndex v : hybrid.vertices()) {
+    if (on_quad.count(int(v.idx()))) continue;
+    const Point p = hybrid.point(v);
+    hybrid.point(v) = Point(p.x() + noise(rng), p.y() + noise(rng), p.z() + noise(rng));
+  }
+  ASSERT_LT(ComputeMetrics(hybrid, nullptr, nullptr).pq_normalized_max, 1e-9);
+  WriteMesh(Path("hybrid.obj"), hybrid);
+  Run("mesh: hybrid.obj\nproblem: smooth_mesh\nsolver: {outer_iterations: 8, max_iterations: 20}\n"
+      "output: {mesh: out.obj}\n");
+  const Mesh output = ReadMesh(Path("out.obj"));
+  const Metrics m = ComputeMetrics(output, nullptr, nullptr);
+  EXPECT_EQ(m.quads, 2 * n);
+  EXPECT_LE(m.pq_normalized_max, kPlanarityTolerance);
+  EXPECT_LT(ComputeSmoothnessMetrics(output).E, 0.95 * ComputeSmoothnessMetrics(hybrid).E);
+}
+
+TEST_F(SmoothMeshTest, HandlesMoveTheSurface) {
+  const int n = 10;
+  const Mesh input = TriangleGrid(n, Saddle, 0.0);
+  WriteMesh(Path("saddle.obj"), input);
+  const int center = (n / 2) * (n + 1) + n / 2;
+  const double lift = 0.3;  // about 1.5 mean edge lengths
+  Run("mesh: saddle.obj\nproblem: smooth_mesh\nfixed: boundary\n"
+      "terms: {dihedral_energy: 1, fairness: 0.01, step: 0.1, handles: 100}\n"
+      "handles:\n  - {vertex: " + std::to_string(center) + ", offset: [0, 0, " +
+      std::to_string(lift) + "]}\n"
+      "solver: {outer_iterations: 10, max_iterations: 30}\noutput: {mesh: out.obj}\n");
+  const Mesh output = ReadMesh(Path("out.obj"));
+  const VertexIndex c(center);
+  EXPECT_NEAR(output.point(c).z() - input.point(c).z(), lift, kHandleTolerance * lift);
+  // Its neighbours follow (upwards), the fixed boundary does not move.
+  for (VertexIndex w : CGAL::vertices_around_target(output.halfedge(c), output)) {
+    EXPECT_GT(output.point(w).z() - input.point(w).z(), 0.2 * lift) << "vertex " << w.idx();
+  }
+  EXPECT_EQ(output.point(VertexIndex(0)), input.point(VertexIndex(0)));
+}
+
+TEST_F(SmoothMeshTest, BadHandleIsAnInputErrorWithItsLine) {
+  WriteMesh(Path("saddle.obj"), TriangleGrid(4, Saddle, 0.0));
+  const ProblemSpec spec = ReadSpec(WriteFile(
+      "spec.yaml", "mesh: saddle.obj\nproblem: smooth_mesh\nhandles:\n"
+                   "  - {vertex: 1, offset: [0, 0, 1]}\n  - {vertex: 999, position: [0, 0, 0]}\n"));
+  try {
+    RunSpec(spec, {});
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 5);
+    EXPECT_EQ(e.key(), "handles");
+  }
+}
+
+TEST_F(SmoothMeshTest, PrincipalSymmetricExampleMeetsItsConditions) {
+  const std::string example = std::string(ARCHGEO_SOURCE_DIR) + "/examples/principal_symmetric.yaml";
+  const ProblemSpec spec = ReadSpec(
+      example, {"output.mesh=" + Path("ps.obj"), "output.report=" + Path("ps.json"),
+                "output.principal_edges=" + Path("ps_edges.txt")});
+  const RunResult run = RunSpec(spec, {});
+  ASSERT_EQ(run.exit_code, 0) << run.summary;
+  const nlohmann::json& before = run.report.at("conditions_before");
+  const nlohmann::json& after = run.report.at("conditions_after");
+  EXPECT_GT(after.at("spheres").get<int>(), 0);
+  EXPECT_GT(after.at("strips").get<int>(), 0);
+  EXPECT_GT(after.at("saddle_terms").get<int>(), 0);
+  // The perturbed input violates the conditions; the output meets them.
+  EXPECT_GT(before.at("co_spherical_max").get<double>(), 10 * kConditionTolerance);
+  EXPECT_GT(before.at("strip_coplanarity_max").get<double>(), 10 * kConditionTolerance);
+  EXPECT_LE(after.at("co_spherical_max").get<double>(), kConditionTolerance);
+  EXPECT_LE(after.at("strip_coplanarity_max").get<double>(), kConditionTolerance);
+  EXPECT_EQ(after.at("saddle_violations").get<int>(), 0);
+  // The written labels are a valid edge file for the output.
+  const Mesh output = ReadMesh(Path("ps.obj"));
+  const std::vector<VertexPair> labels = ReadPrincipalEdges(Path("ps_edges.txt"), "", output);
+  EXPECT_EQ(int(labels.size()), run.report.at("principal_edges").get<int>());
+  EXPECT_EQ(CheckPrincipalStars(output, labels), "");
+}
+
+TEST_F(SmoothMeshTest, PrincipalSymmetricTorusIsPrincipalSymmetric) {
+  // Without noise the generated torus is principal-symmetric: the run meets
+  // the conditions while the mesh hardly moves (the initial spheres are fits
+  // with the vertex normal, so the conditions start slightly off).
+  std::vector<VertexPair> principal;
+  const Mesh torus = PrincipalSymmetricTorus(3, 1, 24, 12, 0.0, 1, &principal);
+  EXPECT_EQ(3 * principal.size(), torus.number_of_edges());
+  EXPECT_EQ(CheckPrincipalStars(torus, principal), "");
+  WriteMesh(Path("torus.obj"), torus);
+  {
+    std::ofstream out(Path("edges.txt"));
+    for (const VertexPair& e : principal) out << e.first << " " << e.second << "\n";
+  }
+  const nlohmann::json report =
+      Run("mesh: torus.obj\nproblem: principal_symmetric\nprincipal_edges: edges.txt\n"
+          "solver: {outer_iterations: 4}\n");
+  const nlohmann::json& after = report.at("conditions_after");
+  EXPECT_LE(after.at("co_spherical_max").get<double>(), kConditionTolerance);
+  EXPECT_LE(after.at("strip_coplanarity_max").get<double>(), kConditionTolerance);
+  EXPECT_EQ(after.at("saddle_violations").get<int>(), 0);
+  EXPECT_LT(report.at("after").at("displacement_max_relative").get<double>(), 1e-3);
+}
+
+TEST_F(SmoothMeshTest, SplitQuadsLabelsOneFamily) {
+  // Quads split by diagonals: with principal: first, a third of the edges
+  // (one quad family) are principal and every interior vertex has two opposite.
+  const Mesh quads = QuadGrid(6, 6, Saddle, 0.0, 1);
+  std::vector<VertexPair> first, diagonals;
+  const Mesh a = SplitQuads(quads, false, "first", &first, "", "");
+  const Mesh b = SplitQuads(quads, false, "diagonals", &diagonals, "", "");
+  EXPECT_EQ(first.size(), 6u * 7u);
+  EXPECT_EQ(diagonals.size(), 36u);
+  EXPECT_EQ(CheckPrincipalStars(a, first), "");
+  EXPECT_EQ(CheckPrincipalStars(b, diagonals), "");
+}
+
+TEST_F(SmoothMeshTest, BadPrincipalEdgeFilesAreRefusedWithTheirLine) {
+  std::vector<VertexPair> principal;
+  const Mesh torus = PrincipalSymmetricTorus(3, 1, 12, 8, 0.0, 1, &principal);
+  WriteMesh(Path("torus.obj"), torus);
+  struct Case {
+    std::string text;
+    int line;
+  };
+  const std::string good = std::to_string(principal[0].first) + " " +
+                           std::to_string(principal[0].second) + "\n";
+  const std::vector<Case> cases = {
+      {"# comment\n" + good + "1 x\n", 3},               // not a number
+      {good + "\n0\n", 3},                               // one index
+      {good + "0 1 2\n", 2},                             // three indices
+      {"0 96\n", 1},                                     // out of range (96 vertices)
+      {"0 50\n", 1},                                     // not an edge
+      {good + good, 2},                                  // listed twice
+      {"-1 2\n", 1},                                     // negative
+  };
+  for (const Case& c : cases) {
+    WriteFile("edges.txt", c.text);
+    try {
+      ReadPrincipalEdges(Path("edges.txt"), "principal_edges", torus);
+      ADD_FAILURE() << "accepted: " << c.text;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file(), Path("edges.txt")) << c.text;
+      EXPECT_EQ(e.line(), c.line) << c.text << " -> " << e.what();
+      EXPECT_EQ(e.key(), "principal_edges");
+    }
+  }
+  // Through the run: a star with a single principal edge is refused.
+  WriteFile("edges.txt", good);
+  const ProblemSpec spec = ReadSpec(WriteFile(
+      "spec.yaml", "mesh: torus.obj\nproblem: principal_symmetric\nprincipal_edges: edges.txt\n"));
+  EXPECT_THROW(RunSpec(spec, {}), InputError);
+}
+
+}  // namespace
+}  // namespace archgeo
