@@ -62,6 +62,13 @@ std::string FormatMetrics(const Metrics& before, const Metrics* after, double sc
                 before.vertices, before.faces, before.quads, before.triangles, before.polygons,
                 before.bbox_diagonal, before.aabb_diagonal, before.mean_edge_length, scale);
   out += line;
+  if (after && (after->vertices != before.vertices || after->faces != before.faces)) {
+    std::snprintf(line, sizeof line,
+                  "after (subdivided): %d vertices, %d faces (%d quads, %d triangles, %d polygons "
+                  "> 4 sides)\n",
+                  after->vertices, after->faces, after->quads, after->triangles, after->polygons);
+    out += line;
+  }
   out += Pad("metric", 32) + Pad(after ? "before" : "value", 26) + (after ? "after" : "") + "\n";
   for (const Row& row : Rows()) {
     const double b = before.*row.field;

@@ -152,6 +152,7 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   nlohmann::json levels = nlohmann::json::array();
   for (int level = 0; level <= spec.multiresolution_levels; ++level) {
     if (level > 0) {
+      const Mesh coarse = work;
       work = Subdivide(work, spec.multiresolution_scheme);
       // Boundary and corners are recomputed on the finer mesh; listed ids
       // keep their vertex (Loop and Catmull–Clark keep the old indices).
@@ -166,6 +167,14 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
       if (spec.fixed == "ids") {
         finer.assign(work.number_of_vertices(), false);
         for (size_t i = 0; i < fixed.size(); ++i) finer[i] = fixed[i];
+      }
+      // Fixed vertices keep their positions: the smoothing masks of the
+      // subdivision would move them (e.g. Loop shrinks a fixed boundary
+      // circle by (6 + 2 cos(2π/n))/8).
+      if (keeps_ids) {
+        for (VertexIndex v : coarse.vertices()) {
+          if (fixed[v.idx()]) work.point(v) = coarse.point(v);
+        }
       }
       fixed = finer;
       if (progress) {

@@ -12,7 +12,9 @@
 //   multiresolution:            [Pellis 2019, §6] solve, subdivide, solve again
 //     levels: 0                 number of subdivisions after the first solve
 //     scheme: loop              loop | sqrt3 (triangle meshes), catmull_clark |
-//                               doo_sabin (any polygon mesh)
+//                               doo_sabin (any polygon mesh). Loop and
+//                               Catmull–Clark keep vertex ids, and fixed
+//                               vertices keep their positions through them.
 //   solver:                     mapped onto ceres::Solver::Options
 //     linear_solver: sparse_normal_cholesky   | dense_qr | dense_normal_cholesky
 //                                             | cgnr | iterative_schur

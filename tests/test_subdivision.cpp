@@ -7,9 +7,13 @@
 #include <cmath>
 
 #include "mesh/generators.h"
+#include "mesh/io.h"
 #include "mesh/smoothness_surfaces.h"
 #include "mesh/subdivision.h"
 #include "mesh/topology.h"
+#include "problems/run.h"
+#include "problems/spec.h"
+#include "tests/scratch_dir.h"
 
 namespace archgeo {
 namespace {
@@ -54,6 +58,40 @@ TEST(Subdivision, Sqrt3AndDooSabinRefine) {
   EXPECT_EQ(Subdivide(tri, "sqrt3").number_of_faces(), 3 * tri.number_of_faces());
   const Mesh quads = QuadGrid(3, 3, Flat);
   EXPECT_GT(Subdivide(quads, "doo_sabin").number_of_faces(), quads.number_of_faces());
+}
+
+using MultiresolutionTest = ScratchDirTest;
+
+// One YAML pipeline: solve, Loop-subdivide, solve again; the fixed boundary
+// circles stay fixed on the finer level, and the report logs both levels.
+TEST_F(MultiresolutionTest, SolvesSubdividesAndSolvesAgain) {
+  const Mesh start = RevolutionTriangles(RevolutionProfile{}, 16, 4);
+  WriteMesh(Path("start.obj"), start);
+  const ProblemSpec spec = ReadSpec(WriteFile("spec.yaml",
+                                              "mesh: start.obj\n"
+                                              "problem: total_absolute_curvature\n"
+                                              "fixed: boundary\n"
+                                              "multiresolution: {levels: 1, scheme: loop}\n"
+                                              "solver: {max_iterations: 10, outer_iterations: 3}\n"
+                                              "output: {mesh: out.obj}\n"));
+  const RunResult run = RunSpec(spec, {});
+  ASSERT_EQ(run.exit_code, 0) << run.summary;
+  const auto& levels = run.report["multiresolution"]["levels"];
+  ASSERT_EQ(levels.size(), 2u);
+  EXPECT_EQ(levels[0]["vertices"].get<int>(), int(start.number_of_vertices()));
+  EXPECT_EQ(levels[1]["vertices"].get<int>(),
+            int(start.number_of_vertices() + start.number_of_edges()));
+  const Mesh out = ReadMesh(Path("out.obj"));
+  EXPECT_EQ(out.number_of_faces(), 4 * start.number_of_faces());
+  // The boundary circles (radius 1 at z = 0, 0.5 at z = 1) are fixed on both
+  // levels: the old boundary vertices (same ids after Loop) keep their
+  // positions although Loop's boundary mask would pull them inwards.
+  for (VertexIndex v : start.vertices()) {
+    if (!BoundaryVertices(start)[v.idx()]) continue;
+    const Point& p = out.point(v);
+    const double rho = std::hypot(p.x(), p.y());
+    EXPECT_NEAR(rho, p.z() < 0.5 ? 1.0 : 0.5, 1e-12) << v.idx();
+  }
 }
 
 }  // namespace
