@@ -93,9 +93,19 @@ ProblemSpec ReadSpec(const std::string& path, const std::vector<std::string>& ov
   }
   if (root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
   std::set<std::string> overridden;
+  const bool file_lists_terms = root.IsMap() && root["terms"].IsDefined();
   for (const std::string& o : overrides) {
     if (!root.IsMap()) break;  // reported below
-    overridden.insert(ApplyOverride(root, o));
+    const std::string key = ApplyOverride(root, o);
+    // Listing `terms` turns the unlisted terms off: a --set that creates the
+    // section would silently switch off every default term.
+    if (!file_lists_terms && key.rfind("terms.", 0) == 0) {
+      throw InputError("--set", 0, key,
+                       "the spec has no 'terms:' section, so this would turn every other term "
+                       "off; list the terms you want in the spec (its builder's header shows "
+                       "the defaults) and override them there");
+    }
+    overridden.insert(key);
   }
   const SpecReader r(path, overridden);
   if (!root.IsMap()) r.Fail(root, "", "expected a mapping of keys");

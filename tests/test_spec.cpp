@@ -143,3 +143,27 @@ TEST_F(SpecTest, BadOverridesNameTheOption) {
 
 }  // namespace
 }  // namespace archgeo
+
+namespace archgeo {
+namespace {
+
+// A --set that would create the `terms:` section (and so switch every
+// unlisted default term off) is refused; with a `terms:` section it works.
+TEST_F(SpecTest, SetOfATermNeedsATermsSection) {
+  const std::string bare = Write("mesh: a.obj\n");
+  try {
+    ReadSpec(bare, {"terms.anchor=1"});
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "--set");
+    EXPECT_EQ(e.key(), "terms.anchor");
+  }
+  const ProblemSpec s =
+      ReadSpec(Write("mesh: a.obj\nterms: {anchor: 0.5, pq_diagonal: 3}\n"), {"terms.anchor=1"});
+  const nlohmann::json terms = s.builder->SettingsJson()["terms"];
+  EXPECT_DOUBLE_EQ(terms["anchor"].get<double>(), 1.0);
+  EXPECT_DOUBLE_EQ(terms["pq_diagonal"].get<double>(), 3.0);
+}
+
+}  // namespace
+}  // namespace archgeo
