@@ -570,21 +570,14 @@ class HNetBuilder : public Builder {
     }
     if (const YAML::Node f = terms["fairness"]) {
       const YAML::Node extra =
-          r.Weight(f, "terms.fairness", &w.fairness, {"order", "relative_to_original"});
+          r.FairnessTerm(f, &w.fairness, &w.fairness_relative, {"order"});
       if (extra && extra["order"]) {
         w.fairness_order = r.Integer(extra["order"], "terms.fairness.order", 2, 3);
-      }
-      if (extra && extra["relative_to_original"]) {
-        w.fairness_relative =
-            r.Bool(extra["relative_to_original"], "terms.fairness.relative_to_original");
       }
     }
     if (const YAML::Node p = terms["proximity"]) {
       w.proximity_point = defaults.proximity_point;
-      const YAML::Node extra = r.Weight(p, "terms.proximity", &w.proximity, {"point_weight"});
-      if (extra && extra["point_weight"]) {
-        w.proximity_point = r.Number(extra["point_weight"], "terms.proximity.point_weight", 0, 1e12);
-      }
+      r.ProximityTerm(p, &w.proximity, &w.proximity_point);
     }
     if (terms["boundary_proximity"]) {
       r.Weight(terms["boundary_proximity"], "terms.boundary_proximity", &w.boundary_proximity);

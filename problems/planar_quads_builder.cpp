@@ -108,20 +108,11 @@ class PlanarQuadsBuilder : public Builder {
     weight("boundary_proximity", w.boundary_proximity);
     weight("anchor", w.anchor);
     if (const YAML::Node fair = terms["fairness"]) {
-      const YAML::Node extra =
-          r.Weight(fair, "terms.fairness", &w.fairness, {"relative_to_original"});
-      if (extra && extra["relative_to_original"]) {
-        w.fairness_relative =
-            r.Bool(extra["relative_to_original"], "terms.fairness.relative_to_original");
-      }
+      r.FairnessTerm(fair, &w.fairness, &w.fairness_relative);
     }
     if (const YAML::Node prox = terms["proximity"]) {
       w.proximity_point = TermWeights{}.proximity_point;
-      const YAML::Node extra = r.Weight(prox, "terms.proximity", &w.proximity, {"point_weight"});
-      if (extra && extra["point_weight"]) {
-        w.proximity_point =
-            r.Number(extra["point_weight"], "terms.proximity.point_weight", 0, 1e12);
-      }
+      r.ProximityTerm(prox, &w.proximity, &w.proximity_point);
     }
   }
 

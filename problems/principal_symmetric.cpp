@@ -822,20 +822,11 @@ class PrincipalSymmetricBuilder : public Builder {
     weight("step", w.step);
     weight("dihedral_energy", w.dihedral_energy);
     if (const YAML::Node fair = terms["fairness"]) {
-      const YAML::Node extra =
-          r.Weight(fair, "terms.fairness", &w.fairness, {"relative_to_original"});
-      if (extra && extra["relative_to_original"]) {
-        w.fairness_relative =
-            r.Bool(extra["relative_to_original"], "terms.fairness.relative_to_original");
-      }
+      r.FairnessTerm(fair, &w.fairness, &w.fairness_relative);
     }
     if (const YAML::Node prox = terms["proximity"]) {
       w.proximity_point = defaults.proximity_point;
-      const YAML::Node extra = r.Weight(prox, "terms.proximity", &w.proximity, {"point_weight"});
-      if (extra && extra["point_weight"]) {
-        w.proximity_point =
-            r.Number(extra["point_weight"], "terms.proximity.point_weight", 0, 1e12);
-      }
+      r.ProximityTerm(prox, &w.proximity, &w.proximity_point);
     }
   }
 

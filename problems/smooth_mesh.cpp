@@ -605,20 +605,11 @@ class SmoothMeshBuilder : public Builder {
     weight("handles", w.handles);
     if (const YAML::Node fair = terms["fairness"]) {
       w.fairness_relative = defaults.fairness_relative;
-      const YAML::Node extra =
-          r.Weight(fair, "terms.fairness", &w.fairness, {"relative_to_original"});
-      if (extra && extra["relative_to_original"]) {
-        w.fairness_relative =
-            r.Bool(extra["relative_to_original"], "terms.fairness.relative_to_original");
-      }
+      r.FairnessTerm(fair, &w.fairness, &w.fairness_relative);
     }
     if (const YAML::Node prox = terms["proximity"]) {
       w.proximity_point = defaults.proximity_point;
-      const YAML::Node extra = r.Weight(prox, "terms.proximity", &w.proximity, {"point_weight"});
-      if (extra && extra["point_weight"]) {
-        w.proximity_point =
-            r.Number(extra["point_weight"], "terms.proximity.point_weight", 0, 1e12);
-      }
+      r.ProximityTerm(prox, &w.proximity, &w.proximity_point);
     }
   }
 

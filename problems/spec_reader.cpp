@@ -115,6 +115,25 @@ YAML::Node SpecReader::Weight(const YAML::Node& node, const std::string& key, do
   return node;
 }
 
+void SpecReader::ProximityTerm(const YAML::Node& node, double* weight,
+                               double* point_weight) const {
+  const YAML::Node extra = Weight(node, "terms.proximity", weight, {"point_weight"});
+  if (extra && extra["point_weight"]) {
+    *point_weight = Number(extra["point_weight"], "terms.proximity.point_weight", 0, 1e12);
+  }
+}
+
+YAML::Node SpecReader::FairnessTerm(const YAML::Node& node, double* weight, bool* relative,
+                                    const std::set<std::string>& extra) const {
+  std::set<std::string> keys = extra;
+  keys.insert("relative_to_original");
+  const YAML::Node map = Weight(node, "terms.fairness", weight, keys);
+  if (map && map["relative_to_original"]) {
+    *relative = Bool(map["relative_to_original"], "terms.fairness.relative_to_original");
+  }
+  return map;
+}
+
 std::string SpecReader::Join(const std::string& path, const std::string& key) {
   return path.empty() ? key : path + "." + key;
 }

@@ -46,6 +46,15 @@ class SpecReader {
   YAML::Node Weight(const YAML::Node& node, const std::string& key, double* weight,
                     const std::set<std::string>& extra = {}) const;
 
+  // The shared term forms. `terms.proximity`: a weight, or {weight,
+  // point_weight} (*point_weight keeps its value unless given).
+  void ProximityTerm(const YAML::Node& node, double* weight, double* point_weight) const;
+  // `terms.fairness`: a weight, or {weight, relative_to_original, <extra>...}
+  // (*relative keeps its value unless given). Returns the mapping for the
+  // extra keys (undefined for a plain number).
+  YAML::Node FairnessTerm(const YAML::Node& node, double* weight, bool* relative,
+                          const std::set<std::string>& extra = {}) const;
+
   const std::string& file() const { return file_; }
   bool Overridden(const std::string& key) const { return overridden_.count(key) > 0; }
 

@@ -481,11 +481,7 @@ class TotalAbsoluteCurvatureBuilder : public Builder {
       }
     }
     if (const YAML::Node prox = terms["proximity"]) {
-      const YAML::Node extra = r.Weight(prox, "terms.proximity", &w.proximity, {"point_weight"});
-      if (extra && extra["point_weight"]) {
-        w.proximity_point =
-            r.Number(extra["point_weight"], "terms.proximity.point_weight", 0, 1e12);
-      }
+      r.ProximityTerm(prox, &w.proximity, &w.proximity_point);
     }
   }
 
