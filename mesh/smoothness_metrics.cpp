@@ -402,4 +402,14 @@ std::vector<std::array<unsigned char, 3>> SmoothnessColors(const Mesh& mesh,
   return colors;
 }
 
+std::vector<std::array<unsigned char, 3>> BendingColors(const Mesh& mesh, double red_angle) {
+  double mean = 0;
+  for (EdgeIndex e : mesh.edges()) {
+    mean += std::sqrt(CGAL::squared_distance(mesh.point(mesh.vertex(e, 0)),
+                                             mesh.point(mesh.vertex(e, 1))));
+  }
+  mean /= std::max<size_t>(1, mesh.number_of_edges());
+  return SmoothnessColors(mesh, MeasureEdgeSmoothness(mesh, FaceNormals(mesh)), red_angle * mean);
+}
+
 }  // namespace archgeo

@@ -167,4 +167,8 @@ std::vector<std::array<unsigned char, 3>> SmoothnessColors(const Mesh& mesh,
                                                           const EdgeSmoothness& edges,
                                                           double red_at = 0.0);
 
+// SmoothnessColors with red at an edge of the mesh's mean length bent by
+// `red_angle` radians (red_at = red_angle × mean edge length).
+std::vector<std::array<unsigned char, 3>> BendingColors(const Mesh& mesh, double red_angle);
+
 }  // namespace archgeo

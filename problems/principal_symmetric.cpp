@@ -755,14 +755,7 @@ class PrincipalSymmetricBuilder : public Builder {
   std::set<std::string> Analyses() const override { return {"smoothness"}; }
 
   FaceColors Colors(const Mesh& output, double color_max) const override {
-    double mean = 0;
-    for (EdgeIndex e : output.edges()) {
-      mean += std::sqrt(CGAL::squared_distance(output.point(output.vertex(e, 0)),
-                                               output.point(output.vertex(e, 1))));
-    }
-    mean /= std::max<size_t>(1, output.number_of_edges());
-    return SmoothnessColors(output, MeasureEdgeSmoothness(output, FaceNormals(output)),
-                            color_max * mean);
+    return BendingColors(output, color_max);
   }
 
   void WriteOutputs(const Mesh& output, const std::map<std::string, std::string>& temporary,

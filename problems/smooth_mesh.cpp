@@ -576,14 +576,7 @@ class SmoothMeshBuilder : public Builder {
   // Per face the largest ℓ_e|α_e| of its edges (Fig. 7), red at color_max ×
   // the mean edge length (an edge of mean length bent by color_max radians).
   FaceColors Colors(const Mesh& output, double color_max) const override {
-    double mean = 0;
-    for (EdgeIndex e : output.edges()) {
-      mean += std::sqrt(CGAL::squared_distance(output.point(output.vertex(e, 0)),
-                                               output.point(output.vertex(e, 1))));
-    }
-    mean /= std::max<size_t>(1, output.number_of_edges());
-    const EdgeSmoothness edges = MeasureEdgeSmoothness(output, FaceNormals(output));
-    return SmoothnessColors(output, edges, color_max * mean);
+    return BendingColors(output, color_max);
   }
 
  private:
