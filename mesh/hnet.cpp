@@ -38,9 +38,10 @@ struct EdgeLayout {
   JoinDeterminants determinants;
 };
 
-// Vertex-star planarity of v: max distance of the neighbours from the
-// least-squares plane of {v} ∪ neighbours, over the mean edge length.
+}  // namespace
+
 double StarPlanarity(const Mesh& mesh, VertexIndex v) {
+  if (mesh.is_isolated(v)) return 0.0;
   std::vector<Eigen::Vector3d> neighbours;
   for (VertexIndex w : mesh.vertices_around_target(mesh.halfedge(v))) {
     neighbours.push_back(E(mesh.point(w)));
@@ -65,32 +66,7 @@ double StarPlanarity(const Mesh& mesh, VertexIndex v) {
   return mean_length > 0 ? max_distance / mean_length : 0.0;
 }
 
-// BFS 2-colouring of the vertex graph [Shi 2014, Remark 5].
-void ColourVertices(const Mesh& mesh, HNet& hnet) {
-  hnet.colour.assign(mesh.num_vertices(), -1);
-  for (VertexIndex root : mesh.vertices()) {
-    if (hnet.colour[root.idx()] >= 0) continue;
-    hnet.colour[root.idx()] = 0;
-    std::queue<VertexIndex> queue;
-    queue.push(root);
-    while (!queue.empty()) {
-      const VertexIndex v = queue.front();
-      queue.pop();
-      if (mesh.halfedge(v) == Mesh::null_halfedge()) continue;  // isolated vertex
-      for (VertexIndex w : mesh.vertices_around_target(mesh.halfedge(v))) {
-        if (hnet.colour[w.idx()] >= 0) continue;
-        hnet.colour[w.idx()] = 1 - hnet.colour[v.idx()];
-        queue.push(w);
-      }
-    }
-  }
-  for (EdgeIndex e : mesh.edges()) {
-    if (hnet.colour[mesh.vertex(e, 0).idx()] == hnet.colour[mesh.vertex(e, 1).idx()]) {
-      hnet.monochrome_edges.push_back(int(e.idx()));
-    }
-  }
-  hnet.bipartite = hnet.monochrome_edges.empty();
-}
+namespace {
 
 // Patch corner order c0..c3 of a quad with c0c2 the chosen diagonal (see HNet).
 std::array<int, 4> PatchVertices(const Mesh& mesh, const std::vector<int>& colour, FaceIndex f) {
@@ -265,7 +241,8 @@ HNet BuildHNet(const Mesh& mesh, const HNetOptions& options) {
   if (interior_vertices > 0) hnet.star_planarity_mean /= interior_vertices;
 
   // --- Diagonals from a 2-colouring [Shi 2014, Remark 5].
-  ColourVertices(mesh, hnet);
+  hnet.colour = TwoColouring(mesh, &hnet.monochrome_edges);  // [Shi 2014, Remark 5]
+  hnet.bipartite = hnet.monochrome_edges.empty();
   hnet.patch_vertices.resize(num_faces);
   for (FaceIndex f : mesh.faces()) hnet.patch_vertices[f.idx()] = PatchVertices(mesh, hnet.colour, f);
 

@@ -113,6 +113,11 @@ struct HNet {
   double W_min = 0, W_max = 0;
 };
 
+// Vertex-star planarity of v [Shi 2014, §3.2 step 1]: max distance of the
+// neighbours from the least-squares plane of {v} ∪ neighbours, over the mean
+// distance of the neighbours from v (0 for a vertex without neighbours).
+double StarPlanarity(const Mesh& mesh, VertexIndex v);
+
 // Builds the H-net of `mesh` (see the file comment). Throws InputError if the
 // mesh has no faces, is not pure quad, or options.start_face is not a face
 // index or options.kink_samples < 5. The other checks (odd valences,

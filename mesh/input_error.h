@@ -17,11 +17,12 @@ class InputError : public std::runtime_error {
   // `key` is a dotted YAML path or a command-line option ("" = none).
   InputError(std::string file, int line, std::string key, const std::string& message)
       : std::runtime_error(Format(file, line, key, message)),
-        file_(std::move(file)), line_(line), key_(std::move(key)) {}
+        file_(std::move(file)), line_(line), key_(std::move(key)), message_(message) {}
 
   const std::string& file() const { return file_; }
   int line() const { return line_; }
   const std::string& key() const { return key_; }
+  const std::string& message() const { return message_; }  // without file, line and key
 
  private:
   static std::string Format(const std::string& file, int line, const std::string& key,
@@ -34,6 +35,7 @@ class InputError : public std::runtime_error {
   std::string file_;
   int line_;
   std::string key_;
+  std::string message_;
 };
 
 }  // namespace archgeo

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <queue>
 
 #include <glog/logging.h>
 
@@ -95,6 +96,34 @@ std::vector<std::vector<VertexIndex>> MeshPolylines(const Mesh& mesh) {
     polylines.push_back(std::move(forward));
   }
   return polylines;
+}
+
+std::vector<int> TwoColouring(const Mesh& mesh, std::vector<int>* monochrome_edges) {
+  std::vector<int> colour(mesh.num_vertices(), -1);
+  for (VertexIndex root : mesh.vertices()) {
+    if (colour[root.idx()] >= 0) continue;
+    colour[root.idx()] = 0;
+    std::queue<VertexIndex> queue;
+    queue.push(root);
+    while (!queue.empty()) {
+      const VertexIndex v = queue.front();
+      queue.pop();
+      if (mesh.halfedge(v) == Mesh::null_halfedge()) continue;  // isolated vertex
+      for (VertexIndex w : mesh.vertices_around_target(mesh.halfedge(v))) {
+        if (colour[w.idx()] >= 0) continue;
+        colour[w.idx()] = 1 - colour[v.idx()];
+        queue.push(w);
+      }
+    }
+  }
+  if (monochrome_edges) {
+    for (EdgeIndex e : mesh.edges()) {
+      if (colour[mesh.vertex(e, 0).idx()] == colour[mesh.vertex(e, 1).idx()]) {
+        monochrome_edges->push_back(int(e.idx()));
+      }
+    }
+  }
+  return colour;
 }
 
 std::vector<std::array<VertexIndex, 3>> PolylineTriples(

@@ -22,6 +22,12 @@ std::vector<VertexIndex> Corners(const Mesh& mesh);
 // exactly one polyline. A closed polyline repeats its first vertex at the end.
 std::vector<std::vector<VertexIndex>> MeshPolylines(const Mesh& mesh);
 
+// BFS 2-colouring of the vertex graph: 0/1 per vertex index, each connected
+// component starting with colour 0 at its smallest vertex index (isolated
+// vertices: 0). Edges joining equal colours (an odd cycle) are appended to
+// `monochrome_edges` if it is non-null; the colouring is proper iff there are none.
+std::vector<int> TwoColouring(const Mesh& mesh, std::vector<int>* monochrome_edges = nullptr);
+
 // Consecutive vertex triples (u, v, w) along the polylines (second differences).
 std::vector<std::array<VertexIndex, 3>> PolylineTriples(
     const std::vector<std::vector<VertexIndex>>& polylines);

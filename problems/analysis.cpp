@@ -70,6 +70,8 @@ void AddHNet(const Mesh& mesh, AnalysisRows& rows) {
                   double(h.odd_valence_vertices.size()), K::kCount});
   rows.push_back({"not_equitwist_edges", "edges not equitwist (Remark 2)",
                   double(h.not_equitwist_edges.size()), K::kCount});
+  rows.push_back({"mismatch_max", "W mismatch max (eq. 7)", h.mismatch_max,
+                  K::kRatio});
 }
 
 }  // namespace

@@ -56,6 +56,20 @@ struct SolveOutcome {
 
 using FaceColors = std::vector<std::array<unsigned char, 3>>;
 
+// The net a builder optimises when that is not the input mesh itself (hnet:
+// a diagonal net of the input, mesh/diagonal_net.h). The run then measures,
+// solves and writes this net; displacements are measured from its vertices'
+// input positions, and without a `reference` the net (as derived) is its own
+// reference surface, as the input is otherwise (its boundary is the one the
+// boundary terms keep).
+struct WorkingNet {
+  bool derived = false;      // false: the builder works on the input itself
+  Mesh mesh;                 // the net, in file units (when derived)
+  std::vector<int> source;   // per net vertex: its input vertex index (when derived)
+  nlohmann::json details = nlohmann::json::object();  // the report's "net" entry (if not empty)
+  std::string headline;      // for the terminal ("" or lines ending in '\n')
+};
+
 class Builder {
  public:
   virtual ~Builder() = default;
@@ -72,6 +86,9 @@ class Builder {
   virtual nlohmann::json SettingsJson() const = 0;
   // Throws InputError(path, 0, "mesh", ...) if the builder cannot work on `input`.
   virtual void CheckInput(const Mesh& input, const std::string& path) const = 0;
+  // The net to optimise, from the input read from `path` (after CheckInput).
+  // Throws InputError. Default: the input itself.
+  virtual WorkingNet Net(const Mesh& input, const std::string& path) const { return {}; }
   // Optimises `mesh` in place; `mesh` is in the canonical frame (unit mean
   // edge length) and may carry nothing but positions.
   virtual SolveOutcome Solve(Mesh& mesh, const SolveContext& context) const = 0;

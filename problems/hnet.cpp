@@ -26,6 +26,7 @@
 #include "mesh/topology.h"
 #include "problems/builders.h"
 #include "problems/common_terms.h"
+#include "problems/hnet_net.h"
 
 namespace archgeo {
 namespace {
@@ -324,9 +325,26 @@ HNetPipelineResult SolveHNetPipeline(Mesh& mesh, const ReferenceSurface& referen
     }
   }
   // Steps 2 and 3, alternating; result.hnet is step 2 on the current vertices.
+  // A step-3 round that raises α_max is undone and ends the alternation: with
+  // closing edges whose W do not agree (non-simply-connected nets, holes) the
+  // frame terms can only be met by degenerating patches.
   for (int a = 0; a < settings.alternations; ++a) {
     const HNet fixed_weights = result.hnet;
+    const std::vector<Vec3> before = Positions(mesh);
     if (!round(3, &fixed_weights)) return result;
+    if (result.hnet.kink_max > fixed_weights.kink_max) {
+      for (VertexIndex v : mesh.vertices()) mesh.point(v) = ToPoint(before[v.idx()]);
+      result.hnet = fixed_weights;
+      result.log.back().undone = true;
+      if (progress) {
+        char line[160];
+        std::snprintf(line, sizeof line,
+                      "step 3 round %2d undone: α_max %.4f° > %.4f° before it; alternation ends",
+                      result.log.back().round, result.log.back().kink_max, fixed_weights.kink_max);
+        progress(line);
+      }
+      break;
+    }
     if (tol > 0 && !met()) scale *= settings.continuation_factor;
   }
   if (result.rounds == 0) result.hnet = hnet_now();
@@ -362,8 +380,12 @@ class HNetBuilder : public Builder {
     if (root["terms"]) ReadTerms(r, root["terms"]);
     if (const YAML::Node h = root["hnet"]) {
       r.CheckKeys(h, "hnet",
-                  {"alternations", "star_planarity", "continuation_factor", "start_face",
+                  {"net", "alternations", "star_planarity", "continuation_factor", "start_face",
                    "kink_samples"});
+      if (h["net"]) {
+        net_ = r.String(h["net"], "hnet.net", {"auto", "mesh", "diagonal_0", "diagonal_1"});
+        net_line_ = h["net"].Mark().line + 1;
+      }
       if (h["alternations"]) s_.alternations = r.Integer(h["alternations"], "hnet.alternations", 0, 1000);
       if (h["star_planarity"]) {
         s_.star_planarity = r.Number(h["star_planarity"], "hnet.star_planarity", 0, 1);
@@ -429,7 +451,8 @@ class HNetBuilder : public Builder {
               {"anchor", w.anchor},
               {"frame_coplanarity", w.frame_coplanarity}}},
             {"hnet",
-             {{"alternations", s_.alternations},
+             {{"net", net_},
+              {"alternations", s_.alternations},
               {"star_planarity", s_.star_planarity},
               {"continuation_factor", s_.continuation_factor},
               {"start_face", s_.hnet.start_face},
@@ -463,6 +486,17 @@ class HNetBuilder : public Builder {
     }
   }
 
+  WorkingNet Net(const Mesh& input, const std::string& path) const override {
+    WorkingNet net = ChooseHNetNet(input, path, net_, spec_file_, net_line_);
+    if (net.derived && s_.hnet.start_face >= int(net.mesh.number_of_faces())) {
+      throw InputError(spec_file_, start_face_line_, "hnet.start_face",
+                       "face " + std::to_string(s_.hnet.start_face) + " does not exist: the " +
+                           net.details.value("net", std::string()) + " net of " + path +
+                           " has " + std::to_string(net.mesh.number_of_faces()) + " faces");
+    }
+    return net;
+  }
+
   SolveOutcome Solve(Mesh& mesh, const SolveContext& context) const override {
     HNetPipelineSettings settings = s_;
     settings.fixed = context.fixed;
@@ -488,6 +522,7 @@ class HNetBuilder : public Builder {
                      {"cost", l.cost}, {"weight_scale", l.weight_scale},
                      {"star_planarity_max", l.star_planarity_max}, {"alpha_max", l.kink_max},
                      {"alpha_mean", l.kink_mean}, {"max_move_mean_edges", l.max_move},
+                     {"undone", l.undone},
                      {"seconds", l.seconds}});
     }
     out.details["rounds"] = log;
@@ -589,6 +624,8 @@ class HNetBuilder : public Builder {
   }
 
   HNetPipelineSettings s_;
+  std::string net_ = "auto";
+  int net_line_ = 0;
   int samples_ = 8;
   bool ascii_ = false;
   bool isophotes_ = true;

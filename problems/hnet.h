@@ -13,7 +13,12 @@
 //          the shape parameters of step 2 FIXED (energies/frame_coplanarity.h);
 //  steps 2 and 3 alternate `hnet.alternations` times, then a final step 2, so
 //  the weights reported and written belong to the final vertices (measuring
-//  the written net with mesh/hnet.h reproduces the reported kinks).
+//  the written net with mesh/hnet.h reproduces the reported kinks). A step-3
+//  round after which α_max is larger than before it is undone (vertices and
+//  H-net restored; "undone" in the round log) and ends the alternation: on
+//  nets that are not simply connected, or have holes, the propagated W can
+//  disagree across closing edges by factors of 2 (mismatch ~1), and the frame
+//  terms there are then met only by degenerate patches (α_max → 180°).
 // Every Ceres solve ("round") re-projects the vertices onto the reference
 // first. Step 1 runs rounds until the star planarity (HNet::star_planarity_max:
 // max distance of a neighbour from the star's least-squares plane over the
@@ -150,6 +155,7 @@ struct HNetRoundLog {
   double star_planarity_max = 0, kink_max = 0, kink_mean = 0;  // after the round (H-net of step 2)
   double max_move = 0;     // mean edge lengths
   double seconds = 0;
+  bool undone = false;     // a step-3 round that raised α_max, reverted
 };
 
 struct HNetPipelineResult {

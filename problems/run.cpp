@@ -46,6 +46,26 @@ std::vector<bool> FixedVertices(const ProblemSpec& spec, const Mesh& mesh) {
   return fixed;
 }
 
+// Fixed input vertices (`fixed: ids`) as net vertices; every one must be on the net.
+std::vector<bool> OnNet(const ProblemSpec& spec, const std::vector<bool>& fixed_input,
+                        const WorkingNet& net) {
+  std::vector<bool> on_net(fixed_input.size(), false);
+  std::vector<bool> fixed(net.source.size(), false);
+  for (size_t i = 0; i < net.source.size(); ++i) {
+    fixed[i] = fixed_input[net.source[i]];
+    on_net[net.source[i]] = true;
+  }
+  for (size_t v = 0; v < fixed_input.size(); ++v) {
+    if (fixed_input[v] && !on_net[v]) {
+      throw InputError(spec.fixed_file, spec.fixed_line, "fixed",
+                       "vertex " + std::to_string(v) + " of " + spec.mesh +
+                           " is not a vertex of the net solved (" +
+                           net.details.value("net", std::string("derived net")) + ")");
+    }
+  }
+  return fixed;
+}
+
 nlohmann::json SolverJson(const SolverSettings& s) {
   return {{"linear_solver", s.linear_solver},   {"sparse_library", s.sparse_library},
           {"trust_region", s.trust_region},     {"preconditioner", s.preconditioner},
@@ -113,15 +133,18 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   for (const auto& [key, path] : spec.extra_outputs) extra_temporary[key] = staged.Stage(path);
 
   ReadInfo info;
-  const Mesh input = ReadMesh(spec.mesh, &info);
+  const Mesh read = ReadMesh(spec.mesh, &info);
+  builder.CheckInput(read, spec.mesh);
+  const WorkingNet net = builder.Net(read, spec.mesh);
+  const Mesh& input = net.derived ? net.mesh : read;
   const Mesh reference_mesh = spec.reference.empty() ? input : ReadMesh(spec.reference);
-  builder.CheckInput(input, spec.mesh);
   if (spec.multiresolution_levels > 0 && !CanSubdivide(input, spec.multiresolution_scheme)) {
     throw InputError(spec.spec_path, 0, "multiresolution.scheme",
                      spec.multiresolution_scheme + " subdivision needs a triangle mesh; " +
                          spec.mesh + " has other faces (use catmull_clark or doo_sabin)");
   }
-  std::vector<bool> fixed = FixedVertices(spec, input);
+  std::vector<bool> fixed = FixedVertices(spec, net.derived && spec.fixed == "ids" ? read : input);
+  if (net.derived && spec.fixed == "ids") fixed = OnNet(spec, fixed, net);
   const double read_seconds = Since(start);
 
   const auto setup_start = Clock::now();
@@ -210,8 +233,11 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   rep["reference"] = spec.reference.empty() ? spec.mesh : spec.reference;
   rep["problem"] = spec.problem;
   rep["input"] = {{"format", info.format}, {"reoriented_faces", info.reoriented_faces}};
+  if (!net.details.empty()) rep["net"] = net.details;
   rep["units"] = {{"lengths", "file units"},
-                  {"relative", "file units / bounding-box diagonal of the input"},
+                  {"relative", net.derived ? "file units / bounding-box diagonal of the net "
+                                             "solved (before solving)"
+                                           : "file units / bounding-box diagonal of the input"},
                   {"bbox_diagonal", scale},
                   {"angles", "degrees"},
                   {"objective", "0.5 * sum_terms w * sum r^2, in the canonical frame (unit mean "
@@ -286,7 +312,7 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   char objective[128];
   std::snprintf(objective, sizeof objective, "objective (canonical frame): %.6e\n",
                 solved.objective.count("total") ? solved.objective.at("total") : 0.0);
-  run.summary = head + solved.headline + objective + FormatMetrics(before, &after, scale) +
+  run.summary = head + net.headline + solved.headline + objective + FormatMetrics(before, &after, scale) +
                 FormatAnalysis(extra_before, &extra_after, scale);
   return run;
 }

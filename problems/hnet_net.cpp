@@ -1,0 +1,113 @@
+// archgeo — which net the hnet builder optimises (see hnet_net.h).
+#include "problems/hnet_net.h"
+
+#include <cstdio>
+#include <optional>
+
+#include "mesh/diagonal_net.h"
+#include "mesh/hnet.h"
+#include "mesh/input_error.h"
+#include "mesh/topology.h"
+
+namespace archgeo {
+namespace {
+
+// Max and mean star planarity over the interior vertices; {−1, −1} if there
+// are none.
+struct Flatness {
+  double max = -1, mean = -1;
+};
+Flatness InteriorStarPlanarity(const Mesh& mesh) {
+  const std::vector<bool> boundary = BoundaryVertices(mesh);
+  Flatness f;
+  double sum = 0;
+  int count = 0;
+  for (VertexIndex v : mesh.vertices()) {
+    if (boundary[v.idx()] || mesh.is_isolated(v)) continue;
+    const double p = StarPlanarity(mesh, v);
+    f.max = std::max(f.max, p);
+    sum += p;
+    ++count;
+  }
+  if (count > 0) f.mean = sum / count;
+  return f;
+}
+
+nlohmann::json ToJson(const Flatness& f) {
+  return {{"star_planarity_max", f.max}, {"star_planarity_mean", f.mean}};
+}
+
+std::string Sci(double x) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%.3e", x);
+  return s;
+}
+
+}  // namespace
+
+WorkingNet ChooseHNetNet(const Mesh& input, const std::string& path, const std::string& choice,
+                         const std::string& spec_file, int spec_line) {
+  WorkingNet result;
+  if (choice == "mesh") return result;
+  nlohmann::json& d = result.details;
+  d["setting"] = choice;
+  const Flatness mesh_flat = InteriorStarPlanarity(input);
+  d["candidates"]["mesh"] = ToJson(mesh_flat);
+  std::optional<DiagonalNet> nets[2];
+  Flatness flat[2];
+  for (int colour = 0; colour < 2; ++colour) {
+    const std::string name = "diagonal_" + std::to_string(colour);
+    if (choice != "auto" && choice != name) continue;
+    try {
+      nets[colour] = MakeDiagonalNet(input, colour);
+      flat[colour] = InteriorStarPlanarity(nets[colour]->mesh);
+      d["candidates"][name] = ToJson(flat[colour]);
+      d["candidates"][name]["holes"] = nets[colour]->holes;
+    } catch (const InputError& e) {
+      if (choice != "auto") {
+        throw InputError(spec_file, spec_line, "hnet.net", path + ": " + e.message());
+      }
+      d["candidates"][name] = {{"unusable", e.message()}};
+    }
+  }
+  int chosen = -1;
+  if (choice == "auto") {
+    for (int colour = 0; colour < 2; ++colour) {
+      if (!nets[colour] || flat[colour].mean < 0) continue;
+      if (!(flat[colour].mean * kDiagonalGain < mesh_flat.mean)) continue;
+      const bool better = chosen < 0 || nets[colour]->holes < nets[chosen]->holes ||
+                          (nets[colour]->holes == nets[chosen]->holes &&
+                           flat[colour].mean < flat[chosen].mean);
+      if (better) chosen = colour;
+    }
+  } else {
+    chosen = choice == "diagonal_0" ? 0 : 1;
+  }
+  if (chosen < 0) {
+    d["net"] = "mesh";
+    result.headline = "net: the input mesh (mean interior star planarity " + Sci(mesh_flat.mean) +
+                      "; no diagonal net is " + std::to_string(int(kDiagonalGain)) +
+                      "x flatter)\n";
+    return result;
+  }
+  DiagonalNet& net = *nets[chosen];
+  const std::string name = "diagonal_" + std::to_string(chosen);
+  d["net"] = name;
+  d["vertices"] = net.mesh.number_of_vertices();
+  d["faces"] = net.mesh.number_of_faces();
+  d["holes"] = net.holes;
+  result.derived = true;
+  result.source = net.source;
+  result.mesh = std::move(net.mesh);
+  result.headline =
+      "net: the colour-" + std::to_string(chosen) + " diagonal net of " + path + " (" +
+      std::to_string(result.mesh.number_of_vertices()) + " vertices, " +
+      std::to_string(result.mesh.number_of_faces()) + " quads, " + std::to_string(net.holes) +
+      " holes)" + (choice == "auto" ? ", chosen by hnet.net: auto" : "") +
+      ": interior star planarity max " + Sci(flat[chosen].max) + ", mean " +
+      Sci(flat[chosen].mean) + " (the input's: max " + Sci(mesh_flat.max) + ", mean " +
+      Sci(mesh_flat.mean) + ")\n";
+  return result;
+}
+
+}  // namespace archgeo

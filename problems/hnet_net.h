@@ -1,0 +1,45 @@
+// archgeo — which net the hnet builder optimises: the input quad mesh or one
+// of its diagonal nets (mesh/diagonal_net.h).
+//
+// An A-net candidate may come as the quad mesh whose *diagonals* follow the
+// asymptotic directions (the way ArchGeo stores A-nets, e.g.
+// ../shared/data/dos_free_negshell_marc_anet.obj). Its own vertex stars are
+// then far from planar (0.145 of the edge length there) and flattening them
+// would have to turn the net's edges onto the asymptotic directions — a large
+// deformation; its diagonal net of the right colour is the A-net.
+//
+// `hnet.net`:
+//   mesh         the input itself;
+//   diagonal_0   the diagonal net on the vertices of colour 0 (the colour of
+//   diagonal_1   vertex 0, see TwoColouring in mesh/topology.h), or colour 1;
+//   auto         (default) a diagonal net whose mean interior star planarity
+//                (mesh/hnet.h) is below 1/kDiagonalGain of the input's, else
+//                the input. Of two such nets, the one with fewer holes (a
+//                hole is an other-colour vertex of valence ≠ 4: the other
+//                net keeps it as an even-valence vertex, which Theorem 4
+//                allows, where a hole breaks simple connectivity), then the
+//                flatter one. (The mean, not the max: the few stars at
+//                irregular vertices start further off-plane, e.g. 0.03 on
+//                the negshell's colour-0 net, whose mean is 1.7e-4.)
+// The choice and the three star planarities go to the report ("net") and the
+// terminal.
+#pragma once
+
+#include <string>
+
+#include "mesh/surface_mesh.h"
+#include "problems/builder.h"
+
+namespace archgeo {
+
+// auto picks a diagonal net only if its stars are this many times flatter.
+constexpr double kDiagonalGain = 10;
+
+// The net for `choice` (auto | mesh | diagonal_0 | diagonal_1) of the pure
+// quad mesh `input` read from `path`. Throws InputError (key hnet.net, file
+// `spec_file`, line `spec_line`) if an explicitly chosen diagonal net cannot be
+// built.
+WorkingNet ChooseHNetNet(const Mesh& input, const std::string& path, const std::string& choice,
+                         const std::string& spec_file, int spec_line);
+
+}  // namespace archgeo
