@@ -54,11 +54,13 @@
 //                     normals: a unit vertex normal per vertex and the
 //                     distances of its neighbours from its plane (Shi §3.2
 //                     (i)); quads: the n − 2 star quads of (ii) (the paper's
-//                     choice). Measured on the negshell A-net (stars up to
-//                     0.145 off-plane): normals reach 6e-5 in 6 rounds, quads
-//                     stall above 0.19 (their residual also shrinks when a
-//                     star shrinks or slides, so they drift); on the exact test
-//                     nets both work.
+//                     choice). On the negshell's diagonal net and on the
+//                     test nets both work (negshell: 1.6e-7 with quads,
+//                     5.3e-7 with normals). Forced onto the negshell's own
+//                     stars (hnet.net: mesh, 0.145 off-plane), normals reach
+//                     2.5e-5 with 2.6% displacement and quads stall at 0.37
+//                     (their residual also shrinks when a star shrinks or
+//                     slides, so they drift).
 //     fairness: {weight: 0.01, order: 3, relative_to_original: false}
 //                     λ1: second (order 2) or third (order 3) differences
 //                     along the mesh polylines [Deng 2011 via Shi §3.2];
@@ -75,6 +77,11 @@
 //                     1e-3 < W < 1e3 (elsewhere no smooth join exists or the
 //                     frame points degenerate).
 //   hnet:
+//     net: auto             which net to solve: the input (mesh) or one of
+//                           its diagonal nets (diagonal_0, diagonal_1); auto
+//                           picks a diagonal net whose stars are 10× flatter
+//                           on average (problems/hnet_net.h). A diagonal net
+//                           is then what is solved, measured and written.
 //     alternations: 3       step 3 + step 2 repetitions after step 1 (0: step
 //                           1 and one step 2 only).
 //     star_planarity: 1e-6  tolerance on the max relative star planarity
