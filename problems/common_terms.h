@@ -12,7 +12,7 @@
 #include <ceres/solver.h>
 
 #include "mesh/surface_mesh.h"
-#include "problems/builder.h"
+#include "problems/solve_outcome.h"
 
 namespace archgeo {
 

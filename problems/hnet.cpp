@@ -276,23 +276,13 @@ HNetPipelineResult SolveHNetPipeline(Mesh& mesh, const ReferenceSurface& referen
     const std::vector<Vec3> before = Positions(mesh);
     ceres::Solver::Summary summary;
     ceres::Solve(options, built.problem.get(), &summary);
-    SolveOutcome outcome;
-    RecordSolve(summary, *built.problem, mesh, outcome);
-    result.variables = outcome.variables;
-    result.residuals = outcome.residuals;
-    result.iterations += outcome.inner_iterations;
-    for (const auto& [k, v] : outcome.seconds) result.seconds[k] += v;
-    if (!outcome.usable) {
-      result.usable = false;
-      result.message = outcome.message;
-      return false;
-    }
-    ++result.rounds;
+    if (!RecordSolve(summary, *built.problem, mesh, result)) return false;
+    ++result.outer_iterations;
     result.hnet = hnet_now();
     HNetRoundLog log;
     log.step = step;
-    log.round = result.rounds;
-    log.iterations = outcome.inner_iterations;
+    log.round = result.outer_iterations;
+    log.iterations = std::max(0, int(summary.iterations.size()) - 1);
     log.cost = summary.final_cost;
     log.weight_scale = scale;
     log.star_planarity_max = result.hnet.star_planarity_max;
@@ -347,7 +337,7 @@ HNetPipelineResult SolveHNetPipeline(Mesh& mesh, const ReferenceSurface& referen
     }
     if (tol > 0 && !met()) scale *= settings.continuation_factor;
   }
-  if (result.rounds == 0) result.hnet = hnet_now();
+  if (result.outer_iterations == 0) result.hnet = hnet_now();
   result.tolerance_met = tol <= 0 || result.hnet.star_planarity_max <= tol;
   if (built.problem) result.objective = TermObjective(*built.problem, built.terms);
   return result;
@@ -503,15 +493,7 @@ class HNetBuilder : public Builder {
     settings.solver = context.solver;
     const HNetPipelineResult r =
         SolveHNetPipeline(mesh, *context.reference, settings, context.progress);
-    SolveOutcome out;
-    out.usable = r.usable;
-    out.message = r.message;
-    out.variables = r.variables;
-    out.residuals = r.residuals;
-    out.outer_iterations = r.rounds;
-    out.inner_iterations = r.iterations;
-    out.objective = r.objective;
-    out.seconds = r.seconds;
+    SolveOutcome out = r;
     if (!r.usable) return out;
     const HNet& h = r.hnet;
     out.details = HNetJson(h);

@@ -123,6 +123,7 @@
 #include "mesh/hnet.h"
 #include "mesh/surface_mesh.h"
 #include "problems/progress.h"
+#include "problems/solve_outcome.h"
 #include "problems/solver_options.h"
 
 namespace archgeo {
@@ -165,12 +166,10 @@ struct HNetRoundLog {
   bool undone = false;     // a step-3 round that raised α_max, reverted
 };
 
-struct HNetPipelineResult {
-  bool usable = true;
-  std::string message;
-  int variables = 0, residuals = 0, rounds = 0, iterations = 0;
-  std::map<std::string, double> objective;  // ½ Σ w r² per term, last round
-  std::map<std::string, double> seconds;    // ceres, linear_solver, jacobian, projection, hnet
+// SolveOutcome's counts (outer_iterations: rounds), objective (last round),
+// seconds ("ceres", "linear_solver", "jacobian", "projection", "hnet") and
+// usability, plus:
+struct HNetPipelineResult : SolveOutcome {
   bool tolerance_met = false;
   HNet hnet;  // step 2 on the final vertices
   std::vector<HNetRoundLog> log;

@@ -214,7 +214,7 @@ PlanarQuadsResult SolvePlanarQuads(Mesh& mesh, const ReferenceSurface& reference
   for (int outer = 1; outer <= settings.solver.outer_iterations; ++outer) {
     const auto start = Clock::now();
     const Projection proj = Project(mesh, reference, setup.boundary);
-    result.seconds_projection += std::chrono::duration<double>(Clock::now() - start).count();
+    result.seconds["projection"] += std::chrono::duration<double>(Clock::now() - start).count();
     built = Build(mesh, setup, proj, settings.terms, planarity_scale, band);
 
     std::vector<Vec3> before;
@@ -227,22 +227,8 @@ PlanarQuadsResult SolvePlanarQuads(Mesh& mesh, const ReferenceSurface& reference
     ceres::Solver::Summary summary;
     ceres::Solve(options, built.problem.get(), &summary);
 
-    result.variables = built.problem->NumParameters();
-    result.residuals = built.problem->NumResiduals();
-    result.inner_iterations += int(summary.iterations.size()) - 1;
-    result.seconds_solver += summary.total_time_in_seconds;
-    result.seconds_linear_solver += summary.linear_solver_time_in_seconds;
-    result.seconds_jacobian += summary.jacobian_evaluation_time_in_seconds;
     result.outer_iterations = outer;
-    bool finite = true;
-    for (VertexIndex v : mesh.vertices()) {
-      for (double c : ToVec3(mesh.point(v))) finite = finite && std::isfinite(c);
-    }
-    if (!summary.IsSolutionUsable() || !finite) {
-      result.usable = false;
-      result.message = finite ? summary.message : "the solver produced non-finite coordinates";
-      return result;
-    }
+    if (!RecordSolve(summary, *built.problem, mesh, result)) return result;
 
     OuterIterationLog log;
     log.outer = outer;

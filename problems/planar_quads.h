@@ -32,6 +32,7 @@
 
 #include "mesh/surface_mesh.h"
 #include "problems/progress.h"
+#include "problems/solve_outcome.h"
 #include "problems/solver_options.h"
 
 namespace archgeo {
@@ -94,16 +95,10 @@ struct OuterIterationLog {
   double seconds = 0;
 };
 
-struct PlanarQuadsResult {
-  bool usable = true;
-  std::string message;  // Ceres' message when not usable
+// SolveOutcome's counts, objective, seconds ("ceres", "linear_solver",
+// "jacobian", "projection") and usability, plus:
+struct PlanarQuadsResult : SolveOutcome {
   bool tolerance_met = false;
-  int outer_iterations = 0, inner_iterations = 0;
-  int variables = 0, residuals = 0;
-  // ½ Σ w r² per term at the output (the last linearisation), and "total".
-  std::map<std::string, double> objective;
-  double seconds_solver = 0, seconds_linear_solver = 0, seconds_jacobian = 0,
-         seconds_projection = 0;
   std::vector<OuterIterationLog> log;
 };
 

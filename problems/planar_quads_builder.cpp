@@ -60,18 +60,7 @@ class PlanarQuadsBuilder : public Builder {
     settings.solver = context.solver;
     const PlanarQuadsResult r =
         SolvePlanarQuads(mesh, *context.reference, settings, context.progress);
-    SolveOutcome out;
-    out.usable = r.usable;
-    out.message = r.message;
-    out.variables = r.variables;
-    out.residuals = r.residuals;
-    out.outer_iterations = r.outer_iterations;
-    out.inner_iterations = r.inner_iterations;
-    out.objective = r.objective;
-    out.seconds = {{"ceres", r.seconds_solver},
-                   {"linear_solver", r.seconds_linear_solver},
-                   {"jacobian", r.seconds_jacobian},
-                   {"projection", r.seconds_projection}};
+    SolveOutcome out = r;
     out.details["tolerance"] = {{"pq_normalized_max", s_.tolerance}, {"met", r.tolerance_met}};
     nlohmann::json log = nlohmann::json::array();
     for (const OuterIterationLog& l : r.log) {

@@ -556,22 +556,8 @@ PrincipalSymmetricResult SolvePrincipalSymmetric(Mesh& mesh, const ReferenceSurf
 
     ceres::Solver::Summary summary;
     ceres::Solve(options, problem.get(), &summary);
-    result.variables = problem->NumParameters();
-    result.residuals = problem->NumResiduals();
-    result.iterations += std::max(0, int(summary.iterations.size()) - 1);
-    result.seconds_solver += summary.total_time_in_seconds;
-    result.seconds_linear_solver += summary.linear_solver_time_in_seconds;
-    result.seconds_jacobian += summary.jacobian_evaluation_time_in_seconds;
-    result.rounds = round;
-    bool finite = true;
-    for (VertexIndex v : mesh.vertices()) {
-      for (double c : P(mesh, v)) finite = finite && std::isfinite(c);
-    }
-    if (!summary.IsSolutionUsable() || !finite) {
-      result.usable = false;
-      result.message = finite ? summary.message : "the solver produced non-finite coordinates";
-      return result;
-    }
+    result.outer_iterations = round;
+    if (!RecordSolve(summary, *problem, mesh, result)) return result;
     PrincipalSymmetricRound log;
     log.round = round;
     log.iterations = std::max(0, int(summary.iterations.size()) - 1);
@@ -712,17 +698,7 @@ class PrincipalSymmetricBuilder : public Builder {
     settings.solver = context.solver;
     const PrincipalSymmetricResult r =
         SolvePrincipalSymmetric(mesh, *context.reference, settings, context.progress);
-    SolveOutcome out;
-    out.usable = r.usable;
-    out.message = r.message;
-    out.variables = r.variables;
-    out.residuals = r.residuals;
-    out.outer_iterations = r.rounds;
-    out.inner_iterations = r.iterations;
-    out.objective = r.objective;
-    out.seconds = {{"ceres", r.seconds_solver},
-                   {"linear_solver", r.seconds_linear_solver},
-                   {"jacobian", r.seconds_jacobian}};
+    SolveOutcome out = r;
     out.details["principal_edges"] = int(labels_.size());
     out.details["conditions_before"] = ResidualsJson(r.before);
     out.details["conditions_after"] = ResidualsJson(r.after);

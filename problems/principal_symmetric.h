@@ -88,6 +88,7 @@
 
 #include "mesh/surface_mesh.h"
 #include "problems/progress.h"
+#include "problems/solve_outcome.h"
 #include "problems/solver_options.h"
 
 namespace archgeo {
@@ -139,12 +140,9 @@ struct PrincipalSymmetricRound {
   double seconds = 0;
 };
 
-struct PrincipalSymmetricResult {
-  bool usable = true;
-  std::string message;
-  int rounds = 0, iterations = 0, variables = 0, residuals = 0;
-  std::map<std::string, double> objective;
-  double seconds_solver = 0, seconds_linear_solver = 0, seconds_jacobian = 0;
+// SolveOutcome's counts (outer_iterations: rounds), objective, seconds
+// ("ceres", "linear_solver", "jacobian") and usability, plus:
+struct PrincipalSymmetricResult : SolveOutcome {
   PrincipalSymmetricResiduals before, after;  // before: spheres fitted to the input
   std::vector<PrincipalSymmetricRound> log;
 };

@@ -346,7 +346,7 @@ SmoothMeshResult SolveSmoothMesh(Mesh& mesh, const ReferenceSurface& reference,
     Projection proj;
     if (project) {
       proj = Project(mesh, reference, setup.boundary);
-      result.seconds_projection += std::chrono::duration<double>(Clock::now() - start).count();
+      result.seconds["projection"] += std::chrono::duration<double>(Clock::now() - start).count();
     }
     built = Build(mesh, setup, project ? &proj : nullptr, settings);
     const std::vector<Vec3> before = Positions(mesh);
@@ -355,22 +355,8 @@ SmoothMeshResult SolveSmoothMesh(Mesh& mesh, const ReferenceSurface& reference,
     ceres::Solver::Summary summary;
     ceres::Solve(options, built.problem.get(), &summary);
 
-    result.variables = built.problem->NumParameters();
-    result.residuals = built.problem->NumResiduals();
-    result.iterations += std::max(0, int(summary.iterations.size()) - 1);
-    result.seconds_solver += summary.total_time_in_seconds;
-    result.seconds_linear_solver += summary.linear_solver_time_in_seconds;
-    result.seconds_jacobian += summary.jacobian_evaluation_time_in_seconds;
-    result.rounds = round;
-    bool finite = true;
-    for (VertexIndex v : mesh.vertices()) {
-      for (double c : ToVec3(mesh.point(v))) finite = finite && std::isfinite(c);
-    }
-    if (!summary.IsSolutionUsable() || !finite) {
-      result.usable = false;
-      result.message = finite ? summary.message : "the solver produced non-finite coordinates";
-      return result;
-    }
+    result.outer_iterations = round;
+    if (!RecordSolve(summary, *built.problem, mesh, result)) return result;
 
     SmoothRoundLog log;
     log.round = round;
@@ -429,7 +415,7 @@ SmoothMeshResult SolveSmoothMesh(Mesh& mesh, const ReferenceSurface& reference,
     }
     if (log.max_move < 1e-9) break;
   }
-  if (result.best_round != result.rounds) {
+  if (result.best_round != result.outer_iterations) {
     for (VertexIndex v : mesh.vertices()) mesh.point(v) = ToPoint(best_positions[v.idx()]);
     for (size_t i = 0; i < setup.polygons.size(); ++i) setup.normal[setup.polygons[i]] = best_normals[i];
   }
@@ -523,18 +509,7 @@ class SmoothMeshBuilder : public Builder {
     settings.solver = context.solver;
     settings.handles = canonical_handles_;
     const SmoothMeshResult r = SolveSmoothMesh(mesh, *context.reference, settings, context.progress);
-    SolveOutcome out;
-    out.usable = r.usable;
-    out.message = r.message;
-    out.variables = r.variables;
-    out.residuals = r.residuals;
-    out.outer_iterations = r.rounds;
-    out.inner_iterations = r.iterations;
-    out.objective = r.objective;
-    out.seconds = {{"ceres", r.seconds_solver},
-                   {"linear_solver", r.seconds_linear_solver},
-                   {"jacobian", r.seconds_jacobian},
-                   {"projection", r.seconds_projection}};
+    SolveOutcome out = r;
     nlohmann::json log = nlohmann::json::array();
     for (const SmoothRoundLog& l : r.log) {
       log.push_back({{"round", l.round},

@@ -108,6 +108,7 @@
 
 #include "mesh/surface_mesh.h"
 #include "problems/progress.h"
+#include "problems/solve_outcome.h"
 #include "problems/solver_options.h"
 
 namespace archgeo {
@@ -158,14 +159,9 @@ struct SmoothRoundLog {
   double seconds = 0;
 };
 
-struct SmoothMeshResult {
-  bool usable = true;
-  std::string message;  // Ceres' message when not usable
-  int rounds = 0, iterations = 0;
-  int variables = 0, residuals = 0;
-  std::map<std::string, double> objective;  // ½ Σ w r² per term at the end, and "total"
-  double seconds_solver = 0, seconds_linear_solver = 0, seconds_jacobian = 0,
-         seconds_projection = 0;
+// SolveOutcome's counts (outer_iterations: rounds), objective, seconds
+// ("ceres", "linear_solver", "jacobian", "projection") and usability, plus:
+struct SmoothMeshResult : SolveOutcome {
   std::vector<SmoothRoundLog> log;  // log[0] = input, then one per round
   int best_round = 0;               // the round returned (lowest true E; the last with handles)
 };

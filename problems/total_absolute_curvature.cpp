@@ -308,23 +308,8 @@ TotalAbsoluteCurvatureResult SolveTotalAbsoluteCurvature(
     ceres::Solver::Summary summary;
     ceres::Solve(options, built.problem.get(), &summary);
 
-    result.variables = built.problem->NumParameters();
-    result.residuals = built.problem->NumResiduals();
-    result.inner_iterations += std::max(0, int(summary.iterations.size()) - 1);
-    result.seconds_solver += summary.total_time_in_seconds;
-    result.seconds_linear_solver += summary.linear_solver_time_in_seconds;
-    result.seconds_jacobian += summary.jacobian_evaluation_time_in_seconds;
-    result.rounds = round;
-    bool finite = true;
-    for (VertexIndex v : mesh.vertices()) {
-      for (double c : ToVec3(mesh.point(v))) finite = finite && std::isfinite(c);
-    }
-    if (!summary.IsSolutionUsable() || !finite) {
-      result.usable = false;
-      result.message = finite ? summary.message : "the solver produced non-finite coordinates";
-      return result;
-    }
-
+    result.outer_iterations = round;
+    if (!RecordSolve(summary, *built.problem, mesh, result)) return result;
     TacRoundLog log;
     log.round = round;
     log.iterations = std::max(0, int(summary.iterations.size()) - 1);
@@ -427,17 +412,7 @@ class TotalAbsoluteCurvatureBuilder : public Builder {
     const auto start = Clock::now();
     const TotalAbsoluteCurvatureResult r =
         SolveTotalAbsoluteCurvature(mesh, context.reference, settings, context.progress);
-    SolveOutcome out;
-    out.usable = r.usable;
-    out.message = r.message;
-    out.variables = r.variables;
-    out.residuals = r.residuals;
-    out.outer_iterations = r.rounds;
-    out.inner_iterations = r.inner_iterations;
-    out.objective = r.objective;
-    out.seconds = {{"ceres", r.seconds_solver},
-                   {"linear_solver", r.seconds_linear_solver},
-                   {"jacobian", r.seconds_jacobian}};
+    SolveOutcome out = r;
     nlohmann::json log = nlohmann::json::array();
     for (const TacRoundLog& l : r.log) {
       log.push_back({{"round", l.round}, {"iterations", l.iterations}, {"cost", l.cost},
@@ -453,7 +428,7 @@ class TotalAbsoluteCurvatureBuilder : public Builder {
     char line[256];
     std::snprintf(line, sizeof line,
                   "total absolute curvature (canonical frame): C %.4f -> %.4f in %d rounds\n",
-                  r.C_start, c_end, r.rounds);
+                  r.C_start, c_end, r.outer_iterations);
     out.headline = line;
     return out;
   }

@@ -76,6 +76,7 @@
 #include "mesh/surface_mesh.h"
 #include "problems/builder.h"
 #include "problems/progress.h"
+#include "problems/solve_outcome.h"
 #include "problems/solver_options.h"
 
 namespace archgeo {
@@ -116,16 +117,11 @@ struct TacRoundLog {
   double seconds = 0;
 };
 
-struct TotalAbsoluteCurvatureResult {
-  bool usable = true;
-  std::string message;  // Ceres' message when not usable
+// SolveOutcome's counts (outer_iterations: rounds), objective ("target",
+// "regularizer", "fairness", "tangent_planes", "proximity", ..., "total"),
+// seconds ("ceres", "linear_solver", "jacobian") and usability, plus:
+struct TotalAbsoluteCurvatureResult : SolveOutcome {
   double C_start = 0;   // Σ |λ1| + |λ2| before the first round (canonical frame)
-  int rounds = 0, inner_iterations = 0;
-  int variables = 0, residuals = 0;
-  // ½ Σ w r² per term ("target", "regularizer", "fairness", "tangent_planes",
-  // "proximity", ...) at the output (last linearisation), and "total".
-  std::map<std::string, double> objective;
-  double seconds_solver = 0, seconds_linear_solver = 0, seconds_jacobian = 0;
   std::vector<TacRoundLog> log;
 };
 
