@@ -21,6 +21,7 @@
 #include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
 
+#include "mesh/similarity.h"
 #include "mesh/surface_mesh.h"
 #include "problems/progress.h"
 #include "problems/solve_outcome.h"
@@ -33,6 +34,8 @@ class ReferenceSurface;
 
 // What a builder's Solve gets besides the mesh.
 struct SolveContext {
+  const Mesh* input = nullptr;                  // the net as read (file units, see Net)
+  Similarity frame;                             // file units -> the canonical frame solved in
   const ReferenceSurface* reference = nullptr;  // in the canonical frame of the mesh
   std::vector<bool> fixed;                      // per vertex index: hard-fixed
   SolverSettings solver;

@@ -168,6 +168,8 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   ToCanonical(frame, reference_canonical);
   const ReferenceSurface reference_in_frame(reference_canonical);
   SolveContext context;
+  context.input = &input;
+  context.frame = frame;
   context.reference = &reference_in_frame;
   context.solver = spec.solver;
   context.progress = progress;

@@ -479,10 +479,6 @@ class SmoothMeshBuilder : public Builder {
     if (!interior) {
       throw InputError(path, 0, "mesh", "smooth_mesh needs a mesh with an interior edge");
     }
-    // Handles: validate and move to the canonical frame the run solves in
-    // (problems/run.cpp uses CanonicalFrame(input)).
-    canonical_handles_.clear();
-    const Similarity frame = CanonicalFrame(input);
     std::set<int> seen;
     for (const HandleSpec& h : handles_) {
       if (h.vertex >= int(input.number_of_vertices())) {
@@ -494,12 +490,6 @@ class SmoothMeshBuilder : public Builder {
         throw InputError(h.file, h.line, "handles",
                          "vertex " + std::to_string(h.vertex) + " is listed twice");
       }
-      Vec3 target = h.value;
-      if (h.offset) {
-        const Vec3 p = ToVec3(input.point(VertexIndex(h.vertex)));
-        for (int k = 0; k < 3; ++k) target[k] = p[k] + h.value[k];
-      }
-      canonical_handles_.push_back({h.vertex, frame.ToCanonical(target)});
     }
   }
 
@@ -507,7 +497,17 @@ class SmoothMeshBuilder : public Builder {
     SmoothMeshSettings settings = s_;
     settings.fixed = context.fixed;
     settings.solver = context.solver;
-    settings.handles = canonical_handles_;
+    // Handle targets (file units; offsets from the input position) in the
+    // canonical frame the run solves in.
+    settings.handles.clear();
+    for (const HandleSpec& h : handles_) {
+      Vec3 target = h.value;
+      if (h.offset) {
+        const Vec3 p = ToVec3(context.input->point(VertexIndex(h.vertex)));
+        for (int k = 0; k < 3; ++k) target[k] = p[k] + h.value[k];
+      }
+      settings.handles.push_back({h.vertex, context.frame.ToCanonical(target)});
+    }
     const SmoothMeshResult r = SolveSmoothMesh(mesh, *context.reference, settings, context.progress);
     SolveOutcome out = r;
     nlohmann::json log = nlohmann::json::array();
@@ -611,7 +611,6 @@ class SmoothMeshBuilder : public Builder {
   SmoothMeshSettings s_;
   std::vector<HandleSpec> handles_;
   // Set by CheckInput (the run calls it on the input before Solve).
-  mutable std::vector<CanonicalHandle> canonical_handles_;
 };
 
 }  // namespace
