@@ -43,6 +43,12 @@ StagedOutputs::~StagedOutputs() {
     std::error_code ignored;  // a temporary never written does not exist
     fs::remove(staged.first, ignored);
   }
+  // Directories Stage() created, deepest first; fs::remove leaves a
+  // directory that is not empty (another process wrote there) in place.
+  for (auto it = created_.rbegin(); it != created_.rend(); ++it) {
+    std::error_code ignored;
+    fs::remove(*it, ignored);
+  }
 }
 
 std::string StagedOutputs::Stage(const std::string& target) {
@@ -62,6 +68,12 @@ std::string StagedOutputs::Stage(const std::string& target) {
     throw InputError(target, 0, "", "the output path is a directory");
   const fs::path directory = fs::path(target).parent_path();
   if (!directory.empty()) {
+    std::vector<fs::path> missing;  // from the directory up to the first existing ancestor
+    for (fs::path d = directory; !d.empty() && !fs::exists(d, error); d = d.parent_path()) {
+      missing.push_back(d);
+      if (d == d.parent_path()) break;
+    }
+    created_.insert(created_.end(), missing.rbegin(), missing.rend());
     fs::create_directories(directory, error);
     if (error) {
       throw InputError(

@@ -526,6 +526,21 @@ TEST(StagedOutputs, NoCommitLeavesNothing) {
   EXPECT_TRUE(fs::is_empty(dir.path()));
 }
 
+TEST(StagedOutputs, NoCommitRemovesTheDirectoriesItCreated) {
+  TempDir dir;
+  fs::create_directories(dir.Path("kept"));
+  {
+    StagedOutputs outputs;
+    std::ofstream(outputs.Stage(dir.Path("new/deeper/mesh.obj"))) << "partial";
+    outputs.Stage(dir.Path("kept/report.json"));
+    outputs.Stage(dir.Path("new/other.json"));
+    EXPECT_TRUE(fs::is_directory(dir.Path("new/deeper")));
+  }
+  EXPECT_FALSE(fs::exists(dir.Path("new")));
+  EXPECT_TRUE(fs::is_directory(dir.Path("kept")));  // existed before: kept
+  EXPECT_TRUE(fs::is_empty(dir.Path("kept")));
+}
+
 TEST(StagedOutputs, CommitReplacesAnExistingOutput) {
   TempDir dir;
   const std::string target = dir.Write("report.json", "old");
