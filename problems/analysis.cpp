@@ -4,6 +4,7 @@
 
 #include "mesh/hnet.h"
 #include "mesh/smoothness_metrics.h"
+#include "problems/hnet_net.h"
 
 namespace archgeo {
 namespace {
@@ -62,6 +63,11 @@ void AddHNet(const Mesh& mesh, AnalysisRows& rows) {
                   K::kRatio});
   rows.push_back({"star_planarity_mean", "A-net star planarity mean", h.star_planarity_mean,
                   K::kRatio});
+  const double diagonal = DiagonalNetStarPlanarityMean(mesh);
+  if (diagonal >= 0) {
+    rows.push_back({"diagonal_star_planarity_mean", "  of the flatter diagonal net", diagonal,
+                    K::kRatio});
+  }
   rows.push_back({"alpha_max", "H-net kink α_max (Shi Table 1)", h.kink_max, K::kDegrees});
   rows.push_back({"alpha_mean", "H-net kink α_mean", h.kink_mean, K::kDegrees});
   rows.push_back({"W_min", "H-net shape parameter W min", h.W_min, K::kRatio});

@@ -45,6 +45,19 @@ std::string Sci(double x) {
 
 }  // namespace
 
+double DiagonalNetStarPlanarityMean(const Mesh& mesh) {
+  double best = -1;
+  for (int colour = 0; colour < 2; ++colour) {
+    try {
+      const double mean = InteriorStarPlanarity(MakeDiagonalNet(mesh, colour).mesh).mean;
+      if (mean >= 0 && (best < 0 || mean < best)) best = mean;
+    } catch (const InputError&) {
+      // no such net
+    }
+  }
+  return best;
+}
+
 WorkingNet ChooseHNetNet(const Mesh& input, const std::string& path, const std::string& choice,
                          const std::string& spec_file, int spec_line) {
   WorkingNet result;

@@ -35,6 +35,12 @@ namespace archgeo {
 // auto picks a diagonal net only if its stars are this many times flatter.
 constexpr double kDiagonalGain = 10;
 
+// The mean interior star planarity of the flatter of the two diagonal nets
+// of `mesh` (−1 if neither can be built or has an interior vertex): shown by
+// `archgeo measure` beside the mesh's own, so a net stored along its
+// diagonals is recognised.
+double DiagonalNetStarPlanarityMean(const Mesh& mesh);
+
 // The net for `choice` (auto | mesh | diagonal_0 | diagonal_1) of the pure
 // quad mesh `input` read from `path`. Throws InputError (key hnet.net, file
 // `spec_file`, line `spec_line`) if an explicitly chosen diagonal net cannot be

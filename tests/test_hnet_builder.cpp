@@ -21,6 +21,7 @@
 #include "mesh/io.h"
 #include "mesh/metrics.h"
 #include "mesh/topology.h"
+#include "problems/hnet_net.h"
 #include "problems/run.h"
 #include "problems/spec.h"
 #include "scratch_dir.h"
@@ -210,6 +211,15 @@ TEST_F(HNetBuilder, NetAlongItsDiagonalsIsSolvedAsItsDiagonalNet) {
   ASSERT_EQ(kept.exit_code, 0);
   EXPECT_FALSE(kept.report.contains("net"));
   EXPECT_EQ(kept.report["after"]["vertices"].get<size_t>(), mesh.number_of_vertices());
+}
+
+TEST_F(HNetBuilder, MeasureShowsTheFlatterDiagonalNet) {
+  EXPECT_LE(DiagonalNetStarPlanarityMean(ReadMesh(kNegshell)), 1e-6);  // the mesh's: 5.8e-2
+  const Mesh hp = MakeAsymptoticTestNet(AsymptoticTestNet::kHyperbolicParaboloid);
+  EXPECT_GT(DiagonalNetStarPlanarityMean(hp), 1e-3);  // an A-net itself: not its diagonals
+  const RunResult measured = MeasureFiles(kNegshell, "");
+  EXPECT_LE(measured.report["metrics"]["diagonal_star_planarity_mean"].get<double>(), 1e-6);
+  EXPECT_NE(measured.summary.find("of the flatter diagonal net"), std::string::npos);
 }
 
 TEST_F(HNetBuilder, NegshellMeetsTheIssueBounds) {
