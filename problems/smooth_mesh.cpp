@@ -34,6 +34,8 @@ using Clock = std::chrono::steady_clock;
 
 // Displacement guard (see smooth_mesh.h): starts at this fraction of the
 // bound, with this anchor weight, growing by this factor per round.
+// Rounds without a gain in E (tolerance.energy_relative) before stopping.
+constexpr int kPatience = 3;
 constexpr double kGuardStart = 0.5;
 constexpr double kGuardFirst = 1.0;
 constexpr double kGuardGrowth = 10.0;
@@ -341,6 +343,7 @@ SmoothMeshResult SolveSmoothMesh(Mesh& mesh, const ReferenceSurface& reference,
   std::vector<Vec3> best_positions = Positions(mesh);
   std::vector<Vec3> best_normals;
   for (FaceIndex f : setup.polygons) best_normals.push_back(setup.normal[f]);
+  int last_gain = 0;  // the last round that lowered the best E by > energy_relative
   for (int round = 1; round <= settings.solver.outer_iterations; ++round) {
     const auto start = Clock::now();
     Projection proj;
@@ -391,7 +394,6 @@ SmoothMeshResult SolveSmoothMesh(Mesh& mesh, const ReferenceSurface& reference,
     Measure(mesh, setup.original, log);
     log.max_move = MaxMove(Positions(mesh), before);
     log.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    const double previous_E = result.log.back().E;
     result.log.push_back(log);
     if (progress) {
       char line[240];
@@ -402,6 +404,7 @@ SmoothMeshResult SolveSmoothMesh(Mesh& mesh, const ReferenceSurface& reference,
                     log.self_intersecting_pyramids, log.max_move, log.displacement, log.seconds);
       progress(line);
     }
+    if (log.E < best_E - settings.energy_relative * best_E) last_gain = round;
     if (log.E < best_E || !settings.handles.empty()) {
       best_E = log.E;
       best_positions = Positions(mesh);
@@ -410,7 +413,7 @@ SmoothMeshResult SolveSmoothMesh(Mesh& mesh, const ReferenceSurface& reference,
       result.best_round = round;
     }
     if (settings.energy_relative > 0 && settings.handles.empty() &&
-        std::abs(previous_E - log.E) < settings.energy_relative * previous_E) {
+        round - last_gain >= kPatience) {
       break;
     }
     if (log.max_move < 1e-9) break;

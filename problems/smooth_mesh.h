@@ -75,8 +75,10 @@
 //                                design (the handles and fixed vertices then
 //                                hold the mesh).
 //   tolerance:
-//     energy_relative: 1e-4      stop when a round changes the true E by less than
-//                                this fraction of E (0: run all solver.outer_iterations);
+//     energy_relative: 1e-4      stop when 3 rounds in a row have not lowered the
+//                                lowest true E so far by more than this fraction
+//                                (0: run all solver.outer_iterations); the
+//                                output is the round of lowest E either way;
 //                                not used with handles (E may rise while the
 //                                mesh follows them: all rounds run)
 //     displacement_relative: 0.005   bound on every vertex's distance from its
@@ -138,7 +140,7 @@ struct CanonicalHandle {
 struct SmoothMeshSettings {
   SmoothTermWeights terms;
   std::vector<CanonicalHandle> handles;  // canonical frame
-  double energy_relative = 1e-4;  // stop tolerance on the relative decrease of E per round
+  double energy_relative = 1e-4;  // a gain in E below this fraction does not count (3 rounds: stop)
   double displacement_relative = 0.005;  // bound / bounding-box diagonal; 0 = none
   std::vector<bool> fixed;        // per vertex index; empty = none
   SolverSettings solver;
