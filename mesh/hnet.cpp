@@ -66,6 +66,24 @@ double StarPlanarity(const Mesh& mesh, VertexIndex v) {
   return mean_length > 0 ? max_distance / mean_length : 0.0;
 }
 
+StarPlanarities InteriorStarPlanarity(const Mesh& mesh) {
+  const std::vector<bool> boundary = BoundaryVertices(mesh);
+  StarPlanarities stars;
+  stars.per_vertex.assign(mesh.num_vertices(), -1.0);
+  double sum = 0;
+  int count = 0;
+  for (VertexIndex v : mesh.vertices()) {
+    if (boundary[v.idx()] || mesh.is_isolated(v)) continue;
+    const double planarity = StarPlanarity(mesh, v);
+    stars.per_vertex[v.idx()] = planarity;
+    stars.max = std::max(stars.max, planarity);
+    sum += planarity;
+    ++count;
+  }
+  if (count > 0) stars.mean = sum / count;
+  return stars;
+}
+
 namespace {
 
 // Patch corner order c0..c3 of a quad with c0c2 the chosen diagonal (see HNet).
@@ -226,19 +244,15 @@ HNet BuildHNet(const Mesh& mesh, const HNetOptions& options) {
                          std::to_string(hnet.non_quad_faces.size()) + " faces with != 4 sides, " +
                          "the first is face " + std::to_string(hnet.non_quad_faces[0]) + ")");
   }
-  const std::vector<bool> boundary = BoundaryVertices(mesh);
-  hnet.star_planarity.assign(mesh.num_vertices(), -1.0);
-  int interior_vertices = 0;
+  const StarPlanarities stars = InteriorStarPlanarity(mesh);
+  hnet.star_planarity = stars.per_vertex;
+  hnet.star_planarity_max = std::max(0.0, stars.max);
+  hnet.star_planarity_mean = std::max(0.0, stars.mean);
   for (VertexIndex v : mesh.vertices()) {
-    if (boundary[v.idx()] || mesh.halfedge(v) == Mesh::null_halfedge()) continue;
-    if (mesh.degree(v) % 2 == 1) hnet.odd_valence_vertices.push_back(int(v.idx()));
-    const double planarity = StarPlanarity(mesh, v);
-    hnet.star_planarity[v.idx()] = planarity;
-    hnet.star_planarity_max = std::max(hnet.star_planarity_max, planarity);
-    hnet.star_planarity_mean += planarity;
-    ++interior_vertices;
+    if (stars.per_vertex[v.idx()] >= 0 && mesh.degree(v) % 2 == 1) {
+      hnet.odd_valence_vertices.push_back(int(v.idx()));
+    }
   }
-  if (interior_vertices > 0) hnet.star_planarity_mean /= interior_vertices;
 
   // --- Diagonals from a 2-colouring [Shi 2014, Remark 5].
   hnet.colour = TwoColouring(mesh, &hnet.monochrome_edges);  // [Shi 2014, Remark 5]

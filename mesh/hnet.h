@@ -118,6 +118,15 @@ struct HNet {
 // distance of the neighbours from v (0 for a vertex without neighbours).
 double StarPlanarity(const Mesh& mesh, VertexIndex v);
 
+// StarPlanarity of every interior (non-boundary, non-isolated) vertex:
+// per_vertex indexed by vertex index, −1 elsewhere; max and mean over those
+// vertices, −1 if there are none.
+struct StarPlanarities {
+  std::vector<double> per_vertex;
+  double max = -1, mean = -1;
+};
+StarPlanarities InteriorStarPlanarity(const Mesh& mesh);
+
 // Builds the H-net of `mesh` (see the file comment). Throws InputError if the
 // mesh has no faces, is not pure quad, or options.start_face is not a face
 // index or options.kink_samples < 5. The other checks (odd valences,

@@ -8,17 +8,11 @@
 
 #include <glog/logging.h>
 
+#include "mesh/vec3.h"
+
 namespace archgeo {
 namespace {
 
-Vec3 Add(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-Vec3 Sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3 Scale(double s, const Vec3& a) { return {s * a[0], s * a[1], s * a[2]}; }
-double Dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double Norm(const Vec3& a) { return std::sqrt(Dot(a, a)); }
-Vec3 Cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 bool IsZero(const Vec3& a) { return a[0] == 0 && a[1] == 0 && a[2] == 0; }
 
 // Consecutive normals closer than this are one vertex of the normal pyramid.

@@ -126,16 +126,27 @@ std::vector<int> TwoColouring(const Mesh& mesh, std::vector<int>* monochrome_edg
   return colour;
 }
 
+std::vector<std::vector<VertexIndex>> PolylineTuples(
+    const std::vector<std::vector<VertexIndex>>& polylines, size_t k) {
+  std::vector<std::vector<VertexIndex>> tuples;
+  for (const auto& line : polylines) {
+    const bool closed = line.size() > 3 && line.front() == line.back();
+    const size_t n = line.size() - (closed ? 1 : 0);  // distinct vertices
+    if (n < k) continue;
+    const size_t count = closed ? n : n - k + 1;
+    for (size_t i = 0; i < count; ++i) {
+      std::vector<VertexIndex> tuple;
+      for (size_t j = 0; j < k; ++j) tuple.push_back(line[(i + j) % n]);
+      tuples.push_back(std::move(tuple));
+    }
+  }
+  return tuples;
+}
+
 std::vector<std::array<VertexIndex, 3>> PolylineTriples(
     const std::vector<std::vector<VertexIndex>>& polylines) {
   std::vector<std::array<VertexIndex, 3>> triples;
-  for (const auto& line : polylines) {
-    for (size_t i = 1; i + 1 < line.size(); ++i) {
-      triples.push_back({line[i - 1], line[i], line[i + 1]});
-    }
-    const bool closed = line.size() > 3 && line.front() == line.back();
-    if (closed) triples.push_back({line[line.size() - 2], line[0], line[1]});
-  }
+  for (const auto& t : PolylineTuples(polylines, 3)) triples.push_back({t[0], t[1], t[2]});
   return triples;
 }
 

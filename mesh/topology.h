@@ -28,7 +28,13 @@ std::vector<std::vector<VertexIndex>> MeshPolylines(const Mesh& mesh);
 // `monochrome_edges` if it is non-null; the colouring is proper iff there are none.
 std::vector<int> TwoColouring(const Mesh& mesh, std::vector<int>* monochrome_edges = nullptr);
 
-// Consecutive vertex triples (u, v, w) along the polylines (second differences).
+// Every run of k consecutive vertices along the polylines (k = 3: second
+// differences, k = 4: third differences), wrapping around closed polylines;
+// polylines with fewer than k distinct vertices give none.
+std::vector<std::vector<VertexIndex>> PolylineTuples(
+    const std::vector<std::vector<VertexIndex>>& polylines, size_t k);
+
+// PolylineTuples(polylines, 3) as arrays (u, v, w).
 std::vector<std::array<VertexIndex, 3>> PolylineTriples(
     const std::vector<std::vector<VertexIndex>>& polylines);
 

@@ -1,5 +1,7 @@
 #include "problems/common_terms.h"
 
+#include <glog/logging.h>
+
 #include <ceres/loss_function.h>
 
 #include <algorithm>
@@ -109,6 +111,27 @@ bool RecordSolve(const ceres::Solver::Summary& summary, const ceres::Problem& pr
     outcome.message = finite ? summary.message : "the solver produced non-finite coordinates";
   }
   return outcome.usable;
+}
+
+std::vector<Vec3> FairnessTargets(const std::vector<std::vector<VertexIndex>>& tuples,
+                                  const std::vector<Vec3>& original, bool relative) {
+  std::vector<Vec3> targets(tuples.size(), Vec3{0, 0, 0});
+  for (size_t i = 0; relative && i < tuples.size(); ++i) {
+    const auto& t = tuples[i];
+    CHECK(t.size() == 3 || t.size() == 4) << "fairness tuple of " << t.size() << " vertices";
+    for (int c = 0; c < 3; ++c) {
+      const auto o = [&](int j) { return original[t[j].idx()][c]; };
+      targets[i][c] = t.size() == 3 ? o(0) - 2 * o(1) + o(2) : o(3) - 3 * o(2) + 3 * o(1) - o(0);
+    }
+  }
+  return targets;
+}
+
+std::vector<Vec3> FairnessTargets(const std::vector<std::array<VertexIndex, 3>>& triples,
+                                  const std::vector<Vec3>& original, bool relative) {
+  std::vector<std::vector<VertexIndex>> tuples;
+  for (const auto& t : triples) tuples.push_back({t.begin(), t.end()});
+  return FairnessTargets(tuples, original, relative);
 }
 
 std::vector<Vec3> Positions(const Mesh& mesh) {

@@ -3,6 +3,7 @@
 // objective and the bookkeeping of one Ceres solve.
 #pragma once
 
+#include <array>
 #include <map>
 #include <memory>
 #include <string>
@@ -61,6 +62,15 @@ std::map<std::string, double> TermObjective(ceres::Problem& problem, const TermB
 // a vertex of `mesh` is not finite. Returns outcome.usable.
 bool RecordSolve(const ceres::Solver::Summary& summary, const ceres::Problem& problem,
                  const Mesh& mesh, SolveOutcome& outcome);
+
+// Targets of the fairness terms (energies/fairness.h), one per tuple of 3
+// (second differences p0 − 2p1 + p2) or 4 vertices (third differences
+// p3 − 3p2 + 3p1 − p0): the differences of `original` when `relative`
+// (keep the input's shape), else 0.
+std::vector<Vec3> FairnessTargets(const std::vector<std::vector<VertexIndex>>& tuples,
+                                  const std::vector<Vec3>& original, bool relative);
+std::vector<Vec3> FairnessTargets(const std::vector<std::array<VertexIndex, 3>>& triples,
+                                  const std::vector<Vec3>& original, bool relative);
 
 // Positions of all vertices, and the largest distance between two such
 // snapshots.

@@ -119,29 +119,8 @@ Setup MakeSetup(Mesh& mesh, const HNetPipelineSettings& s) {
     for (const Star& star : setup.stars) setup.normal[star.v] = StarNormal(mesh, star);
   }
   if (s.terms.fairness > 0) {
-    const auto polylines = MeshPolylines(mesh);
-    const size_t k = s.terms.fairness_order == 3 ? 4 : 3;
-    for (const auto& line : polylines) {
-      const bool closed = line.size() > 3 && line.front() == line.back();
-      std::vector<VertexIndex> pts(line.begin(), line.end() - (closed ? 1 : 0));
-      const size_t n = pts.size();
-      const size_t count = closed ? (n >= k ? n : 0) : (n >= k ? n - k + 1 : 0);
-      for (size_t i = 0; i < count; ++i) {
-        std::vector<VertexIndex> tuple;
-        for (size_t j = 0; j < k; ++j) tuple.push_back(pts[(i + j) % n]);
-        Vec3 target{0, 0, 0};
-        if (s.terms.fairness_relative) {
-          const auto& o = setup.original;
-          for (int c = 0; c < 3; ++c) {
-            target[c] = k == 3 ? o[tuple[0].idx()][c] - 2 * o[tuple[1].idx()][c] + o[tuple[2].idx()][c]
-                               : o[tuple[3].idx()][c] - 3 * o[tuple[2].idx()][c] +
-                                     3 * o[tuple[1].idx()][c] - o[tuple[0].idx()][c];
-          }
-        }
-        setup.fair.push_back(tuple);
-        setup.fair_target.push_back(target);
-      }
-    }
+    setup.fair = PolylineTuples(MeshPolylines(mesh), s.terms.fairness_order == 3 ? 4 : 3);
+    setup.fair_target = FairnessTargets(setup.fair, setup.original, s.terms.fairness_relative);
   }
   for (EdgeIndex e : mesh.edges()) {
     if (mesh.is_border(e)) continue;

@@ -7,33 +7,11 @@
 #include "mesh/diagonal_net.h"
 #include "mesh/hnet.h"
 #include "mesh/input_error.h"
-#include "mesh/topology.h"
 
 namespace archgeo {
 namespace {
 
-// Max and mean star planarity over the interior vertices; {−1, −1} if there
-// are none.
-struct Flatness {
-  double max = -1, mean = -1;
-};
-Flatness InteriorStarPlanarity(const Mesh& mesh) {
-  const std::vector<bool> boundary = BoundaryVertices(mesh);
-  Flatness f;
-  double sum = 0;
-  int count = 0;
-  for (VertexIndex v : mesh.vertices()) {
-    if (boundary[v.idx()] || mesh.is_isolated(v)) continue;
-    const double p = StarPlanarity(mesh, v);
-    f.max = std::max(f.max, p);
-    sum += p;
-    ++count;
-  }
-  if (count > 0) f.mean = sum / count;
-  return f;
-}
-
-nlohmann::json ToJson(const Flatness& f) {
+nlohmann::json ToJson(const StarPlanarities& f) {
   return {{"star_planarity_max", f.max}, {"star_planarity_mean", f.mean}};
 }
 
@@ -64,10 +42,10 @@ WorkingNet ChooseHNetNet(const Mesh& input, const std::string& path, const std::
   if (choice == "mesh") return result;
   nlohmann::json& d = result.details;
   d["setting"] = choice;
-  const Flatness mesh_flat = InteriorStarPlanarity(input);
+  const StarPlanarities mesh_flat = InteriorStarPlanarity(input);
   d["candidates"]["mesh"] = ToJson(mesh_flat);
   std::optional<DiagonalNet> nets[2];
-  Flatness flat[2];
+  StarPlanarities flat[2];
   for (int colour = 0; colour < 2; ++colour) {
     const std::string name = "diagonal_" + std::to_string(colour);
     if (choice != "auto" && choice != name) continue;

@@ -17,6 +17,7 @@
 #include "mesh/metrics.h"
 #include "mesh/reference.h"
 #include "mesh/topology.h"
+#include "mesh/vec3.h"
 #include "problems/common_terms.h"
 #include "problems/tolerance_band.h"
 
@@ -51,8 +52,6 @@ struct Setup {
   Mesh::Property_map<FaceIndex, Block<1>> offset;
 };
 
-Vec3 Sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double Norm(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
 
 double MaxNormalizedPlanarity(const Mesh& mesh) {
   const PlanarityMeasure p = MeasureFacePlanarity(mesh);
@@ -96,19 +95,10 @@ Setup MakeSetup(Mesh& mesh, const PlanarQuadsSettings& s) {
   }
   setup.boundary = BoundaryVertices(mesh);
   setup.fixed = s.fixed.empty() ? std::vector<bool>(mesh.number_of_vertices(), false) : s.fixed;
-  for (VertexIndex v : mesh.vertices()) setup.original.push_back(ToVec3(mesh.point(v)));
+  setup.original = Positions(mesh);
   if (s.terms.fairness > 0) {
     setup.triples = PolylineTriples(MeshPolylines(mesh));
-    for (const auto& t : setup.triples) {
-      Vec3 target{0, 0, 0};
-      if (s.terms.fairness_relative) {
-        for (int k = 0; k < 3; ++k) {
-          target[k] = setup.original[t[0].idx()][k] - 2 * setup.original[t[1].idx()][k] +
-                      setup.original[t[2].idx()][k];
-        }
-      }
-      setup.triple_target.push_back(target);
-    }
+    setup.triple_target = FairnessTargets(setup.triples, setup.original, s.terms.fairness_relative);
   }
   return setup;
 }

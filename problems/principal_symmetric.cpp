@@ -27,6 +27,7 @@
 #include "mesh/reference.h"
 #include "mesh/smoothness_metrics.h"
 #include "mesh/topology.h"
+#include "mesh/vec3.h"
 #include "problems/builders.h"
 #include "problems/common_terms.h"
 #include "problems/smooth_mesh.h"
@@ -37,16 +38,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 constexpr double kPi = 3.14159265358979323846;
 
-Vec3 Sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double Dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double Norm(const Vec3& a) { return std::sqrt(Dot(a, a)); }
-Vec3 Cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Vec3 Unit(const Vec3& a) {
-  const double n = Norm(a);
-  return n > 0 ? Vec3{a[0] / n, a[1] / n, a[2] / n} : Vec3{0, 0, 0};
-}
 VertexPair Pair(int a, int b) { return a < b ? VertexPair{a, b} : VertexPair{b, a}; }
 Vec3 P(const Mesh& mesh, VertexIndex v) { return ToVec3(mesh.point(v)); }
 
@@ -442,15 +433,7 @@ PrincipalSymmetricResult SolvePrincipalSymmetric(Mesh& mesh, const ReferenceSurf
   std::vector<Vec3> triple_target;
   if (w.fairness > 0) {
     triples = SmoothFairnessTriples(mesh);
-    for (const auto& t : triples) {
-      Vec3 target{0, 0, 0};
-      if (w.fairness_relative) {
-        for (int k = 0; k < 3; ++k) {
-          target[k] = original[t[0].idx()][k] - 2 * original[t[1].idx()][k] + original[t[2].idx()][k];
-        }
-      }
-      triple_target.push_back(target);
-    }
+    triple_target = FairnessTargets(triples, original, w.fairness_relative);
   }
   const ceres::Solver::Options options = ToCeresOptions(settings.solver);
   const bool project = w.proximity > 0 || w.proximity_point > 0 || w.boundary_proximity > 0;

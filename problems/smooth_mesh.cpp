@@ -24,6 +24,7 @@
 #include "mesh/similarity.h"
 #include "mesh/smoothness_metrics.h"
 #include "mesh/topology.h"
+#include "mesh/vec3.h"
 #include "problems/builders.h"
 #include "problems/common_terms.h"
 
@@ -43,16 +44,6 @@ constexpr double kGuardGrowth = 10.0;
 // conversion back to file units cannot put it outside.
 constexpr double kClampMargin = 0.999;
 
-Vec3 Sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double Dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double Norm(const Vec3& a) { return std::sqrt(Dot(a, a)); }
-Vec3 Cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Vec3 Unit(const Vec3& a) {
-  const double n = Norm(a);
-  return n > 0 ? Vec3{a[0] / n, a[1] / n, a[2] / n} : Vec3{0, 0, 0};
-}
 
 // One interior edge: the halfedge v→w with face f on its left, f′ on its right.
 struct EdgeTerm {
@@ -117,16 +108,7 @@ Setup MakeSetup(Mesh& mesh, const SmoothMeshSettings& s) {
   setup.guard.assign(mesh.number_of_vertices(), 0.0);
   if (s.terms.fairness > 0) {
     setup.triples = SmoothFairnessTriples(mesh);
-    for (const auto& t : setup.triples) {
-      Vec3 target{0, 0, 0};
-      if (s.terms.fairness_relative) {
-        for (int k = 0; k < 3; ++k) {
-          target[k] = setup.original[t[0].idx()][k] - 2 * setup.original[t[1].idx()][k] +
-                      setup.original[t[2].idx()][k];
-        }
-      }
-      setup.triple_target.push_back(target);
-    }
+    setup.triple_target = FairnessTargets(setup.triples, setup.original, s.terms.fairness_relative);
   }
   return setup;
 }

@@ -18,14 +18,7 @@ namespace {
 
 constexpr double kExact = 1e-12;
 
-double InteriorStarPlanarityMax(const Mesh& mesh) {
-  const std::vector<bool> boundary = BoundaryVertices(mesh);
-  double max = 0;
-  for (VertexIndex v : mesh.vertices()) {
-    if (!boundary[v.idx()]) max = std::max(max, StarPlanarity(mesh, v));
-  }
-  return max;
-}
+double InteriorStarPlanarityMax(const Mesh& mesh) { return InteriorStarPlanarity(mesh).max; }
 
 // z = xy sampled on the grid x = u + v, y = u − v: the mesh's edges bisect
 // the rulings, its face diagonals run along them.

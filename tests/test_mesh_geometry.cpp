@@ -11,6 +11,7 @@
 #include "mesh/metrics.h"
 #include "mesh/reference.h"
 #include "mesh/topology.h"
+#include "mesh/vec3.h"
 
 namespace archgeo {
 namespace {
@@ -18,15 +19,6 @@ namespace {
 constexpr double kExact = 1e-12;
 const double kDegree = M_PI / 180.0;
 
-Vec3 Add(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-Vec3 Sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3 Scale(double s, const Vec3& a) { return {s * a[0], s * a[1], s * a[2]}; }
-double Dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double Norm(const Vec3& a) { return std::sqrt(Dot(a, a)); }
-Vec3 Unit(const Vec3& a) { return Scale(1.0 / Norm(a), a); }
-Vec3 Cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 double AngleBetween(const Vec3& a, const Vec3& b) {
   return std::atan2(Norm(Cross(a, b)), Dot(a, b));
 }
