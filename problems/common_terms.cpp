@@ -42,27 +42,30 @@ ceres::LossFunction* Weight(double w) {
   return new ceres::ScaledLoss(nullptr, w, ceres::TAKE_OWNERSHIP);
 }
 
-void AddProximityTerms(ceres::Problem& problem, Mesh& mesh, const Projection& proj,
+void AddProximityTerms(ceres::Problem& problem, Mesh& mesh, const Projection* projection,
                        const std::vector<Vec3>& original, const ProximityWeights& w,
                        TermBlocks& terms) {
   for (VertexIndex v : mesh.vertices()) {
     if (mesh.is_isolated(v)) continue;
     const size_t i = v.idx();
     double* x = PositionBlock(mesh, v);
-    if (proj.on_boundary_curve[i]) {
-      if (w.boundary_proximity > 0) {
-        terms["boundary_proximity"].push_back(problem.AddResidualBlock(
-            MakeBoundaryProximity(proj.point[i].data(), proj.direction[i].data(), 1.0),
-            Weight(w.boundary_proximity), x));
+    if (projection) {
+      const Projection& proj = *projection;
+      if (proj.on_boundary_curve[i]) {
+        if (w.boundary_proximity > 0) {
+          terms["boundary_proximity"].push_back(problem.AddResidualBlock(
+              MakeBoundaryProximity(proj.point[i].data(), proj.direction[i].data(), 1.0),
+              Weight(w.boundary_proximity), x));
+        }
+      } else if (w.proximity > 0) {
+        terms["proximity"].push_back(problem.AddResidualBlock(
+            MakeProximity(proj.point[i].data(), proj.direction[i].data(), 1.0),
+            Weight(w.proximity), x));
       }
-    } else if (w.proximity > 0) {
-      terms["proximity"].push_back(problem.AddResidualBlock(
-          MakeProximity(proj.point[i].data(), proj.direction[i].data(), 1.0),
-          Weight(w.proximity), x));
-    }
-    if (w.proximity_point > 0 && (w.proximity > 0 || w.boundary_proximity > 0)) {
-      terms["proximity_point"].push_back(problem.AddResidualBlock(
-          MakeAnchor(proj.point[i].data(), 1.0), Weight(w.proximity_point), x));
+      if (w.proximity_point > 0 && (w.proximity > 0 || w.boundary_proximity > 0)) {
+        terms["proximity_point"].push_back(problem.AddResidualBlock(
+            MakeAnchor(proj.point[i].data(), 1.0), Weight(w.proximity_point), x));
+      }
     }
     if (w.anchor > 0) {
       terms["anchor"].push_back(

@@ -45,9 +45,17 @@ using TermBlocks = std::map<std::string, std::vector<ceres::ResidualBlockId>>;
 // A ScaledLoss with weight w (Ceres minimises ½ Σ w r²).
 ceres::LossFunction* Weight(double w);
 
-// Adds the proximity terms for every non-isolated vertex of `mesh`.
-// `proj` and `original` must outlive the problem.
-void AddProximityTerms(ceres::Problem& problem, Mesh& mesh, const Projection& proj,
+// The proximity weights of a builder's term weights (any struct with
+// members proximity, proximity_point, boundary_proximity and anchor).
+template <typename Terms>
+ProximityWeights ProximityWeightsOf(const Terms& w) {
+  return {w.proximity, w.proximity_point, w.boundary_proximity, w.anchor};
+}
+
+// Adds the proximity terms for every non-isolated vertex of `mesh`; without
+// a projection (`proj` null) only the anchor. `proj` and `original` must
+// outlive the problem.
+void AddProximityTerms(ceres::Problem& problem, Mesh& mesh, const Projection* proj,
                        const std::vector<Vec3>& original, const ProximityWeights& w,
                        TermBlocks& terms);
 

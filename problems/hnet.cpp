@@ -178,12 +178,7 @@ Built Build(Mesh& mesh, Setup& setup, const Projection& proj, const HNetPipeline
       }
     }
   }
-  ProximityWeights pw;
-  pw.proximity = w.proximity;
-  pw.proximity_point = w.proximity_point;
-  pw.boundary_proximity = w.boundary_proximity;
-  pw.anchor = w.anchor;
-  AddProximityTerms(problem, mesh, proj, setup.original, pw, b.terms);
+  AddProximityTerms(problem, mesh, &proj, setup.original, ProximityWeightsOf(w), b.terms);
   for (size_t i = 0; w.fairness > 0 && i < setup.fair.size(); ++i) {
     const auto& t = setup.fair[i];
     b.terms["fairness"].push_back(

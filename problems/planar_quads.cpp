@@ -142,12 +142,7 @@ Built Build(Mesh& mesh, Setup& setup, const Projection& proj, const TermWeights&
     }
     problem.SetManifold(n, new ceres::SphereManifold<3>());
   }
-  ProximityWeights pw;
-  pw.proximity = w.proximity;
-  pw.proximity_point = w.proximity_point;
-  pw.boundary_proximity = w.boundary_proximity;
-  pw.anchor = w.anchor;
-  AddProximityTerms(problem, mesh, proj, setup.original, pw, b.terms);
+  AddProximityTerms(problem, mesh, &proj, setup.original, ProximityWeightsOf(w), b.terms);
   for (size_t t = 0; t < setup.triples.size(); ++t) {
     const auto& tr = setup.triples[t];
     b.terms["fairness"].push_back(problem.AddResidualBlock(

@@ -499,20 +499,8 @@ PrincipalSymmetricResult SolvePrincipalSymmetric(Mesh& mesh, const ReferenceSurf
             pos(b)));
       }
     }
-    if (project) {
-      ProximityWeights pw;
-      pw.proximity = w.proximity;
-      pw.proximity_point = w.proximity_point;
-      pw.boundary_proximity = w.boundary_proximity;
-      pw.anchor = w.anchor;
-      AddProximityTerms(*problem, mesh, proj, original, pw, terms);
-    } else if (w.anchor > 0) {
-      for (VertexIndex v : mesh.vertices()) {
-        if (mesh.is_isolated(v)) continue;
-        terms["anchor"].push_back(problem->AddResidualBlock(
-            MakeAnchor(original[v.idx()].data(), 1.0), Weight(w.anchor), pos(v)));
-      }
-    }
+    AddProximityTerms(*problem, mesh, project ? &proj : nullptr, original, ProximityWeightsOf(w),
+                      terms);
     for (size_t t = 0; t < triples.size(); ++t) {
       terms["fairness"].push_back(problem->AddResidualBlock(
           MakeFairness(triple_target[t].data(), 1.0), Weight(w.fairness), pos(triples[t][0]),

@@ -204,20 +204,7 @@ Built Build(Mesh& mesh, Setup& setup, const Projection* proj, const SmoothMeshSe
     if (problem.HasParameterBlock(n)) problem.SetManifold(n, new ceres::SphereManifold<3>());
   }
 
-  if (proj) {
-    ProximityWeights pw;
-    pw.proximity = w.proximity;
-    pw.proximity_point = w.proximity_point;
-    pw.boundary_proximity = w.boundary_proximity;
-    pw.anchor = w.anchor;
-    AddProximityTerms(problem, mesh, *proj, setup.original, pw, b.terms);
-  } else if (w.anchor > 0) {
-    for (VertexIndex v : mesh.vertices()) {
-      if (mesh.is_isolated(v)) continue;
-      b.terms["anchor"].push_back(problem.AddResidualBlock(
-          MakeAnchor(setup.original[v.idx()].data(), 1.0), Weight(w.anchor), pos(v)));
-    }
-  }
+  AddProximityTerms(problem, mesh, proj, setup.original, ProximityWeightsOf(w), b.terms);
   if (w.handles > 0) {
     for (const CanonicalHandle& h : s.handles) {
       b.terms["handles"].push_back(problem.AddResidualBlock(

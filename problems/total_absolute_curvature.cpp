@@ -235,7 +235,7 @@ Built Build(Mesh& mesh, const Setup& setup, const TotalAbsoluteCurvatureSettings
     ProximityWeights pw;
     pw.proximity = w.proximity;
     pw.proximity_point = w.proximity_point;
-    AddProximityTerms(problem, mesh, data.projection, data.previous, pw, b.terms);
+    AddProximityTerms(problem, mesh, &data.projection, data.previous, pw, b.terms);
   }
   if (w.regularizer > 0) {
     for (VertexIndex v : mesh.vertices()) {

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "make_mesh.h"
 #include "mesh/generators.h"
 #include "mesh/metrics.h"
 #include "mesh/reference.h"
@@ -27,17 +28,6 @@ void ExpectNear(const Vec3& actual, const Vec3& expected, double tolerance) {
   EXPECT_LE(Norm(Sub(actual, expected)), tolerance)
       << "actual (" << actual[0] << ", " << actual[1] << ", " << actual[2] << "), expected ("
       << expected[0] << ", " << expected[1] << ", " << expected[2] << ")";
-}
-
-Mesh MakeMesh(const std::vector<Vec3>& points, const std::vector<std::vector<int>>& faces) {
-  Mesh mesh;
-  for (const Vec3& p : points) mesh.add_vertex(ToPoint(p));
-  for (const auto& face : faces) {
-    std::vector<VertexIndex> vs;
-    for (int i : face) vs.push_back(VertexIndex(i));
-    EXPECT_NE(mesh.add_face(vs), Mesh::null_face());
-  }
-  return mesh;
 }
 
 // Unit cube [0,1]^3, six outward-oriented quads.

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "make_mesh.h"
 #include "mesh/generators.h"
 #include "mesh/input_error.h"
 #include "mesh/smoothness_metrics.h"
@@ -16,17 +17,6 @@ namespace {
 constexpr double kExact = 1e-12;       // relative, closed-form values
 constexpr double kLatticeLimit = 1e-5;  // relative, Fig. 11 values at h = kLatticeStep/κ
 constexpr double kPercent = 1e-4;       // absolute, on relative errors (0.01 percentage points)
-
-Mesh MakeMesh(const std::vector<Vec3>& points, const std::vector<std::vector<int>>& faces) {
-  Mesh mesh;
-  for (const Vec3& p : points) mesh.add_vertex(ToPoint(p));
-  for (const auto& face : faces) {
-    std::vector<VertexIndex> vs;
-    for (int i : face) vs.push_back(VertexIndex(i));
-    EXPECT_NE(mesh.add_face(vs), Mesh::null_face());
-  }
-  return mesh;
-}
 
 // A valence-6 star: vertex 0 at the origin, neighbours 1..6 at the unit
 // hexagon directions 60°·k (counter-clockwise) with heights z[k].
