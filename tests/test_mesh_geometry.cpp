@@ -38,25 +38,6 @@ Mesh Cube() {
                    {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}});
 }
 
-// Open cylinder of radius 1: `around` x `rows` quads, rings of `around`
-// vertices glued at the seam; vertex (i, j) = j * around + i.
-Mesh Cylinder(int around, int rows) {
-  std::vector<Vec3> points;
-  for (int j = 0; j <= rows; ++j) {
-    for (int i = 0; i < around; ++i) {
-      const double a = 2 * M_PI * i / around;
-      points.push_back({std::cos(a), std::sin(a), double(j)});
-    }
-  }
-  std::vector<std::vector<int>> faces;
-  for (int j = 0; j < rows; ++j) {
-    for (int i = 0; i < around; ++i) {
-      const int k = (i + 1) % around;
-      faces.push_back({j * around + i, j * around + k, (j + 1) * around + k, (j + 1) * around + i});
-    }
-  }
-  return MakeMesh(points, faces);
-}
 
 Vec3 FlatSquare(double u, double v) { return {u, v, 0.0}; }
 
@@ -307,7 +288,7 @@ TEST(Topology, GridPolylinesAreRowsAndColumns) {
 
 TEST(Topology, CylinderRingsAreClosedPolylines) {
   const int around = 8, rows = 2;
-  const Mesh cylinder = Cylinder(around, rows);
+  const Mesh cylinder = QuadCylinder(1.0, double(rows), around, rows);
   EXPECT_TRUE(Corners(cylinder).empty());  // the boundary rings turn by 45 degrees
   const auto polylines = MeshPolylines(cylinder);
   ASSERT_EQ(polylines.size(), size_t((rows + 1) + around));

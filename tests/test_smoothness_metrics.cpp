@@ -34,25 +34,6 @@ VertexStar Center(const Mesh& mesh) {
   return ClassifyVertexStar(mesh, FaceNormals(mesh), VertexIndex(0));
 }
 
-// Open cylinder of radius `radius`, height `height`: `around` x `rows`
-// quads (a principal mesh), outward normals.
-Mesh Cylinder(double radius, double height, int around, int rows) {
-  std::vector<Vec3> points;
-  for (int j = 0; j <= rows; ++j) {
-    for (int i = 0; i < around; ++i) {
-      const double a = 2 * M_PI * i / around;
-      points.push_back({radius * std::cos(a), radius * std::sin(a), height * j / rows});
-    }
-  }
-  std::vector<std::vector<int>> faces;
-  for (int j = 0; j < rows; ++j) {
-    for (int i = 0; i < around; ++i) {
-      const int k = (i + 1) % around;
-      faces.push_back({j * around + i, j * around + k, (j + 1) * around + k, (j + 1) * around + i});
-    }
-  }
-  return MakeMesh(points, faces);
-}
 
 // UV sphere of radius `radius`: quads between parallels, triangle fans at
 // the poles, outward normals (a principal mesh of a convex closed surface).
@@ -113,7 +94,7 @@ TEST(SmoothnessMetrics, PlanarMeshesHaveZeroEnergyAndCurvature) {
 TEST(SmoothnessMetrics, CylinderPrincipalMeshApproachesTotalAbsoluteCurvature) {
   const double radius = 2.0, height = 3.0;
   const int around = 64;
-  const Mesh mesh = Cylinder(radius, height, around, 7);
+  const Mesh mesh = QuadCylinder(radius, height, around, 7);
   const SmoothnessMetrics m = ComputeSmoothnessMetrics(mesh);
   const double c_phi = 2 * M_PI * height;  // ∫|κ| dA = (1/r)(2π r h)
   // Vertical edges: total length n·h, dihedral angle 2π/n; rings: angle 0.
@@ -331,7 +312,7 @@ TEST(VertexStars, BoundaryAndDegenerateStarsAreNotMeasured) {
 }
 
 TEST(SmoothnessMetrics, JsonTextAndColours) {
-  const Mesh mesh = Cylinder(1.0, 1.0, 8, 2);
+  const Mesh mesh = QuadCylinder(1.0, 1.0, 8, 2);
   const SmoothnessMetrics m = ComputeSmoothnessMetrics(mesh);
   const nlohmann::json json = SmoothnessMetricsToJson(m, 4.0);
   EXPECT_DOUBLE_EQ(json["E"].get<double>(), m.E);
