@@ -510,8 +510,8 @@ void WritePolylinesObj(const std::string& path, const std::vector<std::vector<Ve
     file << '\n';
     next += line.size();
   }
-  file.flush();
-  if (!file) throw InputError(path, 0, "", "error writing the polyline file");
+  file.close();
+  if (file.fail()) throw InputError(path, 0, "", "error writing the polyline file");
 }
 
 SampledPatchwork DarbouxMapPatchwork(const SampledPatchwork& patchwork,

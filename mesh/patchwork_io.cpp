@@ -77,8 +77,8 @@ void WritePatchworkPly(const std::string& path, const SampledPatchwork& patchwor
       for (int v : t) Put(out, static_cast<std::int32_t>(index[v]));
     }
   }
-  out.flush();
-  if (!out) throw InputError(path, 0, "", "cannot write the patchwork");
+  out.close();
+  if (out.fail()) throw InputError(path, 0, "", "cannot write the patchwork");
 }
 
 }  // namespace archgeo

@@ -67,6 +67,9 @@ class Builder {
   virtual std::set<std::string> Keys() const = 0;
   // Extra `output.<key>: PATH` entries this builder writes.
   virtual std::set<std::string> OutputKeys() const { return {}; }
+  // Files the builder reads besides the mesh and the reference (after Read):
+  // no output may name them.
+  virtual std::vector<std::string> InputFiles() const { return {}; }
   // Reads the builder's keys from the spec's root mapping (all optional;
   // absent keys keep the documented defaults). Throws InputError.
   virtual void Read(const SpecReader& reader, const YAML::Node& root) = 0;

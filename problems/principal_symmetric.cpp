@@ -24,6 +24,7 @@
 #include "energies/fairness.h"
 #include "energies/principal_symmetric.h"
 #include "mesh/input_error.h"
+#include "mesh/output_files.h"
 #include "mesh/reference.h"
 #include "mesh/smoothness_metrics.h"
 #include "mesh/topology.h"
@@ -709,11 +710,17 @@ class PrincipalSymmetricBuilder : public Builder {
                     nlohmann::json& report) const override {
     const auto it = temporary.find("principal_edges");
     if (it == temporary.end()) return;
-    std::ofstream out(it->second);
-    out << "# principal edges of the output mesh (archgeo principal_symmetric): \"i j\", "
-           "0-based vertex indices\n";
-    for (const VertexPair& e : labels_) out << e.first << " " << e.second << "\n";
-    if (!out) throw InputError(it->second, 0, "output.principal_edges", "cannot write");
+    std::string text =
+        "# principal edges of the output mesh (archgeo principal_symmetric): \"i j\", "
+        "0-based vertex indices\n";
+    for (const VertexPair& e : labels_) {
+      text += std::to_string(e.first) + " " + std::to_string(e.second) + "\n";
+    }
+    WriteTextFile(it->second, text, "output.principal_edges");
+  }
+
+  std::vector<std::string> InputFiles() const override {
+    return edges_path_.empty() ? std::vector<std::string>{} : std::vector<std::string>{edges_path_};
   }
 
  private:

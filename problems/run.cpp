@@ -6,8 +6,7 @@
 #include <set>
 
 #include <glog/logging.h>
-#include <fstream>
-#include <iomanip>
+#include <functional>
 
 #include "mesh/input_error.h"
 #include "mesh/io.h"
@@ -120,17 +119,44 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
 
   // Outputs are checked and staged before any work: a bad output name or an
   // output that would overwrite an input fails at once.
-  StagedOutputs staged(spec.reference.empty()
-                           ? std::vector<std::string>{spec.spec_path, spec.mesh}
-                           : std::vector<std::string>{spec.spec_path, spec.mesh, spec.reference});
+  // Every input (the spec, the mesh, the reference, files a builder reads)
+  // is protected: no output may name it.
+  std::vector<std::string> inputs = {spec.spec_path, spec.mesh};
+  if (!spec.reference.empty()) inputs.push_back(spec.reference);
+  for (const std::string& path : builder.InputFiles()) inputs.push_back(path);
+  StagedOutputs staged(inputs);
   std::string mesh_temporary, report_temporary;
   if (!spec.output_mesh.empty()) {
-    CheckMeshExtension(spec.output_mesh);
-    mesh_temporary = staged.Stage(spec.output_mesh);
+    try {
+      CheckMeshExtension(spec.output_mesh);
+    } catch (const InputError& e) {
+      throw InputError(spec.output_mesh, 0, "output.mesh", e.message());
+    }
+    mesh_temporary = staged.Stage(spec.output_mesh, "output.mesh");
   }
-  if (!spec.output_report.empty()) report_temporary = staged.Stage(spec.output_report);
+  if (!spec.output_report.empty()) {
+    report_temporary = staged.Stage(spec.output_report, "output.report");
+  }
   std::map<std::string, std::string> extra_temporary;
-  for (const auto& [key, path] : spec.extra_outputs) extra_temporary[key] = staged.Stage(path);
+  for (const auto& [key, path] : spec.extra_outputs) {
+    extra_temporary[key] = staged.Stage(path, "output." + key);
+  }
+  // An error a writer reports about a temporary names the user's path.
+  auto writing = [&](const std::function<void()>& write) {
+    try {
+      write();
+    } catch (const InputError& e) {
+      if (e.file() == mesh_temporary && !mesh_temporary.empty()) {
+        throw InputError(spec.output_mesh, e.line(), "output.mesh", e.message());
+      }
+      for (const auto& [key, temporary] : extra_temporary) {
+        if (e.file() == temporary) {
+          throw InputError(spec.extra_outputs.at(key), e.line(), "output." + key, e.message());
+        }
+      }
+      throw;
+    }
+  };
 
   ReadInfo info;
   const Mesh read = ReadMesh(spec.mesh, &info);
@@ -284,10 +310,10 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   if (!spec.output_mesh.empty()) {
     FaceColors colors = builder.Colors(output, spec.color_max);
     if (colors.empty()) colors = PlanarityColors(MeasureFacePlanarity(output), spec.color_max);
-    WriteMesh(mesh_temporary, output, &colors, spec.ascii_ply);
+    writing([&] { WriteMesh(mesh_temporary, output, &colors, spec.ascii_ply); });
     rep["output_mesh"] = spec.output_mesh;
   }
-  builder.WriteOutputs(output, extra_temporary, rep);
+  writing([&] { builder.WriteOutputs(output, extra_temporary, rep); });
   for (const auto& [key, path] : spec.extra_outputs) rep["output_" + key] = path;
   nlohmann::json seconds = {{"read", read_seconds},
                             {"reference_and_metrics_before", setup_seconds},
@@ -299,9 +325,11 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   rep["seconds"] = seconds;
   if (!spec.output_report.empty()) {
     rep["output_report"] = spec.output_report;
-    std::ofstream out(report_temporary);
-    out << std::setw(2) << rep << "\n";
-    if (!out) throw InputError(spec.output_report, 0, "output.report", "cannot write the report");
+    try {
+      WriteTextFile(report_temporary, rep.dump(2) + "\n", "output.report");
+    } catch (const InputError& e) {
+      throw InputError(spec.output_report, 0, "output.report", e.message());
+    }
   }
   staged.Commit();
 

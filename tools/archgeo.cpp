@@ -17,6 +17,7 @@
 #include <iostream>
 
 #include "mesh/input_error.h"
+#include "mesh/output_files.h"
 #include "problems/darboux.h"
 #include "problems/generate.h"
 #include "problems/run.h"
@@ -53,6 +54,9 @@ int Measure(const std::string& mesh, const std::string& reference, bool json) {
 
 int main(int argc, char** argv) {
   google::InitGoogleLogging(argv[0]);
+  // A signal removes the staged temporaries and leaves existing outputs as
+  // they were (mesh/output_files.h).
+  archgeo::InstallOutputSignalCleanup();
   FLAGS_minloglevel = google::GLOG_ERROR;
   FLAGS_logtostderr = true;
 

@@ -1,0 +1,282 @@
+// The output protocol of mesh/output_files.h: regular files only, nothing
+// replaced before everything is written, all old or all new when a rename
+// fails or a signal arrives, checked writes on a full disk — as a unit and
+// end to end through the `archgeo` binary.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "mesh/input_error.h"
+#include "mesh/output_files.h"
+#include "tests/scratch_dir.h"
+
+namespace archgeo {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string Slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+class OutputsTest : public ScratchDirTest {
+ protected:
+  // No temporaries and no backups anywhere under the scratch folder.
+  void ExpectNoLeftovers() const {
+    for (const auto& entry : fs::recursive_directory_iterator(dir_)) {
+      const std::string name = entry.path().filename().string();
+      EXPECT_EQ(name.find(".tmp-"), std::string::npos) << entry.path();
+      EXPECT_EQ(name.find(".bak-"), std::string::npos) << entry.path();
+    }
+  }
+};
+
+TEST_F(OutputsTest, SpecialFilesAreRefusedAsOutputs) {
+  ASSERT_EQ(mkfifo(Path("pipe").c_str(), 0600), 0);
+  fs::create_directories(Path("folder"));
+  StagedOutputs outputs;
+  for (const std::string& target : {std::string("/dev/null"), Path("pipe"), Path("folder")}) {
+    try {
+      outputs.Stage(target, "output.report");
+      ADD_FAILURE() << target << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file(), target);
+      EXPECT_EQ(e.key(), "output.report");
+      EXPECT_NE(e.message().find("not a regular file"), std::string::npos) << e.what();
+    }
+  }
+  struct stat info;
+  ASSERT_EQ(stat("/dev/null", &info), 0);
+  EXPECT_TRUE(S_ISCHR(info.st_mode));  // the device node is still a device
+}
+
+TEST_F(OutputsTest, WriterErrorsNameTheUsersPath) {
+  StagedOutputs outputs;
+  try {
+    outputs.Write(Path("mesh.ply"), "output.mesh", [](const std::string& temporary) {
+      throw InputError(temporary, 0, "", "cannot write the mesh file");
+    });
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), Path("mesh.ply"));
+    EXPECT_EQ(e.key(), "output.mesh");
+  }
+}
+
+TEST_F(OutputsTest, AFailedRenameRestoresEveryOldOutput) {
+  const std::string a = WriteFile("a.json", "old a");
+  const std::string b = WriteFile("b.json", "old b");
+  {
+    StagedOutputs outputs;
+    WriteTextFile(outputs.Stage(a), "new a");
+    WriteTextFile(outputs.Stage(b), "new b");
+    // After the first rename, b becomes a folder that is not empty: the
+    // second rename fails.
+    outputs.SetRenameHookForTesting([&](int k, const std::string&) {
+      if (k != 0) return;
+      fs::remove(b);
+      fs::create_directories(b + "/x");
+    });
+    try {
+      outputs.Commit();
+      ADD_FAILURE() << "the commit succeeded";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file(), b);
+      EXPECT_NE(e.message().find("old content"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(Slurp(a), "old a");  // restored from its backup
+  fs::remove_all(b);
+  ExpectNoLeftovers();
+}
+
+TEST_F(OutputsTest, AFailedRenameRemovesNewOutputsThatHadNoOldVersion) {
+  const std::string a = Path("new.json");
+  const std::string b = WriteFile("b.json", "old b");
+  {
+    StagedOutputs outputs;
+    WriteTextFile(outputs.Stage(a), "new a");
+    WriteTextFile(outputs.Stage(b), "new b");
+    outputs.SetRenameHookForTesting([&](int k, const std::string&) {
+      if (k != 0) return;
+      fs::remove(b);
+      fs::create_directories(b + "/x");
+    });
+    EXPECT_THROW(outputs.Commit(), InputError);
+  }
+  EXPECT_FALSE(fs::exists(a));
+  fs::remove_all(b);
+  ExpectNoLeftovers();
+}
+
+// A SIGTERM during the renames is held until every output is new.
+TEST_F(OutputsTest, ASignalDuringTheCommitEndsWithAllNewOutputs) {
+  const std::string a = WriteFile("a.json", "old a");
+  const std::string b = WriteFile("b.json", "old b");
+  EXPECT_EXIT(
+      {
+        InstallOutputSignalCleanup();
+        StagedOutputs outputs;
+        WriteTextFile(outputs.Stage(a), "new a");
+        WriteTextFile(outputs.Stage(b), "new b");
+        outputs.SetRenameHookForTesting([](int k, const std::string&) {
+          if (k == 0) kill(getpid(), SIGTERM);
+        });
+        outputs.Commit();
+        std::_Exit(0);  // not reached: the deferred signal ends the process
+      },
+      ::testing::KilledBySignal(SIGTERM), "");
+  EXPECT_EQ(Slurp(a), "new a");
+  EXPECT_EQ(Slurp(b), "new b");
+  ExpectNoLeftovers();
+}
+
+// A SIGINT while the outputs are being written removes the temporaries and
+// the folders made for them; the old outputs stay.
+TEST_F(OutputsTest, ASignalBeforeTheCommitLeavesTheOldOutputs) {
+  const std::string a = WriteFile("a.json", "old a");
+  EXPECT_EXIT(
+      {
+        InstallOutputSignalCleanup();
+        StagedOutputs outputs;
+        WriteTextFile(outputs.Stage(a), "new a");
+        WriteTextFile(outputs.Stage(Path("made/for/b.json")), "new b");
+        kill(getpid(), SIGINT);
+        std::_Exit(0);  // not reached
+      },
+      ::testing::KilledBySignal(SIGINT), "");
+  EXPECT_EQ(Slurp(a), "old a");
+  EXPECT_FALSE(fs::exists(Path("made")));
+  ExpectNoLeftovers();
+}
+
+// A full disk (here: a file-size limit, EFBIG) is an error, not an empty file.
+// Exits 7 when WriteTextFile throws the right error.
+void WriteBeyondAFileSizeLimit(const std::string& path) {
+  signal(SIGXFSZ, SIG_IGN);
+  rlimit limit;
+  limit.rlim_cur = limit.rlim_max = 4096;
+  setrlimit(RLIMIT_FSIZE, &limit);
+  try {
+    WriteTextFile(path, std::string(100000, 'x'), "output.report");
+  } catch (const InputError& e) {
+    std::_Exit(e.file() == path && e.key() == "output.report" ? 7 : 8);
+  }
+  std::_Exit(9);
+}
+
+TEST_F(OutputsTest, AFullDiskIsAnErrorNamingTheFile) {
+  const std::string path = Path("big.json");
+  EXPECT_EXIT(WriteBeyondAFileSizeLimit(path), ::testing::ExitedWithCode(7), "");
+}
+
+// --- end to end -----------------------------------------------------------------
+
+struct Outcome {
+  int code = 0;       // exit code, or 128 + signal
+  std::string output;  // stdout + stderr
+};
+
+Outcome Shell(const std::string& command) {
+  Outcome o;
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  std::array<char, 4096> buf;
+  while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) o.output.append(buf.data(), n);
+  const int status = pclose(pipe);
+  o.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return o;
+}
+
+std::string Archgeo() { return std::string(ARCHGEO_BINARY); }
+std::string Example(const std::string& name) {
+  return std::string(ARCHGEO_SOURCE_DIR) + "/examples/" + name;
+}
+
+class OutputsCliTest : public OutputsTest {
+ protected:
+  std::string Spec(const std::string& outputs) const {
+    return WriteFile("spec.yaml", "mesh: " + Example("roof_grid.obj") +
+                                      "\nproblem: planar_quads\noutput:\n" + outputs);
+  }
+};
+
+TEST_F(OutputsCliTest, AReportThatDoesNotFitIsAnErrorAndTheOldOutputsStay) {
+  const std::string old_report = WriteFile("o.json", "old report");
+  const std::string spec = Spec("  report: o.json\n");
+  // 4 KiB: too little for the report (~6 KB), the last file written.
+  const Outcome o = Shell("bash -c \"trap '' XFSZ; ulimit -f 4; exec " + Archgeo() + " solve " +
+                        spec + " --quiet\"");
+  EXPECT_EQ(o.code, 2) << o.output;
+  EXPECT_NE(o.output.find(Path("o.json") + ": key 'output.report'"), std::string::npos) << o.output;
+  EXPECT_EQ(o.output.find("wrote"), std::string::npos) << o.output;
+  EXPECT_EQ(Slurp(old_report), "old report");
+  ExpectNoLeftovers();
+}
+
+TEST_F(OutputsCliTest, ADeviceIsRefusedAsAnOutput) {
+  const std::string spec = Spec("  report: /dev/null\n");
+  const Outcome o = Shell(Archgeo() + " solve " + spec + " --quiet");
+  EXPECT_EQ(o.code, 2) << o.output;
+  EXPECT_NE(o.output.find("/dev/null: key 'output.report'"), std::string::npos) << o.output;
+  struct stat info;
+  ASSERT_EQ(stat("/dev/null", &info), 0);
+  EXPECT_TRUE(S_ISCHR(info.st_mode));
+}
+
+TEST_F(OutputsCliTest, ThePrincipalEdgesInputIsNeverOverwritten) {
+  fs::copy_file(Example("principal_torus.obj"), Path("torus.obj"));
+  fs::copy_file(Example("principal_torus_edges.txt"), Path("edges.txt"));
+  const std::string edges = Slurp(Path("edges.txt"));
+  const std::string spec =
+      WriteFile("spec.yaml",
+                "mesh: torus.obj\nproblem: principal_symmetric\nprincipal_edges: edges.txt\n"
+                "output:\n  principal_edges: edges.txt\n");
+  const Outcome o = Shell(Archgeo() + " solve " + spec + " --quiet");
+  EXPECT_EQ(o.code, 2) << o.output;
+  EXPECT_NE(o.output.find("refusing to overwrite the input file"), std::string::npos) << o.output;
+  EXPECT_EQ(Slurp(Path("edges.txt")), edges);
+}
+
+// SIGINT stops a long solve within a second; the old outputs stay and no
+// temporary or new folder is left.
+TEST_F(OutputsCliTest, SigintStopsASolveAndLeavesTheOldOutputs) {
+  const std::string old_report = WriteFile("o.json", "old report");
+  const std::string spec =
+      WriteFile("spec.yaml", "mesh: " + std::string(ARCHGEO_DATA_DIR) +
+                                 "/directional_Concerthall.off\nproblem: smooth_mesh\n"
+                                 "output:\n  mesh: new/o.ply\n  report: o.json\n");
+  const std::string pid_file = Path("pid");
+  const std::string command =
+      Archgeo() + " solve " + spec + " --quiet > /dev/null 2>&1 & echo $! > " + pid_file +
+      "; wait $!; echo $? > " + Path("status");
+  std::thread runner([&] { Shell("bash -c '" + command + "'"); });
+  std::this_thread::sleep_for(std::chrono::milliseconds(2500));  // the solve is running
+  const pid_t pid = std::stoi(Slurp(pid_file));
+  const auto sent = std::chrono::steady_clock::now();
+  kill(pid, SIGINT);
+  runner.join();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
+  EXPECT_LT(seconds, 1.0);
+  EXPECT_EQ(std::stoi(Slurp(Path("status"))), 128 + SIGINT);
+  EXPECT_EQ(Slurp(old_report), "old report");
+  EXPECT_FALSE(fs::exists(Path("new")));
+  ExpectNoLeftovers();
+}
+
+}  // namespace
+}  // namespace archgeo
