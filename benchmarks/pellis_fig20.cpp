@@ -29,7 +29,7 @@
 
 #include "benchmarks/bench_util.h"
 #include "mesh/io.h"
-#include "problems/principal_symmetric.h"
+#include "mesh/principal_edges.h"
 
 namespace {
 
@@ -105,11 +105,11 @@ int main(int argc, char** argv) {
     const double unit = bench::Get(r, "/before/mean_edge_length");  // canonical → file units
     const bench::Json& rounds = r.at("rounds");
     const bench::Json& out = rounds.at(r.at("output_round").get<size_t>());  // the output
-    const double e0 = rounds.front().at("E").get<double>() * unit;
-    const double e1 = out.at("E").get<double>() * unit;
-    const double ep1 = out.at("E_prime").get<double>() * unit;
-    const int p0 = rounds.front().at("self_intersecting_pyramids").get<int>();
-    const int p1 = out.at("self_intersecting_pyramids").get<int>();
+    const double e0 = rounds.front().at("measures").at("E").get<double>() * unit;
+    const double e1 = out.at("measures").at("E").get<double>() * unit;
+    const double ep1 = out.at("measures").at("E_prime").get<double>() * unit;
+    const int p0 = int(rounds.front().at("measures").at("self_intersecting_pyramids").get<double>());
+    const int p1 = int(out.at("measures").at("self_intersecting_pyramids").get<double>());
     const double disp = bench::Get(r, "/after/displacement_max_relative");
     const int iterations = r.at("iterations").at("inner").get<int>();
     const double ceres = bench::Get(r, "/seconds/ceres");
@@ -118,9 +118,9 @@ int main(int argc, char** argv) {
               bench::Fmt("%d", int(bench::Get(r, "/before/faces"))),
               bench::Fmt("%zu", size_t(archgeo::ReadMesh(c.path).number_of_edges())),
               bench::Fmt("%.0fk", r.at("variables").get<int>() / 1000.0),
-              bench::Fmt("%g", t.at("step").get<double>()),
+              bench::Fmt("%g", t.at("step").at("weight").get<double>()),
               bench::Fmt("%g", t.at("fairness").at("weight").get<double>()),
-              bench::Fmt("%g", t.at("dihedral_energy").get<double>()),
+              bench::Fmt("%g", t.at("dihedral_energy").at("weight").get<double>()),
               bench::Fmt("%g", t.at("proximity").at("weight").get<double>()),
               bench::Fmt("%.4g", e0), bench::Fmt("%.4g", e1), bench::Fmt("%.4g", ep1),
               bench::Fmt("%d", r.at("iterations").at("outer").get<int>()),

@@ -150,17 +150,17 @@ int main(int argc, char** argv) {
     const double ref_diagonal = c.reference.empty() ? scale : BboxDiagonal(c.reference);
     const double dist = Get(r, "/after/surface_distance_max") / ref_diagonal;
     const double disp = Get(r, "/after/displacement_max_relative");
-    const double star = Get(r, "/star_planarity_max");
+    const double star = Get(r, "/details/star_planarity_max");
     const double star_before = archgeo::BuildHNet(archgeo::ReadMesh(c.mesh)).star_planarity_max;
-    const double amax = Get(r, "/alpha_max"), amean = Get(r, "/alpha_mean");
-    const double wmin = Get(r, "/W_min"), wmax = Get(r, "/W_max");
+    const double amax = Get(r, "/details/alpha_max"), amean = Get(r, "/details/alpha_mean");
+    const double wmin = Get(r, "/details/W_min"), wmax = Get(r, "/details/W_max");
     const Json& t = r["settings"]["terms"];
     const std::string solved = r.contains("net") ? r["net"].value("net", "mesh") : "mesh";
     table.Add({c.name, c.paper->name, solved, std::to_string(int(Get(r, "/after/faces"))),
                std::to_string(int(Get(r, "/after/vertices"))),
                Fmt("%.3g", t["fairness"]["weight"].get<double>()),
                Fmt("%.3g", t["proximity"]["weight"].get<double>()),
-               Fmt("%.3g", t["frame_coplanarity"].get<double>()), Fmt("%.4f", amax),
+               Fmt("%.3g", t["frame_coplanarity"]["weight"].get<double>()), Fmt("%.4f", amax),
                Fmt("%.4f", amean), Fmt("%.2e", star_before), Fmt("%.2e", star), Fmt("%.2e", dist), Fmt("%.2e", disp),
                Fmt("[%.4g, %.4g]", wmin, wmax), Fmt("%.1f", Get(r, "/wall_seconds"))});
     const PaperRow& p = *c.paper;

@@ -19,3 +19,32 @@ ceres::CostFunction* MakeAnchor(const double target[3], double inv_length) {
 }
 
 }  // namespace archgeo
+
+// --- term `anchor` -------------------------------------------------------------
+#include "core/term.h"
+
+namespace archgeo::terms {
+namespace {
+
+void AddAnchor(TermContext& c, size_t i) {
+  const int v = c.elements->Vertices(i)[0];
+  c.Add(MakeAnchor(c.Original(v), 1.0), {c.Position(v)});
+}
+
+}  // namespace
+
+const TermSpec& anchor() {
+  static const TermSpec spec = [] {
+    TermSpec t;
+    t.name = "anchor";
+    t.summary = "pull towards each vertex's position at the start of the solve";
+    t.paper = "[Shi 2014, §3.2, F_prox point part]";
+    t.elements = "vertices";
+    t.group = "proximity";
+    t.add = &AddAnchor;
+    return t;
+  }();
+  return spec;
+}
+
+}  // namespace archgeo::terms

@@ -23,3 +23,37 @@ ceres::CostFunction* MakeBoundaryProximity(const double point[3],
 }
 
 }  // namespace archgeo
+
+// --- term `boundary_proximity` -------------------------------------------------
+#include "core/term.h"
+
+namespace archgeo::terms {
+namespace {
+
+void AddBoundaryProximity(TermContext& c, size_t i) {
+  const int v = c.elements->Vertices(i)[0];
+  if (!c.OnBoundaryCurve(v)) return;
+  c.Add(MakeBoundaryProximity(c.ProjectedPoint(v), c.ProjectedDirection(v), 1.0),
+        {c.Position(v)});
+}
+
+}  // namespace
+
+const TermSpec& boundary_proximity() {
+  static const TermSpec spec = [] {
+    TermSpec t;
+    t.name = "boundary_proximity";
+    t.summary =
+        "boundary vertices: distance to the tangent line of the reference's boundary at the "
+        "closest point (when the reference has a boundary)";
+    t.paper = "[Zadravec 2010, §6, f∂_prox]";
+    t.elements = "vertices";
+    t.group = "proximity";
+    t.needs_projection = true;
+    t.add = &AddBoundaryProximity;
+    return t;
+  }();
+  return spec;
+}
+
+}  // namespace archgeo::terms

@@ -21,3 +21,48 @@ ceres::CostFunction* MakeProximity(const double point[3],
 }
 
 }  // namespace archgeo
+
+// --- term `proximity` ----------------------------------------------------------
+#include "core/term.h"
+#include "energies/anchor.h"
+
+namespace archgeo::terms {
+namespace {
+
+// Interior vertices (and boundary vertices not sent to the reference's
+// boundary curve): the tangent-plane distance; every vertex: the distance to
+// the closest point itself with `point_weight`.
+void AddProximity(TermContext& c, size_t i) {
+  const int v = c.elements->Vertices(i)[0];
+  if (!c.OnBoundaryCurve(v)) {
+    c.Add(MakeProximity(c.ProjectedPoint(v), c.ProjectedDirection(v), 1.0), {c.Position(v)});
+  }
+  const double point_weight = c.Number("point_weight");
+  if (point_weight > 0) {
+    c.Add(MakeAnchor(c.ProjectedPoint(v), 1.0), {c.Position(v)}, "proximity_point", point_weight);
+  }
+}
+
+}  // namespace
+
+const TermSpec& proximity() {
+  static const TermSpec spec = [] {
+    TermSpec t;
+    t.name = "proximity";
+    t.summary =
+        "distance to the reference's tangent plane at the closest point (+ point_weight × "
+        "distance to that point), re-projected every round";
+    t.paper = "[Zadravec 2010, §6, f_prox; Shi 2014, §3.2, F_prox]";
+    t.elements = "vertices";
+    t.group = "proximity";
+    t.needs_projection = true;
+    t.parts = {"proximity_point"};
+    t.options = {NumberKey("point_weight", 0.0, 0, 1e12,
+                           "weight of the distance to the closest point itself")};
+    t.add = &AddProximity;
+    return t;
+  }();
+  return spec;
+}
+
+}  // namespace archgeo::terms

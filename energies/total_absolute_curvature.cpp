@@ -81,3 +81,49 @@ VertexShapeOperator EvaluateVertexShapeOperator(
 }
 
 }  // namespace archgeo
+
+// --- term `total_absolute_curvature` -------------------------------------------
+#include "core/term.h"
+
+namespace archgeo::terms {
+namespace {
+
+// Element: (v, w_1 … w_n), the counter-clockwise fan of v (open: from one
+// boundary neighbour to the other). The IRLS weights 1/(|λ| + ε) come from
+// the tangential eigenvalues at the start of the round.
+void AddTotalAbsoluteCurvature(TermContext& c, size_t i) {
+  const int* s = c.elements->Vertices(i);
+  const int count = c.elements->Count(i);
+  const bool closed = !c.elements->Has(i, kOpen);
+  std::vector<const double*> ring;
+  std::vector<double*> blocks{c.Position(s[0])};
+  for (int k = 1; k < count; ++k) {
+    ring.push_back(c.Position(s[k]));
+    blocks.push_back(c.Position(s[k]));
+  }
+  const VertexShapeOperator op = EvaluateVertexShapeOperator(c.Position(s[0]), ring, closed);
+  const double epsilon = c.Number("epsilon");
+  const double omega1 = TotalAbsoluteCurvatureIrlsWeight(op.lambda1, 1.0, epsilon);
+  const double omega2 = TotalAbsoluteCurvatureIrlsWeight(op.lambda2, 1.0, epsilon);
+  c.Add(MakeTotalAbsoluteCurvature(count - 1, closed, 1.0, omega1, omega2), blocks);
+}
+
+}  // namespace
+
+const TermSpec& total_absolute_curvature() {
+  static const TermSpec spec = [] {
+    TermSpec t;
+    t.name = "total_absolute_curvature";
+    t.summary =
+        "total absolute curvature Σ |λ1| + |λ2| of the vertex shape operators W′ (IRLS)";
+    t.paper = "[Pellis 2019, §5.3]";
+    t.elements = "fans";
+    t.options = {NumberKey("epsilon", 1e-3, 1e-12, 1e3,
+                           "ε of the IRLS weights 1/(|λ_prev|/L + ε) (unit-free)")};
+    t.add = &AddTotalAbsoluteCurvature;
+    return t;
+  }();
+  return spec;
+}
+
+}  // namespace archgeo::terms

@@ -28,7 +28,7 @@
 #include <string>
 
 #include "mesh/surface_mesh.h"
-#include "problems/builder.h"
+#include "problems/model.h"
 
 namespace archgeo {
 

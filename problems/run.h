@@ -1,13 +1,13 @@
-// archgeo — one `archgeo solve` run: read the spec's files, build and solve
-// the problem in the canonical frame, measure before and after, write the
-// outputs atomically.
+// archgeo — one `archgeo solve` run: read the spec's files, solve the problem
+// in the canonical frame (level by level with multiresolution) through the
+// one loop, measure before and after, write the outputs atomically.
 #pragma once
 
 #include <string>
 
 #include <nlohmann/json.hpp>
 
-#include "problems/progress.h"
+#include "core/loop.h"
 #include "problems/spec.h"
 
 namespace archgeo {

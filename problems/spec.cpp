@@ -1,146 +1,395 @@
 #include "problems/spec.h"
 
+#include <sys/stat.h>
 #include <yaml-cpp/yaml.h>
 
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
-#include <limits>
+#include <map>
 #include <set>
+#include <sstream>
 
+#include "core/solver_options.h"
+#include "energies/registry.h"
 #include "mesh/input_error.h"
-#include "problems/builders.h"
-#include "problems/spec_reader.h"
+#include "problems/custom.h"
+#include "problems/registry.h"
+#include "problems/schema.h"
 
 namespace archgeo {
 namespace {
 
-void ReadSolver(const SpecReader& r, const YAML::Node& s, SolverSettings& out) {
-  r.CheckKeys(s, "solver",
-              {"linear_solver", "sparse_library", "trust_region", "preconditioner",
-               "max_iterations", "outer_iterations", "function_tolerance", "gradient_tolerance",
-               "parameter_tolerance", "threads"});
-  for (auto [key, field] : {std::pair{"linear_solver", &out.linear_solver},
-                             std::pair{"sparse_library", &out.sparse_library},
-                             std::pair{"trust_region", &out.trust_region},
-                             std::pair{"preconditioner", &out.preconditioner}}) {
-    if (s[key]) {
-      const std::vector<std::string> choices = SolverChoices(key);
-      *field = r.String(s[key], std::string("solver.") + key, {choices.begin(), choices.end()});
-    }
-  }
-  if (s["max_iterations"]) {
-    out.max_iterations = r.Integer(s["max_iterations"], "solver.max_iterations", 1, 100000);
-  }
-  if (s["outer_iterations"]) {
-    out.outer_iterations = r.Integer(s["outer_iterations"], "solver.outer_iterations", 1, 1000);
-  }
-  if (s["function_tolerance"]) {
-    out.function_tolerance = r.Number(s["function_tolerance"], "solver.function_tolerance", 0, 1);
-  }
-  if (s["gradient_tolerance"]) {
-    out.gradient_tolerance = r.Number(s["gradient_tolerance"], "solver.gradient_tolerance", 0, 1);
-  }
-  if (s["parameter_tolerance"]) {
-    out.parameter_tolerance =
-        r.Number(s["parameter_tolerance"], "solver.parameter_tolerance", 0, 1);
-  }
-  if (s["threads"]) out.threads = r.Integer(s["threads"], "solver.threads", 1, 256);
-}
+namespace fs = std::filesystem;
 
-void ReadFixed(const SpecReader& r, const YAML::Node& f, ProblemSpec& spec, bool overridden) {
-  spec.fixed_file = overridden ? "--set" : spec.spec_path;
-  spec.fixed_line = overridden || f.Mark().line < 0 ? 0 : f.Mark().line + 1;
-  if (f.IsSequence()) {
-    spec.fixed = "ids";
-    for (size_t i = 0; i < f.size(); ++i) {
-      spec.fixed_ids.push_back(
-          r.Integer(f[i], "fixed[" + std::to_string(i) + "]", 0, std::numeric_limits<int>::max()));
-    }
-  } else {
-    spec.fixed = r.String(f, "fixed", {"none", "corners", "boundary"});
-  }
-}
-
-void ReadOutput(const SpecReader& r, const YAML::Node& o, const Builder& builder,
-                ProblemSpec& spec) {
-  std::set<std::string> keys = {"mesh", "report", "color_max", "ascii_ply"};
-  for (const std::string& k : builder.OutputKeys()) keys.insert(k);
-  r.CheckKeys(o, "output", keys);
-  // An empty value (`mesh:` or --set output.mesh=) writes no file.
-  auto path = [&](const std::string& key) {
-    const YAML::Node n = o[key];
-    return n && !n.IsNull() ? r.Path(n, "output." + key) : std::string();
+// Keys of earlier archgeo versions, for a helpful message.
+const std::map<std::string, std::string>& Renamed() {
+  static const std::map<std::string, std::string> renamed = {
+      {"solver.linear_solver", "solver.linear_solver_type"},
+      {"solver.sparse_library", "solver.sparse_linear_algebra_library_type"},
+      {"solver.trust_region", "solver.trust_region_strategy_type"},
+      {"solver.preconditioner", "solver.preconditioner_type"},
+      {"solver.max_iterations", "solver.max_num_iterations"},
+      {"solver.threads", "solver.num_threads"},
+      {"solver.outer_iterations", "schedule.outer_iterations"},
+      {"terms.target", "terms.total_absolute_curvature"},
+      {"terms.regularizer", "terms.step"},
+      {"terms.strip", "terms.principal_strip"},
+      {"terms.saddle", "terms.saddle_sign"},
+      {"irls.epsilon", "terms.total_absolute_curvature.epsilon"},
+      {"boundary.weight", "terms.tangent_plane.weight"},
+      {"terms.fairness.order", "terms.fairness.on (polyline_quadruples for third differences)"},
   };
-  spec.output_mesh = path("mesh");
-  spec.output_report = path("report");
-  for (const std::string& k : builder.OutputKeys()) {
-    const std::string p = path(k);
-    if (!p.empty()) spec.extra_outputs[k] = p;
+  return renamed;
+}
+
+std::string Describe(const YAML::Node& node) {
+  if (node.IsScalar()) return "'" + node.Scalar() + "'";
+  if (node.IsSequence()) return "a list";
+  if (node.IsMap()) return "a mapping";
+  return "nothing";
+}
+
+std::string List(const std::vector<std::string>& items) {
+  std::string list;
+  for (const std::string& a : items) list += (list.empty() ? "" : ", ") + a;
+  return list;
+}
+
+class Reader {
+ public:
+  Reader(std::string file, std::set<std::string> overridden, const Schema& schema)
+      : file_(std::move(file)), overridden_(std::move(overridden)), schema_(schema) {}
+
+  bool Overridden(const std::string& key) const {
+    for (const std::string& o : overridden_) {
+      if (key == o || key.rfind(o + ".", 0) == 0 || o.rfind(key + ".", 0) == 0) return true;
+    }
+    return false;
   }
-  if (o["color_max"]) spec.color_max = r.Number(o["color_max"], "output.color_max", 1e-12, 1e12);
-  if (o["ascii_ply"]) spec.ascii_ply = r.Bool(o["ascii_ply"], "output.ascii_ply");
+
+  Origin Where(const YAML::Node& node, const std::string& key) const {
+    if (Overridden(key)) return {"--set", 0};
+    return {file_, node.IsDefined() && node.Mark().line >= 0 ? node.Mark().line + 1 : 0};
+  }
+
+  [[noreturn]] void Fail(const YAML::Node& node, const std::string& key,
+                         const std::string& message) const {
+    const Origin o = Where(node, key);
+    throw InputError(o.file, o.line, key, message);
+  }
+
+  // Walks a mapping: every key must be declared (or a section of declared
+  // keys); duplicate and non-scalar keys are errors.
+  void Walk(const YAML::Node& map, const std::string& prefix, Settings& out) const {
+    if (!map.IsMap()) Fail(map, prefix, "expected a mapping of keys, got " + Describe(map));
+    std::set<std::string> seen;
+    for (const auto& entry : map) {
+      if (!entry.first.IsScalar()) {
+        Fail(entry.first, prefix, "a key must be a plain name, got " + Describe(entry.first));
+      }
+      const std::string name = entry.first.Scalar();
+      const std::string key = prefix.empty() ? name : prefix + "." + name;
+      if (!seen.insert(name).second) Fail(entry.first, key, "duplicate key");
+      const YAML::Node& value = entry.second;
+      if (const Key* k = schema_.Find(key)) {
+        Set(*k, value, out);
+      } else if (schema_.IsSection(key) && value.IsMap()) {
+        Walk(value, key, out);
+      } else if (prefix == "terms" && schema_.Find(key + ".weight") && !value.IsMap()) {
+        // `terms.<t>: w` is the weight; messages name `terms.<t>`.
+        Key weight = *schema_.Find(key + ".weight");
+        weight.name = key;
+        out.Set(key + ".weight", Parse(weight, value), Where(value, key));
+      } else if (schema_.IsSection(key) && value.IsNull() && prefix.empty()) {
+        // An empty section (e.g. `output:`) sets nothing.
+      } else {
+        const auto renamed = Renamed().find(key);
+        std::string message = "unknown key";
+        if (renamed != Renamed().end()) {
+          message += " (renamed: use " + renamed->second + ")";
+        } else if (schema_.IsSection(key)) {
+          message = "expected a mapping of keys (" + List(schema_.Children(key)) + "), got " +
+                    Describe(value);
+        } else {
+          message += " (allowed here: " + List(schema_.Children(prefix)) + ")";
+        }
+        Fail(entry.first, key, message);
+      }
+    }
+  }
+
+  void Set(const Key& k, const YAML::Node& node, Settings& out) const {
+    out.Set(k.name, Parse(k, node), Where(node, k.name));
+    if (k.type == Type::kCustom) out.SetCustom(k.name, node, Where(node, k.name));
+  }
+
+ private:
+  double Number(const Key& k, const YAML::Node& node) const {
+    double value = 0;
+    if (!node.IsScalar() || !YAML::convert<double>::decode(node, value)) {
+      Fail(node, k.name, "expected a number, got " + Describe(node));
+    }
+    if (!std::isfinite(value)) Fail(node, k.name, "expected a finite number, got " + Describe(node));
+    if (value < k.lo || value > k.hi) {
+      std::ostringstream range;
+      range << "must be in [" << k.lo << ", " << k.hi << "], got " << value;
+      Fail(node, k.name, range.str());
+    }
+    return value;
+  }
+
+  long long Integer(const Key& k, const YAML::Node& node) const {
+    long long value = 0;
+    if (!node.IsScalar() || !YAML::convert<long long>::decode(node, value)) {
+      Fail(node, k.name, "expected an integer, got " + Describe(node));
+    }
+    if (double(value) < k.lo || double(value) > k.hi) {
+      std::ostringstream range;
+      range.precision(15);
+      range << "must be in [" << k.lo << ", " << k.hi << "], got " << value;
+      Fail(node, k.name, range.str());
+    }
+    return value;
+  }
+
+  std::string Choice(const Key& k, const YAML::Node& node) const {
+    if (!node.IsScalar()) Fail(node, k.name, "expected one of: " + List(k.choices));
+    const std::string value = node.Scalar();
+    for (const std::string& c : k.choices) {
+      if (c == value) return value;
+    }
+    Fail(node, k.name, "'" + value + "' is not one of: " + List(k.choices));
+  }
+
+  std::string Path(const Key& k, const YAML::Node& node) const {
+    if (node.IsNull() && k.type == Type::kOutputPath) return "";  // `mesh:` writes nothing
+    if (!node.IsScalar()) Fail(node, k.name, "expected a file path, got " + Describe(node));
+    const std::string value = node.Scalar();
+    if (value.empty()) {
+      if (k.name != "mesh") return "";  // an optional file not given
+      Fail(node, k.name, "empty path");
+    }
+    fs::path p(value);
+    if (p.is_absolute()) return p.lexically_normal().string();
+    if (Overridden(k.name)) return fs::absolute(p).lexically_normal().string();
+    return (fs::path(file_).parent_path() / p).lexically_normal().string();
+  }
+
+  Value Parse(const Key& k, const YAML::Node& node) const {
+    switch (k.type) {
+      case Type::kBool: {
+        bool value = false;
+        if (!node.IsScalar() || !YAML::convert<bool>::decode(node, value)) {
+          Fail(node, k.name, "expected true or false, got " + Describe(node));
+        }
+        return value;
+      }
+      case Type::kInteger:
+        return Integer(k, node);
+      case Type::kNumber:
+        return Number(k, node);
+      case Type::kChoice:
+        return Choice(k, node);
+      case Type::kString:
+        if (!node.IsScalar()) Fail(node, k.name, "expected a string, got " + Describe(node));
+        return node.Scalar();
+      case Type::kInputPath:
+      case Type::kOutputPath:
+        return Path(k, node);
+      case Type::kNumbers:
+      case Type::kIntegers: {
+        if (!node.IsSequence()) Fail(node, k.name, "expected a list, got " + Describe(node));
+        if (k.size > 0 && int(node.size()) != k.size) {
+          Fail(node, k.name, "expected a list of " + std::to_string(k.size) + " values");
+        }
+        if (k.type == Type::kNumbers) {
+          std::vector<double> values;
+          for (const YAML::Node& n : node) values.push_back(Number(k, n));
+          return values;
+        }
+        std::vector<long long> values;
+        for (const YAML::Node& n : node) values.push_back(Integer(k, n));
+        return values;
+      }
+      case Type::kChoiceOrIntegers: {
+        if (node.IsSequence()) {
+          std::vector<long long> values;
+          for (const YAML::Node& n : node) values.push_back(Integer(k, n));
+          return values;
+        }
+        if (!node.IsScalar()) {
+          Fail(node, k.name, "expected one of " + List(k.choices) + " or a list of indices");
+        }
+        return Choice(k, node);
+      }
+      case Type::kCustom:
+        return std::string("(given)");
+    }
+    return std::monostate{};
+  }
+
+  std::string file_;
+  std::set<std::string> overridden_;
+  const Schema& schema_;
+};
+
+// Applies "dotted.key=value" (value parsed as YAML) to `root`; returns the
+// dotted key.
+std::string ApplyOverride(YAML::Node& root, const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    throw InputError("--set", 0, assignment,
+                     "expected KEY=VALUE (e.g. solver.num_threads=1)");
+  }
+  const std::string key = assignment.substr(0, eq);
+  YAML::Node value;
+  try {
+    value = YAML::Load(assignment.substr(eq + 1));
+  } catch (const YAML::Exception& e) {
+    throw InputError("--set", 0, key, "value is not valid YAML: " + e.msg);
+  }
+  std::vector<std::string> parts;
+  std::stringstream ss(key);
+  for (std::string part; std::getline(ss, part, '.');) {
+    if (part.empty()) throw InputError("--set", 0, key, "empty component in dotted key");
+    parts.push_back(part);
+  }
+  YAML::Node node;
+  node.reset(root);
+  for (size_t i = 0; i + 1 < parts.size(); ++i) {
+    YAML::Node child = node[parts[i]];
+    if (!child.IsMap()) {
+      if (child.IsDefined() && !child.IsNull()) {
+        throw InputError("--set", 0, key, "'" + parts[i] + "' is not a mapping in the spec");
+      }
+      node[parts[i]] = YAML::Node(YAML::NodeType::Map);
+      child = node[parts[i]];
+    }
+    node.reset(child);
+  }
+  node[parts.back()] = value;
+  return key;
+}
+
+YAML::Node Load(const std::string& path) {
+  struct stat info;
+  if (stat(path.c_str(), &info) != 0) {
+    throw InputError(path, 0, "", "cannot open the problem spec: " + std::string(std::strerror(errno)));
+  }
+  if (!S_ISREG(info.st_mode)) {
+    throw InputError(path, 0, "", "the problem spec is not a regular file");
+  }
+  std::ifstream in(path);
+  if (!in) throw InputError(path, 0, "", "cannot open the problem spec");
+  try {
+    YAML::Node root = YAML::Load(in);
+    if (root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+    return root;
+  } catch (const YAML::ParserException& e) {
+    throw InputError(path, e.mark.line >= 0 ? e.mark.line + 1 : 0, "", "malformed YAML: " + e.msg);
+  } catch (const YAML::Exception& e) {
+    throw InputError(path, 0, "", "malformed YAML: " + e.msg);
+  }
 }
 
 }  // namespace
 
-ProblemSpec ReadSpec(const std::string& path, const std::vector<std::string>& overrides) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, 0, "", "cannot open the problem spec");
-  YAML::Node root;
-  try {
-    root = YAML::Load(in);
-  } catch (const YAML::ParserException& e) {
-    throw InputError(path, e.mark.line >= 0 ? e.mark.line + 1 : 0, "", "malformed YAML: " + e.msg);
+std::vector<std::string> ProblemSpec::InputFiles() const {
+  std::vector<std::string> files;
+  for (const Key& k : settings.schema().keys()) {
+    if (k.type == Type::kInputPath && !settings.String(k.name).empty()) {
+      files.push_back(settings.String(k.name));
+    }
   }
-  if (root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+  return files;
+}
+
+namespace {
+
+ProblemSpec Parse(YAML::Node root, const std::string& path,
+                  const std::vector<std::string>& overrides, bool require_mesh) {
+  if (!root.IsMap()) throw InputError(path, 1, "", "expected a mapping of keys");
   std::set<std::string> overridden;
-  const bool file_lists_terms = root.IsMap() && root["terms"].IsDefined();
+  const bool file_lists_terms = root["terms"].IsDefined();
   for (const std::string& o : overrides) {
-    if (!root.IsMap()) break;  // reported below
     const std::string key = ApplyOverride(root, o);
     // Listing `terms` turns the unlisted terms off: a --set that creates the
     // section would silently switch off every default term.
     if (!file_lists_terms && key.rfind("terms.", 0) == 0) {
       throw InputError("--set", 0, key,
                        "the spec has no 'terms:' section, so this would turn every other term "
-                       "off; list the terms you want in the spec (its builder's header shows "
-                       "the defaults) and override them there");
+                       "off; list the terms you want in the spec (`archgeo spec PROBLEM` shows "
+                       "them with their defaults) and override them there");
     }
     overridden.insert(key);
   }
-  const SpecReader r(path, overridden);
-  if (!root.IsMap()) r.Fail(root, "", "expected a mapping of keys");
 
+  // The problem decides the schema.
+  std::string problem = "planar_quads";
+  if (const YAML::Node p = root["problem"]) {
+    const std::vector<std::string> names = ProblemNames();
+    const Origin where = overridden.count("problem") ? Origin{"--set", 0}
+                                                     : Origin{path, p.Mark().line + 1};
+    if (!p.IsScalar() || std::find(names.begin(), names.end(), p.Scalar()) == names.end()) {
+      throw InputError(where.file, where.line, "problem",
+                       Describe(p) + " is not one of: " + List(names));
+    }
+    problem = p.Scalar();
+  }
   ProblemSpec spec;
   spec.spec_path = path;
-  if (root["problem"]) {
-    const std::vector<std::string> names = BuilderNames();
-    spec.problem = r.String(root["problem"], "problem", {names.begin(), names.end()});
+  if (problem == "custom") {
+    spec.declaration = std::make_shared<const ProblemDecl>(CustomProblem(root, path, overridden));
+  } else {
+    spec.declaration = std::shared_ptr<const ProblemDecl>(FindProblem(problem), [](auto*) {});
   }
-  std::unique_ptr<Builder> builder = MakeBuilder(spec.problem);
-  std::set<std::string> keys = {"mesh",   "reference", "problem", "fixed",
-                                "solver", "output",    "multiresolution"};
-  for (const std::string& k : builder->Keys()) keys.insert(k);
-  r.CheckKeys(root, "", keys);
+  const Schema schema = ProblemSchema(*spec.declaration);
+  spec.settings = Settings(schema);
+  spec.settings.set_spec_file(path);
+  const Reader reader(path, overridden, schema);
+  reader.Walk(root, "", spec.settings);
 
-  if (!root["mesh"]) r.Fail(root, "mesh", "missing: the input mesh file (OBJ, OFF or PLY)");
-  spec.mesh = r.Path(root["mesh"], "mesh");
-  if (root["reference"]) spec.reference = r.Path(root["reference"], "reference");
-  builder->Read(r, root);
-  if (root["fixed"]) ReadFixed(r, root["fixed"], spec, overridden.count("fixed") > 0);
-  if (root["solver"]) ReadSolver(r, root["solver"], spec.solver);
-  if (const YAML::Node m = root["multiresolution"]) {
-    r.CheckKeys(m, "multiresolution", {"levels", "scheme"});
-    if (m["levels"]) {
-      spec.multiresolution_levels = r.Integer(m["levels"], "multiresolution.levels", 0, 6);
-    }
-    if (m["scheme"]) {
-      spec.multiresolution_scheme = r.String(m["scheme"], "multiresolution.scheme",
-                                             {"loop", "sqrt3", "catmull_clark", "doo_sabin"});
+  if (require_mesh && !spec.settings.Given("mesh")) {
+    throw InputError(path, 0, "mesh", "missing: the input mesh file (OBJ, OFF or PLY)");
+  }
+  // Listing `terms` turns every unlisted term of the problem off.
+  if (file_lists_terms && problem != "custom") {
+    const YAML::Node terms = root["terms"];
+    const Origin where{path, terms.Mark().line + 1};
+    for (const TermUse& use : spec.declaration->terms) {
+      if (!use.implicit && (!terms.IsMap() || !terms[use.term])) {
+        spec.settings.Set("terms." + use.term + ".weight", 0.0, where);
+      }
     }
   }
-  if (root["output"]) ReadOutput(r, root["output"], *builder, spec);
-  spec.builder = std::move(builder);
+  // The problem's checks across keys (e.g. which of two alternatives is given),
+  // and a solver combination Ceres would reject only at run time.
+  if (spec.declaration->check) spec.declaration->check(spec.settings);
+  SolverOptions(spec.settings);
   return spec;
+}
+
+}  // namespace
+
+ProblemSpec ReadSpec(const std::string& path, const std::vector<std::string>& overrides) {
+  return Parse(Load(path), path, overrides, true);
+}
+
+ProblemSpec ParseSpec(const std::string& yaml, const std::string& path,
+                      const std::vector<std::string>& overrides) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml);
+  } catch (const YAML::ParserException& e) {
+    throw InputError(path, e.mark.line >= 0 ? e.mark.line + 1 : 0, "", "malformed YAML: " + e.msg);
+  } catch (const YAML::Exception& e) {
+    throw InputError(path, 0, "", "malformed YAML: " + e.msg);
+  }
+  if (root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+  return Parse(root, path, overrides, false);
 }
 
 }  // namespace archgeo

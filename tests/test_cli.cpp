@@ -77,7 +77,7 @@ TEST_F(CliTest, PlanarisesAGeneratedNonPlanarGrid) {
   const auto report = nlohmann::json::parse(Slurp(Path("out.json")));
   EXPECT_GT(report["before"]["pq_normalized_max"].get<double>(), 1e-2);
   EXPECT_LE(report["after"]["pq_normalized_max"].get<double>(), 1e-3);
-  EXPECT_TRUE(report["tolerance"]["met"].get<bool>());
+  EXPECT_TRUE(report["tolerances"]["tolerance.pq_normalized_max"]["met"].get<bool>());
   EXPECT_LT(report["after"]["displacement_max_relative"].get<double>(), 0.02);
   EXPECT_LT(report["after"]["surface_distance_max_relative"].get<double>(), 0.003);
   const Mesh in = ReadMesh(Path("grid.obj"));
@@ -133,7 +133,7 @@ TEST_F(CliTest, SetOverridesMeshAndOutputs) {
   ASSERT_EQ(Archgeo("generate " + Path("g.obj") + " --nu 6 --nv 5").code, 0);
   const std::string spec = WriteFile("s.yaml", "mesh: missing.obj\n");
   const Outcome o = Archgeo("solve " + spec + " --quiet --set mesh=" + Path("g.obj") +
-                        " --set output.mesh=" + Path("o.obj") + " --set solver.threads=1");
+                        " --set output.mesh=" + Path("o.obj") + " --set solver.num_threads=1");
   EXPECT_EQ(o.code, 0) << o.output;
   EXPECT_TRUE(fs::exists(Path("o.obj")));
 }
@@ -146,7 +146,7 @@ TEST_F(CliTest, BadInputMissingMesh) {
 TEST_F(CliTest, BadInputMissingSpec) { ExpectBadInput("solve " + Path("no.yaml"), "no.yaml", {}); }
 
 TEST_F(CliTest, BadInputMalformedYaml) {
-  const std::string spec = WriteFile("spec.yaml", "mesh: a.obj\nsolver: {threads: 1\n");
+  const std::string spec = WriteFile("spec.yaml", "mesh: a.obj\nsolver: {num_threads: 1\n");
   ExpectBadInput("solve " + spec, "spec.yaml:", {spec});
 }
 

@@ -7,13 +7,13 @@
 #include <cmath>
 #include <memory>
 
+#include "core/tolerance_band.h"
+#include "energies/pq_diagonal.h"
 #include "mesh/generators.h"
 #include "mesh/metrics.h"
 #include "mesh/reference.h"
 #include "mesh/similarity.h"
-#include "energies/pq_diagonal.h"
-#include "problems/planar_quads.h"
-#include "problems/tolerance_band.h"
+#include "problems/solve.h"
 
 namespace archgeo {
 namespace {
@@ -37,17 +37,27 @@ double MaxPlanarity(const Mesh& mesh) {
   return ComputeMetrics(mesh, nullptr, nullptr).pq_normalized_max;
 }
 
+// Solves planar_quads with the spec's defaults plus `yaml` on c.mesh, against
+// its original; c.mesh becomes the output.
+std::unique_ptr<Solution> PlanarQuads(Case& c, const std::string& yaml = "") {
+  const ProblemSpec spec = ParseSpec("problem: planar_quads\n" + yaml);
+  std::unique_ptr<Solution> s = Solve(spec, c.mesh, &c.original, {});
+  c.mesh = s->output;
+  return s;
+}
+
+bool Met(const Solution& s) { return s.loop.tolerances.at("tolerance.pq_normalized_max"); }
+
 TEST(PlanarQuads, MeetsTheToleranceOnANoisyGrid) {
   Case c = NoisyGrid(12, 9, 0.05);
   ASSERT_GT(MaxPlanarity(c.mesh), 10 * kTolerance);
   const ReferenceSurface reference(c.original);
-  PlanarQuadsSettings settings;
-  const PlanarQuadsResult r = SolvePlanarQuads(c.mesh, reference, settings, {});
-  EXPECT_TRUE(r.usable);
-  EXPECT_TRUE(r.tolerance_met);
+  const auto s = PlanarQuads(c);
+  EXPECT_TRUE(s->loop.usable);
+  EXPECT_TRUE(Met(*s));
   EXPECT_LE(MaxPlanarity(c.mesh), kTolerance);
-  EXPECT_EQ(r.variables, 3 * int(c.mesh.number_of_vertices()));
-  EXPECT_GT(r.objective.at("total"), 0);
+  EXPECT_EQ(s->loop.variables, 3 * int(c.mesh.number_of_vertices()));
+  EXPECT_GT(s->loop.objective.at("total"), 0);
   const Metrics m = ComputeMetrics(c.mesh, &reference, &c.original);
   EXPECT_LT(m.surface_distance_max, 0.1);  // mean edge lengths: the canonical unit
 }
@@ -70,24 +80,19 @@ TEST(PlanarQuads, HexagonsBecomePlanar) {
   const Metrics before = ComputeMetrics(c.mesh, nullptr, nullptr);
   ASSERT_EQ(before.polygons, merged);
   ASSERT_GT(before.pq_normalized_max, 10 * kTolerance);
-  const ReferenceSurface reference(c.original);
-  const PlanarQuadsResult r = SolvePlanarQuads(c.mesh, reference, PlanarQuadsSettings{}, {});
-  EXPECT_TRUE(r.tolerance_met);
+  const auto s = PlanarQuads(c);
+  EXPECT_TRUE(Met(*s));
   const PlanarityMeasure p = MeasureFacePlanarity(c.mesh);
   for (FaceIndex f : c.mesh.faces()) {
     EXPECT_LE(p.normalized[f.idx()], kTolerance) << "face " << f.idx() << " of degree "
                                                  << c.mesh.degree(f);
   }
-  EXPECT_GT(r.objective.count("face_planarity"), 0u);
+  EXPECT_GT(s->loop.objective.count("face_planarity"), 0u);
 }
 
 TEST(PlanarQuads, FixedVerticesDoNotMove) {
   Case c = NoisyGrid(10, 8, 0.05);
-  const ReferenceSurface reference(c.original);
-  PlanarQuadsSettings settings;
-  settings.fixed.assign(c.mesh.number_of_vertices(), false);
-  for (int i : {0, 10, 98, 5, 40}) settings.fixed[i] = true;
-  SolvePlanarQuads(c.mesh, reference, settings, {});
+  PlanarQuads(c, "fixed: [0, 10, 98, 5, 40]\n");
   for (int i : {0, 10, 98, 5, 40}) {
     EXPECT_EQ(c.mesh.point(VertexIndex(i)), c.original.point(VertexIndex(i)));
   }
@@ -102,45 +107,34 @@ TEST(PlanarQuads, TrianglesInAQuadDominantMeshAreAllowed) {
   CGAL::Euler::split_face(h, c.mesh.next(c.mesh.next(h)), c.mesh);
   c.original = c.mesh;
   ASSERT_EQ(ComputeMetrics(c.mesh, nullptr, nullptr).triangles, 2);
-  const ReferenceSurface reference(c.original);
-  const PlanarQuadsResult r = SolvePlanarQuads(c.mesh, reference, PlanarQuadsSettings{}, {});
-  EXPECT_TRUE(r.tolerance_met);
+  const auto s = PlanarQuads(c);
+  EXPECT_TRUE(Met(*s));
   EXPECT_LE(MaxPlanarity(c.mesh), kTolerance);
 }
 
 TEST(PlanarQuads, FixedWeightsRunToRest) {
   Case c = NoisyGrid(8, 6, 0.05);
-  const ReferenceSurface reference(c.original);
-  PlanarQuadsSettings settings;
-  settings.tolerance = 0;
-  settings.solver.outer_iterations = 30;
-  const PlanarQuadsResult r = SolvePlanarQuads(c.mesh, reference, settings, {});
-  EXPECT_FALSE(r.tolerance_met);
-  EXPECT_LT(r.outer_iterations, 30);
-  EXPECT_LT(r.log.back().max_move, 1e-6);
-  EXPECT_DOUBLE_EQ(r.log.back().weight_max, settings.terms.pq_diagonal);
+  const auto s = PlanarQuads(c, "tolerance: {pq_normalized_max: 0}\nschedule: {outer_iterations: 30}\n");
+  EXPECT_LT(s->loop.rounds, 30);
+  EXPECT_LT(s->loop.log.back().max_move, 1e-6);
+  EXPECT_DOUBLE_EQ(s->loop.log.back().weight_scale, 1.0);  // no continuation
 }
 
 // Fixed weights, one round: every linear solver reaches the same minimum.
 TEST(PlanarQuads, LinearSolversReachTheSameFinalCost) {
   const Case c = NoisyGrid(6, 5, 0.05);
-  const ReferenceSurface reference(c.original);
   std::vector<double> costs;
   for (const auto& [solver, library] : std::vector<std::pair<std::string, std::string>>{
            {"sparse_normal_cholesky", "suite_sparse"},
            {"sparse_normal_cholesky", "eigen_sparse"},
            {"dense_qr", "suite_sparse"},
            {"cgnr", "suite_sparse"}}) {
-    Mesh mesh = c.mesh;
-    PlanarQuadsSettings settings;
-    settings.tolerance = 0;
-    settings.solver.outer_iterations = 1;
-    settings.solver.max_iterations = 500;
-    settings.solver.linear_solver = solver;
-    settings.solver.sparse_library = library;
-    const PlanarQuadsResult r = SolvePlanarQuads(mesh, reference, settings, {});
-    ASSERT_TRUE(r.usable) << solver;
-    costs.push_back(r.objective.at("total"));
+    Case run = c;
+    const auto s = PlanarQuads(run, "tolerance: {pq_normalized_max: 0}\nschedule: {outer_iterations: 1}\n"
+                                    "solver: {max_num_iterations: 500, linear_solver_type: " + solver +
+                                    ", sparse_linear_algebra_library_type: " + library + "}\n");
+    ASSERT_TRUE(s->loop.usable) << solver;
+    costs.push_back(s->loop.objective.at("total"));
   }
   for (double cost : costs) EXPECT_NEAR(cost, costs[0], 1e-6 * costs[0]);
 }

@@ -16,9 +16,9 @@
 #include "mesh/io.h"
 #include "mesh/metrics.h"
 #include "mesh/smoothness_metrics.h"
-#include "problems/principal_symmetric.h"
+#include "mesh/principal_edges.h"
 #include "problems/run.h"
-#include "problems/smooth_mesh.h"
+#include "mesh/elements.h"
 #include "problems/spec.h"
 #include "tests/scratch_dir.h"
 
@@ -57,7 +57,7 @@ TEST_F(SmoothMeshTest, LowersEOnANoisySaddleWithoutNewPyramids) {
   const Mesh input = TriangleGrid(14, Saddle, 0.15);
   WriteMesh(Path("saddle.obj"), input);
   const nlohmann::json report = Run(
-      "mesh: saddle.obj\nproblem: smooth_mesh\nsolver: {outer_iterations: 10, max_iterations: 20}\n"
+      "mesh: saddle.obj\nproblem: smooth_mesh\nschedule: {outer_iterations: 10}\nsolver: {max_num_iterations: 20}\n"
       "output: {mesh: out.obj, report: out.json}\n");
   const Mesh output = ReadMesh(Path("out.obj"));
   const SmoothnessMetrics before = ComputeSmoothnessMetrics(input);
@@ -69,7 +69,8 @@ TEST_F(SmoothMeshTest, LowersEOnANoisySaddleWithoutNewPyramids) {
   const nlohmann::json& rounds = report.at("rounds");
   ASSERT_GE(rounds.size(), 2u);
   EXPECT_EQ(rounds.front().at("round"), 0);
-  EXPECT_LT(rounds.back().at("E").get<double>(), rounds.front().at("E").get<double>());
+  EXPECT_LT(rounds.back().at("measures").at("E").get<double>(),
+            rounds.front().at("measures").at("E").get<double>());
   // Close to the input: below a third of a mean edge length.
   const Metrics m = ComputeMetrics(output, nullptr, &input);
   EXPECT_LT(m.displacement_max, m.mean_edge_length / 3);
@@ -105,7 +106,7 @@ TEST_F(SmoothMeshTest, HybridMeshKeepsItsQuadsPlanar) {
   }
   ASSERT_LT(ComputeMetrics(hybrid, nullptr, nullptr).pq_normalized_max, 1e-9);
   WriteMesh(Path("hybrid.obj"), hybrid);
-  Run("mesh: hybrid.obj\nproblem: smooth_mesh\nsolver: {outer_iterations: 8, max_iterations: 20}\n"
+  Run("mesh: hybrid.obj\nproblem: smooth_mesh\nschedule: {outer_iterations: 8}\nsolver: {max_num_iterations: 20}\n"
       "output: {mesh: out.obj}\n");
   const Mesh output = ReadMesh(Path("out.obj"));
   const Metrics m = ComputeMetrics(output, nullptr, nullptr);
@@ -124,7 +125,7 @@ TEST_F(SmoothMeshTest, HandlesMoveTheSurface) {
       "terms: {dihedral_energy: 1, fairness: 0.01, step: 0.1, handles: 100}\n"
       "handles:\n  - {vertex: " + std::to_string(center) + ", offset: [0, 0, " +
       std::to_string(lift) + "]}\n"
-      "solver: {outer_iterations: 10, max_iterations: 30}\noutput: {mesh: out.obj}\n");
+      "schedule: {outer_iterations: 10}\nsolver: {max_num_iterations: 30}\noutput: {mesh: out.obj}\n");
   const Mesh output = ReadMesh(Path("out.obj"));
   const VertexIndex c(center);
   EXPECT_NEAR(output.point(c).z() - input.point(c).z(), lift, kHandleTolerance * lift);
@@ -156,8 +157,8 @@ TEST_F(SmoothMeshTest, PrincipalSymmetricExampleMeetsItsConditions) {
                 "output.principal_edges=" + Path("ps_edges.txt")});
   const RunResult run = RunSpec(spec, {});
   ASSERT_EQ(run.exit_code, 0) << run.summary;
-  const nlohmann::json& before = run.report.at("conditions_before");
-  const nlohmann::json& after = run.report.at("conditions_after");
+  const nlohmann::json& before = run.report.at("details").at("conditions_before");
+  const nlohmann::json& after = run.report.at("details").at("conditions_after");
   EXPECT_GT(after.at("spheres").get<int>(), 0);
   EXPECT_GT(after.at("strips").get<int>(), 0);
   EXPECT_GT(after.at("saddle_terms").get<int>(), 0);
@@ -170,7 +171,7 @@ TEST_F(SmoothMeshTest, PrincipalSymmetricExampleMeetsItsConditions) {
   // The written labels are a valid edge file for the output.
   const Mesh output = ReadMesh(Path("ps.obj"));
   const std::vector<VertexPair> labels = ReadPrincipalEdges(Path("ps_edges.txt"), "", output);
-  EXPECT_EQ(int(labels.size()), run.report.at("principal_edges").get<int>());
+  EXPECT_EQ(int(labels.size()), run.report.at("details").at("principal_edges").get<int>());
   EXPECT_EQ(CheckPrincipalStars(output, labels), "");
 }
 
@@ -189,8 +190,8 @@ TEST_F(SmoothMeshTest, PrincipalSymmetricTorusIsPrincipalSymmetric) {
   }
   const nlohmann::json report =
       Run("mesh: torus.obj\nproblem: principal_symmetric\nprincipal_edges: edges.txt\n"
-          "solver: {outer_iterations: 4}\n");
-  const nlohmann::json& after = report.at("conditions_after");
+          "schedule: {outer_iterations: 4}\n");
+  const nlohmann::json& after = report.at("details").at("conditions_after");
   EXPECT_LE(after.at("co_spherical_max").get<double>(), kConditionTolerance);
   EXPECT_LE(after.at("strip_coplanarity_max").get<double>(), kConditionTolerance);
   EXPECT_EQ(after.at("saddle_violations").get<int>(), 0);

@@ -24,7 +24,9 @@
 #include "tests/energy_checks.h"
 
 #include "energies/dihedral_energy.h"
-#include "energies/principal_symmetric.h"
+#include "energies/co_spherical.h"
+#include "energies/principal_strip.h"
+#include "energies/saddle_sign.h"
 #include "energies/total_absolute_curvature.h"
 
 namespace archgeo {

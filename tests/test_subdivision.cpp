@@ -72,7 +72,7 @@ TEST_F(MultiresolutionTest, SolvesSubdividesAndSolvesAgain) {
                                               "problem: total_absolute_curvature\n"
                                               "fixed: boundary\n"
                                               "multiresolution: {levels: 1, scheme: loop}\n"
-                                              "solver: {max_iterations: 10, outer_iterations: 3}\n"
+                                              "solver: {max_num_iterations: 10}\nschedule: {outer_iterations: 3}\n"
                                               "output: {mesh: out.obj}\n"));
   const RunResult run = RunSpec(spec, {});
   ASSERT_EQ(run.exit_code, 0) << run.summary;

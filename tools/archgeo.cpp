@@ -2,6 +2,7 @@
 // problems/ and mesh/.
 //
 //   archgeo solve SPEC.yaml [--set KEY=VALUE ...] [--quiet]
+//   archgeo spec PROBLEM [--keys]
 //   archgeo measure MESH [--reference REF] [--json]
 //   archgeo generate OUT [--surface NAME] [--nu N] [--nv N] [--noise X] [--scale S]
 //                        [--seed K] [--refinement K] [--reference REF_OUT]
@@ -20,7 +21,9 @@
 #include "mesh/output_files.h"
 #include "problems/darboux.h"
 #include "problems/generate.h"
+#include "problems/registry.h"
 #include "problems/run.h"
+#include "problems/schema.h"
 #include "problems/spec.h"
 
 namespace {
@@ -34,10 +37,32 @@ int Solve(const std::string& spec_path, const std::vector<std::string>& override
   const archgeo::RunResult run = archgeo::RunSpec(spec, progress);
   std::cout << run.summary;
   if (run.exit_code == 0) {
-    if (!spec.output_mesh.empty()) std::cout << "wrote " << spec.output_mesh << "\n";
-    if (!spec.output_report.empty()) std::cout << "wrote " << spec.output_report << "\n";
+    for (const archgeo::Key& k : spec.settings.schema().keys()) {
+      if (k.type == archgeo::Type::kOutputPath && !spec.settings.String(k.name).empty()) {
+        std::cout << "wrote " << spec.settings.String(k.name) << "\n";
+      }
+    }
   }
   return run.exit_code;
+}
+
+int Spec(const std::string& name, bool keys) {
+  const archgeo::ProblemDecl* problem = archgeo::FindProblem(name);
+  if (!problem) {
+    std::string list;
+    for (const std::string& n : archgeo::ProblemNames()) {
+      if (n != "custom") list += (list.empty() ? "" : ", ") + n;
+    }
+    throw archgeo::InputError("", 0, "PROBLEM",
+                              "'" + name + "' is not a problem (" + list +
+                                  "; `problem: custom` composes terms: see README)");
+  }
+  if (keys) {
+    std::cout << archgeo::KeyTable(*problem, false);
+  } else {
+    std::cout << archgeo::SpecTemplate(*problem);
+  }
+  return 0;
 }
 
 int Measure(const std::string& mesh, const std::string& reference, bool json) {
@@ -72,9 +97,19 @@ int main(int argc, char** argv) {
       ->required();
   solve->add_option("--set", overrides,
                     "Override a spec key by dotted path, e.g. --set mesh=roof.obj "
-                    "--set solver.threads=1 (repeatable; paths relative to the current folder)")
+                    "--set solver.num_threads=1 (repeatable; paths relative to the current folder)")
       ->allow_extra_args(false);
   solve->add_flag("-q,--quiet", quiet, "No progress lines (one per Ceres iteration otherwise)");
+
+  std::string problem_name;
+  bool keys_only = false;
+  CLI::App* spec = app.add_subcommand(
+      "spec", "Print a problem's spec with every key, its default and doc (valid YAML to "
+              "start from: set `mesh`)");
+  spec->add_option("problem", problem_name, "planar_quads, smooth_mesh, total_absolute_curvature, "
+                                            "principal_symmetric, hnet")
+      ->required();
+  spec->add_flag("--keys", keys_only, "Print the problem's own keys as a Markdown table instead");
 
   std::string mesh_path, reference_path;
   bool json = false;
@@ -144,6 +179,7 @@ int main(int argc, char** argv) {
 
   try {
     if (*solve) return Solve(spec_path, overrides, quiet);
+    if (*spec) return Spec(problem_name, keys_only);
     if (*generate) {
       std::cout << archgeo::GenerateSurface(grid_path, gen).summary;
       return 0;

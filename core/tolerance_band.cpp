@@ -1,4 +1,4 @@
-#include "problems/tolerance_band.h"
+#include "core/tolerance_band.h"
 
 #include <glog/logging.h>
 

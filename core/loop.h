@@ -1,0 +1,119 @@
+// archgeo — the one solve loop. Every problem runs here:
+//
+//   for each stage of the declaration:
+//     for each round (at most the stage's rounds):
+//       before-round hook; re-project onto the reference (if a term needs it)
+//       build the Ceres problem from the active terms (weights × continuation)
+//       solve (one progress line per Ceres iteration; a per-iteration
+//         tolerance ends the solve the moment it holds)
+//       check the solution (usable, finite); after-round hook (e.g. guard)
+//       measure; log the round; undo a round that made `undo_if_worse` worse
+//       stop on tolerances met, rest, patience; else continue (continuation)
+//   restore the best round if the stage keeps the best
+//
+// The loop knows no mesh type: it works through a Model (problems/model.h
+// implements it over the CGAL store, the reference and the measures).
+#pragma once
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <ceres/problem.h>
+#include <nlohmann/json.hpp>
+
+#include "core/problem.h"
+#include "core/settings.h"
+#include "core/term.h"
+
+
+namespace archgeo {
+
+using ProgressSink = std::function<void(const std::string& line)>;
+
+// A term as the loop activates it for one round.
+struct ActiveTerm {
+  const TermSpec* spec = nullptr;
+  double weight = 0;  // settings weight × continuation scale
+  double band = -1;  // tolerance band (< 0: none)
+};
+
+// Residual blocks per objective part (term name or part name).
+using TermBlocks = std::map<std::string, std::vector<ceres::ResidualBlockId>>;
+
+class Model {
+ public:
+  virtual ~Model() = default;
+
+  // Start of a round: snapshots ("previous" positions), vertex normals and,
+  // if `project`, the projection onto the reference.
+  virtual void BeginRound(bool project) = 0;
+  // Adds the residuals of `terms` (in order; consecutive terms on the same
+  // element set are added element by element) to `problem`; makes fixed
+  // vertices constant and unit blocks spherical. Returns the residual ids per
+  // objective part.
+  virtual TermBlocks Build(const std::vector<ActiveTerm>& terms, int round,
+                           ceres::Problem& problem) = 0;
+  // After a round: grows the guard weight (block "guard_weight", read by the
+  // displacement_guard term) of the vertices beyond half the bound
+  // (`bound_relative` × the bounding-box diagonal) and clamps vertices beyond
+  // it; returns how many were clamped.
+  virtual int Guard(double bound_relative) = 0;
+
+  // The value of a measure on the current state (cached until it changes).
+  virtual double Measure(const std::string& name) = 0;
+  virtual void StateChanged() = 0;  // invalidates the measure cache
+
+  // Every variable (positions and blocks), to restore a round.
+  virtual std::vector<double> SaveState() const = 0;
+  virtual void RestoreState(const std::vector<double>& state) = 0;
+  // Largest vertex move between two saved states (canonical lengths).
+  virtual double MaxMove(const std::vector<double>& a, const std::vector<double>& b) const = 0;
+  virtual bool Finite() const = 0;
+
+  virtual HookContext& hooks() = 0;
+};
+
+// One round of the log (the report's "rounds").
+struct RoundLog {
+  std::string stage;
+  int round = 0;       // 1-based over the whole run
+  int iterations = 0;  // Ceres iterations
+  double cost = 0;     // Ceres' final cost (½ Σ w r²)
+  double weight_scale = 1;
+  double max_move = 0;  // canonical lengths (input mean edge length = 1)
+  int clamped = 0;      // vertices put back by the guard
+  bool undone = false;
+  double seconds = 0;
+  std::map<std::string, double> measures;
+};
+
+struct LoopResult {
+  bool usable = true;   // false: Ceres found no usable solution (message says why)
+  std::string message;
+  int variables = 0, residuals = 0;
+  int rounds = 0, iterations = 0;
+  std::map<std::string, double> objective;  // ½ Σ w r² per part and "total", final state
+  std::map<std::string, double> seconds;    // "ceres", "linear_solver", "jacobian", "projection"
+  std::map<std::string, bool> tolerances;   // per tolerance key: met at the end
+  std::vector<RoundLog> log;                // log[0]: the input (round 0)
+  int output_round = 0;                     // the round whose state is the output
+  std::string stop;                         // why the last stage ended
+};
+
+struct LoopOptions {
+  const Settings* settings = nullptr;  // the problem's settings (weights, schedule, solver)
+  std::vector<const TermSpec*> terms;  // the problem's terms, in residual order
+  ProgressSink progress;
+};
+
+// Runs `declaration` on `model`. Never throws for a failed solve (see
+// LoopResult::usable); throws InputError for settings Ceres rejects.
+LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, Model& model);
+
+// The JSON of a round log row.
+nlohmann::json RoundJson(const RoundLog& row);
+
+}  // namespace archgeo

@@ -1,0 +1,114 @@
+// archgeo — a problem is a declaration: the terms it composes (with default
+// weights), its own settings, the stages of its schedule (rounds, tolerance
+// stops, continuation, rest rules, undo, keep-best), the measures it logs,
+// and a few hooks for what is specific to its paper (e.g. the H-net step 2
+// between the rounds of Shi's step 3). One loop (core/loop.h) runs every
+// declaration; problems/<name>.cpp holds one, listed in problems/registry.cpp.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "core/settings.h"
+#include "core/term.h"
+
+namespace archgeo {
+
+// A term in a problem, with its defaults there.
+struct TermUse {
+  std::string term;      // registered name (energies/registry.cpp)
+  double weight = 0;     // default weight; 0 = off unless the spec gives one
+  std::map<std::string, Value> options;  // defaults of the term's options here
+  std::string elements;  // default element set ("" = the term's own)
+  bool implicit = false; // part of the problem's mechanics (e.g. displacement_guard):
+                         // a spec that lists `terms` does not turn it off
+};
+
+// A stop criterion: the stage ends once every tolerance of it holds.
+struct Tolerance {
+  std::string measure;  // a measure (lower is better)
+  std::string key;      // the setting holding the bound; a bound ≤ 0 turns it off
+  bool per_iteration = false;  // also checked after every Ceres iteration: the
+                               // solve ends the moment the tolerance holds
+  bool stops = true;    // false: it only drives continuation (the stage runs on)
+};
+
+class HookContext;  // defined by the problem layer (problems/model.h)
+using Hook = std::function<void(HookContext&)>;
+
+struct Stage {
+  std::string name;                // shown in progress lines and the round log
+  std::vector<std::string> terms;  // the terms active in this stage (empty: all)
+  std::string rounds_key;          // setting: rounds at most
+  std::vector<Tolerance> tolerances;
+  // Continuation on the penalty weight: after a round that misses a
+  // tolerance, the weights of `continued` terms are multiplied by the value of
+  // `factor_key`; terms that support a band get band = value of `band_key` ×
+  // the bound of the first tolerance. The scale carries over to later stages.
+  std::vector<std::string> continued;
+  std::string factor_key, band_key;
+  // Without an active tolerance: the stage ends when a round moves no vertex
+  // by more than `rest_move` (canonical frame, mean edge length 1; or the
+  // value of `rest_move_key`), or changes `rest_change_measure` by less than
+  // the fraction `rest_change_key`.
+  double rest_move = 0;
+  std::string rest_move_key;
+  std::string rest_change_measure, rest_change_key;
+  // The stage ends when `patience_rounds` rounds in a row have not lowered
+  // the lowest `patience_measure` so far by the fraction `patience_key`.
+  std::string patience_measure, patience_key;
+  int patience_rounds = 0;
+  // The output is the state after the round with the lowest value of this
+  // measure (the input counts as round 0).
+  std::string keep_best;
+  // A round after which this measure is larger than before it is undone
+  // (positions and blocks restored) and ends the stage.
+  std::string undo_if_worse;
+  // Bound on every vertex's distance from its input position, as a fraction
+  // of the bounding-box diagonal (the value of `guard_key`; 0 = none): a
+  // vertex beyond half the bound gets an anchor to its input position
+  // (weight 1, ×10 per further round), a vertex beyond the bound is put back
+  // inside it unless it is a vertex of a polygon (see problems/model.h).
+  std::string guard_key;
+  std::vector<std::string> logged;  // measures in the round log and progress lines
+  Hook before_round, after_round;
+};
+
+enum class InputKind {
+  kAny,
+  kTriangles,      // every face a triangle
+  kHasPolygons,    // at least one face with more than three sides
+  kQuads,          // every face a quad
+  kInteriorEdge,   // at least one interior edge
+};
+
+struct ProblemDecl {
+  std::string name;
+  std::string summary;  // one line
+  std::string paper;
+  InputKind input = InputKind::kAny;
+  std::vector<TermUse> terms;  // in the order their residuals are added
+  std::vector<Key> keys;       // the problem's own settings
+  std::map<std::string, Value> defaults;  // its defaults of common keys (e.g.
+                                          // "schedule.outer_iterations")
+  std::vector<BlockDecl> blocks;  // blocks the problem owns (read by its terms)
+  // The stages, given the settings (e.g. no keep-best with design handles).
+  std::function<std::vector<Stage>(const Settings&)> stages;
+  std::set<std::string> analyses;  // report sections: "planarity", "smoothness", "hnet"
+  std::vector<std::string> output_keys;  // extra `output.<key>` files it writes
+  std::string colors = "planarity";  // face colours of the output PLY (problems/colors.h)
+  // The problem's own measures (besides problems/measures.h).
+  std::map<std::string, std::function<double(HookContext&)>> measures;
+  // After the spec is read: checks across keys (throw Settings::Error).
+  std::function<void(const Settings&)> check;
+  // Hooks (optional), all in the problem layer:
+  Hook net;     // replace the working net (hnet: a diagonal net of the input)
+  Hook init;    // per solve (and multiresolution level), after blocks are initialised
+  Hook finish;  // after the last stage: details and headline for the report
+  Hook write;   // write the extra outputs
+};
+
+}  // namespace archgeo

@@ -1,0 +1,222 @@
+#include "core/solver_options.h"
+
+#include <dlfcn.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <functional>
+
+#include <ceres/types.h>
+
+namespace archgeo {
+namespace {
+
+std::string Lower(std::string s) {
+  for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+std::string Upper(std::string s) {
+  for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// The lower-case names of an enum's values, by Ceres' own *ToString, for
+// the values `usable` accepts.
+template <typename E>
+std::vector<std::string> Names(const char* (*to_string)(E), int count,
+                               const std::function<bool(E)>& usable = nullptr) {
+  std::vector<std::string> names;
+  for (int i = 0; i < count; ++i) {
+    const E e = static_cast<E>(i);
+    const std::string name = to_string(e);
+    if (name == "UNKNOWN" || (usable && !usable(e))) continue;
+    names.push_back(Lower(name));
+  }
+  return names;
+}
+
+std::vector<std::string> SparseLibraries() {
+  return Names<ceres::SparseLinearAlgebraLibraryType>(
+      &ceres::SparseLinearAlgebraLibraryTypeToString, 8,
+      [](ceres::SparseLinearAlgebraLibraryType t) {
+        return t != ceres::NO_SPARSE && ceres::IsSparseLinearAlgebraLibraryTypeAvailable(t);
+      });
+}
+
+std::vector<std::string> DenseLibraries() {
+  return Names<ceres::DenseLinearAlgebraLibraryType>(
+      &ceres::DenseLinearAlgebraLibraryTypeToString, 8,
+      [](ceres::DenseLinearAlgebraLibraryType t) {
+        return ceres::IsDenseLinearAlgebraLibraryTypeAvailable(t);
+      });
+}
+
+template <typename E>
+E Convert(const Settings& s, const std::string& key, bool (*from_string)(std::string, E*)) {
+  E value;
+  CHECK(from_string(Upper(s.String(key)), &value)) << key << ": " << s.String(key);
+  return value;
+}
+
+}  // namespace
+
+std::vector<Key> SolverKeys() {
+  auto choice = [](std::string name, std::string fallback, std::vector<std::string> choices,
+                   std::string doc) {
+    return ChoiceKey("solver." + std::move(name), std::move(fallback), std::move(choices),
+                     std::move(doc));
+  };
+  auto number = [](std::string name, double fallback, double lo, double hi, std::string doc) {
+    return NumberKey("solver." + std::move(name), fallback, lo, hi, std::move(doc));
+  };
+  auto integer = [](std::string name, long long fallback, long long lo, long long hi,
+                    std::string doc) {
+    return IntegerKey("solver." + std::move(name), fallback, lo, hi, std::move(doc));
+  };
+  auto flag = [](std::string name, bool fallback, std::string doc) {
+    return BoolKey("solver." + std::move(name), fallback, std::move(doc));
+  };
+  return {
+      choice("linear_solver_type", "sparse_normal_cholesky",
+             Names<ceres::LinearSolverType>(&ceres::LinearSolverTypeToString, 8),
+             "linear solver of each step (Ceres LinearSolverType)"),
+      choice("sparse_linear_algebra_library_type", "suite_sparse", SparseLibraries(),
+             "sparse factorisation library (suite_sparse: CHOLMOD)"),
+      choice("dense_linear_algebra_library_type", "eigen", DenseLibraries(),
+             "dense linear algebra for the dense solvers"),
+      choice("preconditioner_type", "jacobi",
+             Names<ceres::PreconditionerType>(&ceres::PreconditionerTypeToString, 8),
+             "preconditioner of the iterative solvers (cgnr, iterative_schur)"),
+      choice("trust_region_strategy_type", "levenberg_marquardt",
+             Names<ceres::TrustRegionStrategyType>(&ceres::TrustRegionStrategyTypeToString, 4),
+             "trust-region strategy"),
+      choice("dogleg_type", "traditional_dogleg",
+             Names<ceres::DoglegType>(&ceres::DoglegTypeToString, 4),
+             "dogleg variant (with trust_region_strategy_type: dogleg)"),
+      choice("minimizer_type", "trust_region",
+             Names<ceres::MinimizerType>(&ceres::MinimizerTypeToString, 4),
+             "trust_region, or line_search (then the line_search_* keys apply)"),
+      choice("line_search_direction_type", "lbfgs",
+             Names<ceres::LineSearchDirectionType>(&ceres::LineSearchDirectionTypeToString, 8),
+             "direction of the line-search minimizer"),
+      choice("line_search_type", "wolfe",
+             Names<ceres::LineSearchType>(&ceres::LineSearchTypeToString, 4),
+             "line search of the line-search minimizer"),
+      integer("max_num_iterations", 50, 0, 1000000, "Ceres iterations per round at most"),
+      number("max_solver_time_in_seconds", 1e9, 0, 1e9, "wall time per round at most"),
+      integer("num_threads", 2, 1, 256, "threads for Jacobian evaluation and linear algebra"),
+      number("function_tolerance", 1e-10, 0, 1, "stop when |Δcost|/cost falls below this"),
+      number("gradient_tolerance", 1e-14, 0, 1, "stop when the max-norm gradient falls below this"),
+      number("parameter_tolerance", 1e-10, 0, 1, "stop when |Δx| falls below this × (|x| + this)"),
+      number("initial_trust_region_radius", 1e4, 0, 1e32, "initial trust-region radius"),
+      number("max_trust_region_radius", 1e16, 0, 1e32, "largest trust-region radius"),
+      number("min_trust_region_radius", 1e-32, 0, 1, "stop when the radius falls below this"),
+      number("min_relative_decrease", 1e-3, 0, 1, "smallest accepted ratio of actual to model decrease"),
+      number("min_lm_diagonal", 1e-6, 0, 1e32, "Levenberg-Marquardt diagonal lower bound"),
+      number("max_lm_diagonal", 1e32, 0, 1e32, "Levenberg-Marquardt diagonal upper bound"),
+      integer("max_num_consecutive_invalid_steps", 5, 0, 1000000, "invalid steps tolerated in a row"),
+      flag("use_nonmonotonic_steps", false, "allow steps that raise the cost (non-monotonic)"),
+      integer("max_consecutive_nonmonotonic_steps", 5, 0, 1000000, "with use_nonmonotonic_steps"),
+      flag("jacobi_scaling", true, "scale the columns of the Jacobian"),
+      flag("use_inner_iterations", false, "inner iterations (non-linear block coordinate descent)"),
+      number("inner_iteration_tolerance", 1e-3, 0, 1, "relative decrease that stops inner iterations"),
+      integer("min_linear_solver_iterations", 0, 0, 1000000, "iterative solvers: at least"),
+      integer("max_linear_solver_iterations", 500, 1, 1000000, "iterative solvers: at most"),
+      number("eta", 0.1, 0, 1, "iterative solvers: forcing sequence (relative accuracy)"),
+      flag("use_postordering", false, "sparse Cholesky: postorder the elimination tree"),
+      flag("dynamic_sparsity", false, "re-analyse the Jacobian's sparsity every iteration"),
+      flag("use_mixed_precision_solves", false, "single-precision factorisation + refinement"),
+      integer("max_num_refinement_iterations", 0, 0, 1000, "iterative refinement steps"),
+      flag("use_explicit_schur_complement", false, "iterative_schur: form the Schur complement"),
+  };
+}
+
+ceres::Solver::Options SolverOptions(const Settings& s) {
+  ceres::Solver::Options o;
+  o.linear_solver_type = Convert(s, "solver.linear_solver_type", &ceres::StringToLinearSolverType);
+  o.sparse_linear_algebra_library_type =
+      Convert(s, "solver.sparse_linear_algebra_library_type",
+              &ceres::StringToSparseLinearAlgebraLibraryType);
+  o.dense_linear_algebra_library_type = Convert(
+      s, "solver.dense_linear_algebra_library_type", &ceres::StringToDenseLinearAlgebraLibraryType);
+  o.preconditioner_type = Convert(s, "solver.preconditioner_type", &ceres::StringToPreconditionerType);
+  o.trust_region_strategy_type =
+      Convert(s, "solver.trust_region_strategy_type", &ceres::StringToTrustRegionStrategyType);
+  o.dogleg_type = Convert(s, "solver.dogleg_type", &ceres::StringToDoglegType);
+  o.minimizer_type = Convert(s, "solver.minimizer_type", &ceres::StringToMinimizerType);
+  o.line_search_direction_type =
+      Convert(s, "solver.line_search_direction_type", &ceres::StringToLineSearchDirectionType);
+  o.line_search_type = Convert(s, "solver.line_search_type", &ceres::StringToLineSearchType);
+  o.max_num_iterations = int(s.Integer("solver.max_num_iterations"));
+  o.max_solver_time_in_seconds = s.Number("solver.max_solver_time_in_seconds");
+  o.num_threads = int(s.Integer("solver.num_threads"));
+  o.function_tolerance = s.Number("solver.function_tolerance");
+  o.gradient_tolerance = s.Number("solver.gradient_tolerance");
+  o.parameter_tolerance = s.Number("solver.parameter_tolerance");
+  o.initial_trust_region_radius = s.Number("solver.initial_trust_region_radius");
+  o.max_trust_region_radius = s.Number("solver.max_trust_region_radius");
+  o.min_trust_region_radius = s.Number("solver.min_trust_region_radius");
+  o.min_relative_decrease = s.Number("solver.min_relative_decrease");
+  o.min_lm_diagonal = s.Number("solver.min_lm_diagonal");
+  o.max_lm_diagonal = s.Number("solver.max_lm_diagonal");
+  o.max_num_consecutive_invalid_steps = int(s.Integer("solver.max_num_consecutive_invalid_steps"));
+  o.use_nonmonotonic_steps = s.Bool("solver.use_nonmonotonic_steps");
+  o.max_consecutive_nonmonotonic_steps = int(s.Integer("solver.max_consecutive_nonmonotonic_steps"));
+  o.jacobi_scaling = s.Bool("solver.jacobi_scaling");
+  o.use_inner_iterations = s.Bool("solver.use_inner_iterations");
+  o.inner_iteration_tolerance = s.Number("solver.inner_iteration_tolerance");
+  o.min_linear_solver_iterations = int(s.Integer("solver.min_linear_solver_iterations"));
+  o.max_linear_solver_iterations = int(s.Integer("solver.max_linear_solver_iterations"));
+  o.eta = s.Number("solver.eta");
+  o.use_postordering = s.Bool("solver.use_postordering");
+  o.dynamic_sparsity = s.Bool("solver.dynamic_sparsity");
+  o.use_mixed_precision_solves = s.Bool("solver.use_mixed_precision_solves");
+  o.max_num_refinement_iterations = int(s.Integer("solver.max_num_refinement_iterations"));
+  o.use_explicit_schur_complement = s.Bool("solver.use_explicit_schur_complement");
+  o.logging_type = ceres::SILENT;
+  o.minimizer_progress_to_stdout = false;
+
+  std::string error;
+  if (!o.IsValid(&error)) {
+    // Name the keys Ceres' message is about: those whose option name or
+    // (upper-case) value it mentions, given in the spec first.
+    std::vector<std::string> keys;
+    for (const Key& k : SolverKeys()) {
+      const std::string option = k.name.substr(std::string("solver.").size());
+      const bool named = error.find(option) != std::string::npos ||
+                         (k.type == Type::kChoice &&
+                          error.find(Upper(s.String(k.name))) != std::string::npos);
+      if (named) keys.push_back(k.name);
+    }
+    std::stable_partition(keys.begin(), keys.end(),
+                          [&](const std::string& k) { return s.Given(k); });
+    std::string list;
+    for (const std::string& k : keys) list += (list.empty() ? "" : ", ") + k;
+    throw s.Error(keys.empty() ? std::string("solver") : keys.front(),
+                  "Ceres rejects this combination" + (list.empty() ? "" : " of " + list) + ": " +
+                      error);
+  }
+  return o;
+}
+
+void ConfigureThreading() {
+  // Let libgomp shrink CHOLMOD's hard-coded 4-thread teams to the cores we
+  // have, unless the user decided with OMP_DYNAMIC.
+  if (!std::getenv("OMP_DYNAMIC")) omp_set_dynamic(1);
+}
+
+std::string BlasLibrary() {
+  // Looked up at run time: the BLAS is a dependency of CHOLMOD, not of ours.
+  void* symbol = dlsym(RTLD_DEFAULT, "dgemm_");
+  Dl_info info;
+  if (symbol && dladdr(symbol, &info) && info.dli_fname) {
+    char resolved[4096];
+    if (realpath(info.dli_fname, resolved)) return resolved;
+    return info.dli_fname;
+  }
+  return "unknown";
+}
+
+}  // namespace archgeo

@@ -1,0 +1,35 @@
+// archgeo — the `solver:` section of a spec: ceres::Solver::Options by
+// Ceres' own option names (lower case in YAML, e.g. `linear_solver_type:
+// sparse_normal_cholesky`), converted with ceres::StringTo*. Every choice
+// Ceres offers and this build of it supports is accepted; a combination
+// Ceres rejects (e.g. dogleg with an iterative linear solver) is an input
+// error naming the keys, before any work.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <ceres/solver.h>
+
+#include "core/settings.h"
+
+namespace archgeo {
+
+// The solver keys ("solver.<ceres option name>") with archgeo's defaults.
+std::vector<Key> SolverKeys();
+
+// The Ceres options of `settings` (logging off; callbacks are the loop's).
+// Throws InputError naming the offending key(s) for an invalid combination.
+ceres::Solver::Options SolverOptions(const Settings& settings);
+
+// Configures OpenMP and BLAS threading once per process: Debian's CHOLMOD
+// hard-codes 4 OpenMP threads, which on 2 cores is ~3x slower than letting
+// the runtime adapt (omp_set_dynamic(1)). An OMP_DYNAMIC environment
+// variable, if set, is left in charge.
+void ConfigureThreading();
+
+// Path of the shared library that provides the BLAS dgemm_ symbol in this
+// process (e.g. ".../openblas-pthread/libblas.so.3"), for reports and benchmarks.
+std::string BlasLibrary();
+
+}  // namespace archgeo

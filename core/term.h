@@ -1,0 +1,138 @@
+// archgeo — terms: an energy of energies/ registered once, with what it acts
+// on, what it reads and how it is weighted, so that any problem (or a user's
+// `problem: custom` spec) can compose it.
+//
+// A term is declared in its energy's .cpp (energies/<name>.cpp, next to the
+// factory of its cost functor) as a `TermSpec` and listed once in
+// energies/registry.cpp. Its `add` function is called once per element of the
+// term's element set (core/elements.h) and adds that element's residual
+// blocks through a TermContext; it sees positions, variable blocks, the
+// reference projection and its own options, never the mesh type itself, so
+// energies/ stays free of CGAL.
+//
+// Objective: Ceres minimises ½ Σ_terms w_t Σ_residuals ‖r‖²; w_t is the
+// term's weight this round (its `weight` setting × continuation), applied as
+// a ceres::ScaledLoss (optionally wrapping a robust loss, `terms.<t>.loss`).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/elements.h"
+#include "core/settings.h"
+
+namespace ceres {
+class CostFunction;
+}  // namespace ceres
+
+namespace archgeo {
+
+// How a variable block maps from the file's units to the canonical frame the
+// problem is solved in (x_c = Rᵀ(x − c)/s, mesh/similarity.h), and back.
+enum class FrameMap {
+  kPosition,       // x → Rᵀ(x − c)/s   (points)
+  kDirection,      // x → Rᵀx           (unit vectors, normals)
+  kVector,         // x → Rᵀx/s         (offsets, displacements)
+  kLength,         // x → x/s           (distances, plane offsets)
+  kInverseLength,  // x → x·s           (curvatures)
+  kInvariant,      // x → x             (angles, surface parameters, weights, ...)
+};
+
+// What happens to a block when the mesh is subdivided (multiresolution).
+enum class Carry {
+  kReinitialise,  // the owner's `init` runs again on the finer mesh
+  kInterpolate,   // vertex blocks: kept on old vertices, averaged from the
+                  // two end vertices on new edge vertices (Loop and
+                  // Catmull–Clark keep vertex ids); others: re-initialised
+};
+
+// A named variable block per vertex, face or edge (or `count` global ones).
+struct BlockDecl {
+  std::string name;   // e.g. "face_plane_normal"
+  Site on = Site::kFace;
+  int width = 1;      // doubles per element (≤ 9)
+  FrameMap frame = FrameMap::kInvariant;
+  bool unit = false;  // a unit 3-vector: optimised on the sphere (ceres::SphereManifold)
+  Carry carry = Carry::kReinitialise;
+  bool output = false;  // written to the output PLY (named float properties) and report
+  bool constant = false;  // data, not optimised (e.g. weights a problem computes)
+  std::string doc;
+};
+
+class TermContext;
+using TermAdder = void (*)(TermContext& context, size_t element);
+using TermHook = void (*)(TermContext& context);
+
+struct TermSpec {
+  const char* name = "";      // the YAML name = the file energies/<name>.h
+  const char* summary = "";   // one line
+  const char* paper = "";     // "[Zadravec 2010, §6, eq. 8]"
+  const char* elements = "";  // default element set (mesh/elements.h names)
+  std::vector<std::string> element_choices;  // other sets `terms.<t>.on` may name
+  std::vector<BlockDecl> declares;  // blocks this term owns (initialised by `init`)
+  std::vector<std::string> reads;   // blocks owned by other terms or the problem
+  std::vector<Key> options;         // names relative to "terms.<name>." (besides weight, on,
+                                    // select, loss, loss_scale)
+  std::vector<std::string> parts;   // objective parts besides its own name
+  const char* group = "";           // consecutive terms of one group on the same element set
+                                    // are added element by element (residual order)
+  const char* drives = "";          // the measure it drives to 0 (custom problems offer
+                                    // tolerance.<measure> and continue the term's weight)
+  bool needs_projection = false;    // reads the projection onto the reference
+  bool supports_band = false;       // honours TermContext::band (continuation.band)
+  TermAdder add = nullptr;
+  TermHook init = nullptr;   // at the start of a solve (each multiresolution level):
+                             // initial values of the blocks it declares
+  TermHook begin = nullptr;  // at the start of every round, before `add`
+  TermHook finish = nullptr; // after the round's residuals are added
+};
+
+// What a term's functions see. Implemented by the problem layer over the
+// store (problems/model.h); all lengths in the canonical frame.
+class TermContext {
+ public:
+  virtual ~TermContext() = default;
+
+  const ElementSet* elements = nullptr;  // the term's (selected) elements
+  double weight = 1;  // this round's weight (continuation included)
+  double band = -1;   // tolerance band in residual units (< 0: the stage has none)
+  int round = 1;      // 1-based round of the current stage
+
+  virtual int NumVertices() const = 0;
+  virtual double* Position(int v) = 0;
+  virtual const double* Original(int v) const = 0;  // at the start of this solve
+  virtual const double* Previous(int v) const = 0;  // at the start of this round
+  // Unit vertex normal at the start of this round: the normalised sum of the
+  // unit normals of the faces at v (0 for an isolated vertex).
+  virtual const double* VertexNormal(int v) const = 0;
+  virtual bool Fixed(int v) const = 0;
+  // A variable block by element index (vertex, face or edge index, or the
+  // index of a global block).
+  virtual double* Block(const std::string& name, int index) = 0;
+  // The closest point of the reference and its normal (surface) or tangent
+  // (boundary curve), re-computed at the start of every round.
+  virtual const double* ProjectedPoint(int v) const = 0;
+  virtual const double* ProjectedDirection(int v) const = 0;
+  virtual bool OnBoundaryCurve(int v) const = 0;
+  // Another element set of the mesh (mesh/elements.h), e.g. "faces".
+  virtual const ElementSet& Elements(const std::string& name) = 0;
+
+  // The term's options ("terms.<name>.<option>").
+  virtual const Settings& settings() const = 0;
+  virtual const std::string& term_name() const = 0;
+  double Number(const std::string& option) const;
+  long long Integer(const std::string& option) const;
+  bool Bool(const std::string& option) const;
+  const std::string& String(const std::string& option) const;
+
+  // Adds the residual block `cost` over `blocks` with the term's weight (or
+  // `weight` if ≥ 0), counted under `part` (default: the term's name). A
+  // residual whose every block is constant (fixed vertices, constant blocks)
+  // is dropped: it cannot change.
+  virtual void Add(ceres::CostFunction* cost, const std::vector<double*>& blocks,
+                   const char* part = nullptr, double weight = -1) = 0;
+  // Optimises the 3-block on the unit sphere.
+  virtual void SetUnit(double* block) = 0;
+};
+
+}  // namespace archgeo

@@ -1,0 +1,37 @@
+#include "energies/handles.h"
+
+#include "core/term.h"
+#include "energies/anchor.h"
+
+namespace archgeo {
+
+ceres::CostFunction* MakeHandle(const double target[3], double inv_length) {
+  return MakeAnchor(target, inv_length);
+}
+
+namespace terms {
+namespace {
+
+// Element: the handle vertex; its data: the target (canonical frame).
+void AddHandle(TermContext& c, size_t i) {
+  const int v = c.elements->Vertices(i)[0];
+  c.Add(MakeHandle(c.elements->Data(i), 1.0), {c.Position(v)});
+}
+
+}  // namespace
+
+const TermSpec& handles() {
+  static const TermSpec spec = [] {
+    TermSpec t;
+    t.name = "handles";
+    t.summary = "pull handle vertices to their target positions (design by handles)";
+    t.paper = "[Pellis 2019, §5.1, Fig. 12]";
+    t.elements = "handles";
+    t.add = &AddHandle;
+    return t;
+  }();
+  return spec;
+}
+
+}  // namespace terms
+}  // namespace archgeo

@@ -1,0 +1,28 @@
+// Design handles, one 3-vector residual per handle vertex:
+//
+//   r = (v − h) / L
+//
+//   [Pellis 2019, §5.1 and Fig. 12: design by moving handles, the mesh
+//    following under the smoothness target and the regularisers]
+//
+// h is the handle's target position (given in file units in the spec, moved
+// to the canonical frame by the problem; an element constant of the
+// problem-provided element set "handles"). Functor: the Anchor of
+// energies/anchor.h with the target h; the same units, singular cases (none)
+// and invariances (h moves with the mesh).
+#ifndef ARCHGEO_ENERGIES_HANDLES_H_
+#define ARCHGEO_ENERGIES_HANDLES_H_
+
+namespace ceres {
+class CostFunction;
+}  // namespace ceres
+
+namespace archgeo {
+
+// Returns AutoDiffCostFunction<Anchor, 3, 3> (block v) pulling towards
+// `target`. Preconditions (CHECKed): target finite, inv_length > 0.
+ceres::CostFunction* MakeHandle(const double target[3], double inv_length);
+
+}  // namespace archgeo
+
+#endif  // ARCHGEO_ENERGIES_HANDLES_H_

@@ -1,0 +1,57 @@
+#include "energies/principal_strip.h"
+
+#include <cmath>
+
+#include <ceres/autodiff_cost_function.h>
+#include <glog/logging.h>
+
+#include "core/term.h"
+
+namespace archgeo {
+
+ceres::CostFunction* MakePrincipalStrip(double inv_length) {
+  CHECK(std::isfinite(inv_length) && inv_length > 0.0)
+      << "MakePrincipalStrip: inv_length must be finite and > 0, got " << inv_length;
+  return new ceres::AutoDiffCostFunction<PrincipalStrip, 3, 3, 3, 3, 3, 3>(
+      new PrincipalStrip(inv_length));
+}
+
+namespace terms {
+namespace {
+
+// Element (principal_strips): (v, w), a principal edge whose endpoints both
+// carry spheres; its strip normal is the edge block "strip_normal".
+void AddStrip(TermContext& c, size_t i) {
+  const int* e = c.elements->Vertices(i);
+  double* n_e = c.Block("strip_normal", c.elements->edge[i]);
+  c.Add(MakePrincipalStrip(1.0), {n_e, c.Position(e[0]), c.Position(e[1]),
+                                  c.Block("sphere_normal", e[0]), c.Block("sphere_normal", e[1])});
+}
+
+void StripNormals(TermContext& c) {
+  for (size_t i = 0; i < c.elements->size(); ++i) {
+    c.SetUnit(c.Block("strip_normal", c.elements->edge[i]));
+    c.SetUnit(c.Block("sphere_normal", c.elements->Vertices(i)[0]));
+    c.SetUnit(c.Block("sphere_normal", c.elements->Vertices(i)[1]));
+  }
+}
+
+}  // namespace
+
+const TermSpec& principal_strip() {
+  static const TermSpec spec = [] {
+    TermSpec t;
+    t.name = "principal_strip";
+    t.summary = "principal-symmetric meshes: developable normal strips along principal edges";
+    t.paper = "[Pellis 2019, §2.3, §5.2]";
+    t.elements = "principal_strips";
+    t.reads = {"sphere_normal", "strip_normal"};
+    t.add = &AddStrip;
+    t.finish = &StripNormals;
+    return t;
+  }();
+  return spec;
+}
+
+}  // namespace terms
+}  // namespace archgeo

@@ -1,0 +1,19 @@
+// archgeo — every registered term (core/term.h), by name. A term is the
+// energy of the same name in energies/<name>.h; its declaration (TermSpec)
+// sits at the end of energies/<name>.cpp and is listed once in registry.cpp.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/term.h"
+
+namespace archgeo {
+
+// In registry order (alphabetical).
+const std::vector<const TermSpec*>& RegisteredTerms();
+
+// The term named `name`, or null.
+const TermSpec* FindTerm(const std::string& name);
+
+}  // namespace archgeo

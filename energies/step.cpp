@@ -1,0 +1,36 @@
+#include "energies/step.h"
+
+#include "core/term.h"
+#include "energies/anchor.h"
+
+namespace archgeo {
+
+ceres::CostFunction* MakeStep(const double previous[3], double inv_length) {
+  return MakeAnchor(previous, inv_length);
+}
+
+namespace terms {
+namespace {
+
+void AddStep(TermContext& c, size_t i) {
+  const int v = c.elements->Vertices(i)[0];
+  c.Add(MakeStep(c.Previous(v), 1.0), {c.Position(v)});
+}
+
+}  // namespace
+
+const TermSpec& step() {
+  static const TermSpec spec = [] {
+    TermSpec t;
+    t.name = "step";
+    t.summary = "pull towards the previous round's positions (damps each round's step)";
+    t.paper = "[Pellis 2019, §5.1, R(X) = w_reg ‖X − X_prev‖²]";
+    t.elements = "vertices";
+    t.add = &AddStep;
+    return t;
+  }();
+  return spec;
+}
+
+}  // namespace terms
+}  // namespace archgeo

@@ -1,0 +1,28 @@
+// Step regulariser, one 3-vector residual per vertex:
+//
+//   r = (v − v_prev) / L
+//
+//   [Pellis 2019, §5.1: R(X) = w_reg ‖X − X_prev‖² of the regulariser of
+//    every design problem; the "regularizer" of the §5.3 weight iteration]
+//
+// v_prev is the vertex's position at the start of the round (a constant of
+// the round), so the term damps each round's step without pulling the mesh
+// back to its input (that is `anchor`). Functor: the Anchor of
+// energies/anchor.h with the target v_prev; the same units, singular cases
+// (none) and invariances.
+#ifndef ARCHGEO_ENERGIES_STEP_H_
+#define ARCHGEO_ENERGIES_STEP_H_
+
+namespace ceres {
+class CostFunction;
+}  // namespace ceres
+
+namespace archgeo {
+
+// Returns AutoDiffCostFunction<Anchor, 3, 3> (block v) pulling towards
+// `previous`. Preconditions (CHECKed): previous finite, inv_length > 0.
+ceres::CostFunction* MakeStep(const double previous[3], double inv_length);
+
+}  // namespace archgeo
+
+#endif  // ARCHGEO_ENERGIES_STEP_H_

@@ -1,0 +1,38 @@
+// archgeo — `problem: custom`: the problem is the spec's own list of terms.
+//
+//   problem: custom
+//   terms:                    # any registered terms (energies/registry.cpp), in
+//     pq_diagonal: 10         # the order their residuals are added; a term
+//     dihedral_energy: {weight: 1, on: interior_edges}   # given as a mapping
+//     proximity: {weight: 2, point_weight: 0.01}          # without weight has 1
+//   tolerance:
+//     pq_normalized_max: 1e-3 # one key per measure a listed term drives to 0
+//                             # (pq_diagonal, face_planarity: pq_normalized_max;
+//                             # anet_planarity: star_planarity_max); 0 = off
+//   continuation: {factor: 10, band: 0}   # weight growth of those terms per
+//                             # round short of the tolerances; tolerance band
+//
+// One stage: rounds (schedule.outer_iterations) of re-projection, IRLS
+// reweighting and continuation until every tolerance holds, or, without one,
+// until a round moves no vertex by more than 1e-6 mean edge lengths. A term
+// that acts on elements the mesh does not have (a quad term on a triangle
+// mesh) is an input error naming the term; terms that need a problem's own
+// elements (e.g. co_spherical's labelled stars) cannot be composed here.
+#pragma once
+
+#include <set>
+#include <string>
+
+#include <yaml-cpp/yaml.h>
+
+#include "core/problem.h"
+
+namespace archgeo {
+
+// The declaration of the custom problem of the spec `root` (read from
+// `path`; `overridden` keys came from --set). Throws InputError for an
+// unknown or uncomposable term.
+ProblemDecl CustomProblem(const YAML::Node& root, const std::string& path,
+                          const std::set<std::string>& overridden);
+
+}  // namespace archgeo

@@ -1,0 +1,39 @@
+// archgeo — the measures a stage logs and its tolerances test, on the
+// current state of the store (canonical frame: lengths in input mean edge
+// lengths). Measures computed together form a group (one pass):
+//
+//   pq_normalized_max          max over faces of δ_PQ,n (mesh/metrics.h)
+//   E, E_prime,                Pellis §3: Σ ℓ ℓ*, Σ ℓ|α|; normal pyramids
+//   self_intersecting_pyramids,  and bad saddles (mesh/smoothness_metrics.h)
+//   bad_saddles
+//   C                          Σ_v |λ1| + |λ2| of W′_v (Pellis §5.3; triangle
+//                              meshes; DiscreteTotalAbsoluteCurvature)
+//   displacement_max           largest distance of a vertex from its position
+//                              at the start of the solve
+//   star_planarity_max, _mean  vertex-star planarity (A-nets; mesh/hnet.h
+//                              InteriorStarPlanarity)
+//
+// A problem adds its own (ProblemDecl::measures).
+#pragma once
+
+#include <functional>
+#include <map>
+#include <string>
+
+#include "mesh/surface_mesh.h"
+#include "problems/model.h"
+
+namespace archgeo {
+
+using MeasureGroup = std::function<std::map<std::string, double>(HookContext&)>;
+
+// The group that computes `name`, or null.
+const MeasureGroup* FindMeasureGroup(const std::string& name);
+
+// Σ_v |λ1,v| + |λ2,v| with the exact tangential eigenvalues of
+// EvaluateVertexShapeOperator (energies/total_absolute_curvature.h) over the
+// `fans` (mesh/elements.h); units: length. Precondition: a triangle mesh.
+// [Pellis 2019, §5.3]
+double DiscreteTotalAbsoluteCurvature(const Mesh& mesh);
+
+}  // namespace archgeo

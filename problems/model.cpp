@@ -1,0 +1,416 @@
+#include "problems/model.h"
+
+#include <ceres/loss_function.h>
+#include <ceres/problem.h>
+#include <ceres/sphere_manifold.h>
+#include <glog/logging.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "energies/registry.h"
+#include "mesh/elements.h"
+#include "mesh/reference.h"
+#include "mesh/similarity.h"
+#include "mesh/smoothness_metrics.h"
+#include "mesh/topology.h"
+#include "problems/measures.h"
+
+namespace archgeo {
+namespace {
+
+// Displacement guard (core/problem.h Stage::guard_key): starts at this
+// fraction of the bound, with this anchor weight, growing by this factor
+// per round; a clamped vertex goes just inside the bound, so that rounding
+// in the conversion back to file units cannot put it outside.
+constexpr double kGuardStart = 0.5;
+constexpr double kGuardFirst = 1.0;
+constexpr double kGuardGrowth = 10.0;
+constexpr double kClampMargin = 0.999;
+
+ceres::LossFunction* Robust(const std::string& type, double scale) {
+  if (type == "huber") return new ceres::HuberLoss(scale);
+  if (type == "soft_l1") return new ceres::SoftLOneLoss(scale);
+  if (type == "cauchy") return new ceres::CauchyLoss(scale);
+  if (type == "arctan") return new ceres::ArctanLoss(scale);
+  if (type == "tolerant") return new ceres::TolerantLoss(scale, scale);
+  return nullptr;  // "none"
+}
+
+}  // namespace
+
+void HookContext::SetElements(const std::string& name, ElementSet set) {
+  CHECK(model) << "SetElements before the model exists";
+  model->SetElements(name, std::move(set));
+}
+
+double HookContext::Measure(const std::string& name) {
+  CHECK(model) << "Measure before the model exists";
+  return model->Measure(name);
+}
+
+// A term's view of the model.
+class MeshModel::View : public TermContext {
+ public:
+  View(MeshModel& model, const TermSpec& spec)
+      : model_(model), spec_(spec), name_(spec.name) {}
+
+  void Prepare(ceres::Problem* problem, TermBlocks* blocks, const std::string& loss,
+               double loss_scale) {
+    problem_ = problem;
+    blocks_ = blocks;
+    loss_ = loss;
+    loss_scale_ = loss_scale;
+  }
+
+  int NumVertices() const override { return int(model_.store_.mesh().number_of_vertices()); }
+  double* Position(int v) override { return PositionBlock(model_.store_.mesh(), VertexIndex(v)); }
+  const double* Original(int v) const override { return &model_.original_[3 * size_t(v)]; }
+  const double* Previous(int v) const override { return &model_.previous_[3 * size_t(v)]; }
+  const double* VertexNormal(int v) const override { return &model_.normals_[3 * size_t(v)]; }
+  bool Fixed(int v) const override { return model_.hooks_.fixed[v]; }
+  double* Block(const std::string& name, int index) override {
+    return model_.store_.At(name, index);
+  }
+  const double* ProjectedPoint(int v) const override {
+    CHECK(!model_.projected_point_.empty()) << name_ << ": no projection this round";
+    return &model_.projected_point_[3 * size_t(v)];
+  }
+  const double* ProjectedDirection(int v) const override {
+    CHECK(!model_.projected_direction_.empty()) << name_ << ": no projection this round";
+    return &model_.projected_direction_[3 * size_t(v)];
+  }
+  bool OnBoundaryCurve(int v) const override {
+    return !model_.on_curve_.empty() && model_.on_curve_[v];
+  }
+  const ElementSet& Elements(const std::string& name) override { return model_.Elements(name); }
+  const Settings& settings() const override { return *model_.hooks_.settings; }
+  const std::string& term_name() const override { return name_; }
+
+  void Add(ceres::CostFunction* cost, const std::vector<double*>& blocks, const char* part,
+           double weight) override {
+    CHECK(problem_) << name_ << ": Add outside Build";
+    bool variable = false;
+    for (double* b : blocks) variable = variable || !model_.IsConstant(b);
+    if (!variable) {
+      delete cost;
+      return;
+    }
+    const double w = weight >= 0 ? weight : this->weight;
+    ceres::LossFunction* loss =
+        new ceres::ScaledLoss(Robust(loss_, loss_scale_), w, ceres::TAKE_OWNERSHIP);
+    (*blocks_)[part ? part : name_].push_back(problem_->AddResidualBlock(cost, loss, blocks));
+  }
+
+  void SetUnit(double* block) override {
+    if (problem_->HasParameterBlock(block) && !problem_->GetManifold(block)) {
+      problem_->SetManifold(block, new ceres::SphereManifold<3>());
+    }
+  }
+
+ private:
+  MeshModel& model_;
+  const TermSpec& spec_;
+  std::string name_;
+  ceres::Problem* problem_ = nullptr;
+  TermBlocks* blocks_ = nullptr;
+  std::string loss_ = "none";
+  double loss_scale_ = 1;
+};
+
+std::vector<const TermSpec*> TermsOf(const ProblemDecl& declaration) {
+  std::vector<const TermSpec*> specs;
+  for (const TermUse& use : declaration.terms) {
+    const TermSpec* spec = FindTerm(use.term);
+    CHECK(spec) << declaration.name << ": term '" << use.term << "' is not registered";
+    specs.push_back(spec);
+  }
+  return specs;
+}
+
+MeshModel::MeshModel(const ProblemDecl& declaration, std::vector<const TermSpec*> terms,
+                     HookContext& hooks)
+    : declaration_(declaration), terms_(std::move(terms)), hooks_(hooks), store_(*hooks.store) {
+  hooks_.model = this;
+  const Mesh& mesh = store_.mesh();
+  const size_t n = mesh.number_of_vertices();
+  if (hooks_.fixed.size() != n) hooks_.fixed.assign(n, false);
+  boundary_ = BoundaryVertices(mesh);
+  box_diagonal_ = mesh.number_of_vertices() > 0 ? PrincipalBoxDiagonal(mesh) : 0.0;
+  original_.resize(3 * n);
+  for (VertexIndex v : mesh.vertices()) {
+    const Point& p = mesh.point(v);
+    original_[3 * v.idx()] = p.x();
+    original_[3 * v.idx() + 1] = p.y();
+    original_[3 * v.idx() + 2] = p.z();
+  }
+  previous_ = original_;
+  ComputeVertexNormals();
+  for (const TermSpec* t : terms_) {
+    views_[t->name] = std::make_unique<View>(*this, *t);
+  }
+  // Blocks: the declaration's, then those of every term (declared even when
+  // the term is off: another term may read them).
+  for (const BlockDecl& b : declaration_.blocks) store_.Declare(b);
+  for (const TermSpec* t : terms_) {
+    for (const BlockDecl& b : t->declares) store_.Declare(b);
+  }
+  for (const TermSpec* t : terms_) {
+    for (const std::string& b : t->reads) {
+      CHECK(store_.Has(b)) << "term '" << t->name << "' reads block '" << b
+                           << "', which no term of problem '" << declaration_.name << "' declares";
+    }
+  }
+  if (declaration_.init) declaration_.init(hooks_);
+  for (const TermSpec* t : terms_) {
+    if (!t->init) continue;
+    View& view = *views_.at(t->name);
+    view.elements = &Selected(*t);
+    t->init(view);
+  }
+}
+
+MeshModel::~MeshModel() {
+  if (hooks_.model == this) hooks_.model = nullptr;
+}
+
+bool MeshModel::IsConstant(const double* block) const {
+  const Mesh& mesh = store_.mesh();
+  if (!mesh.is_empty()) {
+    const double* first = &mesh.point(VertexIndex(0)).x();
+    const size_t n = mesh.number_of_vertices();
+    if (block >= first && block < first + 3 * n) {
+      return hooks_.fixed[size_t(block - first) / 3];
+    }
+  }
+  const auto it = constant_blocks_.find(block);
+  return it != constant_blocks_.end();
+}
+
+void MeshModel::ComputeVertexNormals() {
+  const Mesh& mesh = store_.mesh();
+  const std::vector<Vec3> face_normals = FaceNormals(mesh);
+  normals_.assign(3 * mesh.number_of_vertices(), 0.0);
+  for (VertexIndex v : mesh.vertices()) {
+    if (mesh.is_isolated(v)) continue;
+    const Vec3 n = VertexNormal(mesh, face_normals, v);
+    for (int k = 0; k < 3; ++k) normals_[3 * v.idx() + k] = n[k];
+  }
+}
+
+void MeshModel::BeginRound(bool project) {
+  const Mesh& mesh = store_.mesh();
+  const size_t n = mesh.number_of_vertices();
+  previous_.resize(3 * n);
+  for (VertexIndex v : mesh.vertices()) {
+    const Point& p = mesh.point(v);
+    previous_[3 * v.idx()] = p.x();
+    previous_[3 * v.idx() + 1] = p.y();
+    previous_[3 * v.idx() + 2] = p.z();
+  }
+  ComputeVertexNormals();
+  projected_point_.clear();
+  projected_direction_.clear();
+  on_curve_.clear();
+  if (!project || !hooks_.reference) return;
+  // Boundary vertices go to the reference's boundary curve when the
+  // boundary_proximity term is on and the reference has a boundary;
+  // otherwise every vertex goes to the surface.
+  const Settings& s = *hooks_.settings;
+  const bool curves = hooks_.reference->HasBoundary() && s.schema().Find("terms.boundary_proximity.weight") &&
+                      s.Number("terms.boundary_proximity.weight") > 0;
+  projected_point_.resize(3 * n);
+  projected_direction_.resize(3 * n);
+  on_curve_.assign(n, false);
+  for (VertexIndex v : mesh.vertices()) {
+    const Vec3 x = ToVec3(mesh.point(v));
+    Vec3 point, direction;
+    if (curves && boundary_[v.idx()]) {
+      const auto c = hooks_.reference->ClosestOnBoundary(x);
+      point = c->point;
+      direction = c->tangent;
+      on_curve_[v.idx()] = true;
+    } else {
+      const auto c = hooks_.reference->Closest(x);
+      point = c.point;
+      direction = c.normal;
+    }
+    for (int k = 0; k < 3; ++k) {
+      projected_point_[3 * v.idx() + k] = point[k];
+      projected_direction_[3 * v.idx() + k] = direction[k];
+    }
+  }
+}
+
+void MeshModel::SetElements(const std::string& name, ElementSet set) {
+  set.name = name;
+  sets_[name] = std::move(set);
+  selected_.clear();
+}
+
+const ElementSet& MeshModel::Elements(const std::string& name) {
+  auto it = sets_.find(name);
+  if (it == sets_.end()) {
+    const std::vector<std::string>& names = ElementSetNames();
+    if (std::find(names.begin(), names.end(), name) == names.end()) {
+      throw hooks_.settings->Error(
+          "problem", "no element set '" + name + "' in problem '" + declaration_.name + "'");
+    }
+    it = sets_.emplace(name, BuildElementSet(store_.mesh(), name)).first;
+  }
+  return it->second;
+}
+
+const ElementSet& MeshModel::Selected(const TermSpec& spec) {
+  const std::string name = spec.name;
+  if (const auto it = selected_.find(name); it != selected_.end()) return it->second;
+  const Settings& s = *hooks_.settings;
+  const std::string on = s.String("terms." + name + ".on");
+  const ElementSet& all = Elements(on);
+  const Value& select = s.Get("terms." + name + ".select");
+  std::vector<size_t> keep;
+  if (const auto* ids = std::get_if<std::vector<long long>>(&select)) {
+    std::vector<bool> listed;
+    for (long long id : *ids) {
+      if (id >= 0) {
+        if (size_t(id) >= listed.size()) listed.resize(size_t(id) + 1, false);
+        listed[size_t(id)] = true;
+      }
+    }
+    for (size_t i = 0; i < all.size(); ++i) {
+      const int site = all.sites[i];
+      if (site >= 0 && size_t(site) < listed.size() && listed[site]) keep.push_back(i);
+    }
+  } else {
+    const std::string& mode = std::get<std::string>(select);
+    if (mode == "all") return selected_.emplace(name, all).first->second;
+    for (size_t i = 0; i < all.size(); ++i) {
+      const bool on_boundary = all.Has(i, kBoundary);
+      if ((mode == "boundary") == on_boundary) keep.push_back(i);
+    }
+  }
+  return selected_.emplace(name, all.Subset(keep)).first->second;
+}
+
+TermBlocks MeshModel::Build(const std::vector<ActiveTerm>& terms, int round,
+                            ceres::Problem& problem) {
+  TermBlocks blocks;
+  const Settings& s = *hooks_.settings;
+  constant_blocks_.clear();
+  for (const std::string& name : store_.Names()) {
+    if (!store_.Decl(name).constant) continue;
+    const int n = store_.Count(name);
+    for (int i = 0; i < n; ++i) constant_blocks_.insert(store_.At(name, i));
+  }
+  for (const ActiveTerm& a : terms) {
+    View& view = *views_.at(a.spec->name);
+    view.elements = &Selected(*a.spec);
+    view.weight = a.weight;
+    view.band = a.spec->supports_band ? a.band : -1.0;
+    view.round = round;
+    const std::string prefix = "terms." + std::string(a.spec->name) + ".";
+    view.Prepare(&problem, &blocks, s.String(prefix + "loss"), s.Number(prefix + "loss_scale"));
+    if (a.spec->begin) a.spec->begin(view);
+  }
+  // Consecutive terms of one group on the same elements are added element by
+  // element (the residual order of a vertex's proximity terms, say).
+  for (size_t first = 0; first < terms.size();) {
+    size_t last = first + 1;
+    const TermSpec& head = *terms[first].spec;
+    while (last < terms.size() && head.group[0] != '\0' &&
+           std::string(terms[last].spec->group) == head.group &&
+           views_.at(terms[last].spec->name)->elements->name ==
+               views_.at(head.name)->elements->name) {
+      ++last;
+    }
+    const ElementSet& elements = *views_.at(head.name)->elements;
+    for (size_t i = 0; i < elements.size(); ++i) {
+      for (size_t t = first; t < last; ++t) {
+        View& view = *views_.at(terms[t].spec->name);
+        terms[t].spec->add(view, i);
+      }
+    }
+    first = last;
+  }
+  for (const ActiveTerm& a : terms) {
+    View& view = *views_.at(a.spec->name);
+    if (a.spec->finish) a.spec->finish(view);
+    view.Prepare(nullptr, nullptr, "none", 1);
+  }
+  Mesh& mesh = store_.mesh();
+  for (VertexIndex v : mesh.vertices()) {
+    double* x = PositionBlock(mesh, v);
+    if (hooks_.fixed[v.idx()] && problem.HasParameterBlock(x)) problem.SetParameterBlockConstant(x);
+  }
+  for (const double* b : constant_blocks_) {
+    double* block = const_cast<double*>(b);
+    if (problem.HasParameterBlock(block)) problem.SetParameterBlockConstant(block);
+  }
+  return blocks;
+}
+
+int MeshModel::Guard(double bound_relative) {
+  Mesh& mesh = store_.mesh();
+  const double bound = bound_relative * box_diagonal_;
+  std::vector<bool> on_polygon(mesh.number_of_vertices(), false);
+  for (FaceIndex f : mesh.faces()) {
+    if (mesh.degree(f) <= 3) continue;
+    for (VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) on_polygon[v.idx()] = true;
+  }
+  int clamped = 0;
+  for (VertexIndex v : mesh.vertices()) {
+    const double* x0 = &original_[3 * v.idx()];
+    const Point& p = mesh.point(v);
+    const Vec3 d{p.x() - x0[0], p.y() - x0[1], p.z() - x0[2]};
+    const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    CHECK(store_.Has("guard_weight")) << declaration_.name
+                                      << ": a displacement guard needs the displacement_guard term";
+    double* g = store_.At("guard_weight", int(v.idx()));
+    if (length > kGuardStart * bound) *g = std::max(kGuardFirst, *g * kGuardGrowth);
+    if (length > bound && !on_polygon[v.idx()]) {
+      const double t = kClampMargin * bound / length;
+      mesh.point(v) = Point(x0[0] + t * d[0], x0[1] + t * d[1], x0[2] + t * d[2]);
+      ++clamped;
+    }
+  }
+  return clamped;
+}
+
+double MeshModel::Measure(const std::string& name) {
+  if (const auto it = cache_.find(name); it != cache_.end()) return it->second;
+  if (const auto it = declaration_.measures.find(name); it != declaration_.measures.end()) {
+    return cache_[name] = it->second(hooks_);
+  }
+  const MeasureGroup* group = FindMeasureGroup(name);
+  CHECK(group) << "problem '" << declaration_.name << "': no measure '" << name << "'";
+  for (const auto& [key, value] : (*group)(hooks_)) cache_[key] = value;
+  CHECK(cache_.count(name)) << "measure group does not provide '" << name << "'";
+  return cache_.at(name);
+}
+
+void MeshModel::StateChanged() {
+  cache_.clear();
+  ++hooks_.version;
+}
+
+std::vector<double> MeshModel::SaveState() const { return store_.Save(); }
+void MeshModel::RestoreState(const std::vector<double>& state) { store_.Restore(state); }
+
+double MeshModel::MaxMove(const std::vector<double>& a, const std::vector<double>& b) const {
+  const size_t n = 3 * store_.mesh().number_of_vertices();
+  double m = 0;
+  for (size_t i = 0; i + 2 < n && i + 2 < a.size() && i + 2 < b.size(); i += 3) {
+    const double dx = a[i] - b[i], dy = a[i + 1] - b[i + 1], dz = a[i + 2] - b[i + 2];
+    m = std::max(m, std::sqrt(dx * dx + dy * dy + dz * dz));
+  }
+  return m;
+}
+
+bool MeshModel::Finite() const {
+  for (double x : store_.Save()) {
+    if (!std::isfinite(x)) return false;
+  }
+  return true;
+}
+
+}  // namespace archgeo

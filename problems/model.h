@@ -1,0 +1,132 @@
+// archgeo — the problem layer under the one loop (core/loop.h): a Model over
+// the variable store (mesh/store.h), the reference surface and the measures,
+// and the HookContext a problem declaration's hooks see.
+//
+// Terms reach the store through a TermContext (core/term.h) per term; the
+// element sets they act on come from mesh/elements.h or from the problem
+// (HookContext::SetElements), narrowed by `terms.<t>.select`.
+#pragma once
+
+#include <any>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/loop.h"
+#include "core/problem.h"
+#include "mesh/similarity.h"
+#include "mesh/store.h"
+#include "mesh/surface_mesh.h"
+
+namespace archgeo {
+
+class ReferenceSurface;
+class MeshModel;
+
+// The net a problem optimises when that is not the input mesh itself (hnet:
+// a diagonal net of the input, mesh/diagonal_net.h; principal_symmetric: the
+// input with its quads split). The run then measures, solves and writes this
+// net; displacements are measured from its vertices' input positions, and
+// without a `reference` the net is its own reference surface.
+struct WorkingNet {
+  bool derived = false;      // false: the problem works on the input itself
+  Mesh mesh;                 // the net, in file units (when derived)
+  std::vector<int> source;   // per net vertex: its input vertex index (when derived)
+  nlohmann::json details = nlohmann::json::object();  // the report's "net" entry (if not empty)
+  std::string headline;      // for the terminal ("" or lines ending in '\n')
+};
+
+// What a problem's hooks see. One per run (state carried across
+// multiresolution levels lives in `state`).
+class HookContext {
+ public:
+  Store* store = nullptr;             // the current level's store (canonical frame)
+  const Mesh* input = nullptr;        // the mesh as read (hook `net`), then the net
+                                      // solved, file units
+  WorkingNet net;                     // set by the `net` hook
+  Similarity frame;                   // file units -> canonical
+  const ReferenceSurface* reference = nullptr;  // canonical frame
+  const Settings* settings = nullptr;
+  std::vector<bool> fixed;            // per vertex: hard-fixed (init may add)
+  int level = 0;                      // multiresolution level
+  ProgressSink progress;
+  MeshModel* model = nullptr;
+  long version = 0;                   // changes whenever the state (positions, blocks) does
+
+  nlohmann::json details = nlohmann::json::object();  // the report's problem entries
+  std::string headline;               // lines for the terminal
+  std::map<std::string, std::any> state;  // the problem's own data for this run
+
+  // For `write`: the output in file units and the staged file per output key.
+  const Mesh* output = nullptr;
+  std::map<std::string, std::string> temporaries;
+
+  // A problem-provided element set (replaces one of the same name).
+  void SetElements(const std::string& name, ElementSet set);
+  // A measure's value on the current state.
+  double Measure(const std::string& name);
+  // The problem's own data, created on first use.
+  template <typename T>
+  T& State(const std::string& name) {
+    std::any& a = state[name];
+    if (!a.has_value()) a = T{};
+    return std::any_cast<T&>(a);
+  }
+};
+
+class MeshModel : public Model {
+ public:
+  // `terms`: the declaration's terms (registered specs, residual order).
+  // Declares every block the active terms and the declaration need, runs the
+  // terms' `init` and then the declaration's `init` hook.
+  MeshModel(const ProblemDecl& declaration, std::vector<const TermSpec*> terms,
+            HookContext& hooks);
+  ~MeshModel() override;
+
+  void BeginRound(bool project) override;
+  TermBlocks Build(const std::vector<ActiveTerm>& terms, int round,
+                   ceres::Problem& problem) override;
+  int Guard(double bound_relative) override;
+  double Measure(const std::string& name) override;
+  void StateChanged() override;
+  std::vector<double> SaveState() const override;
+  void RestoreState(const std::vector<double>& state) override;
+  double MaxMove(const std::vector<double>& a, const std::vector<double>& b) const override;
+  bool Finite() const override;
+  HookContext& hooks() override { return hooks_; }
+
+  void SetElements(const std::string& name, ElementSet set);
+  // The element set `name` (built on first use), narrowed by `select`.
+  const ElementSet& Elements(const std::string& name);
+
+ private:
+  class View;
+  friend class View;
+  const ElementSet& Selected(const TermSpec& spec);
+  void ComputeVertexNormals();
+  bool IsConstant(const double* block) const;
+
+  const ProblemDecl& declaration_;
+  std::vector<const TermSpec*> terms_;
+  HookContext& hooks_;
+  Store& store_;
+  std::map<std::string, ElementSet> sets_;
+  std::map<std::string, ElementSet> selected_;  // per term name
+  std::vector<double> original_, previous_, normals_;
+  std::vector<double> projected_point_, projected_direction_;
+  std::vector<bool> on_curve_;
+  std::vector<bool> boundary_;
+  double box_diagonal_ = 0;  // of the mesh at the start of the solve (the guard's unit)
+  std::set<const double*> constant_blocks_;  // blocks of constant (data) blocks
+  std::map<std::string, double> cache_;
+  std::map<std::string, std::unique_ptr<View>> views_;
+};
+
+// The terms of a declaration as registered specs (CHECKs each is registered).
+std::vector<const TermSpec*> TermsOf(const ProblemDecl& declaration);
+
+}  // namespace archgeo

@@ -1,0 +1,203 @@
+#include "problems/schema.h"
+
+#include <glog/logging.h>
+
+#include <algorithm>
+#include <sstream>
+
+#include "core/solver_options.h"
+#include "energies/registry.h"
+#include "mesh/elements.h"
+#include "problems/registry.h"
+
+namespace archgeo {
+namespace {
+
+Key PathKey(std::string name, Type type, std::string doc) {
+  Key k;
+  k.name = std::move(name);
+  k.type = type;
+  k.doc = std::move(doc);
+  return k;
+}
+
+std::vector<Key> CommonKeys(const ProblemDecl& d) {
+  std::vector<Key> keys;
+  keys.push_back(PathKey("mesh", Type::kInputPath,
+                         "required: the input mesh (OBJ, OFF or PLY; polygonal faces)"));
+  keys.push_back(PathKey("reference", Type::kInputPath,
+                         "surface to stay close to (default: the input mesh itself)"));
+  keys.push_back(ChoiceKey("problem", "planar_quads", ProblemNames(),
+                           "the problem (`archgeo spec NAME` lists its keys)"));
+  Key fixed = ChoiceKey("fixed", "none", {"none", "corners", "boundary"},
+                        "hard-fixed vertices: none, corners, boundary, or a list of 0-based "
+                        "vertex indices");
+  fixed.type = Type::kChoiceOrIntegers;
+  fixed.lo = 0;
+  keys.push_back(fixed);
+  keys.push_back(IntegerKey("schedule.outer_iterations", 12, 1, 100000,
+                            "rounds at most (re-projection, reweighting, continuation)"));
+  keys.push_back(NumberKey("schedule.max_seconds", 0, 0, 1e9,
+                           "wall-time limit of the whole solve; 0 = none (the report says "
+                           "when it was hit)"));
+  keys.push_back(IntegerKey("multiresolution.levels", 0, 0, 6,
+                            "solve, subdivide and solve again this many times [Pellis 2019, §6]"));
+  keys.push_back(ChoiceKey("multiresolution.scheme", "loop",
+                           {"loop", "sqrt3", "catmull_clark", "doo_sabin"},
+                           "loop, sqrt3 (triangle meshes), catmull_clark, doo_sabin (any mesh); "
+                           "Loop and Catmull-Clark keep vertex ids"));
+  keys.push_back(PathKey("output.mesh", Type::kOutputPath,
+                         "the optimised mesh (.obj, .off, .ply; PLY gets face colours); "
+                         "empty: not written"));
+  keys.push_back(PathKey("output.report", Type::kOutputPath,
+                         "the JSON run report; empty: not written"));
+  keys.push_back(NumberKey("output.color_max", 0.01, 1e-12, 1e12,
+                           "the value shown as pure red in the face colours"));
+  keys.push_back(BoolKey("output.ascii_ply", false, "ASCII instead of binary PLY"));
+  for (const std::string& k : d.output_keys) {
+    keys.push_back(PathKey("output." + k, Type::kOutputPath,
+                           "the problem's `" + k + "` output; empty: not written"));
+  }
+  return keys;
+}
+
+std::vector<Key> TermKeys(const ProblemDecl& d) {
+  std::vector<Key> keys;
+  for (const TermUse& use : d.terms) {
+    const TermSpec* spec = FindTerm(use.term);
+    CHECK(spec) << d.name << ": term '" << use.term << "' is not registered";
+    const std::string p = "terms." + use.term + ".";
+    keys.push_back(NumberKey(p + "weight", use.weight, 0, 1e12,
+                             std::string(spec->summary) + " " + spec->paper +
+                                 " (energies/" + use.term + ".h)"));
+    std::vector<std::string> sets = {use.elements.empty() ? spec->elements : use.elements};
+    for (const std::string& s : spec->element_choices) {
+      if (std::find(sets.begin(), sets.end(), s) == sets.end()) sets.push_back(s);
+    }
+    if (std::string(spec->elements) != sets.front() &&
+        std::find(sets.begin(), sets.end(), spec->elements) == sets.end()) {
+      sets.push_back(spec->elements);
+    }
+    keys.push_back(ChoiceKey(p + "on", sets.front(), sets,
+                             "the elements it acts on (mesh/elements.h)"));
+    Key select = ChoiceKey(p + "select", "all", {"all", "boundary", "interior"},
+                           "which of them: all, boundary, interior, or a list of site ids "
+                           "(vertex, face or edge indices)");
+    select.type = Type::kChoiceOrIntegers;
+    select.lo = 0;
+    keys.push_back(select);
+    keys.push_back(ChoiceKey(p + "loss", "none",
+                             {"none", "huber", "soft_l1", "cauchy", "arctan", "tolerant"},
+                             "robust loss on each residual (Ceres loss functions)"));
+    keys.push_back(NumberKey(p + "loss_scale", 1, 1e-12, 1e12, "scale of the robust loss"));
+    for (Key option : spec->options) {
+      const auto it = use.options.find(option.name);
+      if (it != use.options.end()) option.fallback = it->second;
+      option.name = p + option.name;
+      keys.push_back(option);
+    }
+  }
+  return keys;
+}
+
+std::string Quote(const std::string& s) {
+  if (s.empty()) return "\"\"";
+  for (char c : s) {
+    if (c == ':' || c == '#' || c == '[' || c == '{' || c == '"' || c == '\'') {
+      std::string q = "\"";
+      for (char d : s) q += d == '"' ? std::string("\\\"") : std::string(1, d);
+      return q + "\"";
+    }
+  }
+  return s;
+}
+
+std::string DefaultText(const Key& k) {
+  if (k.type == Type::kCustom) return k.example;
+  const std::string text = ToText(k.fallback);
+  if (k.type == Type::kChoice || k.type == Type::kString || k.type == Type::kInputPath ||
+      k.type == Type::kOutputPath || k.type == Type::kChoiceOrIntegers) {
+    return Quote(text);
+  }
+  return text.empty() ? "\"\"" : text;
+}
+
+}  // namespace
+
+Schema ProblemSchema(const ProblemDecl& d) {
+  Schema schema;
+  for (Key k : CommonKeys(d)) {
+    if (k.name == "problem") k.fallback = d.name;
+    schema.Add(k);
+  }
+  for (Key k : SolverKeys()) schema.Add(k);
+  schema.Add(TermKeys(d));
+  schema.Add(d.keys);
+  Schema out;
+  for (Key k : schema.keys()) {
+    const auto it = d.defaults.find(k.name);
+    if (it != d.defaults.end()) k.fallback = it->second;
+    out.Add(k);
+  }
+  return out;
+}
+
+std::string SpecTemplate(const ProblemDecl& d) {
+  std::ostringstream out;
+  out << "# archgeo problem `" << d.name << "`: " << d.summary << "\n# " << d.paper
+      << "\n# Every key with its default; delete what you do not change. A term listed\n"
+         "# under `terms` with weight 0 is off. Lengths are unit-free (the problem is\n"
+         "# solved at unit mean edge length).\n";
+  const Schema schema = ProblemSchema(d);
+  std::vector<std::string> open;  // the sections of the previous key
+  for (const Key& k : schema.keys()) {
+    std::vector<std::string> parts;
+    std::stringstream ss(k.name);
+    for (std::string part; std::getline(ss, part, '.');) parts.push_back(part);
+    size_t common = 0;
+    while (common < open.size() && common + 1 < parts.size() && open[common] == parts[common]) {
+      ++common;
+    }
+    open.resize(common);
+    for (size_t i = common; i + 1 < parts.size(); ++i) {
+      out << std::string(2 * i, ' ') << parts[i] << ":\n";
+      open.push_back(parts[i]);
+    }
+    const std::string indent(2 * (parts.size() - 1), ' ');
+    std::string value = k.name == "mesh" ? "REQUIRED.obj" : DefaultText(k);
+    if (k.type == Type::kChoice) value += "   # " + [&] {
+      std::string list;
+      for (const std::string& c : k.choices) list += (list.empty() ? "" : " | ") + c;
+      return list;
+    }();
+    out << indent << parts.back() << ": " << value << "\n";
+    out << indent << "  # " << k.doc << "\n";
+  }
+  return out.str();
+}
+
+std::string KeyTable(const ProblemDecl& d, bool common) {
+  std::ostringstream out;
+  out << "| key | default | meaning |\n|---|---|---|\n";
+  const Schema schema = ProblemSchema(d);
+  const Schema base = ProblemSchema(ProblemDecl{});
+  for (const Key& k : schema.keys()) {
+    const bool is_common = k.name.rfind("terms.", 0) != 0 && base.Find(k.name) != nullptr;
+    if (is_common != common) continue;
+    std::string def = k.type == Type::kCustom ? "see below" : ToText(k.fallback);
+    if (def.empty()) def = "none";
+    std::string doc = k.doc;
+    if (k.type == Type::kChoice && !k.choices.empty()) {
+      std::string list;
+      for (const std::string& c : k.choices) list += (list.empty() ? "" : ", ") + ("`" + c + "`");
+      doc += " (" + list + ")";
+    }
+    for (char& c : doc) {
+      if (c == '|') c = '/';
+    }
+    out << "| `" << k.name << "` | `" << def << "` | " << doc << " |\n";
+  }
+  return out.str();
+}
+
+}  // namespace archgeo
