@@ -130,7 +130,9 @@ std::vector<Polyline> ReadPolylines(const std::string& path) {
       polylines.push_back(MakePolyline(points, closed, path, line, ""));
     }
   }
-  if (polylines.empty()) FailInput(path, 0, "no polyline: the file has no 'l' record");
+  if (polylines.empty()) {
+    FailInput(path, 0, "no polyline: the file has no 'l' record (export the curves as polylines)");
+  }
   return polylines;
 }
 
