@@ -58,6 +58,7 @@
 #define ARCHGEO_ENERGIES_LOAD_H_
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
