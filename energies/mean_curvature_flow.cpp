@@ -1,0 +1,74 @@
+#include "energies/mean_curvature_flow.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <ceres/dynamic_autodiff_cost_function.h>
+#include <glog/logging.h>
+
+namespace archgeo {
+namespace {
+
+// Jet size of the dynamic autodiff: 12 of the 3(n + 1) parameters per pass.
+constexpr int kStride = 12;
+// Lower bound of the sine in CotangentWeights.
+constexpr double kMinSine = 1e-6;
+
+int MinValence(bool closed) { return closed ? 3 : 2; }
+
+// Cotangent of the angle at p in the triangle (p, q, s).
+double Cotangent(const Eigen::Vector3d& p, const Eigen::Vector3d& q,
+                 const Eigen::Vector3d& s) {
+  const Eigen::Vector3d a = q - p, b = s - p;
+  const double norms = a.norm() * b.norm();
+  if (!(norms > 0.0)) return 0.0;
+  const double sine = a.cross(b).norm() / norms;
+  return a.dot(b) / norms / std::max(sine, kMinSine);
+}
+
+}  // namespace
+
+ceres::CostFunction* MakeMeanCurvatureFlow(int valence, bool closed,
+                                           double inv_length) {
+  CHECK_GE(valence, MinValence(closed))
+      << "MakeMeanCurvatureFlow: valence too small (closed = " << closed << ")";
+  CHECK(std::isfinite(inv_length) && inv_length > 0.0)
+      << "MakeMeanCurvatureFlow: inv_length must be finite and > 0, got "
+      << inv_length;
+  auto* cost =
+      new ceres::DynamicAutoDiffCostFunction<MeanCurvatureFlow, kStride>(
+          new MeanCurvatureFlow(valence, closed, inv_length));
+  for (int j = 0; j <= valence; ++j) cost->AddParameterBlock(3);
+  cost->SetNumResiduals(3);
+  return cost;
+}
+
+std::vector<double> CotangentWeights(const double* v,
+                                     const std::vector<const double*>& ring,
+                                     bool closed) {
+  CHECK(v != nullptr);
+  const int n = static_cast<int>(ring.size());
+  CHECK_GE(n, MinValence(closed))
+      << "CotangentWeights: one-ring too small (closed = " << closed << ")";
+  const Eigen::Vector3d p(v[0], v[1], v[2]);
+  std::vector<Eigen::Vector3d> w;
+  for (const double* x : ring) {
+    CHECK(x != nullptr);
+    w.emplace_back(x[0], x[1], x[2]);
+  }
+  std::vector<double> weights(n, 0.0);
+  const int triangles = closed ? n : n - 1;
+  for (int k = 0; k < triangles; ++k) {
+    // Triangle (v, w_k, w_{k+1}): the angle at w_{k+1} is opposite the edge
+    // v w_k, the angle at w_k opposite the edge v w_{k+1}.
+    const int next = (k + 1) % n;
+    weights[k] += 0.5 * Cotangent(w[next], p, w[k]);
+    weights[next] += 0.5 * Cotangent(w[k], p, w[next]);
+  }
+  double sum = 0.0;
+  for (double c : weights) sum += c;
+  if (!(sum > 0.0) || !std::isfinite(sum)) weights.assign(n, 1.0);
+  return weights;
+}
+
+}  // namespace archgeo

@@ -1,0 +1,119 @@
+#include "energies/on_curve.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <ceres/autodiff_cost_function.h>
+#include <glog/logging.h>
+
+namespace archgeo {
+
+CurvePolyline::CurvePolyline(const std::vector<double>& xyz, bool closed)
+    : closed_(closed) {
+  CHECK_EQ(xyz.size() % 3, 0u) << "CurvePolyline: 3 doubles per point";
+  const size_t m = xyz.size() / 3;
+  CHECK_GE(m, closed ? 3u : 2u) << "CurvePolyline: too few points";
+  for (size_t i = 0; i < m; ++i) {
+    const Eigen::Vector3d p(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+    CHECK(p.allFinite()) << "CurvePolyline: non-finite point " << i;
+    points_.push_back(p);
+  }
+  if (closed) points_.push_back(points_.front());
+  arc_.push_back(0.0);
+  for (size_t i = 0; i + 1 < points_.size(); ++i) {
+    const double length = (points_[i + 1] - points_[i]).norm();
+    CHECK(length > 0.0) << "CurvePolyline: zero-length segment " << i;
+    arc_.push_back(arc_.back() + length);
+  }
+}
+
+double CurvePolyline::Wrap(double t) const {
+  if (!closed_) return t;
+  const double wrapped = t - length() * std::floor(t / length());
+  return wrapped < length() ? wrapped : 0.0;  // rounding can give Λ
+}
+
+int CurvePolyline::Segment(double t) const { return SegmentOf(Wrap(t)); }
+
+int CurvePolyline::SegmentOf(double s) const {
+  const int i = static_cast<int>(std::upper_bound(arc_.begin(), arc_.end(), s) -
+                                 arc_.begin()) -
+                1;
+  return std::clamp(i, 0, num_segments() - 1);
+}
+
+Eigen::Vector3d CurvePolyline::Tangent(double t) const {
+  const int i = Segment(t);
+  return (points_[i + 1] - points_[i]) / (arc_[i + 1] - arc_[i]);
+}
+
+double CurvePolyline::Parameter(const double* x) const {
+  const Eigen::Vector3d q(x[0], x[1], x[2]);
+  double best = std::numeric_limits<double>::infinity();
+  double parameter = 0.0;
+  for (int i = 0; i < num_segments(); ++i) {
+    const Eigen::Vector3d d = points_[i + 1] - points_[i];
+    const double s =
+        std::clamp((q - points_[i]).dot(d) / d.squaredNorm(), 0.0, 1.0);
+    const double distance2 = (points_[i] + s * d - q).squaredNorm();
+    if (distance2 < best) {
+      best = distance2;
+      parameter = arc_[i] + s * (arc_[i + 1] - arc_[i]);
+    }
+  }
+  return Wrap(parameter);
+}
+
+CurveManifold::CurveManifold(std::shared_ptr<const CurvePolyline> curve)
+    : curve_(std::move(curve)) {}
+
+bool CurveManifold::Plus(const double* x, const double* delta,
+                         double* x_plus_delta) const {
+  double t = curve_->Parameter(x) + delta[0];
+  if (!curve_->closed()) t = std::clamp(t, 0.0, curve_->length());
+  Eigen::Map<Eigen::Vector3d> result(x_plus_delta);
+  result = curve_->Evaluate(t);
+  return true;
+}
+
+bool CurveManifold::PlusJacobian(const double* x, double* jacobian) const {
+  Eigen::Map<Eigen::Vector3d> result(jacobian);
+  result = curve_->Tangent(curve_->Parameter(x));
+  return true;
+}
+
+bool CurveManifold::Minus(const double* y, const double* x,
+                          double* y_minus_x) const {
+  double difference = curve_->Parameter(y) - curve_->Parameter(x);
+  if (curve_->closed()) {
+    const double length = curve_->length();
+    difference -= length * std::floor(difference / length);  // [0, Λ)
+    if (difference > 0.5 * length) difference -= length;     // (−Λ/2, Λ/2]
+  }
+  y_minus_x[0] = difference;
+  return true;
+}
+
+bool CurveManifold::MinusJacobian(const double* x, double* jacobian) const {
+  // Row vector 1 × 3 (row-major): the unit tangent.
+  Eigen::Map<Eigen::Vector3d> result(jacobian);
+  result = curve_->Tangent(curve_->Parameter(x));
+  return true;
+}
+
+ceres::CostFunction* MakeOnCurve(std::shared_ptr<const CurvePolyline> curve,
+                                 double inv_length) {
+  CHECK(curve != nullptr) << "MakeOnCurve: null curve";
+  CHECK(std::isfinite(inv_length) && inv_length > 0.0)
+      << "MakeOnCurve: inv_length must be finite and > 0, got " << inv_length;
+  return new ceres::AutoDiffCostFunction<OnCurve, 3, 3, 1>(
+      new OnCurve(std::move(curve), inv_length));
+}
+
+ceres::Manifold* MakeCurveManifold(std::shared_ptr<const CurvePolyline> curve) {
+  CHECK(curve != nullptr) << "MakeCurveManifold: null curve";
+  return new CurveManifold(std::move(curve));
+}
+
+}  // namespace archgeo
