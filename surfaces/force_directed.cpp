@@ -47,6 +47,15 @@ Vec2 ParameterStep(const Vec3& x, const Vec3& xu, const Vec3& xv, const Vec3& ta
   return g.inverse() * Vec2(xu.dot(d), xv.dot(d));
 }
 
+// Every Table 1 measure of `now` within `tolerance` of `then` (NaN = NaN).
+bool Unchanged(const QualityMeasures& now, const QualityMeasures& then, double tolerance) {
+  const auto same = [&](double a, double b) {
+    return (std::isnan(a) && std::isnan(b)) || std::abs(a - b) <= tolerance;
+  };
+  return same(now.mdo, then.mdo) && same(now.ado, then.ado) && same(now.mde, then.mde) &&
+         same(now.ade, then.ade);
+}
+
 bool ThresholdsMet(const QualityMeasures& q, const ForceDirectedOptions& o) {
   const bool any = o.stop_mdo > 0 || o.stop_ado > 0 || o.stop_mde > 0 || o.stop_ade > 0;
   if (!any) return false;
@@ -64,6 +73,7 @@ const char* ForceStopName(ForceStop stop) {
   switch (stop) {
     case ForceStop::kThresholds: return "thresholds";
     case ForceStop::kStalled: return "stalled";
+    case ForceStop::kPlateau: return "plateau";
     case ForceStop::kMaxIterations: return "max_iterations";
   }
   return "";
@@ -75,6 +85,7 @@ ForceDirectedResult RunForceDirected(const Surface& surface, const Grid& initial
   CHECK(std::isfinite(o.d_o) && std::isfinite(o.d_b) && std::isfinite(o.d_l));
   CHECK(std::isfinite(o.ideal_length) && o.ideal_length >= 0);
   CHECK(o.projection_repetitions >= 0 && o.max_iterations >= 0 && o.history_stride >= 1);
+  CHECK(std::isfinite(o.plateau_tolerance) && o.plateau_tolerance >= 0);
   CHECK_EQ(static_cast<int>(initial.uv.size()), initial.NumVertices());
   const ParameterDomain domain = surface.Domain();
   CHECK(!initial.closed_u || domain.periodic_u) << "RunForceDirected: u is not periodic";
@@ -173,6 +184,17 @@ ForceDirectedResult RunForceDirected(const Surface& surface, const Grid& initial
       if (ThresholdsMet(q.Table1(), o)) {
         stop = ForceStop::kThresholds;
         break;
+      }
+      if (o.plateau_window > 0) {
+        // The latest entry at least plateau_window iterations back.
+        const ForceHistoryEntry* then = nullptr;
+        for (const ForceHistoryEntry& h : result.history) {
+          if (h.iteration <= k - o.plateau_window) then = &h;
+        }
+        if (then != nullptr && Unchanged(q.Table1(), then->quality.Table1(), o.plateau_tolerance)) {
+          stop = ForceStop::kPlateau;
+          break;
+        }
       }
     }
   }

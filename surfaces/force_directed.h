@@ -49,7 +49,11 @@
 // measured in the surface's frame, |x_u Δdu + x_v Δdv|, is at most
 // stall_tolerance · L (a grid that stands still, and one that only drifts
 // along a symmetry of the surface, e.g. turns rigidly about a tower's axis,
-// with constant (du, dv)); or max_iterations.
+// with constant (du, dv)); or a plateau of the goals — none of the four
+// Table 1 measures changed by more than plateau_tolerance (degrees, resp.
+// percent) over the last plateau_window iterations (an open grid that creeps
+// slowly over a surface without symmetry, a vertex caught in a period-2
+// oscillation); or max_iterations.
 #pragma once
 
 #include <vector>
@@ -82,6 +86,11 @@ struct ForceDirectedOptions {
   // Δ the change of the vertex's parameter step from the previous
   // iteration; ≤ 0 disables it.
   double stall_tolerance = 1e-11;
+  // Plateau: every Table 1 measure within plateau_tolerance (degrees for
+  // MDO/ADO, percent for MDE/ADE) of its value plateau_window iterations
+  // before (checked at the history entries); plateau_window ≤ 0 disables it.
+  int plateau_window = 2000;
+  double plateau_tolerance = 0.01;
   // Clamp open directions to the domain's bounds (default: free, see above).
   bool clamp_to_domain = false;
   // A history entry (and the threshold check) every this many iterations, ≥ 1;
@@ -89,8 +98,9 @@ struct ForceDirectedOptions {
   int history_stride = 10;
 };
 
-enum class ForceStop { kThresholds, kStalled, kMaxIterations };
-const char* ForceStopName(ForceStop stop);  // "thresholds", "stalled", "max_iterations"
+enum class ForceStop { kThresholds, kStalled, kPlateau, kMaxIterations };
+// "thresholds", "stalled", "plateau", "max_iterations"
+const char* ForceStopName(ForceStop stop);
 
 struct ForceHistoryEntry {
   int iteration = 0;       // iterations done

@@ -75,12 +75,15 @@ Eigen::Vector2d Surface::Canonical(Eigen::Vector2d uv) const {
   return uv;
 }
 
-Eigen::Vector2d Surface::ClosestParameter(const Eigen::Vector3d& x,
-                                          const Eigen::Vector2d& start) const {
+Eigen::Vector2d Surface::ClosestParameter(const Eigen::Vector3d& x, const Eigen::Vector2d& start,
+                                          bool keep_in_domain) const {
   CHECK(x.allFinite() && start.allFinite()) << "ClosestParameter: non-finite input";
   using Jet = ceres::Jet<double, 2>;
   const auto value = [&](const Eigen::Vector2d& uv) { return 0.5 * (Point(uv) - x).squaredNorm(); };
-  Eigen::Vector2d uv = Canonical(start);
+  const auto canonical = [&](const Eigen::Vector2d& p) {
+    return keep_in_domain ? Canonical(p) : Wrapped(p);
+  };
+  Eigen::Vector2d uv = canonical(start);
   double f = value(uv);
   for (int iteration = 0; iteration < kMaxNewtonIterations; ++iteration) {
     // x_u, x_v and, in their infinitesimal parts, x_uu, x_uv, x_vv.
@@ -120,7 +123,7 @@ Eigen::Vector2d Surface::ClosestParameter(const Eigen::Vector3d& x,
     bool accepted = false;
     double alpha = 1.0;
     for (int halving = 0; halving < kMaxHalvings; ++halving, alpha *= 0.5) {
-      const Eigen::Vector2d candidate = Canonical(uv + alpha * step);
+      const Eigen::Vector2d candidate = canonical(uv + alpha * step);
       const double fc = value(candidate);
       if (fc <= f) {
         accepted = (candidate - uv).norm() > 0.0;
@@ -134,7 +137,7 @@ Eigen::Vector2d Surface::ClosestParameter(const Eigen::Vector3d& x,
   return uv;
 }
 
-Eigen::Vector2d Surface::ClosestParameter(const Eigen::Vector3d& x) const {
+Eigen::Vector2d Surface::ClosestParameter(const Eigen::Vector3d& x, bool keep_in_domain) const {
   const ParameterDomain d = Domain();
   Eigen::Vector2d best(d.u0, d.v0);
   double best_distance = std::numeric_limits<double>::infinity();
@@ -149,7 +152,7 @@ Eigen::Vector2d Surface::ClosestParameter(const Eigen::Vector3d& x) const {
       }
     }
   }
-  return ClosestParameter(x, best);
+  return ClosestParameter(x, best, keep_in_domain);
 }
 
 }  // namespace archgeo

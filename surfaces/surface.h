@@ -89,15 +89,18 @@ class Surface {
   // The parameter of the point of the surface closest to `x`, by Newton's
   // method on f(u, v) = ½‖x(u, v) − x‖² from `start` (exact Hessian from
   // Tangents<Jet>; a Gauss–Newton step where the Hessian is not positive
-  // definite; backtracking on f; open directions kept inside the domain).
-  // Converges quadratically near a point of the surface; `start` must lie in
-  // the basin of the wanted closest point (the neighbouring grid vertex's
-  // parameter is a good start). Returns the canonical parameter.
-  Eigen::Vector2d ClosestParameter(const Eigen::Vector3d& x, const Eigen::Vector2d& start) const;
+  // definite; backtracking on f). Converges quadratically near a point of the
+  // surface; `start` must lie in the basin of the wanted closest point (the
+  // neighbouring grid vertex's parameter is a good start). Periodic
+  // directions are wrapped; open ones are clamped to the domain if
+  // `keep_in_domain` (the designed surface), else free (the formula extends
+  // beyond the domain, and so may a grid: surfaces/force_directed.h).
+  Eigen::Vector2d ClosestParameter(const Eigen::Vector3d& x, const Eigen::Vector2d& start,
+                                   bool keep_in_domain = true) const;
 
   // The same with the start chosen as the closest of a 33 × 33 sample of the
   // domain (for a point with no good guess; O(1000) evaluations).
-  Eigen::Vector2d ClosestParameter(const Eigen::Vector3d& x) const;
+  Eigen::Vector2d ClosestParameter(const Eigen::Vector3d& x, bool keep_in_domain = true) const;
 
  private:
   Kind kind_;

@@ -56,8 +56,10 @@ std::vector<Field<Helicoid>> FieldsOf() {
 template <>
 std::vector<Field<KleinBottle>> FieldsOf() {
   return {{"R", &KleinBottle::R, 0, kInf, true, true,
-           "radius of the circle the figure 8 is swept around (> 1.25 a)"},
-          {"a", &KleinBottle::a, 0, kInf, true, true, "size of the figure 8"}};
+           "radius of the circle the figure 8 is swept around (> a·m(b), see klein_bottle.h)"},
+          {"a", &KleinBottle::a, 0, kInf, true, true, "size of the figure 8"},
+          {"b", &KleinBottle::b, 0, kInf, true, true,
+           "height of the figure 8's lobes relative to their width (1: classical)"}};
 }
 template <>
 std::vector<Field<Tower>> FieldsOf() {
@@ -91,6 +93,13 @@ std::vector<Field<FunctionGraph>> FieldsOf() {
           {"s", &FunctionGraph::s, -kInf, kInf, true, true, "saddle height (f = ±s at the corners)"}};
 }
 
+std::string Number(double x) {
+  std::ostringstream os;
+  os.precision(17);
+  os << x;
+  return os.str();
+}
+
 // A combination of values the formula does not allow: the key's parameter
 // name and the message, or an empty name if fine.
 struct Violation {
@@ -102,7 +111,9 @@ Violation Check(const Cylinder&) { return {}; }
 Violation Check(const Catenoid&) { return {}; }
 Violation Check(const Helicoid&) { return {}; }
 Violation Check(const KleinBottle& k) {
-  if (k.R <= 1.25 * k.a) return {"R", "must exceed 1.25 a (the immersion needs R + a w > 0)"};
+  if (k.R <= k.a * k.MaxOffset()) {
+    return {"R", "must exceed a·m(b) = " + Number(k.a * k.MaxOffset()) + " (ρ = R + a w > 0)"};
+  }
   return {};
 }
 Violation Check(const FunctionGraph&) { return {}; }
@@ -132,13 +143,6 @@ std::string Join(const std::vector<std::string>& names) {
   std::string s;
   for (const std::string& n : names) s += (s.empty() ? "" : ", ") + n;
   return s;
-}
-
-std::string Number(double x) {
-  std::ostringstream os;
-  os.precision(17);
-  os << x;
-  return os.str();
 }
 
 // One factory name: its surface type with the name's defaults.
