@@ -33,8 +33,11 @@
 //    on the surface by construction. A periodic direction wraps (u, v). An
 //    open direction is left free by default — the paper bounds nothing, and
 //    every surface here is defined beyond its domain, so an open grid may
-//    contract into or grow out of the domain (its Fig. 8) — or, with
-//    clamp_to_domain, clamped to the domain's bounds.
+//    contract into or grow out of the domain (its Fig. 8; on the Table 1
+//    stand-ins the open grids end up to 37% of the domain's length beyond
+//    it, benchmarks/grids_table1) — or, with clamp_to_domain, clamped to the
+//    domain's bounds (then an open grid that pushes outwards piles up at
+//    the bound and folds: the paper's forces have no term that keeps it in).
 //
 // L, the ideal edge length, is constant [§3: "a constant ideal length for all
 // edges"]: the user's value, or else the mean 3-D edge length of the initial

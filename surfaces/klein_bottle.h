@@ -9,9 +9,10 @@
 // a figure-8 curve (sin v, b sin 2v) of size a swept around a circle of
 // radius R while turning by half a turn (b = 1 is the classical figure-8
 // Klein bottle; a smaller b flattens the figure 8 and rounds its lobes: the
-// radius of curvature at the lobes' tips is a/8 for b = 1 and a/4 for b = ½). It is an immersion (regular everywhere; the
-// surface passes through itself along the central circle, where the figure 8
-// crosses itself) of a closed non-orientable surface:
+// radius of curvature at the lobes' tips is a/8 for b = 1 and a/4 for b = ½,
+// the default, which a 60 × 24 grid resolves). It is an immersion (regular
+// everywhere; the surface passes through itself along the central circle,
+// where the figure 8 crosses itself) of a closed non-orientable surface:
 //   x(u, v + 2π) = x(u, v)         (periodic in v),
 //   x(u + 2π, v) = x(u, −v)        (periodic in u with a reflection of v).
 // The domain u ∈ [0, 2π), v ∈ [−π, π) centres that reflection (v0 + v1 = 0),
@@ -21,6 +22,7 @@
 // |x_u| = ρ vary around the figure 8).
 // Parameters: a > 0, b > 0, R > a·m(b), m = max |(sin v, b sin 2v)| =
 // (1 + 4b²)/(4b) for b ≥ ½, 1 otherwise (ρ > 0); lengths in file units.
+// Defaults: R = 3, a = 1, b = ½.
 // (The classical "bottle" immersion was not chosen: its neck is ten times
 // thinner than its body, thinner than any grid edge of a uniform grid.)
 #pragma once
