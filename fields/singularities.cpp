@@ -5,6 +5,7 @@
 #include <limits>
 #include <queue>
 
+#include <Eigen/Geometry>
 #include <glog/logging.h>
 
 namespace archgeo {
@@ -64,6 +65,43 @@ void DualDijkstra(const Mesh& mesh, const FaceFrames& frames,
   }
 }
 
+// Undefined (NaN) angles replaced by the line of the spin-2 mean of the
+// defined edge neighbours (transported into the face), in passes until no
+// face with a defined neighbour is left; faces of components without any
+// defined angle stay NaN.
+std::vector<double> FillUndefined(const Mesh& mesh, const std::vector<EdgeTransport>& transports,
+                                  const std::vector<int>& edge_to_transport,
+                                  const std::vector<double>& line_angle) {
+  std::vector<double> angle = line_angle;
+  for (bool changed = true; changed;) {
+    changed = false;
+    std::vector<double> next = angle;
+    for (FaceIndex f : mesh.faces()) {
+      if (!std::isnan(angle[f.idx()])) continue;
+      Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+      int count = 0;
+      for (HalfedgeIndex h : mesh.halfedges_around_face(mesh.halfedge(f))) {
+        const HalfedgeIndex o = mesh.opposite(h);
+        if (mesh.is_border(o)) continue;
+        const FaceIndex g = mesh.face(o);
+        const double b = angle[g.idx()];
+        if (std::isnan(b)) continue;
+        const int t = edge_to_transport[mesh.edge(h).idx()];
+        CHECK_GE(t, 0);
+        const double in_f = b + TransportAngle(transports[t], g, f);
+        mean += Eigen::Vector2d(std::cos(2 * in_f), std::sin(2 * in_f));
+        ++count;
+      }
+      if (count == 0) continue;
+      next[f.idx()] = LineAngle(Eigen::Vector2d(std::cos(0.5 * std::atan2(mean.y(), mean.x())),
+                                                std::sin(0.5 * std::atan2(mean.y(), mean.x()))));
+      changed = true;
+    }
+    angle.swap(next);
+  }
+  return angle;
+}
+
 }  // namespace
 
 std::vector<ConjugatePair> TcdPairs(const std::vector<FaceCurvature>& curvature,
@@ -106,6 +144,7 @@ std::vector<double> VertexIndices(const Mesh& mesh, const std::vector<EdgeTransp
   CHECK(!mesh.has_garbage());
   CHECK_EQ(line_angle.size(), mesh.number_of_faces());
   CHECK_EQ(edge_to_transport.size(), mesh.number_of_edges());
+  const std::vector<double> angle = FillUndefined(mesh, transports, edge_to_transport, line_angle);
   std::vector<double> index(mesh.number_of_vertices(), 0.0);
   for (VertexIndex v : mesh.vertices()) {
     if (mesh.is_isolated(v) || mesh.is_border(v, /*check_all_incident_halfedges=*/true)) continue;
@@ -132,15 +171,15 @@ std::vector<double> VertexIndices(const Mesh& mesh, const std::vector<EdgeTransp
       tau[j] = TransportAngle(transports[t], mesh.face(cw[i_next]), ccw[j]);
     }
     size_t j0 = 0;
-    while (j0 < k && std::isnan(line_angle[ccw[j0].idx()])) ++j0;
+    while (j0 < k && std::isnan(angle[ccw[j0].idx()])) ++j0;
     if (j0 == k) continue;  // the field is undefined all around v
     double rotation = 0.0;  // Σ Δ_i
     double carried = 0.0;   // transport since the last defined face
-    double last = line_angle[ccw[j0].idx()];
+    double last = angle[ccw[j0].idx()];
     for (size_t s = 1; s <= k; ++s) {
       const size_t j = (j0 + s) % k;
       carried += tau[(j + k - 1) % k];
-      const double beta = line_angle[ccw[j].idx()];
+      const double beta = angle[ccw[j].idx()];
       if (std::isnan(beta)) continue;
       rotation += WrapLineAngle(beta + carried - last);
       carried = 0.0;

@@ -15,8 +15,10 @@
 // The paper measures around each face's 1-neighbourhood; per-vertex dual
 // loops partition the surface, so no singularity is counted twice, and the
 // cuts of fields/cuts.h start at vertices. Boundary vertices have no loop:
-// index 0. Faces where the field is undefined (NaN angle) are skipped (the
-// transports across them are composed).
+// index 0. Faces where the field is undefined (NaN angle: an exactly singular
+// face z_N = z_M, or z_N outside c) first take the line of the spin-2 mean of
+// their neighbours' lines, so the indices still sum to χ; a singular face then
+// shows as a singularity at one of its vertices.
 //
 // Include only where CGAL is acceptable (pulls in mesh/surface_mesh.h).
 #pragma once
