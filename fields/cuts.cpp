@@ -6,7 +6,9 @@
 #include <limits>
 #include <numeric>
 #include <queue>
+#include <map>
 #include <set>
+#include <sstream>
 #include <tuple>
 
 #include <glog/logging.h>
@@ -311,6 +313,160 @@ CutGraph ComputeCutGraph(const Mesh& mesh, const std::vector<VertexIndex>& singu
     }
   }
   return CutGraphFromEdges(mesh, cut, singular);
+}
+
+namespace {
+
+// Integer linear combination of the chains' jump constants k = α/Δw.
+using Linear = std::map<int, long>;
+
+Linear Combine(const Linear& a, long sa, const Linear& b, long sb) {
+  Linear out;
+  for (const auto& [c, v] : a) out[c] += sa * v;
+  for (const auto& [c, v] : b) out[c] += sb * v;
+  for (auto it = out.begin(); it != out.end();) it = it->second == 0 ? out.erase(it) : std::next(it);
+  return out;
+}
+
+}  // namespace
+
+std::vector<JumpConstraint> JumpConstraints(const CutGraph& cut,
+                                            const std::vector<int>& chain_sign) {
+  CHECK_EQ(chain_sign.size(), cut.chains.size());
+  for (int s : chain_sign) CHECK(s == 1 || s == -1);
+  const int n = cut.num_wedges;
+  std::vector<std::vector<int>> incident(n);
+  for (size_t r = 0; r < cut.relations.size(); ++r) {
+    incident[cut.relations[r].left_wedge].push_back(static_cast<int>(r));
+    if (cut.relations[r].right_wedge != cut.relations[r].left_wedge)
+      incident[cut.relations[r].right_wedge].push_back(static_cast<int>(r));
+  }
+  // Every wedge of a related group as u = a + b·x, a symbolic in the k's.
+  std::vector<Linear> a(n);
+  std::vector<long> b(n, 0);
+  std::vector<int> group(n, -1);
+  int groups = 0;
+  for (int w0 = 0; w0 < n; ++w0) {
+    if (group[w0] >= 0 || incident[w0].empty()) continue;
+    group[w0] = groups;
+    b[w0] = 1;
+    std::queue<int> queue;
+    queue.push(w0);
+    while (!queue.empty()) {
+      const int w = queue.front();
+      queue.pop();
+      for (int r : incident[w]) {
+        const JumpRelation& rel = cut.relations[r];
+        const long s = chain_sign[rel.chain];
+        const Linear e = {{rel.chain, 1}};
+        const int other = rel.left_wedge == w ? rel.right_wedge : rel.left_wedge;
+        if (group[other] >= 0) continue;
+        group[other] = groups;
+        if (rel.left_wedge == w) {  // u_R = s (u_L − k)
+          a[other] = Combine(a[w], s, e, -s);
+        } else {  // u_L = k + s u_R
+          a[other] = Combine(e, 1, a[w], s);
+        }
+        b[other] = s * b[w];
+        queue.push(other);
+      }
+    }
+    ++groups;
+  }
+  // Each relation: (b_L − s b_R) x = k + s a_R − a_L.
+  std::vector<bool> fixed(groups, false);
+  std::vector<Linear> fixed_rhs(groups);
+  std::vector<long> fixed_coef(groups, 0);
+  std::vector<JumpConstraint> out;
+  auto add = [&](const Linear& row, VertexIndex v) {
+    if (row.empty()) return;
+    JumpConstraint c;
+    c.terms.assign(row.begin(), row.end());
+    c.vertex = v;
+    out.push_back(c);
+  };
+  for (const JumpRelation& rel : cut.relations) {
+    const long s = chain_sign[rel.chain];
+    const int L = rel.left_wedge, R = rel.right_wedge, id = group[L];
+    const long coef = b[L] - s * b[R];
+    const Linear rhs = Combine(Combine({{rel.chain, 1}}, 1, a[R], s), 1, a[L], -1);
+    if (coef == 0) {
+      add(rhs, rel.vertex);
+    } else if (!fixed[id]) {
+      fixed[id] = true;
+      fixed_rhs[id] = rhs;
+      fixed_coef[id] = coef;
+    } else {  // rhs/coef == fixed_rhs/fixed_coef
+      add(Combine(rhs, fixed_coef[id], fixed_rhs[id], -coef), rel.vertex);
+    }
+  }
+  return out;
+}
+
+bool RoundJumps(const CutGraph& cut, const std::vector<int>& chain_sign,
+                const std::vector<double>& alpha, double spacing, int parity,
+                std::vector<double>* rounded, std::string* message) {
+  CHECK_EQ(alpha.size(), cut.chains.size());
+  CHECK(spacing > 0.0);
+  CHECK(parity == 0 || parity == 1);
+  const size_t nc = cut.chains.size();
+  auto half_singular = [&](int c) { return cut.chains[c].from_singularity && chain_sign[c] < 0; };
+  // Forward elimination: pivots (chain, expression over the other chains).
+  std::vector<std::pair<int, Linear>> pivots;
+  std::vector<bool> is_pivot(nc, false);
+  bool ok = true;
+  std::ostringstream notes;
+  for (const JumpConstraint& c : JumpConstraints(cut, chain_sign)) {
+    Linear row(c.terms.begin(), c.terms.end());
+    for (const auto& [p, expr] : pivots) {  // substitute earlier pivots
+      auto it = row.find(p);
+      if (it == row.end()) continue;
+      const long v = it->second;
+      row.erase(it);
+      row = Combine(row, 1, expr, v);
+    }
+    if (row.empty()) continue;  // implied by earlier constraints
+    int pivot = -1;
+    for (const auto& [chain, v] : row) {
+      if (std::abs(v) != 1) continue;
+      if (pivot < 0 || (half_singular(pivot) && !half_singular(chain))) pivot = chain;
+    }
+    if (pivot < 0) {
+      ok = false;
+      notes << "the jumps around vertex " << c.vertex.idx() << " have no unit coefficient; ";
+      continue;
+    }
+    const long v = row[pivot];
+    row.erase(pivot);
+    Linear expr;  // k_pivot = −v Σ row (v = ±1)
+    for (const auto& [chain, x] : row) expr[chain] = -v * x;
+    pivots.push_back({pivot, expr});
+    is_pivot[pivot] = true;
+  }
+  std::vector<double> k(nc);
+  for (size_t c = 0; c < nc; ++c) {
+    if (is_pivot[c]) continue;
+    const double x = alpha[c] / spacing;
+    if (half_singular(static_cast<int>(c))) {
+      k[c] = parity == 0 ? 2.0 * std::round(0.5 * x) : 2.0 * std::floor(0.5 * x) + 1.0;
+    } else {
+      k[c] = std::round(x);
+    }
+  }
+  for (auto it = pivots.rbegin(); it != pivots.rend(); ++it) {
+    double value = 0.0;
+    for (const auto& [chain, x] : it->second) value += static_cast<double>(x) * k[chain];
+    k[it->first] = value;
+    if (half_singular(it->first) && std::abs(std::fmod(std::abs(value), 2.0) - parity) > 0.5) {
+      ok = false;
+      notes << "chain " << it->first << " (from a singularity) is fixed by the others to "
+            << value << " spacings, not of the requested parity; ";
+    }
+  }
+  rounded->resize(nc);
+  for (size_t c = 0; c < nc; ++c) (*rounded)[c] = k[c] * spacing;
+  if (message != nullptr) *message = notes.str();
+  return ok;
 }
 
 CutSurfaceTopology CutSurface(const Mesh& mesh, const CutGraph& cut) {

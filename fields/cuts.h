@@ -55,6 +55,8 @@
 // Include only where CGAL is acceptable (pulls in mesh/surface_mesh.h).
 #pragma once
 
+#include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -107,6 +109,35 @@ struct CutSurfaceTopology {
   int euler_characteristic = 0;
 };
 CutSurfaceTopology CutSurface(const Mesh& mesh, const CutGraph& cut);
+
+// A linear condition Σ coefficient · k_chain = 0 on the jump constants
+// (k = α/Δw) that the relations impose: composing the relations around a
+// regular vertex where several chains meet must give the identity, and two
+// relations that fix the value of one group of wedges (branch points) must
+// fix it to the same value.
+struct JumpConstraint {
+  std::vector<std::pair<int, int>> terms;  // (chain, integer coefficient), nonzero
+  VertexIndex vertex;                      // where the relations meet
+};
+
+// The constraints for one function whose matching signs per chain are
+// `chain_sign` (OrientField). Precondition (CHECKed): one sign ±1 per chain.
+std::vector<JumpConstraint> JumpConstraints(const CutGraph& cut,
+                                            const std::vector<int>& chain_sign);
+
+// Rounds the jump constants of one function [Zadravec 2010, §5: "rounding the
+// constants α_C … to the nearest even (odd) integer multiple of the step
+// size"] so that the constraints hold exactly: each constraint's pivot chain
+// (coefficient ±1, preferably a chain not from a singularity) is computed
+// from the other chains, which are rounded to the nearest multiple of
+// `spacing` — chains from a singularity to the nearest even (parity 0) or odd
+// (parity 1) multiple, the others to the nearest multiple. `alpha`, `rounded`
+// per chain, function units. Returns false (values still filled) when a
+// pivot had to be a singularity chain and came out with the other parity, or
+// a constraint could not be pivoted (reported in *message).
+bool RoundJumps(const CutGraph& cut, const std::vector<int>& chain_sign,
+                const std::vector<double>& alpha, double spacing, int parity,
+                std::vector<double>* rounded, std::string* message);
 
 // Consistent signs for a face-based direction field on the cut surface.
 struct FieldOrientation {

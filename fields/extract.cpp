@@ -268,6 +268,28 @@ void CleanCycle(std::vector<int>* cycle) {
   }
 }
 
+// Splits a cycle that visits a vertex twice (a region pinched at a vertex)
+// into simple cycles, each cleaned; keeps those with ≥ 3 vertices.
+void SimpleCycles(std::vector<int> cycle, std::vector<std::vector<int>>* out, int* dropped) {
+  CleanCycle(&cycle);
+  for (size_t i = 0; i < cycle.size(); ++i) {
+    for (size_t j = i + 1; j < cycle.size(); ++j) {
+      if (cycle[i] != cycle[j]) continue;
+      std::vector<int> inner(cycle.begin() + static_cast<long>(i), cycle.begin() + static_cast<long>(j));
+      std::vector<int> outer(cycle.begin(), cycle.begin() + static_cast<long>(i));
+      outer.insert(outer.end(), cycle.begin() + static_cast<long>(j), cycle.end());
+      SimpleCycles(inner, out, dropped);
+      SimpleCycles(outer, out, dropped);
+      return;
+    }
+  }
+  if (cycle.size() >= 3) {
+    out->push_back(cycle);
+  } else {
+    ++*dropped;
+  }
+}
+
 }  // namespace
 
 Extraction ExtractQuadMesh(const Mesh& mesh, const LevelSetFunctions& fn,
@@ -600,7 +622,7 @@ Extraction ExtractQuadMesh(const Mesh& mesh, const LevelSetFunctions& fn,
       if (loop.size() >= 3) good.push_back(loop);
     }
     if (good.size() == 1) {
-      faces.push_back(good[0]);
+      SimpleCycles(good[0], &faces, &out.dropped_small_faces);
     } else if (good.empty()) {
       ++out.dropped_small_faces;
     } else {
@@ -643,12 +665,7 @@ Extraction ExtractQuadMesh(const Mesh& mesh, const LevelSetFunctions& fn,
     std::vector<std::vector<int>> kept;
     for (auto& f : faces) {
       for (int& x : f) x = rep[x];
-      CleanCycle(&f);
-      if (f.size() >= 3) {
-        kept.push_back(f);
-      } else {
-        ++out.dropped_small_faces;
-      }
+      SimpleCycles(f, &kept, &out.dropped_small_faces);
     }
     faces.swap(kept);
   }

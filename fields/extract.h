@@ -38,7 +38,9 @@
 //     vertices (a thin sliver between a level line and the boundary, or the
 //     2-gon of a +1/2 singularity with both levels odd) are dropped; their
 //     neighbours then share the edge. Regions with several boundary loops
-//     that carry vertices (not disks) are dropped and counted.
+//     that carry vertices (not disks) are dropped and counted; a boundary
+//     that visits a vertex twice (a region pinched there) is split into
+//     simple faces.
 //     What a singularity becomes (tests/test_field_extract.cpp; the index of
 //     a vertex of valence k is (4 − k)/4, of a face of degree k (4 − k)/4):
 //       +1/2: g, h even: a valence-2 vertex; one odd: a triangle and a

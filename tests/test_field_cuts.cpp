@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "fields/cuts.h"
+#include "fields/extract.h"
 #include "fields/face_frames.h"
 #include "fields/triangle_surfaces.h"
 #include "mesh/io.h"
@@ -229,6 +230,78 @@ TEST(OrientField, MatchingIsMinusOneAcrossAHalfSingularityCutAndPlusOneOnACylind
   EXPECT_EQ(o.chain_sign[0], 1);
   EXPECT_EQ(o.mismatched_cut_edges, 0);
   EXPECT_EQ(o.mismatched_edges, 0);
+}
+
+// A "Y" of cut edges on a plane: from s1 = (−0.5, 0.5) and s2 = (−0.5, −0.5)
+// down/up to the junction X = (−0.5, 0), and from X to the boundary (−1, 0).
+CutGraph YCut(const Mesh& mesh, VertexIndex* s1, VertexIndex* s2) {
+  auto at = [&](int i, int j) { return VertexIndex(j * 21 + i); };  // x = −1 + i/10
+  std::vector<bool> cut(mesh.number_of_edges(), false);
+  auto mark = [&](VertexIndex a, VertexIndex b) {
+    const HalfedgeIndex h = mesh.halfedge(a, b);
+    EXPECT_TRUE(h.is_valid());
+    cut[mesh.edge(h).idx()] = true;
+  };
+  for (int j = 10; j < 15; ++j) mark(at(5, j), at(5, j + 1));  // X … s1
+  for (int j = 5; j < 10; ++j) mark(at(5, j), at(5, j + 1));   // s2 … X
+  for (int i = 0; i < 5; ++i) mark(at(i, 10), at(i + 1, 10));  // boundary … X
+  *s1 = at(5, 15);
+  *s2 = at(5, 5);
+  return CutGraphFromEdges(mesh, cut, {*s1, *s2});
+}
+
+TEST(JumpConstraints, AJunctionOfTwoHalfSingularityCutsFixesTheTrunk) {
+  const Mesh mesh = PlanePatch(20, 20, -1.0, 1.0, -1.0, 1.0);
+  VertexIndex s1, s2;
+  const CutGraph cut = YCut(mesh, &s1, &s2);
+  ASSERT_EQ(cut.chains.size(), 3u);
+  EXPECT_EQ(CutSurface(mesh, cut).euler_characteristic, 1);
+  // Signs: −1 across the branches from the two ±1/2 singularities, +1 across
+  // the trunk (the field turns by 2π around both).
+  std::vector<int> sign(3);
+  int trunk = -1;
+  for (int c = 0; c < 3; ++c) {
+    sign[c] = cut.chains[c].from_singularity ? -1 : 1;
+    if (!cut.chains[c].from_singularity) trunk = c;
+  }
+  ASSERT_GE(trunk, 0);
+  const std::vector<JumpConstraint> constraints = JumpConstraints(cut, sign);
+  ASSERT_EQ(constraints.size(), 1u);
+  EXPECT_EQ(Pos(mesh, constraints[0].vertex).head<2>(), Eigen::Vector2d(-0.5, 0.0));
+  ASSERT_EQ(constraints[0].terms.size(), 3u);
+  for (const auto& [chain, coefficient] : constraints[0].terms) EXPECT_EQ(std::abs(coefficient), 1);
+  // Rounding: the branches to even (odd) multiples, the trunk computed.
+  const double spacing = 0.25;
+  for (int parity : {0, 1}) {
+    std::vector<double> alpha = {2.3 * spacing, -0.8 * spacing, 1.1 * spacing}, rounded;
+    std::string message;
+    EXPECT_TRUE(RoundJumps(cut, sign, alpha, spacing, parity, &rounded, &message)) << message;
+    long sum = 0;
+    for (const auto& [chain, coefficient] : constraints[0].terms) {
+      const double k = rounded[chain] / spacing;
+      EXPECT_EQ(k, std::round(k));
+      sum += coefficient * std::lround(k);
+      if (chain != trunk) EXPECT_EQ(std::abs(std::lround(k)) % 2, parity) << "chain " << chain;
+    }
+    EXPECT_EQ(sum, 0);
+    // The extraction accepts the rounded constants and rejects a trunk one
+    // spacing off (the jumps around X no longer compose to the identity).
+    LevelSetFunctions fn;
+    fn.cut = &cut;
+    fn.g.assign(cut.num_wedges, 0.1);
+    fn.h.assign(cut.num_wedges, 0.1);
+    fn.alpha_g = rounded;
+    fn.alpha_h = std::vector<double>(3, 0.0);
+    fn.sign_g = fn.sign_h = sign;
+    fn.spacing_g = fn.spacing_h = spacing;
+    ExtractOptions loose;
+    loose.jump_tolerance = 1e9;
+    EXPECT_TRUE(ExtractQuadMesh(mesh, fn, loose).ok);
+    fn.alpha_g[trunk] += spacing;
+    const Extraction bad = ExtractQuadMesh(mesh, fn, loose);
+    EXPECT_FALSE(bad.ok);
+    EXPECT_NE(bad.error.find("do not compose"), std::string::npos) << bad.error;
+  }
 }
 
 }  // namespace

@@ -391,7 +391,7 @@ TEST(LevelSetAlignment, RigidMotionAndScalingInvariance) {
   }
 }
 
-TEST(LevelSetNormalised, CosineOfTheAngleBetweenVAndTheGradient) {
+TEST(LevelSetNormalised, CosineOfTheAngleBetweenVAndTheGradientAndInvariances) {
   std::mt19937 rng(kSeed + 9);
   std::normal_distribution<double> g;
   std::uniform_real_distribution<double> angle(-M_PI, M_PI), scale(0.2, 5.0);
@@ -416,6 +416,21 @@ TEST(LevelSetNormalised, CosineOfTheAngleBetweenVAndTheGradient) {
                                  {k * values[2][0] + 1}})[0],
                 1e-8);
     ExpectGradientsMatch(*cost, values);
+  }
+  // Rigid motion of the frame (corners and v turn and shift): unchanged.
+  for (int s = 0; s < kNumSamples; ++s) {
+    const std::vector<Vec2> p = RandomTriangle(rng);
+    const Vec2 v(g(rng), g(rng)), shift(g(rng), g(rng));
+    const Blocks values = {{g(rng)}, {g(rng)}, {g(rng)}};
+    const double phi = angle(rng);
+    std::vector<Vec2> q = p;
+    for (Vec2& x : q) x = Rot(phi) * x + shift;
+    const Vec2 vq = Rot(phi) * v;
+    const std::vector<double> p6 = Corners6(p), q6 = Corners6(q);
+    const double vp[2] = {v.x(), v.y()}, vqb[2] = {vq.x(), vq.y()};
+    std::unique_ptr<ceres::CostFunction> a(MakeLevelSetNormalised(p6.data(), vp, 0.5));
+    std::unique_ptr<ceres::CostFunction> b(MakeLevelSetNormalised(q6.data(), vqb, 0.5));
+    EXPECT_NEAR(Evaluate(*a, values)[0], Evaluate(*b, values)[0], 1e-10);
   }
   // Constant g: finite (regularised).
   const std::vector<double> c6 = {0, 0, 1, 0, 0, 1};
