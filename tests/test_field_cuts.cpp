@@ -281,7 +281,9 @@ TEST(JumpConstraints, AJunctionOfTwoHalfSingularityCutsFixesTheTrunk) {
       const double k = rounded[chain] / spacing;
       EXPECT_EQ(k, std::round(k));
       sum += coefficient * std::lround(k);
-      if (chain != trunk) EXPECT_EQ(std::abs(std::lround(k)) % 2, parity) << "chain " << chain;
+      if (chain != trunk) {
+        EXPECT_EQ(std::abs(std::lround(k)) % 2, parity) << "chain " << chain;
+      }
     }
     EXPECT_EQ(sum, 0);
     // The extraction accepts the rounded constants and rejects a trunk one

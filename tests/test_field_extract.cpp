@@ -159,7 +159,9 @@ std::vector<double> WedgeValues(const Mesh& mesh, const CutGraph& cut,
     for (HalfedgeIndex h : mesh.halfedges_around_face(mesh.halfedge(face))) {
       const double value = f(Pos(mesh, mesh.target(h)), c);
       double& w = out[cut.corner_wedge[h.idx()]];
-      if (!std::isnan(w)) EXPECT_NEAR(w, value, 1e-9);  // one value per wedge
+      if (!std::isnan(w)) {
+        EXPECT_NEAR(w, value, 1e-9);  // one value per wedge
+      }
       w = value;
     }
   }
@@ -217,7 +219,9 @@ TEST(Extract, CylinderWithTheAngleAcrossASeam) {
       // The angle of p nearest to a0.
       const double a = a0 + std::remainder(std::atan2(p.y(), p.x()) - a0, 2 * M_PI);
       double& w = fn.g[cut.corner_wedge[h.idx()]];
-      if (!std::isnan(w)) EXPECT_NEAR(w, a, 1e-9);
+      if (!std::isnan(w)) {
+        EXPECT_NEAR(w, a, 1e-9);
+      }
       w = a;
     }
   }
@@ -340,7 +344,8 @@ TEST(Extract, HalfSingularityEvenGivesAValenceTwoVertexOddAFace) {
   EXPECT_LT(Pos(x.mesh, s).norm(), 1e-12);
   EXPECT_TRUE(x.irregular_interior_faces.empty());
   std::printf("+1/2 even/even: %d quads, %d triangles, %d pentagons, %d other, %zu faces\n",
-              x.quads, x.triangles, x.pentagons, x.other_faces, x.mesh.number_of_faces());
+              x.quads, x.triangles, x.pentagons, x.other_faces,
+              static_cast<size_t>(x.mesh.number_of_faces()));
   // Even/odd: the level g = 0 (the cut) dangles into the face around the
   // singularity, which becomes a triangle; where that level meets h = ±1/2
   // (identified across the cut) three faces meet: index 1/4 + 1/4.

@@ -42,8 +42,6 @@ namespace {
 using V3 = Eigen::Vector3d;
 using Vec2 = Eigen::Vector2d;
 
-V3 Pos(const Mesh& m, VertexIndex v) { return V3(m.point(v).x(), m.point(v).y(), m.point(v).z()); }
-
 double LineDeg(const V3& a, const V3& b) {
   return std::acos(std::min(1.0, std::abs(a.normalized().dot(b.normalized())))) * 180 / M_PI;
 }
