@@ -44,24 +44,20 @@
 //  - Relations. For every chain C and every vertex v of C, the wedge of the
 //    left-side corner and the wedge of the right-side corner at v satisfy
 //    g[left] = α_C + s_C · g[right] (level_set_jump.h), s_C = ±1 the field's
-//    matching across C (OrientField), α_C one constant per chain and function.
+//    matching across C (fields/cut_jumps.h OrientField), α_C one constant per chain and function.
 //    Relations are listed once per (left wedge, right wedge, chain); left ==
 //    right (the source vertex of a singularity cut) is level_set_branch_point.h.
 //    At a node where several chains meet, composing the relations around the
 //    node constrains the α's of those chains (their combination must be the
 //    identity for a regular node); a solve satisfies this softly, and the
-//    rounding of α must respect it.
+//    rounding of α must respect it (fields/cut_jumps.h JumpConstraints,
+//    RoundJumps).
 //
 // Include only where CGAL is acceptable (pulls in mesh/surface_mesh.h).
 #pragma once
 
-#include <string>
-#include <utility>
 #include <vector>
 
-#include <Eigen/Core>
-
-#include "fields/face_frames.h"
 #include "mesh/surface_mesh.h"
 
 namespace archgeo {
@@ -109,51 +105,5 @@ struct CutSurfaceTopology {
   int euler_characteristic = 0;
 };
 CutSurfaceTopology CutSurface(const Mesh& mesh, const CutGraph& cut);
-
-// A linear condition Σ coefficient · k_chain = 0 on the jump constants
-// (k = α/Δw) that the relations impose: composing the relations around a
-// regular vertex where several chains meet must give the identity, and two
-// relations that fix the value of one group of wedges (branch points) must
-// fix it to the same value.
-struct JumpConstraint {
-  std::vector<std::pair<int, int>> terms;  // (chain, integer coefficient), nonzero
-  VertexIndex vertex;                      // where the relations meet
-};
-
-// The constraints for one function whose matching signs per chain are
-// `chain_sign` (OrientField). Precondition (CHECKed): one sign ±1 per chain.
-std::vector<JumpConstraint> JumpConstraints(const CutGraph& cut,
-                                            const std::vector<int>& chain_sign);
-
-// Rounds the jump constants of one function [Zadravec 2010, §5: "rounding the
-// constants α_C … to the nearest even (odd) integer multiple of the step
-// size"] so that the constraints hold exactly: each constraint's pivot chain
-// (coefficient ±1, preferably a chain not from a singularity) is computed
-// from the other chains, which are rounded to the nearest multiple of
-// `spacing` — chains from a singularity to the nearest even (parity 0) or odd
-// (parity 1) multiple, the others to the nearest multiple. `alpha`, `rounded`
-// per chain, function units. Returns false (values still filled) when a
-// pivot had to be a singularity chain and came out with the other parity, or
-// a constraint could not be pivoted (reported in *message).
-bool RoundJumps(const CutGraph& cut, const std::vector<int>& chain_sign,
-                const std::vector<double>& alpha, double spacing, int parity,
-                std::vector<double>* rounded, std::string* message);
-
-// Consistent signs for a face-based direction field on the cut surface.
-struct FieldOrientation {
-  std::vector<int> face_sign;   // ±1 per face: the oriented direction is sign · d_f
-  std::vector<int> chain_sign;  // s_C per chain (majority over its edges)
-  int mismatched_cut_edges = 0; // cut edges whose matching differs from their chain's s_C
-  int mismatched_edges = 0;     // uncut interior edges across which the signs disagree
-};
-// `direction`: per face, a tangent vector in the face frame (zero or NaN:
-// undefined, the reference is carried through). The signs are propagated by
-// breadth-first search through uncut interior edges, choosing for each face
-// the sign that makes it agree (positive dot product after transport) with
-// the face it is reached from. Preconditions (CHECKed): sizes match.
-FieldOrientation OrientField(const Mesh& mesh, const CutGraph& cut,
-                             const std::vector<EdgeTransport>& transports,
-                             const std::vector<int>& edge_to_transport,
-                             const std::vector<Eigen::Vector2d>& direction);
 
 }  // namespace archgeo

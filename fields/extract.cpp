@@ -15,6 +15,8 @@
 #include <Eigen/Geometry>
 #include <glog/logging.h>
 
+#include "fields/cut_jumps.h"
+
 namespace archgeo {
 namespace {
 
@@ -58,101 +60,6 @@ V3 Pos(const Mesh& mesh, VertexIndex v) {
 }
 
 bool IsInteger(double x) { return x == std::round(x); }
-
-// Projects per-wedge values onto u[L] = k_C + s_C u[R] exactly (see the header,
-// step 1); returns false with a message on inconsistent input.
-bool ProjectOntoJumps(const CutGraph& cut, const std::vector<double>& k,
-                      const std::vector<int>& sign, std::vector<double>* values,
-                      double* max_change, std::string* error) {
-  const int n = cut.num_wedges;
-  std::vector<std::vector<int>> incident(n);
-  for (size_t r = 0; r < cut.relations.size(); ++r) {
-    incident[cut.relations[r].left_wedge].push_back(static_cast<int>(r));
-    if (cut.relations[r].right_wedge != cut.relations[r].left_wedge)
-      incident[cut.relations[r].right_wedge].push_back(static_cast<int>(r));
-  }
-  std::vector<double> a(n, 0.0), b(n, 0.0);
-  std::vector<int> group(n, -1);
-  std::vector<std::vector<int>> members;
-  for (int w0 = 0; w0 < n; ++w0) {
-    if (group[w0] >= 0 || incident[w0].empty()) continue;
-    const int id = static_cast<int>(members.size());
-    members.emplace_back();
-    group[w0] = id;
-    a[w0] = 0.0;
-    b[w0] = 1.0;
-    std::queue<int> queue;
-    queue.push(w0);
-    while (!queue.empty()) {
-      const int w = queue.front();
-      queue.pop();
-      members[id].push_back(w);
-      for (int r : incident[w]) {
-        const JumpRelation& rel = cut.relations[r];
-        const double kc = k[rel.chain], s = sign[rel.chain];
-        int other;
-        double ao, bo;
-        if (rel.left_wedge == w) {  // u_R = s (u_L − k)
-          other = rel.right_wedge;
-          ao = s * (a[w] - kc);
-          bo = s * b[w];
-        } else {  // u_L = k + s u_R
-          other = rel.left_wedge;
-          ao = kc + s * a[w];
-          bo = s * b[w];
-        }
-        if (group[other] >= 0) continue;
-        group[other] = id;
-        a[other] = ao;
-        b[other] = bo;
-        queue.push(other);
-      }
-    }
-  }
-  std::vector<double> fixed(members.size(), std::nan(""));
-  for (const JumpRelation& rel : cut.relations) {
-    const int L = rel.left_wedge, R = rel.right_wedge;
-    const double kc = k[rel.chain], s = sign[rel.chain];
-    const double coef = b[L] - s * b[R], rhs = kc + s * a[R] - a[L];
-    const int id = group[L];
-    if (coef == 0.0) {
-      if (rhs != 0.0) {
-        std::ostringstream m;
-        m << "the jumps around vertex " << rel.vertex.idx()
-          << " do not compose to the identity (rounded jump constants disagree by " << rhs
-          << " spacings)";
-        *error = m.str();
-        return false;
-      }
-      continue;
-    }
-    const double x = rhs / coef;
-    if (std::isnan(fixed[id])) {
-      fixed[id] = x;
-    } else if (std::abs(fixed[id] - x) > 1e-9) {
-      std::ostringstream m;
-      m << "the jumps at vertex " << rel.vertex.idx() << " fix its value twice (" << fixed[id]
-        << " and " << x << " spacings)";
-      *error = m.str();
-      return false;
-    }
-  }
-  *max_change = 0.0;
-  for (size_t id = 0; id < members.size(); ++id) {
-    double x = fixed[id];
-    if (std::isnan(x)) {
-      x = 0.0;
-      for (int w : members[id]) x += b[w] * ((*values)[w] - a[w]);
-      x /= static_cast<double>(members[id].size());
-    }
-    for (int w : members[id]) {
-      const double projected = a[w] + b[w] * x;
-      *max_change = std::max(*max_change, std::abs(projected - (*values)[w]));
-      (*values)[w] = projected;
-    }
-  }
-  return true;
-}
 
 // Splits the convex polygon q by the level `level` of coordinate `c` (0: u,
 // 1: v). New points (only where a v-level crosses a u-chord) come from / go

@@ -12,7 +12,8 @@
 //     every α_C/Δw must be an integer (the rounded jumps of §5). The wedge
 //     values are projected onto the jump relations exactly (per connected
 //     group of related wedges: all values as a + b·x, a integer, b = ±1, x the
-//     group's least-squares value, or fixed by a branch point: x = k/2); the
+//     group's least-squares value, or fixed by a branch point: x = k/2;
+//     fields/cut_jumps.h ProjectOntoJumps); the
 //     largest change must stay below `jump_tolerance` spacings. Values within
 //     `snap_tolerance` of an integer are then set to it, so "on a level" is
 //     exact and the same on both sides of a cut.

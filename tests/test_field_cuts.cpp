@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 #include <gtest/gtest.h>
 
+#include "fields/cut_jumps.h"
 #include "fields/cuts.h"
 #include "fields/extract.h"
 #include "fields/face_frames.h"

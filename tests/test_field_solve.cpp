@@ -29,6 +29,7 @@
 #include "energies/tcd_prescribed_direction.h"
 #include "energies/tcd_transversality.h"
 #include "fields/conjugate.h"
+#include "fields/cut_jumps.h"
 #include "fields/cuts.h"
 #include "fields/extract.h"
 #include "fields/face_curvature.h"
