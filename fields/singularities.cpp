@@ -4,6 +4,7 @@
 #include <functional>
 #include <limits>
 #include <queue>
+#include <string>
 
 #include <Eigen/Geometry>
 #include <glog/logging.h>
@@ -222,8 +223,15 @@ SingularityMove MoveSingularity(const Mesh& mesh, const FaceFrames& frames,
   CHECK(from.idx() < n && to.idx() < n) << "MoveSingularity: face out of range";
   CHECK_EQ(curvature.size(), n);
   CHECK_EQ(z_n.size(), n);
-  CHECK(curvature[to.idx()].z_m_finite) << "MoveSingularity: z_M of the target face is at infinity";
   CHECK(r1 >= 0.0 && r2 > r1) << "MoveSingularity: need 0 <= r1 < r2";
+  if (!curvature[to.idx()].z_m_finite) {
+    SingularityMove out;
+    out.z_n = z_n;
+    out.beta.assign(n, 0.0);
+    out.error = "face " + std::to_string(to.idx()) +
+                " has z_M at infinity (zero mean curvature or flat): no singularity can be placed there";
+    return out;
+  }
   std::vector<double> dist0, unused, dist1, angle1;
   DualDijkstra(mesh, frames, transports, from, &dist0, &unused);
   DualDijkstra(mesh, frames, transports, to, &dist1, &angle1);

@@ -23,6 +23,7 @@
 // Include only where CGAL is acceptable (pulls in mesh/surface_mesh.h).
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -86,9 +87,12 @@ struct SingularityMove {
   std::vector<Eigen::Vector2d> z_n;  // the blended field, per face
   std::vector<double> beta;          // β_f per face
   bool reached = false;              // β_f1 == 1
+  std::string error;                 // non-empty: nothing moved (z_n is the input)
 };
-// Preconditions (CHECKed): from/to valid faces, curvature[to].z_m_finite,
-// 0 ≤ r1 < r2, sizes match.
+// z_M of the target face at infinity (mean curvature 0: no singularity can
+// be placed there, cf. Prop. 4) is reported in `error`, the field returned
+// unchanged. Preconditions (CHECKed): from/to valid faces, 0 ≤ r1 < r2,
+// sizes match.
 SingularityMove MoveSingularity(const Mesh& mesh, const FaceFrames& frames,
                                 const std::vector<EdgeTransport>& transports,
                                 const std::vector<FaceCurvature>& curvature,

@@ -259,6 +259,14 @@ TEST(Singularities, MovingASingularityWithTheSigmaBlend) {
   EXPECT_EQ(near_old, 0);
   EXPECT_EQ(near_new, 1);
   EXPECT_EQ(after.size(), 4u);
+  // A target face without a finite z_M: reported, nothing moved.
+  std::vector<FaceCurvature> flat = exact;
+  flat[f1.idx()] = CurvatureOfMatrix(Eigen::Matrix2d::Zero(), 1e-9, 1e-3);
+  const SingularityMove none =
+      MoveSingularity(mesh, fd.frames, fd.transports, flat, principal, f0, f1, 0.35, 0.7);
+  EXPECT_FALSE(none.error.empty());
+  EXPECT_FALSE(none.reached);
+  EXPECT_EQ(none.z_n, principal);
 }
 
 }  // namespace
