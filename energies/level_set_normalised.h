@@ -1,0 +1,78 @@
+// Alignment of a level-set function with a direction field, ignoring spacing,
+// one triangle f, 1 residual:
+//
+//   r = sqrt(A_f / A_Φ) · ⟨v̂, ∇g⟩ / sqrt(‖∇g‖² + ε²),   v̂ = v / ‖v‖
+//
+//   [Zadravec 2010, §5 eq. 6: Σ_f (area(f)/area(Φ)) ⟨v_f, ∇g_f/‖∇g_f‖⟩² → min,
+//    initialised from a solution of eq. 5]
+//
+// Re-derived: eq. 5 asks ∇g = R v, i.e. ∇g ⊥ v and level sets of g parallel to
+// v; eq. 6 keeps only the direction: r is the cosine of the angle between v
+// and ∇g (times the area weight), zero iff ∇g ⊥ v, independent of ‖∇g‖ and
+// of ‖v‖ (v is normalised here).
+//
+// Units / normalisation: dimensionless. Ceres minimises ½Σr².
+//
+// Singular configurations: ∇g = 0 makes the direction undefined; the norm is
+// regularised with ε = kLevelSetGradientEpsilon · gradient_scale, where
+// gradient_scale is the expected size of ‖∇g‖ (1 when g has the units of
+// length and comes from eq. 5 with unit v). A constant g therefore has r = 0:
+// eq. 6 alone has the trivial minimiser g = const — start from eq. 5 and keep
+// its spacing (the paper's use), or fix two values of g. Never returns false.
+//
+// Invariances: rigid motions of the face frame (corners and v); uniform
+// scaling x → s x (with g → s g, gradient_scale kept); g → a g + b with a > 0
+// up to the regularisation; v → c v for c ≠ 0 (r changes sign for c < 0).
+#ifndef ARCHGEO_ENERGIES_LEVEL_SET_NORMALISED_H_
+#define ARCHGEO_ENERGIES_LEVEL_SET_NORMALISED_H_
+
+#include <cmath>
+
+#include <Eigen/Core>
+
+#include "energies/level_set_gradient.h"
+
+namespace ceres {
+class CostFunction;
+}  // namespace ceres
+
+namespace archgeo {
+
+inline constexpr double kLevelSetGradientEpsilon = 1e-6;
+
+struct LevelSetNormalised {
+  // corners: 6 doubles (face frame, counter-clockwise); v: 2 doubles, nonzero;
+  // inv_total_area: 1 / A_Φ; gradient_scale: expected ‖∇g‖ > 0.
+  LevelSetNormalised(const double corners[6], const double v[2], double inv_total_area,
+                     double gradient_scale)
+      : gradient(corners),
+        direction(Eigen::Vector2d(v[0], v[1]).normalized()),
+        scale(std::sqrt(gradient.area * inv_total_area)),
+        epsilon(kLevelSetGradientEpsilon * gradient_scale) {}
+
+  // g0, g1, g2: 1 double each, the corner values; residual: 1.
+  template <typename T>
+  bool operator()(const T* g0, const T* g1, const T* g2, T* residual) const {
+    using std::sqrt;
+    const Eigen::Matrix<T, 2, 1> grad = gradient(g0[0], g1[0], g2[0]);
+    const T norm = sqrt(grad.squaredNorm() + T(epsilon * epsilon));
+    residual[0] = T(scale) * (T(direction.x()) * grad.x() + T(direction.y()) * grad.y()) / norm;
+    return true;
+  }
+
+  TriangleGradient gradient;
+  Eigen::Vector2d direction;  // v̂
+  double scale;               // sqrt(A_f / A_Φ)
+  double epsilon;
+};
+
+// Returns a new AutoDiffCostFunction<LevelSetNormalised, 1, 1, 1, 1> (blocks
+// g0, g1, g2 as in level_set_alignment.h); the caller takes ownership.
+// Preconditions (CHECKed): finite inputs, corner area > 0, v ≠ 0,
+// inv_total_area > 0, gradient_scale > 0.
+ceres::CostFunction* MakeLevelSetNormalised(const double corners[6], const double v[2],
+                                            double inv_total_area, double gradient_scale = 1.0);
+
+}  // namespace archgeo
+
+#endif  // ARCHGEO_ENERGIES_LEVEL_SET_NORMALISED_H_

@@ -1,0 +1,627 @@
+#include "fields/extract.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <queue>
+#include <set>
+#include <sstream>
+
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <glog/logging.h>
+
+#include "fields/cut_jumps.h"
+
+namespace archgeo {
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+using V3 = Eigen::Vector3d;
+
+enum KeyType : int { kVertex = 0, kEdgePoint = 1, kFacePoint = 2 };
+using Key = std::array<int, 4>;  // type, a, b, c
+
+// A point of a (sub-)polygon of one triangle, in that triangle's coordinates.
+struct PV {
+  Key key;
+  V3 pos;
+  double u = 0, v = 0;        // spacing units, own (face) coordinates
+  bool on_u = false, on_v = false;
+  int mask = 0;               // bits k of the triangle edges h_k the point lies on
+};
+
+// A level crossing on a mesh edge, in the canonical face's coordinates.
+struct EdgeCrossing {
+  double t = 0;  // from source to target of the canonical halfedge
+  double u = 0, v = 0;
+  bool on_u = false, on_v = false;
+};
+
+constexpr double kSameCrossing = 1e-10;  // edge parameter
+
+struct UnionFind {
+  explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  size_t Find(size_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void Union(size_t a, size_t b) { parent[Find(a)] = Find(b); }
+  std::vector<size_t> parent;
+};
+
+V3 Pos(const Mesh& mesh, VertexIndex v) {
+  const Point& p = mesh.point(v);
+  return V3(p.x(), p.y(), p.z());
+}
+
+bool IsInteger(double x) { return x == std::round(x); }
+
+// Splits the convex polygon q by the level `level` of coordinate `c` (0: u,
+// 1: v). New points (only where a v-level crosses a u-chord) come from / go
+// into `cache`.
+struct Splitter {
+  int face;
+  std::map<Key, PV>* cache;
+  int* anomalies;
+
+  static double Coord(const PV& p, int c) { return c == 0 ? p.u : p.v; }
+  static bool On(const PV& p, int c) { return c == 0 ? p.on_u : p.on_v; }
+
+  std::vector<std::vector<PV>> operator()(const std::vector<PV>& q, int c, double level) const {
+    const size_t n = q.size();
+    std::vector<int> s(n);
+    bool neg = false, pos = false;
+    for (size_t i = 0; i < n; ++i) {
+      const double x = Coord(q[i], c);
+      s[i] = x == level ? 0 : (x < level ? -1 : 1);
+      neg = neg || s[i] < 0;
+      pos = pos || s[i] > 0;
+    }
+    if (!neg || !pos) return {q};
+    int changes = 0, last = 0;
+    for (size_t i = 0; i <= n; ++i) {
+      const int si = s[i % n];
+      if (si == 0) continue;
+      if (last != 0 && si != last) ++changes;
+      last = si;
+    }
+    if (changes > 2) {  // not a linear function on a convex polygon: rounding
+      ++*anomalies;
+      return {q};
+    }
+    std::vector<PV> lower, upper;
+    for (size_t i = 0; i < n; ++i) {
+      const PV& a = q[i];
+      const PV& b = q[(i + 1) % n];
+      if (s[i] <= 0) lower.push_back(a);
+      if (s[i] >= 0) upper.push_back(a);
+      if (s[i] * s[(i + 1) % n] < 0) {
+        const PV x = Cross(a, b, c, level);
+        lower.push_back(x);
+        upper.push_back(x);
+      }
+    }
+    return {lower, upper};
+  }
+
+  PV Cross(const PV& a, const PV& b, int c, double level) const {
+    // The segment a–b lies on a level of the other coordinate (a chord);
+    // otherwise the slicing is inconsistent.
+    const int o = 1 - c;
+    const bool chord = On(a, o) && On(b, o) && Coord(a, o) == Coord(b, o);
+    Key key;
+    if (chord) {
+      const int level_u = static_cast<int>(c == 0 ? level : Coord(a, o));
+      const int level_v = static_cast<int>(c == 1 ? level : Coord(a, o));
+      key = {kFacePoint, face, level_u, level_v};
+    } else {
+      ++*anomalies;
+      key = {kFacePoint, face, 1 << 30, static_cast<int>(cache->size())};
+    }
+    auto it = cache->find(key);
+    if (it != cache->end()) return it->second;
+    const double t = (level - Coord(a, c)) / (Coord(b, c) - Coord(a, c));
+    PV x;
+    x.key = key;
+    x.pos = a.pos + t * (b.pos - a.pos);
+    x.mask = a.mask & b.mask;
+    if (c == 0) {
+      x.u = level;
+      x.on_u = true;
+      x.v = chord ? a.v : a.v + t * (b.v - a.v);
+      x.on_v = chord;
+    } else {
+      x.v = level;
+      x.on_v = true;
+      x.u = chord ? a.u : a.u + t * (b.u - a.u);
+      x.on_u = chord;
+    }
+    (*cache)[key] = x;
+    return x;
+  }
+};
+
+// Removes consecutive duplicates and spikes (a, b, a → a), cyclically.
+void CleanCycle(std::vector<int>* cycle) {
+  bool changed = true;
+  while (changed && !cycle->empty()) {
+    changed = false;
+    std::vector<int>& c = *cycle;
+    for (size_t i = 0; i < c.size() && c.size() > 1; ++i) {
+      const size_t j = (i + 1) % c.size();
+      if (c[i] == c[j]) {
+        c.erase(c.begin() + static_cast<long>(j));
+        changed = true;
+        break;
+      }
+    }
+    if (changed || c.size() < 3) continue;
+    for (size_t i = 0; i < c.size(); ++i) {
+      const size_t j = (i + 1) % c.size(), k = (i + 2) % c.size();
+      if (c[i] == c[k]) {  // spike at j: drop j and one copy of c[i]
+        std::vector<int> next;
+        for (size_t m = 0; m < c.size(); ++m)
+          if (m != j && m != k) next.push_back(c[m]);
+        c.swap(next);
+        changed = true;
+        break;
+      }
+    }
+  }
+}
+
+// Splits a cycle that visits a vertex twice (a region pinched at a vertex)
+// into simple cycles, each cleaned; keeps those with ≥ 3 vertices.
+void SimpleCycles(std::vector<int> cycle, std::vector<std::vector<int>>* out, int* dropped) {
+  CleanCycle(&cycle);
+  for (size_t i = 0; i < cycle.size(); ++i) {
+    for (size_t j = i + 1; j < cycle.size(); ++j) {
+      if (cycle[i] != cycle[j]) continue;
+      std::vector<int> inner(cycle.begin() + static_cast<long>(i), cycle.begin() + static_cast<long>(j));
+      std::vector<int> outer(cycle.begin(), cycle.begin() + static_cast<long>(i));
+      outer.insert(outer.end(), cycle.begin() + static_cast<long>(j), cycle.end());
+      SimpleCycles(inner, out, dropped);
+      SimpleCycles(outer, out, dropped);
+      return;
+    }
+  }
+  if (cycle.size() >= 3) {
+    out->push_back(cycle);
+  } else {
+    ++*dropped;
+  }
+}
+
+}  // namespace
+
+Extraction ExtractQuadMesh(const Mesh& mesh, const LevelSetFunctions& fn,
+                           const ExtractOptions& options) {
+  CHECK(!mesh.has_garbage());
+  CHECK(fn.spacing_g > 0.0 && fn.spacing_h > 0.0) << "ExtractQuadMesh: spacings must be > 0";
+  const CutGraph* cut = fn.cut;
+  const size_t num_values = cut != nullptr ? cut->num_wedges : mesh.number_of_vertices();
+  CHECK_EQ(fn.g.size(), num_values);
+  CHECK_EQ(fn.h.size(), num_values);
+  const size_t num_chains = cut != nullptr ? cut->chains.size() : 0;
+  CHECK_EQ(fn.alpha_g.size(), num_chains);
+  CHECK_EQ(fn.alpha_h.size(), num_chains);
+  CHECK_EQ(fn.sign_g.size(), num_chains);
+  CHECK_EQ(fn.sign_h.size(), num_chains);
+  for (size_t c = 0; c < num_chains; ++c)
+    CHECK(std::abs(fn.sign_g[c]) == 1 && std::abs(fn.sign_h[c]) == 1) << "signs must be ±1";
+  for (FaceIndex f : mesh.faces()) CHECK_EQ(mesh.degree(f), 3u) << "ExtractQuadMesh: triangles only";
+
+  Extraction out;
+  auto wedge = [&](HalfedgeIndex corner) {
+    return cut != nullptr ? cut->corner_wedge[corner.idx()] : static_cast<int>(mesh.target(corner).idx());
+  };
+
+  // 1. Spacing units, integer jumps, projection, snapping.
+  std::vector<double> U(num_values), W(num_values);
+  for (size_t i = 0; i < num_values; ++i) {
+    U[i] = fn.g[i] / fn.spacing_g;
+    W[i] = fn.h[i] / fn.spacing_h;
+  }
+  std::vector<double> kg(num_chains), kh(num_chains);
+  for (size_t c = 0; c < num_chains; ++c) {
+    kg[c] = std::round(fn.alpha_g[c] / fn.spacing_g);
+    kh[c] = std::round(fn.alpha_h[c] / fn.spacing_h);
+    if (std::abs(kg[c] - fn.alpha_g[c] / fn.spacing_g) > 1e-6 ||
+        std::abs(kh[c] - fn.alpha_h[c] / fn.spacing_h) > 1e-6) {
+      std::ostringstream m;
+      m << "the jump constant of cut chain " << c << " is not an integer multiple of the spacing ("
+        << fn.alpha_g[c] / fn.spacing_g << ", " << fn.alpha_h[c] / fn.spacing_h
+        << " spacings): round it first";
+      out.error = m.str();
+      return out;
+    }
+  }
+  if (cut != nullptr) {
+    double change_u = 0, change_v = 0;
+    if (!ProjectOntoJumps(*cut, kg, fn.sign_g, &U, &change_u, &out.error) ||
+        !ProjectOntoJumps(*cut, kh, fn.sign_h, &W, &change_v, &out.error)) {
+      return out;
+    }
+    out.max_jump_correction = std::max(change_u, change_v);
+    if (out.max_jump_correction > options.jump_tolerance) {
+      std::ostringstream m;
+      m << "the values violate the jump conditions by up to " << out.max_jump_correction
+        << " spacings (tolerance " << options.jump_tolerance << ")";
+      out.error = m.str();
+      return out;
+    }
+  }
+  for (size_t i = 0; i < num_values; ++i) {
+    if (std::abs(U[i] - std::round(U[i])) < options.snap_tolerance) U[i] = std::round(U[i]);
+    if (std::abs(W[i] - std::round(W[i])) < options.snap_tolerance) W[i] = std::round(W[i]);
+  }
+
+  // Transitions of cut edges: the left face of each cut edge.
+  std::vector<FaceIndex> left_face(mesh.number_of_edges());
+  if (cut != nullptr) {
+    for (const CutChain& c : cut->chains)
+      for (HalfedgeIndex h : c.halfedges) left_face[mesh.edge(h).idx()] = mesh.face(h);
+  }
+
+  // 2. Crossings on edges, from the canonical halfedge's face.
+  std::vector<HalfedgeIndex> canonical(mesh.number_of_edges());
+  std::vector<std::vector<EdgeCrossing>> crossings(mesh.number_of_edges());
+  for (EdgeIndex e : mesh.edges()) {
+    const HalfedgeIndex hc = mesh.is_border(mesh.halfedge(e, 0)) ? mesh.halfedge(e, 1) : mesh.halfedge(e, 0);
+    canonical[e.idx()] = hc;
+    const int wa = wedge(mesh.prev(hc)), wb = wedge(hc);
+    const double ua = U[wa], ub = U[wb], va = W[wa], vb = W[wb];
+    std::vector<EdgeCrossing> list;
+    for (double i = std::floor(std::min(ua, ub)) + 1; i < std::max(ua, ub); i += 1.0) {
+      EdgeCrossing x;
+      x.t = (i - ua) / (ub - ua);
+      x.u = i;
+      x.on_u = true;
+      x.v = va + x.t * (vb - va);
+      x.on_v = IsInteger(x.v);  // e.g. the whole edge lies on a v-level
+      list.push_back(x);
+    }
+    for (double j = std::floor(std::min(va, vb)) + 1; j < std::max(va, vb); j += 1.0) {
+      EdgeCrossing x;
+      x.t = (j - va) / (vb - va);
+      x.v = j;
+      x.on_v = true;
+      x.u = ua + x.t * (ub - ua);
+      x.on_u = IsInteger(x.u);
+      list.push_back(x);
+    }
+    std::sort(list.begin(), list.end(),
+              [](const EdgeCrossing& a, const EdgeCrossing& b) { return a.t < b.t; });
+    std::vector<EdgeCrossing> merged;
+    for (const EdgeCrossing& x : list) {
+      if (!merged.empty() && x.t - merged.back().t < kSameCrossing) {
+        EdgeCrossing& m = merged.back();
+        if (x.on_u) m.u = x.u, m.on_u = true;
+        if (x.on_v) m.v = x.v, m.on_v = true;
+        continue;
+      }
+      merged.push_back(x);
+    }
+    crossings[e.idx()] = merged;
+  }
+
+  // Values of a crossing of edge e in the coordinates of face f.
+  auto in_face = [&](EdgeIndex e, FaceIndex f, double cu, double cv, double* u, double* v) {
+    *u = cu;
+    *v = cv;
+    if (cut == nullptr || !cut->is_cut_edge[e.idx()] || mesh.face(canonical[e.idx()]) == f) return;
+    const int c = cut->edge_chain[e.idx()];
+    const double su = fn.sign_g[c], sv = fn.sign_h[c];
+    if (left_face[e.idx()] == f) {  // canonical is the right side: u_L = k + s u_R
+      *u = kg[c] + su * cu;
+      *v = kh[c] + sv * cv;
+    } else {  // canonical is the left side: u_R = s (u_L − k)
+      *u = su * (cu - kg[c]);
+      *v = sv * (cv - kh[c]);
+    }
+  };
+
+  // 3. Slicing, triangle by triangle.
+  std::vector<std::vector<PV>> polys;
+  std::vector<FaceIndex> poly_face;
+  std::vector<std::array<HalfedgeIndex, 3>> face_halfedges(mesh.number_of_faces());
+  for (FaceIndex f : mesh.faces()) {
+    const HalfedgeIndex h0 = mesh.halfedge(f);
+    const std::array<HalfedgeIndex, 3> hs = {h0, mesh.next(h0), mesh.next(mesh.next(h0))};
+    face_halfedges[f.idx()] = hs;
+    std::vector<PV> poly;
+    for (int k = 0; k < 3; ++k) {
+      const HalfedgeIndex hk = hs[k];
+      const VertexIndex x = mesh.source(hk);
+      const int w = wedge(mesh.prev(hk));
+      PV corner;
+      corner.key = {kVertex, static_cast<int>(x.idx()), 0, 0};
+      corner.pos = Pos(mesh, x);
+      corner.u = U[w];
+      corner.v = W[w];
+      corner.on_u = IsInteger(corner.u);
+      corner.on_v = IsInteger(corner.v);
+      corner.mask = (1 << k) | (1 << ((k + 2) % 3));
+      poly.push_back(corner);
+      const EdgeIndex e = mesh.edge(hk);
+      const std::vector<EdgeCrossing>& list = crossings[e.idx()];
+      const bool forward = canonical[e.idx()] == hk;
+      const V3 a = Pos(mesh, mesh.source(canonical[e.idx()])), b = Pos(mesh, mesh.target(canonical[e.idx()]));
+      for (size_t m = 0; m < list.size(); ++m) {
+        const size_t idx = forward ? m : list.size() - 1 - m;
+        const EdgeCrossing& c = list[idx];
+        PV p;
+        p.key = {kEdgePoint, static_cast<int>(e.idx()), static_cast<int>(idx), 0};
+        p.pos = a + c.t * (b - a);
+        in_face(e, f, c.u, c.v, &p.u, &p.v);
+        p.on_u = c.on_u;
+        p.on_v = c.on_v;
+        p.mask = 1 << k;
+        poly.push_back(p);
+      }
+    }
+    std::map<Key, PV> cache;
+    const Splitter split{static_cast<int>(f.idx()), &cache, &out.anomalies};
+    std::vector<std::vector<PV>> pieces = {poly};
+    for (int c = 0; c < 2; ++c) {
+      double lo = INFINITY, hi = -INFINITY;
+      for (const PV& p : poly) {
+        lo = std::min(lo, c == 0 ? p.u : p.v);
+        hi = std::max(hi, c == 0 ? p.u : p.v);
+      }
+      for (double level = std::ceil(lo); level <= hi; level += 1.0) {
+        std::vector<std::vector<PV>> next;
+        for (const auto& q : pieces)
+          for (auto& r : split(q, c, level)) next.push_back(std::move(r));
+        pieces.swap(next);
+      }
+    }
+    for (auto& q : pieces) {
+      polys.push_back(std::move(q));
+      poly_face.push_back(f);
+    }
+  }
+
+  // 4. Glue pieces across triangle edges that do not lie on a level.
+  const size_t np = polys.size();
+  std::vector<std::vector<std::pair<int, int>>> twin(np);
+  std::vector<std::vector<char>> on_boundary(np);  // the edge lies on a mesh boundary edge
+  std::map<std::pair<Key, Key>, std::vector<std::pair<int, int>>> shared;
+  auto iso = [](const PV& a, const PV& b) {
+    return (a.on_u && b.on_u && a.u == b.u) || (a.on_v && b.on_v && a.v == b.v);
+  };
+  for (size_t p = 0; p < np; ++p) {
+    const auto& q = polys[p];
+    twin[p].assign(q.size(), {-1, -1});
+    on_boundary[p].assign(q.size(), 0);
+    for (size_t i = 0; i < q.size(); ++i) {
+      const PV& a = q[i];
+      const PV& b = q[(i + 1) % q.size()];
+      const int common = a.mask & b.mask;
+      if (common == 0) continue;
+      const int k = common & 1 ? 0 : (common & 2 ? 1 : 2);
+      const EdgeIndex e = mesh.edge(face_halfedges[poly_face[p].idx()][k]);
+      if (mesh.is_border(e)) {
+        on_boundary[p][i] = 1;
+        continue;
+      }
+      if (iso(a, b)) continue;
+      shared[{std::min(a.key, b.key), std::max(a.key, b.key)}].push_back(
+          {static_cast<int>(p), static_cast<int>(i)});
+    }
+  }
+  UnionFind regions(np);
+  for (const auto& [pair, list] : shared) {
+    if (list.size() != 2) {
+      ++out.anomalies;
+      continue;
+    }
+    twin[list[0].first][list[0].second] = list[1];
+    twin[list[1].first][list[1].second] = list[0];
+    regions.Union(list[0].first, list[1].first);
+  }
+
+  // Output vertices (step 4 of the header).
+  std::vector<bool> boundary_vertex(mesh.number_of_vertices(), false), corner(mesh.number_of_vertices(), false);
+  for (VertexIndex v : mesh.vertices()) {
+    if (mesh.is_isolated(v) || !mesh.is_border(v, true)) continue;
+    boundary_vertex[v.idx()] = true;
+    for (HalfedgeIndex h : mesh.halfedges_around_target(mesh.halfedge(v))) {
+      if (!mesh.is_border(h)) continue;
+      const V3 a = Pos(mesh, v) - Pos(mesh, mesh.source(h));
+      const V3 b = Pos(mesh, mesh.target(mesh.next(h))) - Pos(mesh, v);
+      const double turn = std::atan2(a.cross(b).norm(), a.dot(b)) * 180.0 / M_PI;
+      if (turn > options.corner_angle_deg) corner[v.idx()] = true;
+    }
+  }
+  // Level-set pieces at mesh vertices: distinct neighbours along u- and
+  // v-levels, and whether one of them leaves the boundary.
+  std::map<int, std::set<Key>> iso_u, iso_v;
+  std::set<int> leaves_boundary;
+  for (size_t p = 0; p < np; ++p) {
+    const auto& q = polys[p];
+    for (size_t i = 0; i < q.size(); ++i) {
+      const PV& a = q[i];
+      const PV& b = q[(i + 1) % q.size()];
+      const bool on_u = a.on_u && b.on_u && a.u == b.u, on_v = a.on_v && b.on_v && a.v == b.v;
+      if (!on_u && !on_v) continue;
+      for (const auto& [x, y] : {std::make_pair(a, b), std::make_pair(b, a)}) {
+        if (x.key[0] != kVertex) continue;
+        if (on_u) iso_u[x.key[1]].insert(y.key);
+        if (on_v) iso_v[x.key[1]].insert(y.key);
+        if (!on_boundary[p][i]) leaves_boundary.insert(x.key[1]);
+      }
+    }
+  }
+  auto is_output = [&](const PV& x) {
+    if (x.key[0] == kFacePoint) return x.on_u && x.on_v;
+    if (x.key[0] == kEdgePoint) {
+      return (x.on_u && x.on_v) || (mesh.is_border(EdgeIndex(x.key[1])) && (x.on_u || x.on_v));
+    }
+    const int v = x.key[1];
+    if (x.on_u && x.on_v) return true;
+    if (boundary_vertex[v]) return corner[v] || ((x.on_u || x.on_v) && leaves_boundary.count(v) > 0);
+    auto odd = [](size_t d) { return d != 0 && d != 2; };
+    return (x.on_u && odd(iso_u[v].size())) || (x.on_v && odd(iso_v[v].size()));
+  };
+  auto on_mesh_boundary = [&](const PV& x) {
+    if (x.key[0] == kVertex) return static_cast<bool>(boundary_vertex[x.key[1]]);
+    if (x.key[0] == kEdgePoint) return mesh.is_border(EdgeIndex(x.key[1]));
+    return false;
+  };
+
+  // Walk the boundary loops of every region.
+  std::map<Key, int> index;
+  std::vector<V3> points;
+  std::vector<bool> point_on_boundary;
+  auto point_index = [&](const PV& x) {
+    auto it = index.find(x.key);
+    if (it != index.end()) return it->second;
+    const int id = static_cast<int>(points.size());
+    index[x.key] = id;
+    points.push_back(x.pos);
+    point_on_boundary.push_back(on_mesh_boundary(x));
+    return id;
+  };
+  std::vector<std::vector<char>> visited(np);
+  for (size_t p = 0; p < np; ++p) visited[p].assign(polys[p].size(), 0);
+  std::map<size_t, std::vector<std::vector<int>>> region_loops;
+  const size_t guard = 8 * np + 64;
+  for (size_t p0 = 0; p0 < np; ++p0) {
+    for (size_t i0 = 0; i0 < polys[p0].size(); ++i0) {
+      if (twin[p0][i0].first >= 0 || visited[p0][i0]) continue;
+      std::vector<int> loop;
+      size_t p = p0, i = i0;
+      for (size_t step = 0; step < guard; ++step) {
+        visited[p][i] = 1;
+        const PV& start = polys[p][i];
+        if (is_output(start)) loop.push_back(point_index(start));
+        // Next boundary edge: turn around the end vertex through glued pieces.
+        size_t j = (i + 1) % polys[p].size();
+        size_t turns = 0;
+        while (twin[p][j].first >= 0 && turns++ < guard) {
+          const auto [q, t] = twin[p][j];
+          p = q;
+          j = (t + 1) % polys[p].size();
+        }
+        i = j;
+        if (p == p0 && i == i0) break;
+        if (visited[p][i]) {
+          ++out.anomalies;
+          break;
+        }
+      }
+      region_loops[regions.Find(p0)].push_back(loop);
+    }
+  }
+
+  // Faces: one loop with ≥ 3 vertices per region.
+  std::vector<std::vector<int>> faces;
+  for (auto& [region, loops] : region_loops) {
+    std::vector<std::vector<int>> good;
+    for (auto& loop : loops) {
+      CleanCycle(&loop);
+      if (loop.size() >= 3) good.push_back(loop);
+    }
+    if (good.size() == 1) {
+      SimpleCycles(good[0], &faces, &out.dropped_small_faces);
+    } else if (good.empty()) {
+      ++out.dropped_small_faces;
+    } else {
+      ++out.dropped_non_disk_regions;
+    }
+  }
+
+  // 6. Merge vertices joined by short edges.
+  std::vector<double> lengths;
+  for (const auto& f : faces)
+    for (size_t i = 0; i < f.size(); ++i) lengths.push_back((points[f[i]] - points[f[(i + 1) % f.size()]]).norm());
+  if (!lengths.empty()) {
+    std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+    const double threshold = options.merge_fraction * lengths[lengths.size() / 2];
+    UnionFind uf(points.size());
+    for (const auto& f : faces)
+      for (size_t i = 0; i < f.size(); ++i) {
+        const int a = f[i], b = f[(i + 1) % f.size()];
+        if ((points[a] - points[b]).norm() < threshold) uf.Union(a, b);
+      }
+    std::map<size_t, std::vector<int>> groups;
+    for (size_t i = 0; i < points.size(); ++i) groups[uf.Find(i)].push_back(static_cast<int>(i));
+    std::vector<int> rep(points.size());
+    for (auto& [root, members] : groups) {
+      V3 sum = V3::Zero();
+      int n = 0;
+      bool boundary = false;
+      for (int m : members) boundary = boundary || point_on_boundary[m];
+      for (int m : members) {
+        if (boundary && !point_on_boundary[m]) continue;
+        sum += points[m];
+        ++n;
+      }
+      const int r = members[0];
+      points[r] = sum / n;
+      point_on_boundary[r] = boundary;
+      for (int m : members) rep[m] = r;
+      out.merged_vertices += static_cast<int>(members.size()) - 1;
+    }
+    std::vector<std::vector<int>> kept;
+    for (auto& f : faces) {
+      for (int& x : f) x = rep[x];
+      SimpleCycles(f, &kept, &out.dropped_small_faces);
+    }
+    faces.swap(kept);
+  }
+
+  // Compact the points and build the mesh.
+  std::vector<int> used(points.size(), -1);
+  std::vector<Point> soup_points;
+  for (auto& f : faces)
+    for (int& x : f) {
+      if (used[x] < 0) {
+        used[x] = static_cast<int>(soup_points.size());
+        soup_points.push_back(Point(points[x].x(), points[x].y(), points[x].z()));
+      }
+      x = used[x];
+    }
+  std::vector<std::vector<std::size_t>> soup;
+  for (const auto& f : faces) soup.emplace_back(f.begin(), f.end());
+  const size_t points_before = soup_points.size();
+  if (!PMP::is_polygon_soup_a_polygon_mesh(soup)) {
+    // Splits non-manifold vertices; a consistently oriented soup keeps its
+    // orientation.
+    PMP::orient_polygon_soup(soup_points, soup);
+    out.duplicated_vertices = static_cast<int>(soup_points.size() - points_before);
+  }
+  PMP::polygon_soup_to_polygon_mesh(soup_points, soup, out.mesh);
+
+  // Statistics.
+  for (FaceIndex f : out.mesh.faces()) {
+    const int d = static_cast<int>(out.mesh.degree(f));
+    ++out.face_degrees[d];
+    if (d == 4) ++out.quads;
+    else if (d == 3) ++out.triangles;
+    else if (d == 5) ++out.pentagons;
+    else ++out.other_faces;
+    bool touches_boundary = false;
+    for (VertexIndex v : out.mesh.vertices_around_face(out.mesh.halfedge(f)))
+      touches_boundary = touches_boundary || out.mesh.is_border(v, true);
+    if (d != 4 && !touches_boundary) out.irregular_interior_faces.push_back(f);
+  }
+  for (VertexIndex v : out.mesh.vertices()) {
+    const int d = static_cast<int>(out.mesh.degree(v));
+    ++out.valence[d];
+    if (!out.mesh.is_border(v, true)) {
+      ++out.interior_valence[d];
+      if (d != 4) out.irregular_interior_vertices.push_back(v);
+    }
+  }
+  out.ok = true;
+  return out;
+}
+
+}  // namespace archgeo
