@@ -163,64 +163,80 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
       model.BeginRound(projecting);
       if (projecting) result.seconds["projection"] += Since(projection_start);
 
-      std::vector<ActiveTerm> terms;
-      for (const TermSpec* t : options.terms) {
-        const std::string name = t->name;
-        if (!stage.terms.empty() &&
-            std::find(stage.terms.begin(), stage.terms.end(), name) == stage.terms.end()) {
-          continue;
-        }
-        const bool continued = std::find(stage.continued.begin(), stage.continued.end(), name) !=
-                               stage.continued.end();
-        const double w = s.Number("terms." + name + ".weight") * (continued ? scale : 1.0);
-        if (w > 0) terms.push_back({t, w, continued ? band : -1.0});
-      }
-      ceres::Problem::Options problem_options;
-      problem_options.enable_fast_removal = false;
-      problem = std::make_unique<ceres::Problem>(problem_options);
-      blocks = model.Build(terms, k, *problem);
-      const std::vector<double> before = model.SaveState();
-
-      ceres::Solver::Options solver = base;
-      if (time_limit > 0) {
-        solver.max_solver_time_in_seconds =
-            std::min(solver.max_solver_time_in_seconds, std::max(0.0, time_limit - Since(start)));
-      }
-      std::vector<std::pair<std::string, double>> watched;
-      for (const Tolerance& t : active) {
-        if (t.per_iteration) watched.push_back({t.measure, Bound(s, t)});
-      }
       const std::string label =
           (stage.name.empty() ? std::string() : stage.name + " ") + "round " +
           Format("%2.0f", round_number);
-      IterationWatch watch(model, options.progress, label, watched);
-      if (options.progress || !watched.empty()) {
-        solver.callbacks.push_back(&watch);
-        solver.update_state_every_iteration = true;
-      }
-      ceres::Solver::Summary summary;
-      ceres::Solve(solver, problem.get(), &summary);
-      model.StateChanged();
+      std::vector<double> before;
+      StepResult step;
+      if (stage.step) {
+        // A round that is not a Ceres solve.
+        before = model.SaveState();
+        step = stage.step(model.hooks());
+        model.StateChanged();
+        result.rounds = round_number;
+        result.iterations += step.iterations;
+      } else {
+        std::vector<ActiveTerm> terms;
+        for (const TermSpec* t : options.terms) {
+          const std::string name = t->name;
+          if (!stage.terms.empty() &&
+              std::find(stage.terms.begin(), stage.terms.end(), name) == stage.terms.end()) {
+            continue;
+          }
+          const bool continued = std::find(stage.continued.begin(), stage.continued.end(),
+                                           name) != stage.continued.end();
+          const double w = s.Number("terms." + name + ".weight") * (continued ? scale : 1.0);
+          if (w > 0) terms.push_back({t, w, continued ? band : -1.0});
+        }
+        ceres::Problem::Options problem_options;
+        problem_options.enable_fast_removal = false;
+        problem = std::make_unique<ceres::Problem>(problem_options);
+        blocks = model.Build(terms, k, *problem);
+        before = model.SaveState();
 
-      result.rounds = round_number;
-      result.variables = problem->NumParameters();
-      result.residuals = problem->NumResiduals();
-      result.iterations += std::max(0, int(summary.iterations.size()) - 1);
-      result.seconds["ceres"] += summary.total_time_in_seconds;
-      result.seconds["linear_solver"] += summary.linear_solver_time_in_seconds;
-      result.seconds["jacobian"] += summary.jacobian_evaluation_time_in_seconds;
-      const bool finite = model.Finite();
-      if (!summary.IsSolutionUsable() || !finite) {
+        ceres::Solver::Options solver = base;
+        if (time_limit > 0) {
+          solver.max_solver_time_in_seconds = std::min(
+              solver.max_solver_time_in_seconds, std::max(0.0, time_limit - Since(start)));
+        }
+        std::vector<std::pair<std::string, double>> watched;
+        for (const Tolerance& t : active) {
+          if (t.per_iteration) watched.push_back({t.measure, Bound(s, t)});
+        }
+        IterationWatch watch(model, options.progress, label, watched);
+        if (options.progress || !watched.empty()) {
+          solver.callbacks.push_back(&watch);
+          solver.update_state_every_iteration = true;
+        }
+        ceres::Solver::Summary summary;
+        if (problem->NumResiduals() > 0) ceres::Solve(solver, problem.get(), &summary);
+        model.StateChanged();
+
+        result.rounds = round_number;
+        result.variables = problem->NumParameters();
+        result.residuals = problem->NumResiduals();
+        step.iterations = std::max(0, int(summary.iterations.size()) - 1);
+        step.cost = summary.final_cost;
+        result.iterations += step.iterations;
+        result.seconds["ceres"] += std::max(0.0, summary.total_time_in_seconds);
+        result.seconds["linear_solver"] += std::max(0.0, summary.linear_solver_time_in_seconds);
+        result.seconds["jacobian"] += std::max(0.0, summary.jacobian_evaluation_time_in_seconds);
+        if (problem->NumResiduals() > 0 && !summary.IsSolutionUsable()) {
+          step.usable = false;
+          step.message = summary.message;
+        }
+      }
+      if (!step.usable || !model.Finite()) {
         result.usable = false;
-        result.message = finite ? summary.message : "the solver produced non-finite values";
+        result.message = step.usable ? "the solver produced non-finite values" : step.message;
         return result;
       }
 
       RoundLog row;
       row.stage = stage.name;
       row.round = round_number;
-      row.iterations = std::max(0, int(summary.iterations.size()) - 1);
-      row.cost = summary.final_cost;
+      row.iterations = step.iterations;
+      row.cost = step.cost;
       row.weight_scale = scale;
       if (guard > 0) {
         row.clamped = model.Guard(guard);

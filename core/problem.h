@@ -39,6 +39,15 @@ struct Tolerance {
 class HookContext;  // defined by the problem layer (problems/model.h)
 using Hook = std::function<void(HookContext&)>;
 
+// A round that is not a Ceres solve (e.g. the iterations of a force-directed
+// method): what it reports to the loop.
+struct StepResult {
+  bool usable = true;
+  std::string message;  // why not usable
+  int iterations = 0;
+  double cost = 0;
+};
+
 struct Stage {
   std::string name;                // shown in progress lines and the round log
   std::vector<std::string> terms;  // the terms active in this stage (empty: all)
@@ -75,6 +84,9 @@ struct Stage {
   std::string guard_key;
   std::vector<std::string> logged;  // measures in the round log and progress lines
   Hook before_round, after_round;
+  // If set, a round runs this instead of building and solving a Ceres problem
+  // from the terms.
+  std::function<StepResult(HookContext&)> step;
 };
 
 enum class InputKind {
@@ -90,6 +102,8 @@ struct ProblemDecl {
   std::string summary;  // one line
   std::string paper;
   InputKind input = InputKind::kAny;
+  bool makes_input = false;  // no `mesh` file: the `net` hook makes the net from the
+                             // settings (e.g. a grid on a parametric surface)
   std::vector<TermUse> terms;  // in the order their residuals are added
   std::vector<Key> keys;       // the problem's own settings
   std::map<std::string, Value> defaults;  // its defaults of common keys (e.g.

@@ -23,6 +23,7 @@
 
 namespace ceres {
 class CostFunction;
+class Manifold;
 }  // namespace ceres
 
 namespace archgeo {
@@ -133,6 +134,9 @@ class TermContext {
                    const char* part = nullptr, double weight = -1) = 0;
   // Optimises the 3-block on the unit sphere.
   virtual void SetUnit(double* block) = 0;
+  // Optimises `block` on `manifold` (taking ownership), unless it already has
+  // one (then `manifold` is deleted); e.g. a vertex bound to a curve.
+  virtual void SetManifold(double* block, ceres::Manifold* manifold) = 0;
 };
 
 }  // namespace archgeo

@@ -8,6 +8,7 @@
   X(boundary_proximity)        \
   X(co_spherical)              \
   X(dihedral_energy)           \
+  X(direction_dirichlet)       \
   X(displacement_guard)        \
   X(face_planarity)            \
   X(fairness)                  \

@@ -1,6 +1,7 @@
 #include "problems/model.h"
 
 #include <ceres/loss_function.h>
+#include <ceres/manifold.h>
 #include <ceres/problem.h>
 #include <ceres/sphere_manifold.h>
 #include <glog/logging.h>
@@ -102,9 +103,13 @@ class MeshModel::View : public TermContext {
     (*blocks_)[part ? part : name_].push_back(problem_->AddResidualBlock(cost, loss, blocks));
   }
 
-  void SetUnit(double* block) override {
+  void SetUnit(double* block) override { SetManifold(block, new ceres::SphereManifold<3>()); }
+
+  void SetManifold(double* block, ceres::Manifold* manifold) override {
     if (problem_->HasParameterBlock(block) && !problem_->GetManifold(block)) {
-      problem_->SetManifold(block, new ceres::SphereManifold<3>());
+      problem_->SetManifold(block, manifold);
+    } else {
+      delete manifold;
     }
   }
 
@@ -242,6 +247,10 @@ void MeshModel::BeginRound(bool project) {
   }
 }
 
+void MeshModel::SetConstant(const std::string& block, int index) {
+  constant_elements_.insert(store_.At(block, index));
+}
+
 void MeshModel::SetElements(const std::string& name, ElementSet set) {
   set.name = name;
   sets_[name] = std::move(set);
@@ -296,7 +305,7 @@ TermBlocks MeshModel::Build(const std::vector<ActiveTerm>& terms, int round,
                             ceres::Problem& problem) {
   TermBlocks blocks;
   const Settings& s = *hooks_.settings;
-  constant_blocks_.clear();
+  constant_blocks_ = constant_elements_;
   for (const std::string& name : store_.Names()) {
     if (!store_.Decl(name).constant) continue;
     const int n = store_.Count(name);

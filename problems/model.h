@@ -100,6 +100,9 @@ class MeshModel : public Model {
   HookContext& hooks() override { return hooks_; }
 
   void SetElements(const std::string& name, ElementSet set);
+  // Holds one block of a variable block constant (e.g. a prescribed face of
+  // a field, or the value that fixes a function's constant).
+  void SetConstant(const std::string& block, int index);
   // The element set `name` (built on first use), narrowed by `select`.
   const ElementSet& Elements(const std::string& name);
 
@@ -122,6 +125,7 @@ class MeshModel : public Model {
   std::vector<bool> boundary_;
   double box_diagonal_ = 0;  // of the mesh at the start of the solve (the guard's unit)
   std::set<const double*> constant_blocks_;  // blocks of constant (data) blocks
+  std::set<const double*> constant_elements_;  // SetConstant's
   std::map<std::string, double> cache_;
   std::map<std::string, std::unique_ptr<View>> views_;
 };

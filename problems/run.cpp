@@ -50,6 +50,24 @@ std::string MeasureHeadline(const LoopResult& r) {
   return text.empty() ? "" : "measures (canonical frame: input mean edge length 1), input -> output:\n" + text;
 }
 
+// The problem's output blocks, per element, in file units.
+nlohmann::json BlocksJson(const Store& store, const Similarity& frame) {
+  nlohmann::json blocks = nlohmann::json::object();
+  for (const std::string& name : store.Names()) {
+    const BlockDecl& decl = store.Decl(name);
+    if (!decl.output) continue;
+    const char* on = store.IsGlobal(name)       ? "global"
+                     : decl.on == Site::kVertex ? "vertex"
+                     : decl.on == Site::kFace   ? "face"
+                                                : "edge";
+    blocks[name] = {{"on", on},
+                    {"width", decl.width},
+                    {"doc", decl.doc},
+                    {"values", store.InFileUnits(name, frame)}};
+  }
+  return blocks;
+}
+
 }  // namespace
 
 RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
@@ -90,7 +108,7 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   };
 
   ReadInfo info;
-  const Mesh read = ReadMesh(spec.mesh(), &info);
+  const Mesh read = d.makes_input ? Mesh() : ReadMesh(spec.mesh(), &info);
   std::unique_ptr<Mesh> reference_mesh;
   if (!spec.reference().empty()) reference_mesh = std::make_unique<Mesh>(ReadMesh(spec.reference()));
   const double read_seconds = Since(start);
@@ -137,6 +155,7 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   rep["settings"] = s.ToJson();
   rep["blas"] = BlasLibrary();
   rep["details"] = solution->details;
+  if (s.Bool("output.blocks")) rep["blocks"] = BlocksJson(*solution->store, solution->frame);
   if (levels > 0) {
     rep["multiresolution"] = {{"scheme", s.String("multiresolution.scheme")},
                               {"levels", solution->levels}};

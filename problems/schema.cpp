@@ -54,6 +54,8 @@ std::vector<Key> CommonKeys(const ProblemDecl& d) {
   keys.push_back(NumberKey("output.color_max", 0.01, 1e-12, 1e12,
                            "the value shown as pure red in the face colours"));
   keys.push_back(BoolKey("output.ascii_ply", false, "ASCII instead of binary PLY"));
+  keys.push_back(BoolKey("output.blocks", false,
+                         "the report lists every output variable block per element (file units)"));
   for (const std::string& k : d.output_keys) {
     keys.push_back(PathKey("output." + k, Type::kOutputPath,
                            "the problem's `" + k + "` output; empty: not written"));

@@ -140,11 +140,12 @@ std::unique_ptr<Solution> Solve(const ProblemSpec& spec, const Mesh& mesh, const
   auto sol = std::make_unique<Solution>();
   HookContext& hooks = sol->hooks;
 
-  CheckInput(d, mesh, spec.mesh());
+  if (!d.makes_input) CheckInput(d, mesh, spec.mesh());
   hooks.settings = &s;
   hooks.progress = progress;
   hooks.input = &mesh;
   if (d.net) d.net(hooks);
+  CHECK(!d.makes_input || hooks.net.derived) << d.name << ": makes_input without a net";
   sol->net = hooks.net;
   sol->input = hooks.net.derived ? hooks.net.mesh : mesh;
   hooks.input = &sol->input;

@@ -352,7 +352,7 @@ ProblemSpec Parse(YAML::Node root, const std::string& path,
   const Reader reader(path, overridden, schema);
   reader.Walk(root, "", spec.settings);
 
-  if (require_mesh && !spec.settings.Given("mesh")) {
+  if (require_mesh && !spec.declaration->makes_input && !spec.settings.Given("mesh")) {
     throw InputError(path, 0, "mesh", "missing: the input mesh file (OBJ, OFF or PLY)");
   }
   // Listing `terms` turns every unlisted term of the problem off.

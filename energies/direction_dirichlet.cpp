@@ -1,0 +1,68 @@
+#include "energies/direction_dirichlet.h"
+
+#include <ceres/autodiff_cost_function.h>
+
+#include <cmath>
+
+#include "core/term.h"
+
+namespace archgeo {
+
+ceres::CostFunction* MakeDirectionDirichlet() {
+  return new ceres::AutoDiffCostFunction<DirectionDirichlet, 3, 3, 3>(new DirectionDirichlet());
+}
+
+namespace terms {
+namespace {
+
+// Element (interior_edges): the edge's left face (`face`) and right face
+// (`other_face`).
+void AddDirectionDirichlet(TermContext& c, size_t i) {
+  double* f = c.Block("face_direction", c.elements->face[i]);
+  double* g = c.Block("face_direction", c.elements->other_face[i]);
+  c.Add(MakeDirectionDirichlet(), {f, g});
+  c.SetUnit(f);
+  c.SetUnit(g);
+}
+
+// Starts each face at its unit normal (Newell), where not set already.
+void InitDirections(TermContext& c) {
+  const ElementSet& faces = c.Elements("faces");
+  for (size_t f = 0; f < faces.size(); ++f) {
+    double* d = c.Block("face_direction", int(f));
+    if (d[0] != 0 || d[1] != 0 || d[2] != 0) continue;
+    const int* vs = faces.Vertices(f);
+    const int k = faces.Count(f);
+    double n[3] = {0, 0, 0};
+    for (int j = 0; j < k; ++j) {
+      const double* a = c.Position(vs[j]);
+      const double* b = c.Position(vs[(j + 1) % k]);
+      n[0] += a[1] * b[2] - a[2] * b[1];
+      n[1] += a[2] * b[0] - a[0] * b[2];
+      n[2] += a[0] * b[1] - a[1] * b[0];
+    }
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (int a = 0; a < 3; ++a) d[a] = length > 0 ? n[a] / length : (a == 2 ? 1.0 : 0.0);
+  }
+}
+
+}  // namespace
+
+const TermSpec& direction_dirichlet() {
+  static const TermSpec spec = [] {
+    TermSpec t;
+    t.name = "direction_dirichlet";
+    t.summary = "smoothness of a per-face unit direction field (Dirichlet energy)";
+    t.paper = "[Knöppel et al. 2013, §4]";
+    t.elements = "interior_edges";
+    t.declares = {{"face_direction", Site::kFace, 3, FrameMap::kDirection, true,
+                   Carry::kReinitialise, true, false, "a unit direction per face"}};
+    t.init = &InitDirections;
+    t.add = &AddDirectionDirichlet;
+    return t;
+  }();
+  return spec;
+}
+
+}  // namespace terms
+}  // namespace archgeo
