@@ -15,6 +15,7 @@
 // a ceres::ScaledLoss (optionally wrapping a robust loss, `terms.<t>.loss`).
 #pragma once
 
+#include <any>
 #include <string>
 #include <vector>
 
@@ -117,6 +118,9 @@ class TermContext {
   virtual bool OnBoundaryCurve(int v) const = 0;
   // Another element set of the mesh (mesh/elements.h), e.g. "faces".
   virtual const ElementSet& Elements(const std::string& name) = 0;
+  // An object the problem shares with its terms (its HookContext state
+  // `name`, e.g. the parametric surface of a grid); empty if none.
+  virtual const std::any& Shared(const std::string& name) const = 0;
 
   // The term's options ("terms.<name>.<option>").
   virtual const Settings& settings() const = 0;
