@@ -29,7 +29,7 @@ void FailIndex(const std::string& path, int line, std::string_view token, std::s
 PolygonSoup ParseObj(const std::string& path, std::string_view data, const ReadLimits& limits) {
   PolygonSoup soup;
   // Positive indices may refer to vertices listed later; they are checked at
-  // the end (faces_to_check holds each face's largest positive index).
+  // the end (largest_index holds each face's largest positive index).
   std::vector<std::size_t> largest_index;
   for (LineReader reader(data); reader.Next();) {
     const auto& tokens = reader.tokens();
@@ -37,8 +37,8 @@ PolygonSoup ParseObj(const std::string& path, std::string_view data, const ReadL
     if (keyword == "v") {
       if (soup.points.size() >= limits.max_vertices) {
         FailInput(path, reader.line(),
-                  LimitMessage("the file has more than " + std::to_string(limits.max_vertices) +
-                                   " vertices",
+                  LimitMessage("the file has at least " +
+                                   std::to_string(limits.max_vertices + 1) + " vertices",
                                limits.max_vertices, "limits.max_vertices"));
       }
       std::array<double, 3> p;
@@ -49,7 +49,7 @@ PolygonSoup ParseObj(const std::string& path, std::string_view data, const ReadL
       const std::size_t face = soup.polygons.size();
       if (face >= limits.max_faces) {
         FailInput(path, reader.line(),
-                  LimitMessage("the file has more than " + std::to_string(limits.max_faces) +
+                  LimitMessage("the file has at least " + std::to_string(limits.max_faces + 1) +
                                    " faces",
                                limits.max_faces, "limits.max_faces"));
       }
