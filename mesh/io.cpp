@@ -46,7 +46,7 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 
 enum class Format { kObj, kOff, kPly };
 
-// A mesh as CGAL's soup readers and writers see it.
+// A mesh as CGAL's soup functions (orientation, mesh building, writers) see it.
 struct Soup {
   std::vector<Point> points;
   std::vector<std::vector<std::size_t>> polygons;
