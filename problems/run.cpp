@@ -109,9 +109,16 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   };
 
   ReadInfo info;
-  const Mesh read = d.makes_input ? Mesh() : ReadMesh(spec.mesh(), &info);
+  ReadLimits limits;
+  limits.max_vertices = size_t(s.Integer("limits.max_vertices"));
+  limits.max_faces = size_t(s.Integer("limits.max_faces"));
+  limits.max_face_degree = size_t(s.Integer("limits.max_face_degree"));
+  limits.max_file_bytes = std::uint64_t(s.Integer("limits.max_file_bytes"));
+  const Mesh read = d.makes_input ? Mesh() : ReadMesh(spec.mesh(), &info, limits);
   std::unique_ptr<Mesh> reference_mesh;
-  if (!spec.reference().empty()) reference_mesh = std::make_unique<Mesh>(ReadMesh(spec.reference()));
+  if (!spec.reference().empty()) {
+    reference_mesh = std::make_unique<Mesh>(ReadMesh(spec.reference(), nullptr, limits));
+  }
   const double read_seconds = Since(start);
 
   const auto solve_start = Clock::now();

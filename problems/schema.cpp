@@ -46,6 +46,16 @@ std::vector<Key> CommonKeys(const ProblemDecl& d) {
                            {"loop", "sqrt3", "catmull_clark", "doo_sabin"},
                            "loop, sqrt3 (triangle meshes), catmull_clark, doo_sabin (any mesh); "
                            "Loop and Catmull-Clark keep vertex ids"));
+  keys.push_back(IntegerKey("limits.max_vertices", 50000000, 1, 2000000000,
+                            "refuse input meshes with more vertices (raise it for bigger meshes)"));
+  keys.push_back(IntegerKey("limits.max_faces", 50000000, 1, 2000000000,
+                            "refuse input meshes with more faces"));
+  keys.push_back(IntegerKey("limits.max_face_degree", 1000, 3, 1000000,
+                            "refuse faces with more vertices"));
+  keys.push_back(IntegerKey("limits.max_file_bytes", 8589934592LL, 1, 1LL << 50,
+                            "refuse input files larger than this (they are read whole)"));
+  keys.push_back(IntegerKey("limits.max_subdivided_faces", 20000000, 1, 2000000000,
+                            "refuse a multiresolution level with more faces"));
   keys.push_back(NumberKey("validity.max_reflex_degrees", 10, 0, 180,
                            "a panel corner bent inward by more than this makes the result "
                            "invalid (unless the input's was)"));
