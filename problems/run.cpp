@@ -143,6 +143,7 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
 
   RunResult run;
   nlohmann::json& rep = run.report;
+  rep["schema_version"] = kReportSchemaVersion;
   rep["archgeo"] = "solve";
   rep["spec"] = spec.spec_path;
   rep["mesh"] = spec.mesh();
@@ -302,7 +303,8 @@ RunResult MeasureFiles(const std::string& mesh_path, const std::string& referenc
       if (!v.Warnings().empty()) validity_text += "warnings:\n" + v.Warnings();
     }
   }
-  run.report = {{"archgeo", "measure"},
+  run.report = {{"schema_version", kReportSchemaVersion},
+                {"archgeo", "measure"},
                 {"mesh", mesh_path},
                 {"reference", reference_path},
                 {"units", {{"lengths", "file units"},

@@ -12,6 +12,10 @@
 
 namespace archgeo {
 
+// The version of the JSON report's layout (described in README.md):
+// raised whenever a key changes meaning or moves.
+inline constexpr int kReportSchemaVersion = 1;
+
 struct RunResult {
   // 0: a valid result, every tolerance met; 4: a valid result written, a
   // tolerance missed; 3: no usable or no valid result, nothing written (bad
