@@ -80,6 +80,9 @@ struct TermSpec {
                                     // are added element by element (residual order)
   const char* drives = "";          // the measure it drives to 0 (custom problems offer
                                     // tolerance.<measure> and continue the term's weight)
+  bool barrier = false;             // a one-sided validity barrier (zero unless violated):
+                                    // continued with the goal terms of its stage so that
+                                    // it stays stronger than them
   bool needs_projection = false;    // reads the projection onto the reference
   bool supports_band = false;       // honours TermContext::band (continuation.band)
   TermAdder add = nullptr;

@@ -7,12 +7,14 @@
   X(anet_planarity)            \
   X(boundary_proximity)        \
   X(co_spherical)              \
+  X(convexity)                 \
   X(dihedral_energy)           \
   X(direction_dirichlet)       \
   X(displacement_guard)        \
   X(face_planarity)            \
   X(fairness)                  \
   X(frame_coplanarity)         \
+  X(min_edge_length)           \
   X(handles)                   \
   X(pq_diagonal)               \
   X(principal_strip)           \

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "analysis/validity.h"
 #include "mesh/hnet.h"
 #include "mesh/smoothness_metrics.h"
 #include "problems/hnet_net.h"
@@ -80,6 +81,17 @@ void AddHNet(const Mesh& mesh, AnalysisRows& rows) {
                   K::kRatio});
 }
 
+// Every mesh with panels (faces of four or more sides): how many are convex.
+void AddPanels(const Mesh& mesh, AnalysisRows& rows) {
+  using K = AnalysisRow::Kind;
+  const PanelShapes shapes = MeasurePanelShapes(mesh);
+  if (shapes.panels == 0) return;
+  rows.push_back({"nonconvex_panels", "non-convex panels (of 4+ sides)", double(shapes.nonconvex),
+                  K::kCount});
+  rows.push_back({"worst_reflex_degrees", "worst corner bent inward", shapes.worst_reflex_degrees,
+                  K::kDegrees});
+}
+
 }  // namespace
 
 std::set<std::string> ApplicableAnalyses(const Mesh& mesh) {
@@ -91,6 +103,7 @@ std::set<std::string> ApplicableAnalyses(const Mesh& mesh) {
 
 AnalysisRows Analyse(const Mesh& mesh, const std::set<std::string>& names) {
   AnalysisRows rows;
+  AddPanels(mesh, rows);
   const std::set<std::string> applicable = ApplicableAnalyses(mesh);
   if (names.count("smoothness") && applicable.count("smoothness")) AddSmoothness(mesh, rows);
   if (names.count("hnet") && applicable.count("hnet")) AddHNet(mesh, rows);

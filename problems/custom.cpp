@@ -75,7 +75,9 @@ ProblemDecl CustomProblem(const YAML::Node& root, const std::string& path,
     }
     for (const TermUse& u : d.terms) {
       const TermSpec* spec = FindTerm(u.term);
-      if (spec->drives[0] != '\0') s.continued.push_back(u.term);
+      if (spec->drives[0] != '\0' || (spec->barrier && !driven.empty())) {
+        s.continued.push_back(u.term);
+      }
     }
     s.factor_key = "continuation.factor";
     s.band_key = "continuation.band";
