@@ -5,8 +5,10 @@
 #define ARCHGEO_TERMS(X)       \
   X(anchor)                    \
   X(anet_planarity)            \
+  X(bending)                   \
   X(boundary_proximity)        \
   X(co_spherical)              \
+  X(conical)                   \
   X(dihedral_energy)           \
   X(direction_dirichlet)       \
   X(displacement_guard)        \
@@ -14,10 +16,16 @@
   X(fairness)                  \
   X(frame_coplanarity)         \
   X(handles)                   \
+  X(laplacian)                 \
+  X(load)                      \
+  X(mean_curvature_flow)       \
+  X(on_curve)                  \
   X(pq_diagonal)               \
   X(principal_strip)           \
   X(proximity)                 \
   X(saddle_sign)               \
+  X(shear)                     \
+  X(spring)                    \
   X(step)                      \
   X(tangent_plane)             \
   X(total_absolute_curvature)

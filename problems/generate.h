@@ -12,9 +12,10 @@ struct GenerateOptions {
   // enneper_small | catenoid_band | scherk
   std::string surface = "roof";
   int nu = 20, nv = 15;  // resolution (roof, torus, cone_start; see GenerateSurfaceNames)
-  double noise = 0.1;    // roof only: random vertex offsets, mean edge lengths
+  double noise = -1;     // roof, torus: random vertex offsets, mean edge lengths
+                         // (< 0: the surface's default, roof 0.1, torus 0)
   double scale = 1.0;    // uniform scale of the written mesh
-  unsigned seed = 1;     // roof only
+  unsigned seed = 1;     // roof, torus: random seed of the noise
   int refinement = 1;    // asymptotic nets: quads per parameter step (>= 1)
   std::string reference; // asymptotic nets: optional path for the analytic reference
 };
