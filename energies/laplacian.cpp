@@ -47,11 +47,11 @@ ceres::CostFunction* MakeWeightedLaplacian(const std::vector<double>& weights,
 namespace archgeo::terms {
 namespace {
 
-// (v; w_1 … w_n): r = (barycentre of the w_j − v)/L, L = 1.
+// (v; w_1 … w_n): r = (barycentre of the w_j − v)/L, L = 1; free v only.
 void AddLaplacian(TermContext& c, size_t i) {
   const int* s = c.elements->Vertices(i);
   const int n = c.elements->Count(i) - 1;
-  if (n < 1) return;
+  if (n < 1 || c.Fixed(s[0])) return;  // a support's umbrella is a reaction, not a condition
   std::vector<double*> blocks;
   for (int j = 0; j <= n; ++j) blocks.push_back(c.Position(s[j]));
   c.Add(MakeLaplacian(n, 1.0), blocks);
