@@ -16,6 +16,7 @@
 
 #include "energies/registry.h"
 #include "mesh/curves.h"
+#include "mesh/elements.h"
 #include "mesh/generators.h"
 #include "mesh/goal_metrics.h"
 #include "mesh/input_error.h"
@@ -378,6 +379,44 @@ TEST(MeanCurvatureFlow, FlattensToThePlaneOfItsBoundary) {
     }
     EXPECT_LE(height, 1e-6) << terms;
   }
+}
+
+// ---------------------------------------------------------------------------
+// The element sets the goal terms act on (mesh/elements.h).
+
+TEST(GoalElementSets, OnAGridAndItsTriangulation) {
+  const Mesh grid = FlatGrid(3, 3);  // 16 vertices, 24 edges (12 on the boundary), 9 quads
+  EXPECT_EQ(BuildElementSet(grid, "edges").size(), 24u);
+  const ElementSet border = BuildElementSet(grid, "boundary_edges");
+  ASSERT_EQ(border.size(), 12u);
+  // Head to tail around the loop: every edge's end starts another edge.
+  for (size_t i = 0; i < border.size(); ++i) {
+    int starts = 0;
+    for (size_t j = 0; j < border.size(); ++j) starts += border.Vertices(j)[0] == border.Vertices(i)[1];
+    EXPECT_EQ(starts, 1);
+    EXPECT_TRUE(border.Has(i, kBoundary));
+  }
+  EXPECT_EQ(BuildElementSet(grid, "boundary_vertices").size(), 12u);
+  const ElementSet rings = BuildElementSet(grid, "one_rings");
+  ASSERT_EQ(rings.size(), 16u);
+  EXPECT_EQ(rings.Count(0), 3);  // a corner and its two neighbours
+  const ElementSet stars = BuildElementSet(grid, "valence4_stars");
+  EXPECT_EQ(stars.size(), 4u);   // the interior vertices
+  EXPECT_EQ(BuildElementSet(grid, "triangle_fans").size(), 0u);
+  // The same grid triangulated: no valence-4 star without triangles, and a
+  // triangle fan at every vertex with an interior edge.
+  Mesh triangles;
+  for (VertexIndex v : grid.vertices()) triangles.add_vertex(grid.point(v));
+  for (FaceIndex f : grid.faces()) {
+    std::vector<VertexIndex> q;
+    for (VertexIndex v : CGAL::vertices_around_face(grid.halfedge(f), grid)) q.push_back(v);
+    triangles.add_face(q[0], q[1], q[2]);
+    triangles.add_face(q[0], q[2], q[3]);
+  }
+  EXPECT_EQ(BuildElementSet(triangles, "valence4_stars").size(), 0u);
+  EXPECT_EQ(BuildElementSet(triangles, "triangle_fans").size(),
+            BuildElementSet(triangles, "fans").size());
+  EXPECT_GT(BuildElementSet(triangles, "triangle_fans").size(), 0u);
 }
 
 // ---------------------------------------------------------------------------
