@@ -7,7 +7,8 @@
 //                  max displacement ≤ 3% of the diagonal, face-offset miss ≤
 //                  1e-3 of the mean edge length — exit 1 otherwise), on the
 //                  Conjugate mesh (no acceptance: a conjugate, non-principal
-//                  net; the table shows what it costs) and on a noisy torus
+//                  net; the table shows what it costs — the validity check
+//                  refuses the collapsed result, exit 3) and on a noisy torus
 //                  principal net (`archgeo generate --surface torus --noise
 //                  0.05`, the same acceptance);
 //   even_boundary.yaml  on the botanic-garden bubble (acceptance: boundary
@@ -28,8 +29,30 @@ namespace {
 using bench::Fmt;
 using bench::Get;
 
+// Exit code, and for a result the validity check refused (exit 3) or that
+// is an earlier round than the last (the last was invalid), the failed checks.
+std::string Validity(const bench::Json& r) {
+  std::string text = Fmt("%.0f", Get(r, "/exit_code"));
+  if (r.contains("validity")) {
+    std::string failed;
+    for (const auto& check : r["validity"]["checks"]) {
+      if (!check.value("passed", true) && check.value("hard", false)) {
+        failed += (failed.empty() ? "" : ", ") + check.value("name", std::string());
+      }
+    }
+    if (!failed.empty()) text += " (invalid: " + failed + ")";
+    if (r["validity"].contains("restored_round") && !r["validity"]["restored_round"].is_null()) {
+      text += " (output: round " + r["validity"]["restored_round"].dump() + ")";
+    }
+  }
+  return text;
+}
+
+// Exit 0 with the last round's result (no round refused by the validity
+// check) and the figures of issue 18.
 bool conical_ok(const bench::Json& r) {
-  return Get(r, "/after/conical_max") <= 1e-3 && Get(r, "/after/pq_normalized_max") <= 1e-3 &&
+  return Get(r, "/exit_code") == 0 && r.contains("validity") &&
+         r["validity"]["restored_round"].is_null() && Get(r, "/after/conical_max") <= 1e-3 && Get(r, "/after/pq_normalized_max") <= 1e-3 &&
          Get(r, "/after/non_convex_quads") == 0 &&
          Get(r, "/after/displacement_max_relative") <= 0.03 &&
          Get(r, "/after/face_offset_miss") <= 1e-3;
@@ -53,7 +76,7 @@ int main(int argc, char** argv) {
   std::cout << "examples/conical.yaml\n";
   bench::Table conical({"mesh", "conical max (rad)", "δ_PQ,n max", "offset miss / edge",
                         "non-convex", "moved / diag", "Hausdorff / diag", "edges max/min",
-                        "rounds", "T (s)", "acceptance"});
+                        "rounds", "T (s)", "exit", "acceptance"});
   struct Run {
     std::string name, mesh;
     bool accept;
@@ -77,19 +100,19 @@ int main(int argc, char** argv) {
                  Fmt("%.3g -> %.3g", Get(r, "/before/edge_length_ratio"),
                      Get(r, "/after/edge_length_ratio")),
                  Fmt("%.0f", Get(r, "/iterations/outer")), Fmt("%.1f", Get(r, "/wall_seconds")),
-                 run.accept ? (pass ? "met" : "NOT met") : (pass ? "(met)" : "(not met)")});
+                 Validity(r), run.accept ? (pass ? "met" : "NOT met") : (pass ? "(met)" : "(not met)")});
   }
   conical.Print();
 
   std::cout << "\nexamples/even_boundary.yaml\n";
   bench::Table even({"mesh", "boundary max |ℓ/mean − 1|", "boundary max/min",
                      "off perimeter / diag", "Hausdorff / diag", "δ_PQ,n max", "rounds", "T (s)",
-                     "acceptance"});
+                     "exit", "acceptance"});
   {
     const bench::Json r = bench::Solve(bench::Source("examples/even_boundary.yaml"), {});
     const double spread = Get(r, "/after/boundary_spacing_spread");
     const double off = Get(r, "/details/on_curve/max_distance_relative");
-    const bool pass = spread <= 0.01 && off <= 1e-9;
+    const bool pass = Get(r, "/exit_code") == 0 && spread <= 0.01 && off <= 1e-9;
     ok = ok && pass;
     even.Add({"botanic bubble",
               Fmt("%.2e -> %.2e", Get(r, "/before/boundary_spacing_spread"), spread),
@@ -99,22 +122,22 @@ int main(int argc, char** argv) {
               Fmt("%.2e -> %.2e", Get(r, "/before/pq_normalized_max"),
                   Get(r, "/after/pq_normalized_max")),
               Fmt("%.0f", Get(r, "/iterations/outer")), Fmt("%.1f", Get(r, "/wall_seconds")),
-              pass ? "met" : "NOT met"});
+              Validity(r), pass ? "met" : "NOT met"});
   }
   even.Print();
 
   std::cout << "\nexamples/hanging_net.yaml\n";
-  bench::Table net({"net", "force balance / load", "span", "rise", "span/rise", "T (s)",
+  bench::Table net({"net", "force balance / load", "span", "rise", "span/rise", "T (s)", "exit",
                     "acceptance"});
   {
     const bench::Json r = bench::Solve(bench::Source("examples/hanging_net.yaml"), {});
     const double balance = Get(r, "/details/load/force_balance_max");
-    const bool pass = balance <= 1e-6;
+    const bool pass = Get(r, "/exit_code") == 0 && balance <= 1e-6;
     ok = ok && pass;
     net.Add({"24 x 24, 12 x 12 quads", Fmt("%.2e", balance),
              Fmt("%.4f", Get(r, "/details/load/span")), Fmt("%.4f", Get(r, "/details/load/rise")),
              Fmt("%.3f", Get(r, "/details/load/span_over_rise")),
-             Fmt("%.2f", Get(r, "/wall_seconds")), pass ? "met" : "NOT met"});
+             Fmt("%.2f", Get(r, "/wall_seconds")), Validity(r), pass ? "met" : "NOT met"});
   }
   net.Print();
   return ok ? 0 : 1;

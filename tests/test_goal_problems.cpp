@@ -47,6 +47,9 @@ std::vector<std::string> With(std::vector<std::string> overrides) {
 std::unique_ptr<Solution> SolveSpec(const ProblemSpec& spec, const Mesh& mesh) {
   std::unique_ptr<Solution> s = Solve(spec, mesh, nullptr, {});
   EXPECT_TRUE(s->loop.usable) << s->loop.message;
+  // Every round is checked for validity (analysis/validity.h, the spec's
+  // limits): the output is the last round, not an earlier valid one.
+  EXPECT_FALSE(s->loop.restored_valid) << "output is round " << s->loop.output_round;
   return s;
 }
 
