@@ -154,7 +154,7 @@ namespace {
 void AddOnCurve(TermContext&, size_t) {}
 
 // Each selected free vertex goes to the closest point of the closest curve
-// (the option `curve`, or the reference's boundary loops) and is optimised
+// (the option `curve` or `curve_points`, or the reference's boundary loops) and is optimised
 // on that curve (CurveManifold: one arc-length coordinate).
 void FinishOnCurve(TermContext& c) {
   std::vector<std::shared_ptr<const CurvePolyline>> curves;
@@ -200,7 +200,16 @@ const TermSpec& on_curve() {
       k.type = Type::kInputPath;
       k.fallback = std::string();
       k.doc = "OBJ file of polylines (`l` records, file units); each vertex slides on the "
-              "closest one; empty: the boundary loops of the reference (or the input)";
+              "closest one; empty (and no curve_points): the boundary loops of the reference "
+              "(or the input)";
+      return k;
+    }(), [] {
+      Key k;
+      k.name = "curve_points";
+      k.type = Type::kCustom;
+      k.doc = "instead of `curve`: one polyline as a list of points [x, y, z] (file units), "
+              "closed when the last point repeats the first";
+      k.example = "[[0, 0, 0], [10, 0, 0], [10, 5, 2]]";
       return k;
     }()};
     t.finish = &FinishOnCurve;

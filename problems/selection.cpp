@@ -264,6 +264,35 @@ std::vector<Polyline> TermCurves(const Settings& s, const std::string& key,
                                  const Similarity& frame, const Mesh& reference) {
   const std::string& path = s.String(key);
   std::vector<Polyline> polylines;
+  const std::string points_key = key + "_points";
+  const std::any& points = s.Custom(points_key);
+  if (points.has_value()) {
+    if (!path.empty()) throw s.Error(points_key, "give either " + key + " or " + points_key);
+    std::vector<Vec3> xyz;
+    const YAML::Node list = std::any_cast<YAML::Node>(points);
+    const std::string form = "expected a list of points [x, y, z] (file units)";
+    if (!list.IsSequence()) throw s.Error(points_key, form);
+    for (const YAML::Node& point : list) {
+      Vec3 x;
+      bool ok = point.IsSequence() && point.size() == 3;
+      for (size_t i = 0; ok && i < 3; ++i) {
+        ok = point[i].IsScalar() && YAML::convert<double>::decode(point[i], x[i]) &&
+             std::isfinite(x[i]);
+      }
+      if (!ok) {
+        throw s.Error(points_key, form + "; point " + std::to_string(xyz.size() + 1) +
+                                      " is not three finite numbers");
+      }
+      xyz.push_back(x);
+    }
+    const bool closed = xyz.size() > 2 && xyz.front() == xyz.back();
+    if (closed) xyz.pop_back();
+    for (Vec3& x : xyz) x = frame.ToCanonical(x);
+    const Origin at = s.Where(points_key);
+    polylines.push_back(MakePolyline(xyz, closed, at.file.empty() ? s.spec_file() : at.file,
+                                     at.file == "--set" ? 0 : at.line, points_key));
+    return polylines;
+  }
   if (!path.empty()) {
     try {
       for (Polyline& p : ReadPolylines(path)) {

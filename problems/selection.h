@@ -76,9 +76,12 @@ std::vector<size_t> SelectElements(const Selection& selection, const ElementSet&
 
 // The curves of a term option (core/term.h TermContext::Curves) in the
 // canonical frame: the polylines of the OBJ file the setting `key` names
-// (file units, moved by `frame`), or, when it is empty, the boundary loops of
-// `reference` (canonical; longest first). Throws InputError naming `key` for
-// an unreadable file or when there is no curve.
+// (file units, moved by `frame`); or the one polyline of the kCustom setting
+// `key`_points, if the term declares it — a YAML list of points [x, y, z]
+// (file units), closed when the last point repeats the first; or, when
+// neither is given, the boundary loops of `reference` (canonical; longest
+// first). Throws InputError naming the key for an unreadable file, a
+// malformed point list, both forms given, or when there is no curve.
 std::vector<Polyline> TermCurves(const Settings& settings, const std::string& key,
                                  const Similarity& frame, const Mesh& reference);
 

@@ -310,6 +310,65 @@ TEST_F(EvenBoundaryExample, FollowsAGivenCurveFile) {
   EXPECT_LE(BoundaryEdgeLengthSpread(s->output).max_relative_deviation, 0.01);
 }
 
+// The same perimeter given in the spec as a list of points (closed: the last
+// point repeats the first); malformed lists and both forms at once are input
+// errors naming the key.
+TEST_F(EvenBoundaryExample, FollowsAPointListInTheSpec) {
+  const Mesh dome = Dome(8);
+  WriteMesh(Path("dome.obj"), dome);
+  const int m = 360;
+  std::vector<Vec3> circle;
+  std::string points = "[";
+  for (int k = 0; k <= m; ++k) {
+    const double a = 2 * M_PI * (k % m) / m;
+    circle.push_back({5.5 * std::cos(a), 5.5 * std::sin(a), 0.0});
+    char p[80];
+    std::snprintf(p, sizeof p, "%s[%.17g, %.17g, 0]", k ? ", " : "", circle.back()[0],
+                  circle.back()[1]);
+    points += p;
+  }
+  points += "]";
+  const ProblemSpec spec =
+      ReadSpec(kExamples + "even_boundary.yaml",
+               With({"mesh=" + Path("dome.obj"),
+                     "terms.on_curve={weight: 1, curve_points: " + points + "}"}));
+  const std::unique_ptr<Solution> s = SolveSpec(spec, dome);
+  circle.pop_back();
+  const PolylineLocator locator(MakePolyline(circle, true));
+  double off = 0;
+  const std::vector<std::vector<VertexIndex>> loops = BoundaryLoops(dome);
+  for (VertexIndex v : loops[0]) {
+    off = std::max(off, locator.Closest(ToVec3(s->output.point(v))).distance);
+  }
+  EXPECT_LE(off, 1e-9 * PrincipalBoxDiagonal(dome));
+  EXPECT_LE(BoundaryEdgeLengthSpread(s->output).max_relative_deviation, 0.01);
+
+  const auto error = [&](const std::string& on_curve) {
+    try {
+      const ProblemSpec bad = ReadSpec(
+          kExamples + "even_boundary.yaml",
+          With({"mesh=" + Path("dome.obj"), "terms.on_curve=" + on_curve}));
+      Solve(bad, dome, nullptr, {});
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(error("{weight: 1, curve_points: [[0, 0, 0], [1, 2]]}")
+                .find("terms.on_curve.curve_points': expected a list of points [x, y, z] (file "
+                      "units); point 2 is not three finite numbers"),
+            std::string::npos);
+  EXPECT_NE(error("{weight: 1, curve_points: 7}").find("expected a list of points"),
+            std::string::npos);
+  EXPECT_NE(error("{weight: 1, curve_points: [[0, 0, 0], [0, 0, 0]]}").find("curve_points"),
+            std::string::npos);
+  WriteFile("line.obj", "v 0 0 0\nv 1 0 0\nl 1 2\n");
+  EXPECT_NE(error("{weight: 1, curve: " + Path("line.obj") +
+                  ", curve_points: [[0, 0, 0], [1, 0, 0]]}")
+                .find("give either terms.on_curve.curve or terms.on_curve.curve_points"),
+            std::string::npos);
+}
+
 // ---------------------------------------------------------------------------
 // Other terms in small solves.
 
