@@ -5,8 +5,10 @@
 #define ARCHGEO_TERMS(X)       \
   X(anchor)                    \
   X(anet_planarity)            \
+  X(bending)                   \
   X(boundary_proximity)        \
   X(co_spherical)              \
+  X(conical)                   \
   X(convexity)                 \
   X(dihedral_energy)           \
   X(direction_dirichlet)       \
@@ -14,12 +16,18 @@
   X(face_planarity)            \
   X(fairness)                  \
   X(frame_coplanarity)         \
-  X(min_edge_length)           \
   X(handles)                   \
+  X(laplacian)                 \
+  X(load)                      \
+  X(mean_curvature_flow)       \
+  X(min_edge_length)           \
+  X(on_curve)                  \
   X(pq_diagonal)               \
   X(principal_strip)           \
   X(proximity)                 \
   X(saddle_sign)               \
+  X(shear)                     \
+  X(spring)                    \
   X(step)                      \
   X(tangent_plane)             \
   X(total_absolute_curvature)

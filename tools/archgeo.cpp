@@ -157,10 +157,12 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   generate->add_option("--nv", gen.nv, "Resolution along v (roof: y in [0, 1.5])")
       ->capture_default_str();
-  generate->add_option("--noise", gen.noise, "roof: random vertex offsets, in mean edge lengths")
-      ->capture_default_str();
+  generate->add_option("--noise", gen.noise,
+                       "roof, torus: random vertex offsets, in mean edge lengths (default: roof "
+                       "0.1, torus 0)");
   generate->add_option("--scale", gen.scale, "Uniform scale (file units)")->capture_default_str();
-  generate->add_option("--seed", gen.seed, "roof: random seed")->capture_default_str();
+  generate->add_option("--seed", gen.seed, "roof, torus: random seed of the noise")
+      ->capture_default_str();
   generate->add_option("--refinement", gen.refinement,
                        "Asymptotic nets: subdivide each parameter step K times")
       ->capture_default_str();
