@@ -14,12 +14,22 @@
   X(fairness)                  \
   X(frame_coplanarity)         \
   X(handles)                   \
+  X(level_set_alignment)       \
+  X(level_set_branch_point)    \
+  X(level_set_conjugacy)       \
+  X(level_set_jump)            \
+  X(level_set_normalised)      \
   X(pq_diagonal)               \
   X(principal_strip)           \
   X(proximity)                 \
   X(saddle_sign)               \
   X(step)                      \
   X(tangent_plane)             \
+  X(tcd_dirichlet)             \
+  X(tcd_prescribed_direction)  \
+  X(tcd_singularity_avoidance) \
+  X(tcd_singularity_placement) \
+  X(tcd_transversality)        \
   X(total_absolute_curvature)
 
 namespace archgeo {
