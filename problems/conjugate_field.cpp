@@ -220,8 +220,11 @@ void Init(HookContext& c) {
   }
 
   // Boundary alignment: the boundary tangent as a prescribed direction of
-  // every boundary face, weighted by field.boundary_alignment.
-  const double boundary_factor = s.Number("field.boundary_alignment");
+  // every boundary face, weighted by field.boundary_alignment (a factor on
+  // the prescribed-direction term's weight in the element data).
+  const double prescribed_weight = s.Number("terms.tcd_prescribed_direction.weight");
+  const double boundary_factor =
+      prescribed_weight > 0 ? s.Number("field.boundary_alignment") / prescribed_weight : 0.0;
   std::vector<std::pair<int, V2>> along_boundary;
   if (boundary_factor > 0) {
     for (HalfedgeIndex h : mesh.halfedges()) {

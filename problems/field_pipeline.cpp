@@ -47,7 +47,7 @@ std::vector<TermUse> FieldTerms() {
           {"tcd_transversality", 0.1},
           {"tcd_singularity_avoidance", 0},
           {"tcd_singularity_placement", 100},
-          {"tcd_prescribed_direction", 10}};
+          {"tcd_prescribed_direction", 100}};
 }
 
 std::vector<Key> FieldKeys() {
@@ -79,10 +79,10 @@ std::vector<Key> FieldKeys() {
           singularities,
           directions,
           constraints,
-          NumberKey("field.boundary_alignment", 0.1, 0, 1e6,
-                    "the boundary tangent as a prescribed direction of every boundary face, with "
-                    "this factor on terms.tcd_prescribed_direction.weight (level sets along the "
-                    "boundary: fewer cut boundary faces); 0 = off"),
+          NumberKey("field.boundary_alignment", 1, 0, 1e6,
+                    "weight of the boundary tangent as a prescribed direction of every boundary "
+                    "face (through tcd_prescribed_direction, which must be on): level sets along "
+                    "the boundary, fewer cut boundary faces; 0 = off"),
           IntegerKey("field.rounds", 1, 1, 100,
                      "Ceres solves of the field (each at most solver.max_num_iterations)")};
 }
