@@ -157,6 +157,20 @@ std::unique_ptr<Solution> Solve(const ProblemSpec& spec, const Mesh& mesh, const
                   scheme + " subdivision needs a triangle mesh; " + spec.mesh() +
                       " has other faces (use catmull_clark or doo_sabin)");
   }
+  // Each multiresolution level multiplies the faces (3× for sqrt3, about 4×
+  // for the others): refuse levels beyond limits.max_subdivided_faces before
+  // any work.
+  double faces = double(input.number_of_faces());
+  for (int level = 1; level <= levels; ++level) {
+    faces *= scheme == "sqrt3" ? 3 : 4;
+    if (faces > double(s.Integer("limits.max_subdivided_faces"))) {
+      throw s.Error("multiresolution.levels",
+                    "level " + std::to_string(level) + " would have about " +
+                        std::to_string((long long)faces) +
+                        " faces, more than limits.max_subdivided_faces (" +
+                        std::to_string(s.Integer("limits.max_subdivided_faces")) + ")");
+    }
+  }
   std::vector<bool> fixed =
       FixedVertices(s, sol->net.derived && FixedByIds(s) ? mesh : input, spec.mesh());
   if (sol->net.derived && FixedByIds(s)) fixed = OnNet(s, fixed, sol->net, spec.mesh());
