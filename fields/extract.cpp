@@ -630,6 +630,40 @@ Extraction ExtractQuadMesh(const Mesh& mesh, const LevelSetFunctions& fn,
     }
     faces.swap(kept);
   }
+  // A boundary edge (used by one face, both ends on the boundary) shorter
+  // than half the snap threshold — a level that ends just beside a corner or
+  // beside another level's end — is collapsed: its face loses a sliver side
+  // (a corner of more than 10° bent inward after the PQ step otherwise). A
+  // corner of the boundary keeps its position; else the midpoint.
+  if (!lengths.empty() && options.boundary_snap_fraction > 0) {
+    const double limit = 0.5 * options.boundary_snap_fraction * lengths[lengths.size() / 2];
+    std::map<std::pair<int, int>, int> uses;
+    for (const auto& f : faces)
+      for (size_t i = 0; i < f.size(); ++i) {
+        const int a = f[i], b = f[(i + 1) % f.size()];
+        ++uses[{std::min(a, b), std::max(a, b)}];
+      }
+    std::vector<int> rep(points.size());
+    for (size_t i = 0; i < points.size(); ++i) rep[i] = static_cast<int>(i);
+    std::vector<bool> touched(points.size(), false);
+    for (const auto& [edge, count] : uses) {
+      const auto [a, b] = edge;
+      if (count != 1 || !point_on_boundary[a] || !point_on_boundary[b]) continue;
+      if (touched[a] || touched[b] || (point_is_corner[a] && point_is_corner[b])) continue;
+      if ((points[a] - points[b]).norm() >= limit) continue;
+      const int keep = point_is_corner[b] ? b : a, drop = keep == a ? b : a;
+      if (!point_is_corner[keep]) points[keep] = 0.5 * (points[a] + points[b]);
+      rep[drop] = keep;
+      touched[a] = touched[b] = true;
+      ++out.collapsed_boundary_edges;
+    }
+    std::vector<std::vector<int>> kept;
+    for (auto& f : faces) {
+      for (int& x : f) x = rep[x];
+      SimpleCycles(f, &kept, &out.dropped_small_faces);
+    }
+    faces.swap(kept);
+  }
   // A boundary vertex that only one face uses and that is not a corner of
   // the boundary (a level that ended there before a snap) is dissolved from
   // a face with more than four vertices.

@@ -56,7 +56,9 @@
 //     position); an interior vertex joined to a boundary vertex by an edge
 //     shorter than boundary_snap_fraction times the median is moved onto the
 //     nearest such vertex (a level crossing just inside the boundary: the
-//     small triangle it cuts off disappears); a boundary vertex then used by a
+//     small triangle it cuts off disappears); a boundary edge shorter than
+//     half that is collapsed (a corner keeps its place, else the midpoint);
+//     a boundary vertex then used by a
 //     single face with more than four vertices (not a boundary corner) is
 //     dissolved from it; then the polygon soup becomes a CGAL Surface_mesh
 //     (PMP::polygon_soup_to_polygon_mesh; non-manifold vertices are
@@ -118,6 +120,7 @@ struct Extraction {
   int merged_vertices = 0;           // removed by step 6 (short edges)
   int snapped_vertices = 0;          // moved onto the boundary by step 6
   int dissolved_vertices = 0;        // boundary vertices left on one face only (step 6)
+  int collapsed_boundary_edges = 0;  // boundary edges < boundary_snap_fraction / 2 (step 6)
   int dropped_small_faces = 0;       // fewer than 3 vertices (step 4)
   int dropped_non_disk_regions = 0;  // several loops with vertices (step 4)
   int duplicated_vertices = 0;       // non-manifold fixes (step 6)

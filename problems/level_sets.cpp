@@ -387,6 +387,7 @@ void Finish(HookContext& c) {
         {"merged_vertices", x.merged_vertices},
         {"snapped_vertices", x.snapped_vertices},
         {"dissolved_vertices", x.dissolved_vertices},
+        {"collapsed_boundary_edges", x.collapsed_boundary_edges},
         {"dropped_small_faces", x.dropped_small_faces},
         {"dropped_non_disk_regions", x.dropped_non_disk_regions},
         {"duplicated_vertices", x.duplicated_vertices},
