@@ -114,7 +114,8 @@ std::vector<Key> LevelSetKeys() {
           NumberKey("extraction.boundary_snap", 0.35, 0, 0.5,
                     "a layout vertex joined to a boundary vertex by an edge shorter than this "
                     "fraction of the median edge is moved onto it (fewer cut-off boundary "
-                    "triangles); 0 = off"),
+                    "triangles) and a boundary edge shorter than half of it is collapsed (no "
+                    "sliver sides); 0 = off"),
           NumberKey("extraction.corner_angle", 30, 0, 180,
                     "boundary vertices where the boundary turns by more than this (degrees) are "
                     "kept as corners of the layout")};
