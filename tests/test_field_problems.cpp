@@ -11,7 +11,7 @@
 //  - level_sets: on the inspired mesh the acceptance figures of issue 11
 //    (∇g vs R v ≤ 3°, 1300–2000 faces, ≥ 95% quads, every singularity an
 //    irregular vertex or face, Hausdorff distance ≤ 0.5% of the diagonal,
-//    δ_PQ,n mean ≤ 2.8e-3);
+//    δ_PQ,n mean ≤ 2.8e-3); even and odd rounding at a −1/2 singularity;
 //  - conjugate_layout: the inspired mesh made planar (δ_PQ,n ≤ 1e-3, max
 //    displacement ≤ 0.5% of the diagonal), valid, every output written;
 //  - bad input: a quad mesh, face ids that do not exist, a target face count
@@ -19,6 +19,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 
 #include <Eigen/Eigenvalues>
@@ -319,6 +320,41 @@ TEST(LevelSets, InspiredMeshLayoutMeetsTheIssueFigures) {
   const LevelSetResult& r = *LevelSetsOf(*s);
   EXPECT_TRUE(r.layout.ok);
   EXPECT_EQ(r.layout.anomalies, 0);
+}
+
+// Rounding at the monkey saddle's −1/2 singularity [Zadravec 2010, §5]:
+// jumps rounded to even multiples of the spacing give only quads around it
+// (a valence-6 vertex, index (4 − 6)/4); odd multiples give valence-4
+// vertices only and a hexagon (index (4 − 6)/4) instead.
+TEST(LevelSets, EvenRoundingGivesQuadsAroundAMinusHalfOddAHexagon) {
+  TriangleGridOptions opt;
+  opt.jitter = 0.2;
+  const Mesh mesh = TriangulatedGrid(40, 40, [](double u, double v) -> Vec3 {
+    const double x = 2 * u - 1, y = 2 * v - 1;
+    return {x, y, x * x * x - 3 * x * y * y};
+  }, opt);
+  for (const std::string parity : {"even", "odd"}) {
+    const auto s = SolveYaml("problem: level_sets\nlevel_sets: {target_faces: 300, rounding: " +
+                                 parity + "}\nfield: {boundary_alignment: 0}\n",
+                             mesh);
+    const LevelSetResult& r = *LevelSetsOf(*s);
+    ASSERT_EQ(r.field->field.singularities.size(), 1u);
+    ASSERT_EQ(r.field->field.singularities[0].index, -0.5);
+    ASSERT_TRUE(r.layout.ok);
+    std::map<int, int> irregular_faces;
+    for (FaceIndex f : r.layout.irregular_interior_faces) ++irregular_faces[int(r.layout.mesh.degree(f))];
+    std::map<int, int> irregular_vertices;
+    for (const auto& [valence, count] : r.layout.interior_valence) {
+      if (valence != 4) irregular_vertices[valence] = count;
+    }
+    if (parity == "even") {
+      EXPECT_EQ(irregular_vertices, (std::map<int, int>{{6, 1}}));
+      EXPECT_TRUE(irregular_faces.empty());
+    } else {
+      EXPECT_TRUE(irregular_vertices.empty());
+      EXPECT_EQ(irregular_faces, (std::map<int, int>{{6, 1}}));
+    }
+  }
 }
 
 class ConjugateLayoutTest : public ScratchDirTest {};
