@@ -18,6 +18,11 @@
   X(frame_coplanarity)         \
   X(handles)                   \
   X(laplacian)                 \
+  X(level_set_alignment)       \
+  X(level_set_branch_point)    \
+  X(level_set_conjugacy)       \
+  X(level_set_jump)            \
+  X(level_set_normalised)      \
   X(load)                      \
   X(mean_curvature_flow)       \
   X(min_edge_length)           \
@@ -30,6 +35,11 @@
   X(spring)                    \
   X(step)                      \
   X(tangent_plane)             \
+  X(tcd_dirichlet)             \
+  X(tcd_prescribed_direction)  \
+  X(tcd_singularity_avoidance) \
+  X(tcd_singularity_placement) \
+  X(tcd_transversality)        \
   X(total_absolute_curvature)
 
 namespace archgeo {

@@ -217,12 +217,6 @@ MeshModel::MeshModel(const ProblemDecl& declaration, std::vector<const TermSpec*
   for (const TermSpec* t : terms_) {
     for (const BlockDecl& b : t->declares) store_.Declare(b);
   }
-  for (const TermSpec* t : terms_) {
-    for (const std::string& b : t->reads) {
-      CHECK(store_.Has(b)) << "term '" << t->name << "' reads block '" << b
-                           << "', which no term of problem '" << declaration_.name << "' declares";
-    }
-  }
   if (declaration_.init) declaration_.init(hooks_);
   for (const TermSpec* t : terms_) {
     if (!t->init) continue;
@@ -353,6 +347,14 @@ TermBlocks MeshModel::Build(const std::vector<ActiveTerm>& terms, int round,
     for (int i = 0; i < n; ++i) constant_blocks_.insert(store_.At(name, i));
   }
   for (const ActiveTerm& a : terms) {
+    // The blocks a term reads are checked when it is active: a problem may
+    // declare them in its init hook (global blocks), and a term no stage
+    // activates needs none.
+    for (const std::string& b : a.spec->reads) {
+      CHECK(store_.Has(b)) << "term '" << a.spec->name << "' reads block '" << b
+                           << "', which neither problem '" << declaration_.name
+                           << "' nor its terms declare";
+    }
     View& view = *views_.at(a.spec->name);
     view.elements = &Selected(*a.spec);
     view.weight = a.weight;

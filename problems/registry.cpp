@@ -7,7 +7,10 @@
   X(smooth_mesh)              \
   X(total_absolute_curvature) \
   X(principal_symmetric)      \
-  X(hnet)
+  X(hnet)                     \
+  X(conjugate_field)          \
+  X(level_sets)               \
+  X(conjugate_layout)
 
 namespace archgeo {
 namespace problems {
