@@ -60,7 +60,9 @@ void AddConvexity(TermContext& c, size_t i) {
   for (int j = 0; j < k; ++j) {
     const int a = vs[(j + k - 1) % k], b = vs[j], d = vs[(j + 1) % k];
     const double input = CornerTurnSine(c.Original(a), c.Original(b), c.Original(d), start.data());
-    const double threshold = std::max(-1.0, std::min(margin, input));
+    // A corner the input already has outside the margin (e.g. a straight
+    // corner where two quads were joined) may get worse by the margin, no more.
+    const double threshold = input >= margin ? margin : std::max(-1.0, input - margin);
     c.Add(MakeConvexity(now.data(), threshold), {c.Position(a), c.Position(b), c.Position(d)});
   }
 }
@@ -71,14 +73,14 @@ const TermSpec& convexity() {
   static const TermSpec spec = [] {
     TermSpec t;
     t.name = "convexity";
-    t.summary = "barrier: every corner of a panel stays convex (no worse than the input)";
+    t.summary = "barrier: every corner of a panel stays convex (or at most the margin worse than the input)";
     t.paper = "[panel validity; Zadravec 2010, §6, Fig. 13]";
     t.elements = "non_triangles";
     t.element_choices = {"faces", "quads", "polygons"};
     t.options = {NumberKey("margin_degrees", 2.0, 0.0, 45.0,
                            "corners are kept at least this far from straight and from a spike "
                            "(interior angle in [m, 180° − m]); corners the input already has "
-                           "outside it are kept no worse than in the input")};
+                           "outside it may get worse by about m, no more")};
     t.barrier = true;
     t.add = &AddConvexity;
     return t;

@@ -13,9 +13,10 @@
 // the face; a constant of the residual, refreshed every round) and fixes the
 // side: walking the face in its orientation, a convex corner turns left
 // (s > 0), a reflex corner (θ > 180°) turns right (s < 0). t = sin(m) for a
-// margin m (terms.convexity.margin_degrees), or the corner's own value in the
-// input where the input is already outside the margin, so the barrier never
-// asks for more than the input had ("no worse than the input"). The residual
+// margin m (terms.convexity.margin_degrees); where the input's corner is
+// already outside the margin (a straight corner where two quads were joined,
+// a dart), t = s_input − sin(m): the corner may get worse by about the margin
+// and no more, so the barrier never asks for more than the input had. The residual
 // is zero — no gradient, no effect on the solve — while every corner is
 // inside the margin; it acts only when a corner is about to fold (an active
 // set, like the bounds of a constrained solve).

@@ -101,7 +101,22 @@ Mesh TriangulatedCopy(const Mesh& mesh) {
   }
   for (FaceIndex f : quads) SplitQuad(copy, copy.halfedge(f));
   if (!CGAL::Polygon_mesh_processing::triangulate_faces(copy)) {
-    throw std::invalid_argument("a face could not be triangulated");
+    // A polygon whose projection onto its plane overlaps itself (e.g. a
+    // strongly warped face) defeats the constrained Delaunay triangulation:
+    // split what is left as a fan from its first corner. Topologically always
+    // possible; the triangles may overlap, as the polygon itself does.
+    std::vector<FaceIndex> left;
+    for (FaceIndex f : copy.faces()) {
+      if (copy.degree(f) > 3) left.push_back(f);
+    }
+    for (FaceIndex f : left) {
+      // h ends at the fan's corner c; each split cuts off the triangle
+      // (c, target(next(h)), target(next(next(h)))) and h stays on the rest.
+      const auto h = copy.halfedge(f);
+      while (copy.degree(copy.face(h)) > 3) {
+        CGAL::Euler::split_face(h, copy.next(copy.next(h)), copy);
+      }
+    }
   }
   return copy;
 }

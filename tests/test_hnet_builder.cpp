@@ -251,10 +251,12 @@ TEST_F(HNetBuilder, NegshellMeetsTheIssueBounds) {
 
 TEST_F(HNetBuilder, StepThreeRoundsThatRaiseTheKinksAreUndone) {
   // The negshell's colour-1 diagonal net has 9 holes: W cannot agree around
-  // them and the frame terms would degenerate patches (α_max → 180°).
+  // them and, without the validity barriers, the frame terms degenerate
+  // patches (α_max → 180°).
   const RunResult run = RunSpec(
       ReadSpec(ARCHGEO_SOURCE_DIR "/examples/hnet.yaml",
                {"mesh=" + std::string(kNegshell), "hnet.net=diagonal_1", "hnet.alternations=2",
+                "terms.convexity.weight=0", "terms.min_edge_length.weight=0",
                 "output={report: " + Path("r.json") + "}"}),
       {});
   ASSERT_EQ(run.exit_code, 0);
@@ -269,6 +271,26 @@ TEST_F(HNetBuilder, StepThreeRoundsThatRaiseTheKinksAreUndone) {
   EXPECT_GT(last["measures"]["alpha_max"].get<double>(), before);
   EXPECT_DOUBLE_EQ(Num(run.report, "alpha_max"), before);
   EXPECT_LT(Num(run.report, "alpha_max"), 10.0);
+}
+
+// With the barriers (convexity, min_edge_length: on by default) the same
+// step 3 keeps every patch valid and flattens the kinks from 3.2° to below
+// Shi's real shells (0.4–4.5°, Table 1) instead of being undone; the price is
+// movement and star planarity, and the missed star tolerance is an exit 4,
+// not a success (measured: α_max 0.045°, stars 1.8e-5, 1.6% of the diagonal).
+TEST_F(HNetBuilder, BarriersKeepStepThreeValidOnANetWithHoles) {
+  const RunResult run = RunSpec(
+      ReadSpec(ARCHGEO_SOURCE_DIR "/examples/hnet.yaml",
+               {"mesh=" + std::string(kNegshell), "hnet.net=diagonal_1", "hnet.alternations=2",
+                "output={report: " + Path("r.json") + "}"}),
+      {});
+  EXPECT_EQ(run.exit_code, 4);
+  EXPECT_TRUE(run.report["validity"]["valid"].get<bool>());
+  const nlohmann::json& last = run.report["rounds"].back();
+  EXPECT_EQ(last["stage"], "frame");
+  EXPECT_FALSE(last["undone"].get<bool>());
+  EXPECT_LT(Num(run.report, "alpha_max"), 0.5);
+  EXPECT_FALSE(run.report["tolerances"]["hnet.star_planarity"]["met"].get<bool>());
 }
 
 TEST_F(HNetBuilder, FixedIdsReferToTheInputAndMustLieOnTheNet) {

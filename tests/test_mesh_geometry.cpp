@@ -228,6 +228,20 @@ TEST(TriangulatedCopy, KeepsVerticesAndSplitsIndependentlyOfPosition) {
   EXPECT_EQ(TriangulatedCopy(MakeMesh(hexagon, {{0, 1, 2, 3, 4, 5}})).number_of_faces(), 4u);
 }
 
+// A polygon whose outline crosses itself (a pentagram: the constrained
+// triangulation gives up on it) is split as a fan from its first corner,
+// so any polygon mesh can serve as a reference (an extracted layout did not).
+TEST(TriangulatedCopy, SelfOverlappingPolygonsBecomeFans) {
+  std::vector<Vec3> star;
+  for (int i = 0; i < 5; ++i) {
+    const double a = i * 4 * M_PI / 5;
+    star.push_back({std::cos(a), std::sin(a), 0.05 * i});
+  }
+  const Mesh triangles = TriangulatedCopy(MakeMesh(star, {{0, 1, 2, 3, 4}}));
+  EXPECT_EQ(triangles.number_of_faces(), 3u);
+  EXPECT_EQ(TriangleSet(triangles), (std::set<std::array<int, 3>>{{0, 1, 2}, {0, 2, 3}, {0, 3, 4}}));
+}
+
 TEST(ReferenceSurface, RejectsEmptyMesh) {
   EXPECT_THROW(ReferenceSurface{Mesh()}, std::invalid_argument);
 }
