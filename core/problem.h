@@ -46,6 +46,9 @@ struct StepResult {
   std::string message;  // why not usable
   int iterations = 0;
   double cost = 0;
+  // Non-empty: the step reached its own end (e.g. a force-directed method
+  // that stalled); the stage ends after this round, with this as the reason.
+  std::string stop;
 };
 
 struct Stage {

@@ -1,5 +1,6 @@
 #include "problems/model.h"
 
+#include <ceres/cost_function.h>
 #include <ceres/loss_function.h>
 #include <ceres/manifold.h>
 #include <ceres/problem.h>

@@ -7,7 +7,8 @@
   X(smooth_mesh)              \
   X(total_absolute_curvature) \
   X(principal_symmetric)      \
-  X(hnet)
+  X(hnet)                     \
+  X(grid)
 
 namespace archgeo {
 namespace problems {
