@@ -38,7 +38,9 @@
 //     (tolerance.*), the disposition stalls or plateaus (the stage ends, see
 //     StepResult::stop), or after force.rounds rounds.
 // L, the constant ideal edge length [§3], is grid.ideal_length or the mean
-// edge length of the initial grid (file units), shrunk by the fitting.
+// edge length of the initial grid (on a grid closed in one direction: of its
+// closed lines, whose edges the closure fixes), in file units; the fitting
+// shrinks it.
 //
 // Measures (logged every round, tolerances `tolerance.mdo|ado|mde|ade`, 0 =
 // off): MDO, ADO (degrees; on the interpolating splines, eqs. 4–5) and MDE,
@@ -283,6 +285,23 @@ void FitLength(HookContext& c) {
   c.model->StateChanged();
 }
 
+// L by default: the mean edge length of the initial grid [§3]; on a grid
+// closed in one direction, the mean length of the closed lines' edges, which
+// the closure fixes (the edges across them can follow).
+double DefaultLength(const Grid& grid, const Surface& surface) {
+  if (grid.closed_u == grid.closed_v) return MeanEdgeLength(grid, surface);
+  const std::vector<std::array<int, 2>> edges = GridEdges(grid);
+  const size_t u_edges = size_t(CountUEdges(grid));
+  double sum = 0;
+  int count = 0;
+  for (size_t k = 0; k < edges.size(); ++k) {
+    if ((k < u_edges) != grid.closed_u) continue;  // the closed direction's edges
+    sum += (surface.Point(grid.uv[edges[k][1]]) - surface.Point(grid.uv[edges[k][0]])).norm();
+    ++count;
+  }
+  return sum / count;
+}
+
 void Check(const Settings& s) {
   if (!s.String("reference").empty()) {
     throw s.Error("reference", "the grid problem's reference is its surface: no reference file");
@@ -317,7 +336,7 @@ void Net(HookContext& c) {
   g.grid = MakeUniformGrid(surface, int(s.Integer("grid.nu")), int(s.Integer("grid.nv")), type);
   g.length = g.initial_length = s.Number("grid.ideal_length") > 0
                                     ? s.Number("grid.ideal_length")
-                                    : MeanEdgeLength(g.grid, surface);
+                                    : DefaultLength(g.grid, surface);
   c.state["surface"] = surface;
   c.state["grid_length"] = g.length;
   c.net.derived = true;
@@ -552,7 +571,7 @@ ProblemDecl grid() {
                 "open (C0), closed in u or v (C1, on a periodic direction), closed_both (C2)"),
       NumberKey("grid.ideal_length", 0, 0, 1e300,
                 "the ideal edge length L (file units); 0: the mean edge length of the initial "
-                "grid [§3]"),
+                "grid [§3] (closed in one direction: of the closed lines)"),
       ChoiceKey("grid.anchor", "auto", {"auto", "centre", "none"},
                 "least squares: centre: the centre vertex keeps its (u, v) (an open direction "
                 "has nothing else that holds the grid on its patch); auto: centre unless the "
