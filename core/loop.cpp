@@ -83,7 +83,8 @@ double Bound(const Settings& s, const Tolerance& t) { return s.Number(t.key); }
 }  // namespace
 
 nlohmann::json RoundJson(const RoundLog& r) {
-  nlohmann::json j = {{"stage", r.stage},         {"round", r.round},
+  nlohmann::json j = {{"stage", r.stage},         {"round", r.round}, {"valid", r.valid},
+                      {"invalid", r.invalid},
                       {"iterations", r.iterations}, {"cost", r.cost},
                       {"weight_scale", r.weight_scale}, {"max_move", r.max_move},
                       {"clamped_vertices", r.clamped}, {"undone", r.undone},
@@ -110,6 +111,9 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
   if (options.progress) options.progress("round  0 (input)" + MeasureText(input.measures));
 
   double scale = 1;  // continuation, carried from stage to stage
+  // The last state that passed the validity checks (round 0: the input).
+  std::vector<double> last_valid = model.SaveState();
+  int last_valid_round = 0;
   std::unique_ptr<ceres::Problem> problem;
   TermBlocks blocks;
   int round_number = 0;
@@ -256,6 +260,12 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
         result.stop = "round undone: " + stage.undo_if_worse + " rose";
         stop = true;
       }
+      row.invalid = model.Invalid();
+      row.valid = row.invalid.empty();
+      if (row.valid) {
+        last_valid = model.SaveState();
+        last_valid_round = round_number;
+      }
       row.seconds = Since(round_start);
       result.log.push_back(row);
       if (options.progress) {
@@ -263,11 +273,11 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
         std::snprintf(line, sizeof line, "%s done: %d iterations  cost %.6e  max move %.2e  %.2f s%s",
                       label.c_str(), row.iterations, row.cost, row.max_move, row.seconds,
                       row.undone ? "  UNDONE" : "");
-        options.progress(line + MeasureText(row.measures));
+        options.progress(line + MeasureText(row.measures) + (row.valid ? "" : "  INVALID"));
       }
       if (stop) break;
 
-      if (!stage.keep_best.empty()) {
+      if (!stage.keep_best.empty() && row.valid) {
         const double value = model.Measure(stage.keep_best);
         if (value < best) {
           best = value;
@@ -319,6 +329,17 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
       model.StateChanged();
       result.output_round = best_round;
     }
+  }
+  // An invalid final state gives way to the last valid round after the input.
+  const Key* keep = s.schema().Find("validity.keep_last_valid");
+  if (keep && s.Bool("validity.keep_last_valid") && !model.Invalid().empty() &&
+      last_valid_round > 0) {
+    model.RestoreState(last_valid);
+    model.StateChanged();
+    result.output_round = last_valid_round;
+    result.restored_valid = true;
+    result.stop += "; the last round was invalid: the output is round " +
+                   std::to_string(last_valid_round) + ", the last valid one";
   }
   for (const Stage& stage : stages) {
     for (const Tolerance& t : stage.tolerances) {

@@ -72,6 +72,10 @@ class Model {
   // Largest vertex move between two saved states (canonical lengths).
   virtual double MaxMove(const std::vector<double>& a, const std::vector<double>& b) const = 0;
   virtual bool Finite() const = 0;
+  // The cheap validity checks of the current state against the start of the
+  // solve (analysis/validity.h without the self-intersection test): "" when
+  // valid, else the failed checks.
+  virtual std::string Invalid() = 0;
 
   virtual HookContext& hooks() = 0;
 };
@@ -86,6 +90,8 @@ struct RoundLog {
   double max_move = 0;  // canonical lengths (input mean edge length = 1)
   int clamped = 0;      // vertices put back by the guard
   bool undone = false;
+  bool valid = true;    // the state after the round passes the validity checks
+  std::string invalid;  // else: which checks failed
   double seconds = 0;
   std::map<std::string, double> measures;
 };
@@ -101,6 +107,8 @@ struct LoopResult {
   std::vector<RoundLog> log;                // log[0]: the input (round 0)
   int output_round = 0;                     // the round whose state is the output
   std::string stop;                         // why the last stage ended
+  bool restored_valid = false;              // the last round was invalid: the output is
+                                            // the last valid round (output_round)
 };
 
 struct LoopOptions {

@@ -16,6 +16,7 @@
 #include <glog/logging.h>
 
 #include "mesh/input_error.h"
+#include "mesh/input_file.h"
 #include "mesh/text_scan.h"
 #include "mesh/vec3.h"
 
@@ -34,7 +35,7 @@ bool Finite(const Vec3& p) {
 std::string PointName(size_t i) { return "point " + std::to_string(i); }
 
 // The whole token as a number (from_chars also reads "nan" and "inf").
-bool ParseDouble(std::string_view token, double* value) {
+bool ParseCoordinate(std::string_view token, double* value) {
   const char* end = token.data() + token.size();
   const auto [ptr, error] = std::from_chars(token.data(), end, *value);
   return error == std::errc() && ptr == end;
@@ -89,7 +90,7 @@ Polyline MakePolyline(const std::vector<Vec3>& points, bool closed, const std::s
 }
 
 std::vector<Polyline> ReadPolylines(const std::string& path) {
-  const std::string text = ReadFile(path);
+  const std::string text = ReadInputFile(path, "", std::uint64_t{1} << 30, "");
   std::vector<Vec3> vertices;
   std::vector<Polyline> polylines;
   std::istringstream stream(text);
@@ -101,8 +102,8 @@ std::vector<Polyline> ReadPolylines(const std::string& path) {
     if (tokens.empty()) continue;
     if (tokens[0] == "v") {
       Vec3 p;
-      if (tokens.size() < 4 || !ParseDouble(tokens[1], &p[0]) || !ParseDouble(tokens[2], &p[1]) ||
-          !ParseDouble(tokens[3], &p[2])) {
+      if (tokens.size() < 4 || !ParseCoordinate(tokens[1], &p[0]) || !ParseCoordinate(tokens[2], &p[1]) ||
+          !ParseCoordinate(tokens[3], &p[2])) {
         FailInput(path, line, "malformed vertex: expected 'v x y z'");
       }
       if (!Finite(p)) FailInput(path, line, "vertex has a non-finite coordinate");

@@ -1,15 +1,15 @@
-// archgeo — mesh files through CGAL's polygon-soup IO.
+// archgeo — mesh files: parsing (mesh/soup_readers.h), CGAL's soup repair,
+// and CGAL's writers.
 //
 // ReadMesh runs four steps:
-//  1. ScanObj / ScanOff / ScanPly (mesh/text_scan.h; ASCII files only): a
-//     plain-text pre-scan, since CGAL's soup readers answer only true/false
-//     and std::istream cannot parse "nan" or "inf". It records the line of
-//     every vertex and face record, rejects garbage and non-finite numbers
-//     with their line, and joins OFF face lists wrapped over several lines.
-//  2. CGAL::IO::read_OBJ / read_OFF / read_PLY into a polygon soup. These
-//     readers fill a soup, never a partial mesh.
-//  3. CheckSoup: non-finite points (binary files), faces with fewer than 3
-//     vertices, out-of-range or repeated indices, degenerate faces.
+//  1. ReadInputFile (mesh/input_file.h): regular files only, at most
+//     limits.max_file_bytes, read whole.
+//  2. ParseObj / ParseOff / ParsePly (mesh/soup_readers.h): the bytes into a
+//     polygon soup, every count checked against the file size and `limits`
+//     before anything is allocated, the line of every record kept. (CGAL's
+//     own soup readers are not used: soup_readers.h says why.)
+//  3. CheckSoup: non-finite points, faces with fewer than 3 vertices,
+//     out-of-range or repeated indices, degenerate faces.
 //  4. PMP::orient_polygon_soup, refused if it had to duplicate a vertex, and
 //     PMP::polygon_soup_to_polygon_mesh, which inserts every point (isolated
 //     ones included) in file order, so vertex i is the file's i-th vertex.
@@ -35,6 +35,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "mesh/input_file.h"
+#include "mesh/soup_readers.h"
 #include "mesh/text_scan.h"
 
 namespace archgeo {
@@ -44,7 +46,7 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 
 enum class Format { kObj, kOff, kPly };
 
-// A mesh as CGAL's soup readers and writers see it.
+// A mesh as CGAL's soup functions (orientation, mesh building, writers) see it.
 struct Soup {
   std::vector<Point> points;
   std::vector<std::vector<std::size_t>> polygons;
@@ -75,29 +77,26 @@ const char* FormatName(Format format) {
   return "";
 }
 
-// Reads the (pre-scanned) `text` with CGAL's soup reader for `format`.
-Soup ReadSoup(const std::string& path, Format format, const std::string& text) {
-  Soup soup;
-  std::istringstream in(text);
-  const auto quiet = CGAL::parameters::verbose(false);
-  bool ok = false;
+// The file's content as a soup of CGAL points.
+Soup ParseSoup(const std::string& name, Format format, std::string_view data,
+               const ReadLimits& limits, LineMap* lines) {
+  PolygonSoup parsed;
   switch (format) {
     case Format::kObj:
-      ok = CGAL::IO::read_OBJ(in, soup.points, soup.polygons, quiet);
+      parsed = ParseObj(name, data, limits);
       break;
     case Format::kOff:
-      ok = CGAL::IO::read_OFF(in, soup.points, soup.polygons, quiet);
+      parsed = ParseOff(name, data, limits);
       break;
     case Format::kPly:
-      CGAL::IO::set_mode(in, CGAL::IO::BINARY);
-      ok = CGAL::IO::read_PLY(in, soup.points, soup.polygons, quiet);
+      parsed = ParsePly(name, data, limits);
       break;
   }
-  if (!ok) {
-    FailInput(path, 0,
-              std::string("cannot parse the file as ") + FormatName(format) +
-                  ": CGAL's reader rejected it (unsupported content or a truncated file)");
-  }
+  Soup soup;
+  soup.points.reserve(parsed.points.size());
+  for (const auto& p : parsed.points) soup.points.emplace_back(p[0], p[1], p[2]);
+  soup.polygons = std::move(parsed.polygons);
+  *lines = std::move(parsed.lines);
   return soup;
 }
 
@@ -255,27 +254,22 @@ bool WritePly(std::ostream& out, const Soup& soup, const std::vector<Rgb>* color
 
 void CheckMeshExtension(const std::string& path) { FormatOf(path); }
 
-Mesh ReadMesh(const std::string& path, ReadInfo* info) {
-  const Format format = FormatOf(path);
-  std::string text = ReadFile(path);
-  if (text.find_first_not_of(" \t\r\n") == std::string::npos) {
-    FailInput(path, 0, "the file is empty");
+Mesh ReadMesh(const std::string& path, ReadInfo* info, const ReadLimits& limits) {
+  FormatOf(path);  // an unknown extension is refused before the file is opened
+  const std::string data = ReadInputFile(path, "", limits.max_file_bytes);
+  return ReadMeshFromMemory(path, data, info, limits);
+}
+
+Mesh ReadMeshFromMemory(const std::string& name, std::string_view data, ReadInfo* info,
+                        const ReadLimits& limits) {
+  const Format format = FormatOf(name);
+  if (data.find_first_not_of(" \t\r\n") == std::string_view::npos) {
+    FailInput(name, 0, "the file is empty");
   }
   LineMap lines;
-  switch (format) {
-    case Format::kObj:
-      lines = ScanObj(path, &text);
-      break;
-    case Format::kOff:
-      lines = ScanOff(path, &text);
-      break;
-    case Format::kPly:
-      lines = ScanPly(path, text);
-      break;
-  }
-  Soup soup = ReadSoup(path, format, text);
-  CheckSoup(path, soup, lines);
-  const int flipped = Orient(path, &soup, lines);
+  Soup soup = ParseSoup(name, format, data, limits, &lines);
+  CheckSoup(name, soup, lines);
+  const int flipped = Orient(name, &soup, lines);
   if (info != nullptr) *info = {FormatName(format), flipped};
 
   Mesh mesh;
@@ -287,6 +281,17 @@ Mesh ReadMesh(const std::string& path, ReadInfo* info) {
 void WriteMesh(const std::string& path, const Mesh& mesh, const std::vector<Rgb>* face_colors,
                bool ascii_ply) {
   const Format format = FormatOf(path);
+  std::size_t written = 0;  // the vertex's number in the file
+  for (VertexIndex v : mesh.vertices()) {
+    const Point& p = mesh.point(v);
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z())) {
+      std::ostringstream message;
+      message << "vertex " << written << " has a non-finite coordinate (" << p.x() << ", "
+              << p.y() << ", " << p.z() << "); refusing to write a mesh that cannot be read back";
+      FailInput(path, 0, message.str());
+    }
+    ++written;
+  }
   const Soup soup = ToSoup(mesh);
   for (std::size_t j = 0; format == Format::kPly && j < soup.polygons.size(); ++j) {
     if (soup.polygons[j].size() > 255) {

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "mesh/input_error.h"
+#include "mesh/input_file.h"
 #include "mesh/vec3.h"
 
 namespace archgeo {
@@ -66,8 +67,7 @@ std::vector<PrincipalStar> PrincipalStars(const Mesh& mesh, const std::set<Verte
 
 std::vector<VertexPair> ReadPrincipalEdges(const std::string& path, const std::string& key,
                                            const Mesh& mesh) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, 0, key, "cannot read the principal-edge file");
+  std::istringstream in(ReadInputFile(path, key, std::uint64_t{1} << 30, ""));
   std::set<VertexPair> seen;
   std::vector<VertexPair> edges;
   std::string line;
@@ -107,6 +107,7 @@ std::vector<VertexPair> ReadPrincipalEdges(const std::string& path, const std::s
     }
     edges.push_back(Pair(i, j));
   }
+  if (edges.empty()) throw InputError(path, 0, key, "the file lists no principal edge");
   return edges;
 }
 

@@ -13,6 +13,19 @@
 #include "mesh/patchwork_io.h"
 
 namespace archgeo {
+namespace {
+
+bool IsFinite(const Vec3& p) {
+  return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+}
+
+std::string Number(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", x);
+  return text;
+}
+
+}  // namespace
 
 RunResult RunDarboux(const std::string& net_path, const std::string& out_path,
                      const DarbouxOptions& options) {
@@ -71,6 +84,22 @@ RunResult RunDarboux(const std::string& net_path, const std::string& out_path,
                      "every sample maps to infinity or to a non-real point for this c and "
                      "projective map; nothing to write");
   }
+  // Eq. 12 involves c² and |y|²: for a large |c| (or points far from the
+  // origin) it overflows double precision, and ApplyDarboux reports success
+  // with an infinite or NaN image. Such a patchwork cannot be read back:
+  // refuse the run rather than write it (or count it as left out, which would
+  // hide that the whole map broke down).
+  for (const auto& triangle : mapped.triangles) {
+    for (const int v : triangle) {
+      if (!IsFinite(mapped.positions[v]) || !IsFinite(mapped.normals[v])) {
+        throw InputError("--c", 0, "c",
+                         "the Darboux map overflows double precision for c = " + Number(options.c) +
+                             " (sample vertex " + std::to_string(v) +
+                             " maps to a non-finite point); use a smaller |c| or scale the net "
+                             "down (images grow like |c| times the distance from the origin)");
+      }
+    }
+  }
   std::vector<std::array<unsigned char, 3>> colors;
   if (options.isophote_band > 0) {
     const Vec3 d{options.isophote_direction[0], options.isophote_direction[1],
@@ -86,6 +115,11 @@ RunResult RunDarboux(const std::string& net_path, const std::string& out_path,
       std::vector<Vec3> image;
       for (const Vec3& p : line) {
         const DarbouxResult r = ApplyDarboux(transform, Eigen::Vector3d(p[0], p[1], p[2]));
+        if (r.status == DarbouxStatus::kOk && !r.point.allFinite()) {
+          throw InputError("--c", 0, "c",
+                           "the Darboux map overflows double precision for c = " +
+                               Number(options.c) + " on a ruling; use a smaller |c|");
+        }
         if (r.status != DarbouxStatus::kOk) {
           ++failed_rulings;
           image.clear();

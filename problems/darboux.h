@@ -28,9 +28,15 @@ struct DarbouxOptions {
 };
 
 // Reads the quad net `net_path`, writes the mapped patchwork to `out_path`
-// (PLY; atomically, after every check). Throws InputError for bad input
-// (not a quad mesh, c = 1, a projective map that is not 16 finite numbers or
-// is singular, a bad output extension).
+// (PLY; atomically, after every check). Samples whose image is at infinity or
+// not real are left out (counted in the report as failed_vertices, with
+// their triangles). Throws InputError for bad input (not a quad mesh, c not
+// finite or c = 1, a projective map that is not 16 finite numbers or is
+// singular, a bad output extension, every sample left out) and, naming --c,
+// when eq. 12 overflows double precision (|c| or the points so large that an
+// image that should be finite comes out infinite or NaN, e.g. c = 1e308):
+// nothing is written then, so a written patchwork has only finite vertices
+// and normals.
 RunResult RunDarboux(const std::string& net_path, const std::string& out_path,
                      const DarbouxOptions& options);
 

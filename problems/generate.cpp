@@ -1,6 +1,8 @@
 #include "problems/generate.h"
 
+#include <cmath>
 #include <map>
+#include <sstream>
 
 #include "mesh/asymptotic_nets.h"
 #include "mesh/generators.h"
@@ -29,6 +31,58 @@ void Scale(Mesh& mesh, double s) {
   }
 }
 
+std::string Number(double x) {
+  std::ostringstream text;
+  text << x;
+  return text.str();
+}
+
+// The option bounds of generate.h, checked before anything is built.
+void CheckOptions(const GenerateOptions& o, bool is_net) {
+  if (!(o.scale >= kMinGenerateScale && o.scale <= kMaxGenerateScale)) {
+    throw InputError("--scale", 0, "scale",
+                     "must be in [" + Number(kMinGenerateScale) + ", " +
+                         Number(kMaxGenerateScale) + "], got " + Number(o.scale));
+  }
+  if (!(o.noise >= 0 && o.noise <= kMaxGenerateNoise)) {
+    throw InputError("--noise", 0, "noise",
+                     "must be in [0, " + Number(kMaxGenerateNoise) +
+                         "] (mean edge lengths), got " + Number(o.noise));
+  }
+  if (is_net) {
+    if (o.refinement < 1 || o.refinement > kMaxGenerateRefinement) {
+      throw InputError("--refinement", 0, "refinement",
+                       "must be in [1, " + std::to_string(kMaxGenerateRefinement) + "], got " +
+                           std::to_string(o.refinement));
+    }
+    return;
+  }
+  if (o.nu < 1 || o.nv < 1) {
+    throw InputError("--nu/--nv", 0, "", "grid sizes must be >= 1, got " + std::to_string(o.nu) +
+                                             " x " + std::to_string(o.nv));
+  }
+  const long long faces = (o.surface == "cone_start" ? 2LL : 1LL) * o.nu * o.nv;
+  if (faces > kMaxGeneratedFaces) {
+    throw InputError("--nu/--nv", 0, "",
+                     std::to_string(o.nu) + " x " + std::to_string(o.nv) + " gives " +
+                         std::to_string(faces) + " faces, more than the limit of " +
+                         std::to_string(kMaxGeneratedFaces));
+  }
+}
+
+// Last guard before writing: every coordinate finite (WriteMesh would refuse
+// too, but naming the temporary file).
+void CheckFinite(const Mesh& mesh, const std::string& path) {
+  for (VertexIndex v : mesh.vertices()) {
+    const Point& p = mesh.point(v);
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z())) {
+      throw InputError(path, 0, "",
+                       "vertex " + std::to_string(v.idx()) +
+                           " has a non-finite coordinate; nothing written");
+    }
+  }
+}
+
 }  // namespace
 
 std::string GenerateSurfaceNames() {
@@ -47,36 +101,40 @@ std::string GenerateSurfaceNames() {
 }
 
 RunResult GenerateSurface(const std::string& path, const GenerateOptions& o) {
-  if (!(o.scale > 0)) throw InputError("--scale", 0, "scale", "must be > 0");
   Mesh mesh, reference;
   const auto net = Nets().find(o.surface);
+  const bool is_net = net != Nets().end();
+  if (!is_net && o.surface != "roof" && o.surface != "torus" && o.surface != "cone_start") {
+    throw InputError("--surface", 0, "surface", "unknown surface '" + o.surface +
+                                                    "'; one of:\n" + GenerateSurfaceNames());
+  }
+  if (!o.reference.empty() && !is_net) {
+    throw InputError("--reference", 0, "reference",
+                     "an analytic reference exists for the asymptotic nets only");
+  }
+  CheckOptions(o, is_net);
   if (o.surface == "roof") {
-    if (o.nu < 1 || o.nv < 1) throw InputError("--nu/--nv", 0, "", "grid sizes must be >= 1");
-    if (!(o.noise >= 0)) throw InputError("--noise", 0, "noise", "must be >= 0");
     mesh = QuadGrid(o.nu, o.nv, RoofSurface, o.noise, o.seed);
   } else if (o.surface == "torus") {
     mesh = TorusPrincipalQuads(3.0, 1.0, o.nu, o.nv);
   } else if (o.surface == "cone_start") {
     mesh = RevolutionTriangles(RevolutionProfile{}, o.nu, o.nv);
-  } else if (net != Nets().end()) {
+  } else {
     mesh = MakeAsymptoticTestNet(net->second, o.refinement);
     if (!o.reference.empty()) reference = MakeAsymptoticTestReference(net->second, o.refinement);
-  } else {
-    throw InputError("--surface", 0, "surface", "unknown surface '" + o.surface +
-                                                    "'; one of:\n" + GenerateSurfaceNames());
-  }
-  if (!o.reference.empty() && net == Nets().end()) {
-    throw InputError("--reference", 0, "reference",
-                     "an analytic reference exists for the asymptotic nets only");
   }
   Scale(mesh, o.scale);
+  CheckFinite(mesh, path);
+  if (!o.reference.empty()) {
+    Scale(reference, o.scale);
+    CheckFinite(reference, o.reference);
+  }
   StagedOutputs staged;
   WriteMesh(staged.Stage(path), mesh);
   RunResult run;
   run.summary = "wrote " + path + ": " + std::to_string(mesh.number_of_vertices()) +
                 " vertices, " + std::to_string(mesh.number_of_faces()) + " faces\n";
   if (!o.reference.empty()) {
-    Scale(reference, o.scale);
     WriteMesh(staged.Stage(o.reference), reference);
     run.summary += "wrote " + o.reference + ": " + std::to_string(reference.number_of_faces()) +
                    " triangles (analytic reference)\n";

@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <memory>
 
 #include "energies/registry.h"
 #include "mesh/elements.h"
@@ -38,6 +40,29 @@ ceres::LossFunction* Robust(const std::string& type, double scale) {
   if (type == "tolerant") return new ceres::TolerantLoss(scale, scale);
   return nullptr;  // "none"
 }
+
+#ifdef ARCHGEO_MUTATION_TESTING
+class ZeroedCost : public ceres::CostFunction {
+ public:
+  explicit ZeroedCost(ceres::CostFunction* inner) : inner_(inner) {
+    set_num_residuals(inner->num_residuals());
+    *mutable_parameter_block_sizes() = inner->parameter_block_sizes();
+  }
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override {
+    if (!inner_->Evaluate(parameters, residuals, jacobians)) return false;
+    std::fill(residuals, residuals + num_residuals(), 0.0);
+    const auto& sizes = parameter_block_sizes();
+    for (size_t i = 0; jacobians && i < sizes.size(); ++i) {
+      if (jacobians[i]) std::fill(jacobians[i], jacobians[i] + sizes[i] * num_residuals(), 0.0);
+    }
+    return true;
+  }
+
+ private:
+  std::unique_ptr<ceres::CostFunction> inner_;
+};
+#endif
 
 }  // namespace
 
@@ -103,6 +128,13 @@ class MeshModel::View : public TermContext {
       delete cost;
       return;
     }
+#ifdef ARCHGEO_MUTATION_TESTING
+    // tools/mutation_check.sh: the term named by ARCHGEO_ZERO_TERM contributes
+    // nothing (its residuals and Jacobians are zero), to find the tests that
+    // notice a missing energy.
+    const char* zeroed = std::getenv("ARCHGEO_ZERO_TERM");
+    if (zeroed && name_ == zeroed) cost = new ZeroedCost(cost);
+#endif
     const double w = weight >= 0 ? weight : this->weight;
     ceres::LossFunction* loss =
         new ceres::ScaledLoss(Robust(loss_, loss_scale_), w, ceres::TAKE_OWNERSHIP);
@@ -148,6 +180,7 @@ MeshModel::MeshModel(const ProblemDecl& declaration, std::vector<const TermSpec*
   if (hooks_.fixed.size() != n) hooks_.fixed.assign(n, false);
   boundary_ = BoundaryVertices(mesh);
   box_diagonal_ = mesh.number_of_vertices() > 0 ? PrincipalBoxDiagonal(mesh) : 0.0;
+  start_ = mesh;
   original_.resize(3 * n);
   for (VertexIndex v : mesh.vertices()) {
     const Point& p = mesh.point(v);
@@ -419,6 +452,23 @@ double MeshModel::MaxMove(const std::vector<double>& a, const std::vector<double
     m = std::max(m, std::sqrt(dx * dx + dy * dy + dz * dz));
   }
   return m;
+}
+
+ValidityLimits LimitsOf(const Settings& s) {
+  ValidityLimits l;
+  l.max_reflex_degrees = s.Number("validity.max_reflex_degrees");
+  l.max_flip_degrees = s.Number("validity.max_flip_degrees");
+  l.min_edge_relative = s.Number("validity.min_edge_relative");
+  l.max_crease_increase_degrees = s.Number("validity.max_crease_increase_degrees");
+  l.min_corner_degrees = s.Number("validity.min_corner_degrees");
+  l.max_aspect = s.Number("validity.max_aspect");
+  l.self_intersections = s.Bool("validity.self_intersections");
+  return l;
+}
+
+std::string MeshModel::Invalid() {
+  if (!Finite()) return "finite: non-finite coordinates";
+  return CheckValidity(store_.mesh(), &start_, LimitsOf(*hooks_.settings), false).Reason();
 }
 
 bool MeshModel::Finite() const {

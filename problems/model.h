@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/loop.h"
+#include "analysis/validity.h"
 #include "core/problem.h"
 #include "mesh/similarity.h"
 #include "mesh/store.h"
@@ -97,6 +98,7 @@ class MeshModel : public Model {
   void RestoreState(const std::vector<double>& state) override;
   double MaxMove(const std::vector<double>& a, const std::vector<double>& b) const override;
   bool Finite() const override;
+  std::string Invalid() override;
   HookContext& hooks() override { return hooks_; }
 
   void SetElements(const std::string& name, ElementSet set);
@@ -124,11 +126,15 @@ class MeshModel : public Model {
   std::vector<bool> on_curve_;
   std::vector<bool> boundary_;
   double box_diagonal_ = 0;  // of the mesh at the start of the solve (the guard's unit)
+  Mesh start_;               // the mesh at the start of the solve (validity's reference)
   std::set<const double*> constant_blocks_;  // blocks of constant (data) blocks
   std::set<const double*> constant_elements_;  // SetConstant's
   std::map<std::string, double> cache_;
   std::map<std::string, std::unique_ptr<View>> views_;
 };
+
+// The validity limits of the settings (validity.* keys).
+ValidityLimits LimitsOf(const Settings& settings);
 
 // The terms of a declaration as registered specs (CHECKs each is registered).
 std::vector<const TermSpec*> TermsOf(const ProblemDecl& declaration);

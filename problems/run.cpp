@@ -15,6 +15,7 @@
 #include "mesh/output_files.h"
 #include "mesh/reference.h"
 #include "mesh/similarity.h"
+#include "analysis/validity.h"
 #include "problems/analysis.h"
 #include "problems/colors.h"
 #include "problems/model.h"
@@ -108,9 +109,16 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   };
 
   ReadInfo info;
-  const Mesh read = d.makes_input ? Mesh() : ReadMesh(spec.mesh(), &info);
+  ReadLimits limits;
+  limits.max_vertices = size_t(s.Integer("limits.max_vertices"));
+  limits.max_faces = size_t(s.Integer("limits.max_faces"));
+  limits.max_face_degree = size_t(s.Integer("limits.max_face_degree"));
+  limits.max_file_bytes = std::uint64_t(s.Integer("limits.max_file_bytes"));
+  const Mesh read = d.makes_input ? Mesh() : ReadMesh(spec.mesh(), &info, limits);
   std::unique_ptr<Mesh> reference_mesh;
-  if (!spec.reference().empty()) reference_mesh = std::make_unique<Mesh>(ReadMesh(spec.reference()));
+  if (!spec.reference().empty()) {
+    reference_mesh = std::make_unique<Mesh>(ReadMesh(spec.reference(), nullptr, limits));
+  }
   const double read_seconds = Since(start);
 
   const auto solve_start = Clock::now();
@@ -135,6 +143,7 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
 
   RunResult run;
   nlohmann::json& rep = run.report;
+  rep["schema_version"] = kReportSchemaVersion;
   rep["archgeo"] = "solve";
   rep["spec"] = spec.spec_path;
   rep["mesh"] = spec.mesh();
@@ -190,6 +199,21 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   }
 
   const Mesh& output = solution->output;
+  // Validity of the result against the net it came from (analysis/validity.h).
+  const Validity validity = CheckValidity(output, &input, LimitsOf(s), true);
+  rep["validity"] = validity.ToJson();
+  rep["validity"]["restored_round"] =
+      solved.restored_valid ? nlohmann::json(solved.output_round) : nlohmann::json(nullptr);
+  if (!validity.valid()) {
+    run.exit_code = 3;
+    rep["message"] = "the result is not valid";
+    run.summary = "archgeo: the result is not valid (nothing was written):\n" + validity.Reason() +
+                  "(limits: validity.* keys; the report's validity section lists every check)\n";
+    return run;
+  }
+  bool tolerances_met = true;
+  for (const auto& [key, met] : solved.tolerances) tolerances_met = tolerances_met && met;
+  run.exit_code = tolerances_met ? 0 : 4;
   const auto metrics_start = Clock::now();
   const bool same_vertices = output.number_of_vertices() == input.number_of_vertices();
   const Metrics after = ComputeMetrics(output, &reference, same_vertices ? &input : nullptr);
@@ -235,7 +259,17 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   char objective[128];
   std::snprintf(objective, sizeof objective, "objective (canonical frame): %.6e\n",
                 solved.objective.count("total") ? solved.objective.at("total") : 0.0);
-  run.summary = head + net.headline + tolerance_lines + solution->headline + MeasureHeadline(solved) +
+  std::string validity_lines = "validity: every check passed\n";
+  if (!validity.Warnings().empty()) validity_lines = "validity: valid; warnings:\n" + validity.Warnings();
+  if (solved.restored_valid) {
+    validity_lines += "the last round was not valid: the output is round " +
+                      std::to_string(solved.output_round) + ", the last valid one\n";
+  }
+  if (run.exit_code == 4) {
+    validity_lines += "WARNING: a tolerance was not met (exit 4): the result is valid and written\n";
+  }
+  run.summary = head + net.headline + tolerance_lines + validity_lines + solution->headline +
+                MeasureHeadline(solved) +
                 objective + FormatMetrics(before, &after, scale) +
                 FormatAnalysis(extra_before, &extra_after, scale);
   return run;
@@ -254,7 +288,23 @@ RunResult MeasureFiles(const std::string& mesh_path, const std::string& referenc
     metrics = ComputeMetrics(mesh, &reference, same ? &reference_mesh : nullptr);
   }
   const AnalysisRows analysis = Analyse(mesh, ApplicableAnalyses(mesh));
-  run.report = {{"archgeo", "measure"},
+  // With a reference of the same topology (an output and its input): the
+  // validity checks of `archgeo solve` (default limits).
+  std::string validity_text;
+  nlohmann::json validity_json;
+  if (!reference_path.empty()) {
+    const Mesh input = ReadMesh(reference_path);
+    if (input.number_of_vertices() == mesh.number_of_vertices() &&
+        input.number_of_faces() == mesh.number_of_faces()) {
+      const Validity v = CheckValidity(mesh, &input, ValidityLimits{}, true);
+      validity_json = v.ToJson();
+      validity_text = v.valid() ? "validity against the reference: every hard check passed\n"
+                                : "validity against the reference: NOT valid\n" + v.Reason();
+      if (!v.Warnings().empty()) validity_text += "warnings:\n" + v.Warnings();
+    }
+  }
+  run.report = {{"schema_version", kReportSchemaVersion},
+                {"archgeo", "measure"},
                 {"mesh", mesh_path},
                 {"reference", reference_path},
                 {"units", {{"lengths", "file units"},
@@ -262,8 +312,9 @@ RunResult MeasureFiles(const std::string& mesh_path, const std::string& referenc
                            {"angles", "degrees"}}},
                 {"metrics", MetricsToJson(metrics, metrics.bbox_diagonal)}};
   AnalysisToJson(analysis, metrics.bbox_diagonal, run.report["metrics"]);
+  if (!validity_json.is_null()) run.report["validity"] = validity_json;
   run.summary = FormatMetrics(metrics, nullptr, metrics.bbox_diagonal) +
-                FormatAnalysis(analysis, nullptr, metrics.bbox_diagonal);
+                FormatAnalysis(analysis, nullptr, metrics.bbox_diagonal) + validity_text;
   return run;
 }
 

@@ -12,8 +12,15 @@
 
 namespace archgeo {
 
+// The version of the JSON report's layout (described in README.md):
+// raised whenever a key changes meaning or moves.
+inline constexpr int kReportSchemaVersion = 1;
+
 struct RunResult {
-  int exit_code = 0;       // 0 success, 3 no usable solution (bad input throws InputError)
+  // 0: a valid result, every tolerance met; 4: a valid result written, a
+  // tolerance missed; 3: no usable or no valid result, nothing written (bad
+  // input throws InputError: exit 2).
+  int exit_code = 0;
   nlohmann::json report;   // the JSON run report (also written to output.report)
   std::string summary;     // human-readable summary for the terminal
 };

@@ -46,6 +46,35 @@ std::vector<Key> CommonKeys(const ProblemDecl& d) {
                            {"loop", "sqrt3", "catmull_clark", "doo_sabin"},
                            "loop, sqrt3 (triangle meshes), catmull_clark, doo_sabin (any mesh); "
                            "Loop and Catmull-Clark keep vertex ids"));
+  keys.push_back(IntegerKey("limits.max_vertices", 50000000, 1, 2000000000,
+                            "refuse input meshes with more vertices (raise it for bigger meshes)"));
+  keys.push_back(IntegerKey("limits.max_faces", 50000000, 1, 2000000000,
+                            "refuse input meshes with more faces"));
+  keys.push_back(IntegerKey("limits.max_face_degree", 1000, 3, 1000000,
+                            "refuse faces with more vertices"));
+  keys.push_back(IntegerKey("limits.max_file_bytes", 8589934592LL, 1, 1LL << 50,
+                            "refuse input files larger than this (they are read whole)"));
+  keys.push_back(IntegerKey("limits.max_subdivided_faces", 20000000, 1, 2000000000,
+                            "refuse a multiresolution level with more faces"));
+  keys.push_back(NumberKey("validity.max_reflex_degrees", 10, 0, 180,
+                           "a panel corner bent inward by more than this makes the result "
+                           "invalid (unless the input's was)"));
+  keys.push_back(NumberKey("validity.max_flip_degrees", 90, 0, 180,
+                           "a face normal turned by more than this against the input's is a fold"));
+  keys.push_back(NumberKey("validity.min_edge_relative", 0.1, 0, 1,
+                           "an edge shorter than this × the input's mean edge length (and than "
+                           "half its own input length) has collapsed"));
+  keys.push_back(NumberKey("validity.max_crease_increase_degrees", 30, 0, 180,
+                           "an edge whose dihedral angle grew by more than this is a new crease"));
+  keys.push_back(NumberKey("validity.min_corner_degrees", 5, 0, 90,
+                           "warning: panel corners below this (where the input had none)"));
+  keys.push_back(NumberKey("validity.max_aspect", 20, 1, 1e6,
+                           "warning: faces whose longest side exceeds this × their shortest"));
+  keys.push_back(BoolKey("validity.keep_last_valid", true,
+                         "when the last round is not valid, the output is the last valid round "
+                         "(said in the report); false: such a result is not written (exit 3)"));
+  keys.push_back(BoolKey("validity.self_intersections", true,
+                         "check the result's surface for self-intersections (CGAL)"));
   keys.push_back(PathKey("output.mesh", Type::kOutputPath,
                          "the optimised mesh (.obj, .off, .ply; PLY gets face colours); "
                          "empty: not written"));

@@ -157,6 +157,20 @@ std::unique_ptr<Solution> Solve(const ProblemSpec& spec, const Mesh& mesh, const
                   scheme + " subdivision needs a triangle mesh; " + spec.mesh() +
                       " has other faces (use catmull_clark or doo_sabin)");
   }
+  // Each multiresolution level multiplies the faces (3× for sqrt3, about 4×
+  // for the others): refuse levels beyond limits.max_subdivided_faces before
+  // any work.
+  double faces = double(input.number_of_faces());
+  for (int level = 1; level <= levels; ++level) {
+    faces *= scheme == "sqrt3" ? 3 : 4;
+    if (faces > double(s.Integer("limits.max_subdivided_faces"))) {
+      throw s.Error("multiresolution.levels",
+                    "level " + std::to_string(level) + " would have about " +
+                        std::to_string((long long)faces) +
+                        " faces, more than limits.max_subdivided_faces (" +
+                        std::to_string(s.Integer("limits.max_subdivided_faces")) + ")");
+    }
+  }
   // Fixed vertex ids name input vertices, or the net's when the problem
   // makes its own input (there is no input mesh then).
   const bool ids_of_input = sol->net.derived && FixedByIds(s) && !d.makes_input;

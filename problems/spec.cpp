@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <map>
 #include <set>
@@ -15,6 +16,7 @@
 #include "core/solver_options.h"
 #include "energies/registry.h"
 #include "mesh/input_error.h"
+#include "mesh/input_file.h"
 #include "problems/custom.h"
 #include "problems/registry.h"
 #include "problems/schema.h"
@@ -274,18 +276,9 @@ std::string ApplyOverride(YAML::Node& root, const std::string& assignment) {
   return key;
 }
 
-YAML::Node Load(const std::string& path) {
-  struct stat info;
-  if (stat(path.c_str(), &info) != 0) {
-    throw InputError(path, 0, "", "cannot open the problem spec: " + std::string(std::strerror(errno)));
-  }
-  if (!S_ISREG(info.st_mode)) {
-    throw InputError(path, 0, "", "the problem spec is not a regular file");
-  }
-  std::ifstream in(path);
-  if (!in) throw InputError(path, 0, "", "cannot open the problem spec");
+YAML::Node ParseYaml(const std::string& text, const std::string& path) {
   try {
-    YAML::Node root = YAML::Load(in);
+    YAML::Node root = YAML::Load(text);
     if (root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
     return root;
   } catch (const YAML::ParserException& e) {
@@ -293,6 +286,11 @@ YAML::Node Load(const std::string& path) {
   } catch (const YAML::Exception& e) {
     throw InputError(path, 0, "", "malformed YAML: " + e.msg);
   }
+}
+
+YAML::Node Load(const std::string& path) {
+  // Regular files only (a FIFO or device would block or never end), at most 1 MiB.
+  return ParseYaml(ReadInputFile(path, "", std::uint64_t{1} << 20, ""), path);
 }
 
 }  // namespace
@@ -374,22 +372,29 @@ ProblemSpec Parse(YAML::Node root, const std::string& path,
 
 }  // namespace
 
+namespace {
+
+// yaml-cpp throws its own exceptions for structures the reader does not
+// expect (e.g. a lookup in a mapping whose keys are not scalars): those are
+// input errors too.
+ProblemSpec Guarded(const std::function<ProblemSpec()>& read, const std::string& path) {
+  try {
+    return read();
+  } catch (const YAML::Exception& e) {
+    throw InputError(path, e.mark.line >= 0 ? e.mark.line + 1 : 0, "",
+                     "unexpected YAML structure: " + e.msg);
+  }
+}
+
+}  // namespace
+
 ProblemSpec ReadSpec(const std::string& path, const std::vector<std::string>& overrides) {
-  return Parse(Load(path), path, overrides, true);
+  return Guarded([&] { return Parse(Load(path), path, overrides, true); }, path);
 }
 
 ProblemSpec ParseSpec(const std::string& yaml, const std::string& path,
                       const std::vector<std::string>& overrides) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml);
-  } catch (const YAML::ParserException& e) {
-    throw InputError(path, e.mark.line >= 0 ? e.mark.line + 1 : 0, "", "malformed YAML: " + e.msg);
-  } catch (const YAML::Exception& e) {
-    throw InputError(path, 0, "", "malformed YAML: " + e.msg);
-  }
-  if (root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
-  return Parse(root, path, overrides, false);
+  return Guarded([&] { return Parse(ParseYaml(yaml, path), path, overrides, false); }, path);
 }
 
 }  // namespace archgeo

@@ -62,6 +62,7 @@ class ScriptedModel : public Model {
     return std::abs(a.at(0) - b.at(0));
   }
   bool Finite() const override { return std::isfinite(SaveState()[0]); }
+  std::string Invalid() override { return Finite() ? "" : "finite"; }
   HookContext& hooks() override { return hooks_; }
 
  private:

@@ -9,8 +9,9 @@
 //   archgeo darboux NET OUT.ply [--c C] [--minus] [--projective 16 numbers]
 //                        [--samples N] [--isophotes DEG] [--direction X Y Z] [--rulings R.obj]
 //
-// Exit codes: 0 success, 2 bad input (file, YAML, argument), 3 the solver
-// found no usable solution, 1 an internal error.
+// Exit codes: 0 a valid result with every tolerance met, 4 a valid result
+// written with a tolerance missed, 3 no usable or no valid result (nothing
+// written), 2 bad input (file, YAML, argument), 1 an internal error.
 #include <CLI/CLI.hpp>
 #include <glog/logging.h>
 
@@ -21,6 +22,7 @@
 #include "mesh/output_files.h"
 #include "problems/darboux.h"
 #include "problems/generate.h"
+#include "energies/registry.h"
 #include "problems/registry.h"
 #include "problems/run.h"
 #include "problems/schema.h"
@@ -36,7 +38,7 @@ int Solve(const std::string& spec_path, const std::vector<std::string>& override
   if (!quiet) progress = [](const std::string& line) { std::cerr << line << "\n"; };
   const archgeo::RunResult run = archgeo::RunSpec(spec, progress);
   std::cout << run.summary;
-  if (run.exit_code == 0) {
+  if (run.exit_code == 0 || run.exit_code == 4) {
     for (const archgeo::Key& k : spec.settings.schema().keys()) {
       if (k.type == archgeo::Type::kOutputPath && !spec.settings.String(k.name).empty()) {
         std::cout << "wrote " << spec.settings.String(k.name) << "\n";
@@ -44,6 +46,22 @@ int Solve(const std::string& spec_path, const std::vector<std::string>& override
     }
   }
   return run.exit_code;
+}
+
+// Every registered term: what `terms:` of a spec (and `problem: custom`) can name.
+int Terms() {
+  for (const archgeo::TermSpec* t : archgeo::RegisteredTerms()) {
+    std::cout << t->name << "  (energies/" << t->name << ".h)\n  " << t->summary << "\n  "
+              << t->paper << "\n  acts on: " << t->elements;
+    for (const std::string& e : t->element_choices) std::cout << " | " << e;
+    std::cout << "\n";
+    for (const archgeo::Key& k : t->options) {
+      std::cout << "  option " << k.name << " (default " << archgeo::ToText(k.fallback)
+                << "): " << k.doc << "\n";
+    }
+    std::cout << "\n";
+  }
+  return 0;
 }
 
 int Spec(const std::string& name, bool keys) {
@@ -110,6 +128,9 @@ int main(int argc, char** argv) {
                                             "principal_symmetric, hnet")
       ->required();
   spec->add_flag("--keys", keys_only, "Print the problem's own keys as a Markdown table instead");
+
+  CLI::App* terms = app.add_subcommand(
+      "terms", "List every registered term (energy): what a spec's `terms:` can name");
 
   std::string mesh_path, reference_path;
   bool json = false;
@@ -180,6 +201,7 @@ int main(int argc, char** argv) {
   try {
     if (*solve) return Solve(spec_path, overrides, quiet);
     if (*spec) return Spec(problem_name, keys_only);
+    if (*terms) return Terms();
     if (*generate) {
       std::cout << archgeo::GenerateSurface(grid_path, gen).summary;
       return 0;

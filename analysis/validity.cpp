@@ -1,0 +1,260 @@
+#include "analysis/validity.h"
+
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iterator>
+
+#include "mesh/reference.h"
+#include "mesh/vec3.h"
+
+namespace archgeo {
+namespace {
+
+constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+
+std::vector<Vec3> Corners(const Mesh& mesh, FaceIndex f) {
+  std::vector<Vec3> p;
+  for (VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+    p.push_back(ToVec3(mesh.point(v)));
+  }
+  return p;
+}
+
+Vec3 Newell(const std::vector<Vec3>& p) {
+  Vec3 n{0, 0, 0};
+  for (size_t i = 0; i < p.size(); ++i) n = Add(n, Cross(p[i], p[(i + 1) % p.size()]));
+  return Unit(n);
+}
+
+// A panel's shape in the plane of its Newell normal.
+struct Panel {
+  std::vector<double> interior;  // interior angle per corner, degrees
+  bool bow_tie = false;
+  double aspect = 1;             // longest / shortest side
+};
+
+bool Cross2(const std::array<double, 2>& a, const std::array<double, 2>& b,
+            const std::array<double, 2>& c, const std::array<double, 2>& d) {
+  auto orient = [](const std::array<double, 2>& p, const std::array<double, 2>& q,
+                   const std::array<double, 2>& r) {
+    return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+  };
+  const double o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a),
+               o4 = orient(c, d, b);
+  return ((o1 > 0) != (o2 > 0)) && ((o3 > 0) != (o4 > 0)) && o1 != 0 && o2 != 0 && o3 != 0 &&
+         o4 != 0;
+}
+
+Panel Shape(const std::vector<Vec3>& p) {
+  Panel panel;
+  const size_t k = p.size();
+  const Vec3 n = Newell(p);
+  Vec3 e1 = Sub(p[1], p[0]);
+  e1 = Unit(Sub(e1, Scale(Dot(e1, n), n)));
+  const Vec3 e2 = Cross(n, e1);
+  std::vector<std::array<double, 2>> q(k);
+  for (size_t i = 0; i < k; ++i) {
+    const Vec3 d = Sub(p[i], p[0]);
+    q[i] = {Dot(d, e1), Dot(d, e2)};
+  }
+  double area = 0;
+  for (size_t i = 0; i < k; ++i) {
+    area += q[i][0] * q[(i + 1) % k][1] - q[(i + 1) % k][0] * q[i][1];
+  }
+  const double s = area >= 0 ? 1.0 : -1.0;
+  double shortest = 1e300, longest = 0;
+  for (size_t i = 0; i < k; ++i) {
+    const auto& a = q[(i + k - 1) % k];
+    const auto& b = q[i];
+    const auto& c = q[(i + 1) % k];
+    const double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - b[0], vy = c[1] - b[1];
+    const double turn = std::atan2(s * (ux * vy - uy * vx), ux * vx + uy * vy);  // left turn > 0
+    panel.interior.push_back(180.0 - turn * kDegrees);
+    const double side = Norm(Sub(p[(i + 1) % k], p[i]));
+    shortest = std::min(shortest, side);
+    longest = std::max(longest, side);
+  }
+  panel.aspect = shortest > 0 ? longest / shortest : 1e300;
+  for (size_t i = 0; i < k && !panel.bow_tie; ++i) {
+    for (size_t j = i + 2; j < k; ++j) {
+      if ((j + 1) % k == i) continue;  // adjacent through the wrap
+      if (Cross2(q[i], q[(i + 1) % k], q[j], q[(j + 1) % k])) {
+        panel.bow_tie = true;
+        break;
+      }
+    }
+  }
+  return panel;
+}
+
+double Angle(const Vec3& a, const Vec3& b) {
+  return std::atan2(Norm(Cross(a, b)), Dot(a, b)) * kDegrees;
+}
+
+void Note(ValidityCheck& c, double value, int element, bool worse_is_larger = true) {
+  if (c.count == 0 || (worse_is_larger ? value > c.worst : value < c.worst)) {
+    c.worst = value;
+    c.example = element;
+  }
+  ++c.count;
+}
+
+size_t SelfIntersections(const Mesh& mesh) {
+  const Mesh triangles = TriangulatedCopy(mesh);
+  std::vector<std::pair<FaceIndex, FaceIndex>> pairs;
+  CGAL::Polygon_mesh_processing::self_intersections(triangles, std::back_inserter(pairs));
+  return pairs.size();
+}
+
+}  // namespace
+
+bool Validity::valid() const {
+  for (const ValidityCheck& c : checks) {
+    if (c.hard && !c.passed()) return false;
+  }
+  return true;
+}
+
+std::string Validity::Reason() const {
+  std::string text;
+  for (const ValidityCheck& c : checks) {
+    if (!c.hard || c.passed()) continue;
+    char line[256];
+    std::snprintf(line, sizeof line, "%s: %d (worst %.4g %s, limit %.4g; e.g. element %d)\n",
+                  c.name.c_str(), c.count, c.worst, c.unit.c_str(), c.limit, c.example);
+    text += line;
+  }
+  return text;
+}
+
+std::string Validity::Warnings() const {
+  std::string text;
+  for (const ValidityCheck& c : checks) {
+    if (c.hard || c.passed()) continue;
+    char line[256];
+    std::snprintf(line, sizeof line, "%s: %d (worst %.4g %s, limit %.4g)\n", c.name.c_str(),
+                  c.count, c.worst, c.unit.c_str(), c.limit);
+    text += line;
+  }
+  return text;
+}
+
+nlohmann::json Validity::ToJson() const {
+  nlohmann::json j = {{"valid", valid()}, {"checks", nlohmann::json::array()}};
+  for (const ValidityCheck& c : checks) {
+    j["checks"].push_back({{"name", c.name},
+                           {"hard", c.hard},
+                           {"passed", c.passed()},
+                           {"count", c.count},
+                           {"worst", c.worst},
+                           {"limit", c.limit},
+                           {"unit", c.unit},
+                           {"example", c.example}});
+  }
+  return j;
+}
+
+Validity CheckValidity(const Mesh& out, const Mesh* input, const ValidityLimits& limits,
+                       bool full) {
+  const bool same = input && input->number_of_vertices() == out.number_of_vertices() &&
+                    input->number_of_faces() == out.number_of_faces() &&
+                    input->number_of_edges() == out.number_of_edges();
+  const Mesh* in = same ? input : nullptr;
+  ValidityCheck finite{"finite", true, 0, 0, 0, "non-finite vertices"};
+  ValidityCheck reflex{"reflex_corners", true, 0, 0, limits.max_reflex_degrees, "degrees bent inward"};
+  ValidityCheck bow_ties{"bow_ties", true, 0, 0, 0, "self-intersecting panels"};
+  ValidityCheck flipped{"flipped_faces", true, 0, 0, limits.max_flip_degrees, "degrees turned"};
+  ValidityCheck short_edges{"short_edges", true, 0, 0, limits.min_edge_relative,
+                            "of the input's mean edge length"};
+  ValidityCheck creases{"creases", true, 0, 0, limits.max_crease_increase_degrees,
+                        "degrees of dihedral angle gained"};
+  ValidityCheck intersections{"self_intersections", true, 0, 0, 0, "intersecting face pairs"};
+  ValidityCheck small{"small_corners", false, 0, 0, limits.min_corner_degrees, "degrees"};
+  ValidityCheck aspect{"aspect", false, 0, 0, limits.max_aspect, "longest / shortest side"};
+
+  for (VertexIndex v : out.vertices()) {
+    const Point& p = out.point(v);
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z())) {
+      Note(finite, 1, int(v.idx()));
+    }
+  }
+  Validity result;
+  if (finite.count > 0) {
+    result.checks = {finite};
+    return result;
+  }
+  std::vector<Vec3> normal_out(out.number_of_faces()), normal_in;
+  if (in) normal_in.resize(in->number_of_faces());
+  for (FaceIndex f : out.faces()) {
+    const std::vector<Vec3> p = Corners(out, f);
+    normal_out[f.idx()] = Newell(p);
+    if (in) normal_in[f.idx()] = Newell(Corners(*in, f));
+    if (in && Angle(normal_out[f.idx()], normal_in[f.idx()]) > limits.max_flip_degrees) {
+      Note(flipped, Angle(normal_out[f.idx()], normal_in[f.idx()]), int(f.idx()));
+    }
+    if (p.size() < 4) continue;
+    const Panel now = Shape(p);
+    const Panel before = in ? Shape(Corners(*in, f)) : Panel{};
+    if (now.bow_tie && !before.bow_tie) Note(bow_ties, 1, int(f.idx()));
+    double worst_reflex = 0, worst_small = 180;
+    bool reflex_new = false, small_new = false;
+    for (size_t i = 0; i < now.interior.size(); ++i) {
+      const double bent = now.interior[i] - 180.0;
+      const bool was_bent = in && before.interior[i] - 180.0 > limits.max_reflex_degrees;
+      if (bent > limits.max_reflex_degrees && !was_bent) {
+        reflex_new = true;
+        worst_reflex = std::max(worst_reflex, bent);
+      }
+      const bool was_small = in && before.interior[i] < limits.min_corner_degrees;
+      if (now.interior[i] < limits.min_corner_degrees && !was_small) {
+        small_new = true;
+        worst_small = std::min(worst_small, now.interior[i]);
+      }
+    }
+    if (reflex_new) Note(reflex, worst_reflex, int(f.idx()));
+    if (small_new) Note(small, worst_small, int(f.idx()), false);
+    if (now.aspect > limits.max_aspect && !(in && before.aspect > limits.max_aspect)) {
+      Note(aspect, now.aspect, int(f.idx()));
+    }
+  }
+  double mean_in = 0;
+  const Mesh& base = in ? *in : out;
+  for (EdgeIndex e : base.edges()) {
+    mean_in += Norm(Sub(ToVec3(base.point(base.vertex(e, 0))), ToVec3(base.point(base.vertex(e, 1)))));
+  }
+  mean_in /= std::max<size_t>(1, base.number_of_edges());
+  for (EdgeIndex e : out.edges()) {
+    const double length =
+        Norm(Sub(ToVec3(out.point(out.vertex(e, 0))), ToVec3(out.point(out.vertex(e, 1)))));
+    const double length_in =
+        in ? Norm(Sub(ToVec3(in->point(in->vertex(e, 0))), ToVec3(in->point(in->vertex(e, 1)))))
+           : 1e300;
+    if (length < limits.min_edge_relative * mean_in && length < 0.5 * length_in) {
+      Note(short_edges, length / mean_in, int(e.idx()), false);
+    }
+    if (!in || out.is_border(e)) continue;
+    const FaceIndex a = out.face(out.halfedge(e, 0)), b = out.face(out.halfedge(e, 1));
+    const double now = Angle(normal_out[a.idx()], normal_out[b.idx()]);
+    const double before = Angle(normal_in[a.idx()], normal_in[b.idx()]);
+    if (now - before > limits.max_crease_increase_degrees) {
+      Note(creases, now - before, int(e.idx()));
+    }
+  }
+  result.checks = {finite, reflex, bow_ties, flipped, short_edges, creases};
+  if (full && limits.self_intersections) {
+    const size_t pairs = SelfIntersections(out);
+    if (pairs > 0 && !(input && SelfIntersections(*input) > 0)) {
+      intersections.count = int(pairs);
+      intersections.worst = double(pairs);
+    }
+    result.checks.push_back(intersections);
+  }
+  result.checks.push_back(small);
+  result.checks.push_back(aspect);
+  return result;
+}
+
+}  // namespace archgeo
