@@ -126,6 +126,11 @@ struct ProblemDecl {
   Hook init;    // per solve (and multiresolution level), after blocks are initialised
   Hook finish;  // after the last stage: details and headline for the report
   Hook write;   // write the extra outputs
+  // Optional: the problem's own hard validity checks of the current state
+  // (after every round and on the result, beside analysis/validity.h): ""
+  // when valid, else one line per failed check. E.g. a grid sliding on its
+  // surface checks its faces against the surface normal.
+  std::function<std::string(HookContext&)> invalid;
 };
 
 }  // namespace archgeo

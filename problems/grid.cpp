@@ -53,6 +53,7 @@
 // Outputs: output.mesh (the generic writer: positions and faces), and
 // output.grid (.obj with one `vt u v` per vertex, or .ply with double vertex
 // properties u, v; positions exactly x(u, v)).
+#include <Eigen/Geometry>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -283,6 +284,49 @@ void FitLength(HookContext& c) {
   }
   UpdatePositions(c);
   c.model->StateChanged();
+}
+
+// The grid's own validity check (ProblemDecl::invalid). The engine's
+// flipped-face check compares each face with the uniform grid the problem
+// made; a grid slides along its surface (a tower's grid turns around the axis
+// to undo the twist), so a face's normal turns with the surface under it
+// however sound the grid is. The grid problem compares instead each face's
+// Newell normal (positions x(u, v)) with the surface normal at its corners
+// (their sum): more than grid.max_flip_degrees apart, the face is folded
+// against the surface. (The problem's default validity.max_flip_degrees is
+// 180, i.e. the engine's check is off; a spec may set it.)
+std::string Folded(HookContext& c) {
+  const Surface& surface = SurfaceOf(c);
+  const double limit = c.settings->Number("grid.max_flip_degrees");
+  const Mesh& mesh = c.store->mesh();
+  int count = 0, example = -1;
+  double worst = 0;
+  for (FaceIndex f : mesh.faces()) {
+    Eigen::Vector3d newell = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::Zero();
+    std::vector<Eigen::Vector3d> x;
+    for (VertexIndex v : mesh.vertices_around_face(mesh.halfedge(f))) {
+      const double* p = c.store->At("uv", int(v.idx()));
+      x.push_back(surface.Point(Eigen::Vector2d(p[0], p[1])));
+      normal += surface.Normal(Eigen::Vector2d(p[0], p[1]));
+    }
+    for (size_t k = 0; k < x.size(); ++k) newell += x[k].cross(x[(k + 1) % x.size()]);
+    const double angle =
+        std::atan2(newell.cross(normal).norm(), newell.dot(normal)) * 180 / M_PI;
+    if (!(angle <= limit)) {  // NaN counts
+      ++count;
+      if (!(angle <= worst)) {
+        worst = angle;
+        example = int(f.idx());
+      }
+    }
+  }
+  if (count == 0) return "";
+  char line[200];
+  std::snprintf(line, sizeof line,
+                "grid_folded_faces: %d (worst %.1f degrees from the surface normal, limit "
+                "grid.max_flip_degrees = %g; e.g. element %d)\n",
+                count, worst, limit, example);
+  return line;
 }
 
 // L by default: the mean edge length of the initial grid [§3]; on a grid
@@ -579,6 +623,10 @@ ProblemDecl grid() {
       NumberKey("grid.fit_tolerance", 0.005, 0, 1,
                 "least squares: while an open grid reaches beyond the domain by more than this "
                 "fraction of its length, shrink L and solve again (0 = off)"),
+      NumberKey("grid.max_flip_degrees", 90, 0, 180,
+                "validity: a face whose normal is more than this from the surface normal at "
+                "its corners is folded (the result is not valid; replaces the engine's "
+                "comparison with the initial grid, see validity.max_flip_degrees)"),
       ChoiceKey("method", "least_squares", {"least_squares", "force"},
                 "least_squares (Ceres over (u, v)) or force (the paper's Listing 1)"),
       NumberKey("tolerance.mdo", 0, 0, 90, "stop when MDO (degrees) is at most this; 0 = off"),
@@ -601,7 +649,10 @@ ProblemDecl grid() {
               "clamp an open direction to the domain (the paper has no such rule; it folds)"),
       IntegerKey("force.measure_every", 10, 1, 100000000,
                  "measure (thresholds, plateau, history) every this many iterations")};
-  d.defaults = {{"schedule.outer_iterations", 8LL}, {"solver.max_num_iterations", 500LL}};
+  d.defaults = {{"schedule.outer_iterations", 8LL},
+                {"solver.max_num_iterations", 500LL},
+                {"validity.max_flip_degrees", 180.0}};  // see Folded
+  d.invalid = &Folded;
   d.output_keys = {"grid"};
   d.check = &Check;
   d.net = &Net;

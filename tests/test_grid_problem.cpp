@@ -15,7 +15,9 @@
 //      evaluation) and the round history; `archgeo measure` shows them too;
 //  (g) the force method stops on its own (stall or plateau) and on the §4
 //      thresholds, and reports its iterations;
-//  (h) bad input — an unknown surface, a grid size below 2, a closure of a
+//  (h) validity: a grid sliding along its surface is valid, a folded one is
+//      not (exit 3, nothing written);
+//  (i) bad input — an unknown surface, a grid size below 2, a closure of a
 //      non-periodic direction, a non-finite parameter — is an InputError
 //      naming the key, and through the CLI exit 2 with nothing written.
 #include <gtest/gtest.h>
@@ -316,6 +318,40 @@ TEST_F(GridFiles, TheReportHasTheMetricsBeforeAndAfterAndTheRounds) {
                 1e-4)
         << k;
   }
+}
+
+// Validity (ProblemDecl::invalid): the grid's faces are checked against the
+// surface normal, not against the uniform grid they started as.
+TEST_F(GridFiles, AGridThatSlidesAlongItsSurfaceIsValid) {
+  // The twisted tower's grid turns around the axis to undo the twist: faces
+  // end up far from where they started (their normals turn by up to ~140°),
+  // yet none is folded.
+  const ProblemSpec spec = ReadSpec(Spec(
+      "surface: {name: tower, a: 8, c: 40, z_w: 35, H: 60, twist: 5}\n"
+      "grid: {nu: 24, nv: 25, type: closed_u}\n"));
+  const RunResult run = RunSpec(spec, {});
+  ASSERT_EQ(run.exit_code, 0) << run.summary;
+  EXPECT_TRUE(run.report["validity"]["valid"].get<bool>());
+  EXPECT_TRUE(run.report["validity"]["problem"].is_null());
+  EXPECT_LT(run.report["after"]["mdo"].get<double>(), 1.43);  // the paper's Tower row
+}
+
+TEST_F(GridFiles, AFoldedGridIsNotValidAndNothingIsWritten) {
+  // The plane grid mirrored in u at the start: every face's normal points
+  // against the surface's (180°); one force iteration cannot unfold it.
+  ProblemSpec spec = ReadSpec(Spec(std::string(kSquarePlane) +
+                                   "method: force\nforce: {iterations: 1, rounds: 1}\n"));
+  auto d = std::make_shared<ProblemDecl>(*spec.declaration);
+  const Hook init = d->init;
+  d->init = [init](HookContext& c) {
+    init(c);
+    MoveGrid(c, [](const Eigen::Vector2d& uv) { return Eigen::Vector2d(10 - uv[0], uv[1]); });
+  };
+  spec.declaration = d;
+  const RunResult run = RunSpec(spec, {});
+  EXPECT_EQ(run.exit_code, 3) << run.summary;
+  EXPECT_NE(run.summary.find("grid_folded_faces: 100 "), std::string::npos) << run.summary;
+  ExpectNothingWritten();
 }
 
 TEST_F(GridFiles, TheGridFileCarriesEveryVertexsParameters) {
