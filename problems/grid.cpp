@@ -292,9 +292,25 @@ void FitLength(HookContext& c) {
 // to undo the twist), so a face's normal turns with the surface under it
 // however sound the grid is. The grid problem compares instead each face's
 // Newell normal (positions x(u, v)) with the surface normal at its corners
-// (their sum): more than grid.max_flip_degrees apart, the face is folded
+// (their sum, each in the chart of the first corner): more than grid.max_flip_degrees apart, the face is folded
 // against the surface. (The problem's default validity.max_flip_degrees is
 // 180, i.e. the engine's check is off; a spec may set it.)
+// The parameter of the same point as `uv` in the chart nearest to `near`
+// (whole periods added in the periodic directions; across a flipping u-seam
+// v is reflected, as in Surface::Wrapped). Surface normals of corners in one
+// chart agree in orientation — on the Klein bottle x_v, hence the normal,
+// changes sign across the u-seam.
+Eigen::Vector2d NearChart(const Surface& surface, Eigen::Vector2d uv, const Eigen::Vector2d& near) {
+  const ParameterDomain d = surface.Domain();
+  if (d.periodic_u) {
+    const long turns = std::lround((uv[0] - near[0]) / d.PeriodU());
+    uv[0] -= double(turns) * d.PeriodU();
+    if (d.u_seam_flips_v && turns % 2 != 0) uv[1] = d.v0 + d.v1 - uv[1];
+  }
+  if (d.periodic_v) uv[1] -= double(std::lround((uv[1] - near[1]) / d.PeriodV())) * d.PeriodV();
+  return uv;
+}
+
 std::string Folded(HookContext& c) {
   const Surface& surface = SurfaceOf(c);
   const double limit = c.settings->Number("grid.max_flip_degrees");
@@ -304,10 +320,13 @@ std::string Folded(HookContext& c) {
   for (FaceIndex f : mesh.faces()) {
     Eigen::Vector3d newell = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::Zero();
     std::vector<Eigen::Vector3d> x;
+    Eigen::Vector2d first;
     for (VertexIndex v : mesh.vertices_around_face(mesh.halfedge(f))) {
       const double* p = c.store->At("uv", int(v.idx()));
-      x.push_back(surface.Point(Eigen::Vector2d(p[0], p[1])));
-      normal += surface.Normal(Eigen::Vector2d(p[0], p[1]));
+      const Eigen::Vector2d uv(p[0], p[1]);
+      if (x.empty()) first = uv;
+      x.push_back(surface.Point(uv));
+      normal += surface.Normal(NearChart(surface, uv, first));
     }
     for (size_t k = 0; k < x.size(); ++k) newell += x[k].cross(x[(k + 1) % x.size()]);
     const double angle =

@@ -5,9 +5,9 @@
 //  (b) a sheared cylinder grid closed in u becomes orthogonal and square
 //      (MDO < 0.01°, MDE < 0.1%: a cylinder is developable, so an exactly
 //      orthogonal grid of squares exists; issue 12's bound);
-//  (c) each of grid_orthogonality, grid_equilaterality and
-//      grid_quad_equilaterality does its job alone (each test fails when its
-//      term is off);
+//  (c) each of grid_orthogonality, grid_equilaterality,
+//      grid_quad_equilaterality, grid_boundary and grid_fairness does its job
+//      (each test fails when its term is off);
 //  (d) every vertex lies on its surface to 1e-12 (file units), in the output
 //      mesh and in the output.grid file;
 //  (e) an open grid's least-squares result stays on its patch (L fitted);
@@ -192,6 +192,46 @@ TEST(GridProblem, TheQuadEquilateralityTermMakesSquares) {
   EXPECT_LT(Measure(*s, "mdo"), kCylinderMdo);
 }
 
+// The square plane grid sheared by Δu = 0.3 (v − 5): straight, evenly spaced
+// lines crossing at 73.3° (MDO 16.7°).
+void ShearPlane(HookContext& c) {
+  MoveGrid(c, [](const Eigen::Vector2d& uv) {
+    return Eigen::Vector2d(uv[0] + 0.3 * (uv[1] - 5), uv[1]);
+  });
+}
+
+TEST(GridProblem, TheBoundaryTermSquaresTheBoundaryCrossings) {
+  // Fairness keeps the lines straight and evenly spaced (the sheared grid is
+  // already fair); only the boundary term (eq. 2) turns the transversal lines
+  // at the boundary, and the straight lines carry that inwards.
+  const auto s = SolveGrid(std::string(kSquarePlane) +
+                               "terms: {grid_boundary: 1, grid_fairness: 0.3}\n",
+                           &ShearPlane);
+  ASSERT_TRUE(s->loop.usable) << s->loop.message;
+  EXPECT_GT(Before(*s, "mdo"), 16);
+  EXPECT_LT(Measure(*s, "mdo"), kCylinderMdo);
+  EXPECT_LT(Measure(*s, "ado"), kCylinderMdo);
+}
+
+TEST(GridProblem, TheFairnessTermRemovesAZigzag) {
+  // Every other interior vertex of each u-line moved by 0.2 in u: a zigzag
+  // whose central differences are those of the square grid (the orthogonality
+  // term does not see it) but whose quads are 0.8 × 1 and 1.2 × 1 (MDE =
+  // 100 (1 / 0.8 − 1) = 25%).
+  const auto s = SolveGrid(std::string(kSquarePlane) + "terms: {grid_fairness: 1}\n",
+                           [](HookContext& c) {
+                             MoveGrid(c, [](const Eigen::Vector2d& uv) {
+                               const int i = int(std::lround(uv[0]));
+                               const bool inner = i > 0 && i < 10;
+                               return Eigen::Vector2d(uv[0] + (inner && i % 2 ? 0.2 : 0), uv[1]);
+                             });
+                           });
+  ASSERT_TRUE(s->loop.usable) << s->loop.message;
+  EXPECT_NEAR(Before(*s, "mde"), 25, 1e-6);
+  EXPECT_LT(Measure(*s, "mde"), kCylinderMde);
+  EXPECT_LT(Measure(*s, "mdo"), kCylinderMdo);
+}
+
 TEST(GridProblem, EveryVertexLiesOnItsSurface) {
   const std::vector<std::string> specs = {
       "surface: {name: torus, R: 3, r: 1}\ngrid: {nu: 24, nv: 12, type: closed_both}\n",
@@ -334,6 +374,30 @@ TEST_F(GridFiles, AGridThatSlidesAlongItsSurfaceIsValid) {
   EXPECT_TRUE(run.report["validity"]["valid"].get<bool>());
   EXPECT_TRUE(run.report["validity"]["problem"].is_null());
   EXPECT_LT(run.report["after"]["mdo"].get<double>(), 1.43);  // the paper's Tower row
+}
+
+TEST_F(GridFiles, AKleinBottleGridAcrossItsFlippingSeamIsValid) {
+  // The uniform Klein bottle grid turned by 1.5 steps in u and written
+  // canonically (Surface::Wrapped): the last column of vertices now has u
+  // half a step above 0 and v reflected, so each face next to it has
+  // corners in two charts whose surface normals are opposite. None is
+  // folded (the grid is the uniform one, moved along the surface).
+  ProblemSpec spec = ReadSpec(Spec("surface: {name: klein_bottle}\n"
+                                   "grid: {nu: 36, nv: 12, type: closed_both}\n"
+                                   "method: force\nforce: {iterations: 1, rounds: 1}\n"));
+  auto d = std::make_shared<ProblemDecl>(*spec.declaration);
+  const Hook init = d->init;
+  d->init = [init](HookContext& c) {
+    init(c);
+    const Surface& surface = SurfaceOf(c);
+    MoveGrid(c, [&](const Eigen::Vector2d& uv) {
+      return surface.Wrapped(uv + Eigen::Vector2d(1.5 * 2 * M_PI / 36, 0));
+    });
+  };
+  spec.declaration = d;
+  const RunResult run = RunSpec(spec, {});
+  ASSERT_EQ(run.exit_code, 0) << run.summary;
+  EXPECT_TRUE(run.report["validity"]["problem"].is_null());
 }
 
 TEST_F(GridFiles, AFoldedGridIsNotValidAndNothingIsWritten) {
