@@ -694,11 +694,17 @@ ProblemDecl grid() {
     } else {
       st.name = "least_squares";
       st.rounds_key = "schedule.outer_iterations";
-      // Fitting (open grids): a round must converge to show how far the grid
-      // reaches, so the thresholds are then checked after each round only.
+      // The §4 thresholds (tolerance.*) stop Ceres the moment they all hold
+      // (per iteration). Fitting (open grids) adds "outside" ≤
+      // grid.fit_tolerance: with a threshold set it is watched per iteration
+      // too (the solve stops when the grid is good enough and on its patch);
+      // without one, each round converges, to show how far the grid reaches
+      // (watched alone, "outside" would stop the first iteration).
       const bool fit = s.Number("grid.fit_tolerance") > 0 && s.String("grid.type") == "open";
-      st.tolerances = Tolerances(!fit);
-      if (fit) st.tolerances.push_back({"outside", "grid.fit_tolerance"});
+      bool thresholds = false;
+      for (const char* m : kMeasures) thresholds = thresholds || s.Number(std::string("tolerance.") + m) > 0;
+      st.tolerances = Tolerances(true);
+      if (fit) st.tolerances.push_back({"outside", "grid.fit_tolerance", thresholds});
       st.before_round = &FitLength;
       st.rest_move = 1e-9;
     }
