@@ -13,7 +13,8 @@
 // eqs. 4–5) and MDE, ADE (percent, on the quad sides, eq. 6) of the whole
 // grid before and after, beside the paper's rows, with rounds/iterations,
 // wall time, how far an open grid reaches beyond its domain, whether the
-// result is valid (the run's validity checks: the grid's folded-face check),
+// result is valid (the checks of `archgeo solve`: analysis/validity.h and the
+// grid's folded-face check; else which failed),
 // and for least squares whether it is at least as good as the paper's after
 // row on all four measures and its best factor over that row.
 // The paper does not give its surfaces, grid sizes or factors: the stand-ins
@@ -30,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/validity.h"
 #include "bench_util.h"
 #include "problems/model.h"
 #include "problems/solve.h"
@@ -82,7 +84,10 @@ std::string Cells(const Measures& q) {
 
 struct Run {
   std::unique_ptr<archgeo::Solution> solution;
-  std::string invalid;  // the problem's validity check on the result ("" = valid)
+  // "" when the result passes the checks of `archgeo solve` (analysis/
+  // validity.h against the initial grid, with the grid's limits, and the
+  // grid's own folded-face check), else the names of the failed checks.
+  std::string invalid;
   double seconds = 0;
 };
 
@@ -93,7 +98,15 @@ Run SolveExample(const std::string& example, const std::vector<std::string>& ove
   const auto start = bench::Clock::now();
   r.solution = archgeo::Solve(spec, archgeo::Mesh(), nullptr, {});
   r.seconds = bench::Seconds(start);
-  if (spec.declaration->invalid) r.invalid = spec.declaration->invalid(r.solution->hooks);
+  const archgeo::Validity v = archgeo::CheckValidity(
+      r.solution->output, &r.solution->input, archgeo::LimitsOf(spec.settings), true);
+  for (const archgeo::ValidityCheck& c : v.checks) {
+    if (c.hard && !c.passed()) r.invalid += (r.invalid.empty() ? "" : ", ") + c.name;
+  }
+  if (spec.declaration->invalid && !spec.declaration->invalid(r.solution->hooks).empty()) {
+    r.invalid += std::string(r.invalid.empty() ? "" : ", ") + "grid_folded_faces";
+  }
+  if (!r.solution->loop.usable) r.invalid = "no usable solution";
   return r;
 }
 
@@ -178,7 +191,7 @@ int main(int argc, char** argv) {
       table.Add({"", "", "", force ? "ours force" : "ours least squares", Cells(after),
                  iterations, s.loop.stop, Fmt("%.2f s", r.seconds),
                  Outside(s.details.at("outside_domain")),
-                 s.loop.usable && r.invalid.empty() ? "yes" : "NO",
+                 r.invalid.empty() ? "yes" : "NO: " + r.invalid,
                  force ? "" : Versus(after, scene.paper.back())});
     }
     for (const PaperRow& row : scene.paper) {

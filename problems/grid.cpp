@@ -292,14 +292,18 @@ void FitLength(HookContext& c) {
 // to undo the twist), so a face's normal turns with the surface under it
 // however sound the grid is. The grid problem compares instead each face's
 // Newell normal (positions x(u, v)) with the surface normal at its corners
-// (their sum, each in the chart of the first corner): more than grid.max_flip_degrees apart, the face is folded
+// (their sum, each in the chart of the first corner, and that one in the
+// chart nearest its initial parameter — the charts in which the uniform
+// grid's faces are oriented like the surface; the force method wraps (u, v)
+// into the domain, and on a non-orientable surface a face wrapped across
+// the flipping seam sees reversed normals): more than grid.max_flip_degrees apart, the face is folded
 // against the surface. (The problem's default validity.max_flip_degrees is
 // 180, i.e. the engine's check is off; a spec may set it.)
 // The parameter of the same point as `uv` in the chart nearest to `near`
 // (whole periods added in the periodic directions; across a flipping u-seam
-// v is reflected, as in Surface::Wrapped). Surface normals of corners in one
-// chart agree in orientation — on the Klein bottle x_v, hence the normal,
-// changes sign across the u-seam.
+// v is reflected, as in Surface::Wrapped). On the Klein bottle x_v, hence
+// the normal, changes sign across the u-seam: normals are compared in one
+// chart.
 Eigen::Vector2d NearChart(const Surface& surface, Eigen::Vector2d uv, const Eigen::Vector2d& near) {
   const ParameterDomain d = surface.Domain();
   if (d.periodic_u) {
@@ -315,6 +319,7 @@ std::string Folded(HookContext& c) {
   const Surface& surface = SurfaceOf(c);
   const double limit = c.settings->Number("grid.max_flip_degrees");
   const Mesh& mesh = c.store->mesh();
+  const std::vector<Eigen::Vector2d>& initial = c.State<GridState>("grid").grid.uv;
   int count = 0, example = -1;
   double worst = 0;
   for (FaceIndex f : mesh.faces()) {
@@ -324,7 +329,9 @@ std::string Folded(HookContext& c) {
     for (VertexIndex v : mesh.vertices_around_face(mesh.halfedge(f))) {
       const double* p = c.store->At("uv", int(v.idx()));
       const Eigen::Vector2d uv(p[0], p[1]);
-      if (x.empty()) first = uv;
+      // The first corner in the chart nearest its initial parameter, the
+      // others in the chart of the first.
+      if (x.empty()) first = NearChart(surface, uv, initial[v.idx()]);
       x.push_back(surface.Point(uv));
       normal += surface.Normal(NearChart(surface, uv, first));
     }

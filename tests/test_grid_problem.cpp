@@ -377,11 +377,12 @@ TEST_F(GridFiles, AGridThatSlidesAlongItsSurfaceIsValid) {
 }
 
 TEST_F(GridFiles, AKleinBottleGridAcrossItsFlippingSeamIsValid) {
-  // The uniform Klein bottle grid turned by 1.5 steps in u and written
-  // canonically (Surface::Wrapped): the last column of vertices now has u
-  // half a step above 0 and v reflected, so each face next to it has
-  // corners in two charts whose surface normals are opposite. None is
-  // folded (the grid is the uniform one, moved along the surface).
+  // The uniform Klein bottle grid turned by 2.5 steps in u and written
+  // canonically (Surface::Wrapped), as the force method writes it: the last
+  // two columns of vertices now have u just above 0 and v reflected, so the
+  // faces between them lie wholly in the reflected chart and those next to
+  // them have corners in both; the surface normals there are reversed. None
+  // is folded (the grid is the uniform one, moved along the surface).
   ProblemSpec spec = ReadSpec(Spec("surface: {name: klein_bottle}\n"
                                    "grid: {nu: 36, nv: 12, type: closed_both}\n"
                                    "method: force\nforce: {iterations: 1, rounds: 1}\n"));
@@ -391,7 +392,7 @@ TEST_F(GridFiles, AKleinBottleGridAcrossItsFlippingSeamIsValid) {
     init(c);
     const Surface& surface = SurfaceOf(c);
     MoveGrid(c, [&](const Eigen::Vector2d& uv) {
-      return surface.Wrapped(uv + Eigen::Vector2d(1.5 * 2 * M_PI / 36, 0));
+      return surface.Wrapped(uv + Eigen::Vector2d(2.5 * 2 * M_PI / 36, 0));
     });
   };
   spec.declaration = d;
