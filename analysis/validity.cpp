@@ -157,6 +157,20 @@ nlohmann::json Validity::ToJson() const {
   return j;
 }
 
+PanelShapes MeasurePanelShapes(const Mesh& mesh) {
+  PanelShapes shapes;
+  for (FaceIndex f : mesh.faces()) {
+    if (mesh.degree(f) < 4) continue;
+    ++shapes.panels;
+    const Panel panel = Shape(Corners(mesh, f));
+    double worst = 0;
+    for (double interior : panel.interior) worst = std::max(worst, interior - 180.0);
+    if (worst > 0 || panel.bow_tie) ++shapes.nonconvex;
+    shapes.worst_reflex_degrees = std::max(shapes.worst_reflex_degrees, worst);
+  }
+  return shapes;
+}
+
 Validity CheckValidity(const Mesh& out, const Mesh* input, const ValidityLimits& limits,
                        bool full) {
   const bool same = input && input->number_of_vertices() == out.number_of_vertices() &&

@@ -74,4 +74,14 @@ struct Validity {
 Validity CheckValidity(const Mesh& output, const Mesh* input, const ValidityLimits& limits,
                        bool full);
 
+// Absolute panel shape, whatever the input: faces with more than three sides
+// that are not convex in the plane of their Newell normal (a corner bent
+// inward, or a bow-tie), and the worst inward bend in degrees (0 if none).
+struct PanelShapes {
+  int panels = 0;     // faces with more than three sides
+  int nonconvex = 0;
+  double worst_reflex_degrees = 0;
+};
+PanelShapes MeasurePanelShapes(const Mesh& mesh);
+
 }  // namespace archgeo

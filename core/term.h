@@ -80,6 +80,9 @@ struct TermSpec {
                                     // are added element by element (residual order)
   const char* drives = "";          // the measure it drives to 0 (custom problems offer
                                     // tolerance.<measure> and continue the term's weight)
+  bool barrier = false;             // a one-sided validity barrier (zero unless violated):
+                                    // continued with the goal terms of its stage so that
+                                    // it stays stronger than them
   bool needs_projection = false;    // reads the projection onto the reference
   bool supports_band = false;       // honours TermContext::band (continuation.band)
   TermAdder add = nullptr;
@@ -121,6 +124,21 @@ class TermContext {
   // An object the problem shares with its terms (its HookContext state
   // `name`, e.g. the parametric surface of a grid); empty if none.
   virtual const std::any& Shared(const std::string& name) const = 0;
+  // Maps `width` values given in the file's units and axes (e.g. a load
+  // direction or a length in a term option) to the canonical frame, as a
+  // block of that FrameMap would be (kDirection rotates, kLength divides by
+  // the input's mean edge length, kVector does both, ...).
+  virtual void FromFile(FrameMap map, double* values, int width) const = 0;
+  // Polylines in the canonical frame: those of the OBJ file (`l` records,
+  // mesh/curves.h ReadPolylines) named by the term's option `option` (a
+  // kInputPath), or, when that option is empty, the boundary loops of the
+  // reference surface (longest first). Read once per solve; throws
+  // InputError naming the option when there is no curve.
+  struct Curve {
+    std::vector<double> xyz;  // x y z per point; consecutive points distinct
+    bool closed = false;      // the last point joins the first (not repeated)
+  };
+  virtual const std::vector<Curve>& Curves(const std::string& option) = 0;
 
   // The term's options ("terms.<name>.<option>").
   virtual const Settings& settings() const = 0;

@@ -40,3 +40,38 @@ ceres::CostFunction* MakeWeightedLaplacian(const std::vector<double>& weights,
 }
 
 }  // namespace archgeo
+
+// --- term `laplacian` ----------------------------------------------------------
+#include "core/term.h"
+
+namespace archgeo::terms {
+namespace {
+
+// (v; w_1 … w_n): r = (barycentre of the w_j − v)/L, L = 1; free v only.
+void AddLaplacian(TermContext& c, size_t i) {
+  const int* s = c.elements->Vertices(i);
+  const int n = c.elements->Count(i) - 1;
+  if (n < 1 || c.Fixed(s[0])) return;  // a support's umbrella is a reaction, not a condition
+  std::vector<double*> blocks;
+  for (int j = 0; j <= n; ++j) blocks.push_back(c.Position(s[j]));
+  c.Add(MakeLaplacian(n, 1.0), blocks);
+}
+
+}  // namespace
+
+const TermSpec& laplacian() {
+  static const TermSpec spec = [] {
+    TermSpec t;
+    t.name = "laplacian";
+    t.summary = "Laplacian smoothing: each vertex towards the barycentre of its neighbours "
+                "(select: interior keeps the boundary from shrinking)";
+    t.paper = "[Gebreiter 2012, §10.1, §11.2.2; Taubin 1995 umbrella operator]";
+    t.elements = "one_rings";
+    t.element_choices = {"fans", "stars"};
+    t.add = &AddLaplacian;
+    return t;
+  }();
+  return spec;
+}
+
+}  // namespace archgeo::terms

@@ -72,3 +72,54 @@ std::vector<double> CotangentWeights(const double* v,
 }
 
 }  // namespace archgeo
+
+// --- term `mean_curvature_flow` ------------------------------------------------
+#include "core/term.h"
+#include "energies/laplacian.h"
+
+namespace archgeo::terms {
+namespace {
+
+// Fan (v; w_1 … w_n), closed unless kOpen; free v only. frozen: the
+// Laplacian with the cotangent weights at the start of the round; live:
+// −∇_v(fan area)/L with the weights recomputed inside the functor.
+void AddMeanCurvatureFlow(TermContext& c, size_t i) {
+  const int* s = c.elements->Vertices(i);
+  const int n = c.elements->Count(i) - 1;
+  const bool closed = !c.elements->Has(i, kOpen);
+  // A support's area gradient is a reaction, not a condition (at a fixed
+  // boundary vertex it never vanishes).
+  if (n < (closed ? 3 : 2) || c.Fixed(s[0])) return;
+  std::vector<double*> blocks;
+  for (int j = 0; j <= n; ++j) blocks.push_back(c.Position(s[j]));
+  if (c.String("form") == "live") {
+    c.Add(MakeMeanCurvatureFlow(n, closed, 1.0), blocks);
+    return;
+  }
+  std::vector<const double*> ring;
+  for (int j = 1; j <= n; ++j) ring.push_back(c.Previous(s[j]));
+  c.Add(MakeWeightedLaplacian(CotangentWeights(c.Previous(s[0]), ring, closed), 1.0), blocks);
+}
+
+}  // namespace
+
+const TermSpec& mean_curvature_flow() {
+  static const TermSpec spec = [] {
+    TermSpec t;
+    t.name = "mean_curvature_flow";
+    t.summary = "mean-curvature flow (area gradient) of triangle fans: towards a minimal "
+                "surface with the boundary held";
+    t.paper = "[Gebreiter 2012, §10.1 curvature operators; Pinkall & Polthier 1993; Desbrun "
+              "et al. 1999, eq. 7]";
+    t.elements = "triangle_fans";
+    t.options = {ChoiceKey("form", "frozen", {"frozen", "live"},
+                           "frozen: cotangent weights of the round's start (one linear step per "
+                           "round, robust); live: the area gradient with its weights "
+                           "differentiated (combine with `step`: alone it can stall)")};
+    t.add = &AddMeanCurvatureFlow;
+    return t;
+  }();
+  return spec;
+}
+
+}  // namespace archgeo::terms

@@ -36,10 +36,15 @@
 // and the manifold clamps t to [0, Λ] (a vertex stops at the curve's end).
 //
 // Non-smoothness: C is continuous but its tangent jumps at every polyline
-// vertex by the polyline's turning angle. The manifold's Jacobian
-// (PlusJacobian, and the soft residual's ∂C/∂t) is the unit direction of the
-// segment at t (the forward segment at a vertex); a step that crosses a
-// vertex is still evaluated exactly on the polyline, only the linear model
+// vertex by the polyline's turning angle. The soft residual's ∂C/∂t is the
+// unit direction of the segment at t (the forward segment at a vertex). The
+// manifold's Jacobian (PlusJacobian) is the same inside a segment and, at a
+// polyline vertex (within 1e-12 Λ), the unit bisector of the two segments
+// (the central difference of C, normalised): with the forward direction only,
+// a vertex at a right-angled corner would see no gradient towards the
+// segment behind it and could not move back (a vertex sitting on a corner is
+// the start of every run on a mesh's own boundary loop). A step that crosses
+// a vertex is still evaluated exactly on the polyline, only the linear model
 // is off, which the trust region absorbs. A vertex whose optimum is a corner
 // of the polyline (a corner of the perimeter) stays there. A smooth design
 // curve given by few points should be resampled first (mesh/curves.h
@@ -102,6 +107,10 @@ class CurvePolyline {
   int Segment(double t) const;
   // Unit direction of Segment(t).
   Eigen::Vector3d Tangent(double t) const;
+  // The manifold's direction at t: Tangent(t) inside a segment; at a knot a_i
+  // of two segments (|Wrap(t) − a_i| ≤ 1e-12 Λ; an open curve's ends excluded)
+  // the unit bisector of their directions (Tangent(t) if they are opposite).
+  Eigen::Vector3d CentralTangent(double t) const;
   // Arc length of the point of the polyline closest to x (3 doubles), in
   // [0, Λ] (open) or [0, Λ) (closed); the first segment wins ties. Linear in
   // the number of segments.

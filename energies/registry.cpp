@@ -5,8 +5,11 @@
 #define ARCHGEO_TERMS(X)       \
   X(anchor)                    \
   X(anet_planarity)            \
+  X(bending)                   \
   X(boundary_proximity)        \
   X(co_spherical)              \
+  X(conical)                   \
+  X(convexity)                 \
   X(dihedral_energy)           \
   X(direction_dirichlet)       \
   X(displacement_guard)        \
@@ -19,12 +22,29 @@
   X(grid_orthogonality)        \
   X(grid_quad_equilaterality)  \
   X(handles)                   \
+  X(laplacian)                 \
+  X(level_set_alignment)       \
+  X(level_set_branch_point)    \
+  X(level_set_conjugacy)       \
+  X(level_set_jump)            \
+  X(level_set_normalised)      \
+  X(load)                      \
+  X(mean_curvature_flow)       \
+  X(min_edge_length)           \
+  X(on_curve)                  \
   X(pq_diagonal)               \
   X(principal_strip)           \
   X(proximity)                 \
   X(saddle_sign)               \
+  X(shear)                     \
+  X(spring)                    \
   X(step)                      \
   X(tangent_plane)             \
+  X(tcd_dirichlet)             \
+  X(tcd_prescribed_direction)  \
+  X(tcd_singularity_avoidance) \
+  X(tcd_singularity_placement) \
+  X(tcd_transversality)        \
   X(total_absolute_curvature)
 
 namespace archgeo {

@@ -5,6 +5,8 @@
 #include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
 
+#include "core/term.h"
+
 namespace archgeo {
 
 ceres::CostFunction* MakeTcdPrescribedDirection(const double m[3], const double direction[2]) {
@@ -21,4 +23,36 @@ ceres::CostFunction* MakeTcdPrescribedDirection(const double m[3], const double 
       new TcdPrescribedDirection(point, line));
 }
 
+
+namespace terms {
+namespace {
+
+// Element (tcd_prescribed): a face with a prescribed direction (`face`);
+// data: m11, m12, m22 of M_f, the direction (2) in the face frame, a factor
+// on the term's weight (e.g. lower for boundary tangents than for a user's
+// directions); the problem only lists faces where TcdPrescribedLine succeeds.
+void AddTcdPrescribedDirection(TermContext& c, size_t i) {
+  const double* d = c.elements->Data(i);
+  if (d[5] <= 0.0) return;
+  c.Add(MakeTcdPrescribedDirection(d, d + 3), {c.Block("z_n", c.elements->face[i])}, nullptr,
+        c.weight * d[5]);
+}
+
+}  // namespace
+
+const TermSpec& tcd_prescribed_direction() {
+  static const TermSpec spec = [] {
+    TermSpec t;
+    t.name = "tcd_prescribed_direction";
+    t.summary = "a prescribed conjugate direction in chosen faces (distance of z_N from its line)";
+    t.paper = "[Zadravec 2010, §4, Prop. 2]";
+    t.elements = "tcd_prescribed";
+    t.reads = {"z_n"};
+    t.add = &AddTcdPrescribedDirection;
+    return t;
+  }();
+  return spec;
+}
+
+}  // namespace terms
 }  // namespace archgeo

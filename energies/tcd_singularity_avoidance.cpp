@@ -5,6 +5,8 @@
 #include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
 
+#include "core/term.h"
+
 namespace archgeo {
 
 ceres::CostFunction* MakeTcdSingularityAvoidance(const double z_m[2], double radius) {
@@ -17,4 +19,36 @@ ceres::CostFunction* MakeTcdSingularityAvoidance(const double z_m[2], double rad
       new TcdSingularityAvoidance(z_m, radius));
 }
 
+
+namespace terms {
+namespace {
+
+// Element (tcd_faces): a face (`face`); data: z_M (2), 1 if z_M is finite
+// else 0. Faces with z_M at infinity get no residual (Ψ = 0 there).
+void AddTcdSingularityAvoidance(TermContext& c, size_t i) {
+  const double* d = c.elements->Data(i);
+  if (d[2] == 0.0) return;
+  c.Add(MakeTcdSingularityAvoidance(d, c.Number("radius")),
+        {c.Block("z_n", c.elements->face[i])});
+}
+
+}  // namespace
+
+const TermSpec& tcd_singularity_avoidance() {
+  static const TermSpec spec = [] {
+    TermSpec t;
+    t.name = "tcd_singularity_avoidance";
+    t.summary = "discourages singularities of a TCD field: Ψ(‖z_N − z_M‖/ρ) per face";
+    t.paper = "[Zadravec 2010, §4, Ψ]";
+    t.elements = "tcd_faces";
+    t.reads = {"z_n"};
+    t.options = {NumberKey("radius", 1.0, 1e-6, 1e6,
+                           "ρ: Ψ acts where ‖z_N − z_M‖ < ρ (the auxiliary circle has radius 1)")};
+    t.add = &AddTcdSingularityAvoidance;
+    return t;
+  }();
+  return spec;
+}
+
+}  // namespace terms
 }  // namespace archgeo

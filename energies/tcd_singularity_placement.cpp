@@ -5,6 +5,8 @@
 #include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
 
+#include "core/term.h"
+
 namespace archgeo {
 
 ceres::CostFunction* MakeTcdSingularityPlacement(const double z_m[2]) {
@@ -15,4 +17,31 @@ ceres::CostFunction* MakeTcdSingularityPlacement(const double z_m[2]) {
       new TcdSingularityPlacement(z_m));
 }
 
+
+namespace terms {
+namespace {
+
+// Element (tcd_placements): a face chosen to hold a singularity (`face`);
+// data: z_M (2, finite).
+void AddTcdSingularityPlacement(TermContext& c, size_t i) {
+  c.Add(MakeTcdSingularityPlacement(c.elements->Data(i)), {c.Block("z_n", c.elements->face[i])});
+}
+
+}  // namespace
+
+const TermSpec& tcd_singularity_placement() {
+  static const TermSpec spec = [] {
+    TermSpec t;
+    t.name = "tcd_singularity_placement";
+    t.summary = "places a singularity of a TCD field in a chosen face: z_N = z_M";
+    t.paper = "[Zadravec 2010, §4]";
+    t.elements = "tcd_placements";
+    t.reads = {"z_n"};
+    t.add = &AddTcdSingularityPlacement;
+    return t;
+  }();
+  return spec;
+}
+
+}  // namespace terms
 }  // namespace archgeo

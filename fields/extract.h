@@ -53,7 +53,14 @@
 //     with a straight edge, keeping only corner vertices of the boundary.
 //  6. Clean-up: output vertices joined by an edge shorter than merge_fraction
 //     times the median edge length are merged (boundary vertices keep their
-//     position); then the polygon soup becomes a CGAL Surface_mesh
+//     position); an interior vertex joined to a boundary vertex by an edge
+//     shorter than boundary_snap_fraction times the median is moved onto the
+//     nearest such vertex (a level crossing just inside the boundary: the
+//     small triangle it cuts off disappears); a boundary edge shorter than
+//     half that is collapsed (a corner keeps its place, else the midpoint);
+//     a boundary vertex then used by a
+//     single face with more than four vertices (not a boundary corner) is
+//     dissolved from it; then the polygon soup becomes a CGAL Surface_mesh
 //     (PMP::polygon_soup_to_polygon_mesh; non-manifold vertices are
 //     duplicated by PMP::orient_polygon_soup and counted).
 //
@@ -91,6 +98,11 @@ struct ExtractOptions {
   double jump_tolerance = 0.05;
   // Values within this (in spacings) of an integer are set to it.
   double snap_tolerance = 1e-9;
+  // An interior vertex joined to a boundary vertex by an edge shorter than
+  // this fraction of the median edge length is moved onto it (step 6): the
+  // small triangle a level crossing near the boundary cuts off disappears and
+  // its neighbours become quads. 0: off.
+  double boundary_snap_fraction = 0.0;
 };
 
 struct Extraction {
@@ -105,7 +117,10 @@ struct Extraction {
   std::vector<FaceIndex> irregular_interior_faces;       // degree ≠ 4, no boundary vertex
   // Diagnostics.
   double max_jump_correction = 0.0;  // in spacings (step 1)
-  int merged_vertices = 0;           // removed by step 6
+  int merged_vertices = 0;           // removed by step 6 (short edges)
+  int snapped_vertices = 0;          // moved onto the boundary by step 6
+  int dissolved_vertices = 0;        // boundary vertices left on one face only (step 6)
+  int collapsed_boundary_edges = 0;  // boundary edges < boundary_snap_fraction / 2 (step 6)
   int dropped_small_faces = 0;       // fewer than 3 vertices (step 4)
   int dropped_non_disk_regions = 0;  // several loops with vertices (step 4)
   int duplicated_vertices = 0;       // non-manifold fixes (step 6)

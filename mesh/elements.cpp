@@ -187,6 +187,72 @@ void EdgeQuads(const Mesh& mesh, const std::vector<bool>& boundary, ElementSet& 
   }
 }
 
+// Every edge (a, b) as halfedge 0 runs, or only the border edges along their
+// border halfedge (a loop's edges chain head to tail). kBoundary: the edge
+// itself lies on the boundary (not merely one of its ends).
+void Edges(const Mesh& mesh, ElementSet& out, bool border_only) {
+  out.site = Site::kEdge;
+  for (EdgeIndex e : mesh.edges()) {
+    const bool border = mesh.is_border(e);
+    if (border_only && !border) continue;
+    HalfedgeIndex h = mesh.halfedge(e, 0);
+    if (border_only && !mesh.is_border(h)) h = mesh.opposite(h);
+    const FaceIndex f = mesh.face(mesh.is_border(h) ? mesh.opposite(h) : h);
+    out.Add({I(mesh.source(h)), I(mesh.target(h))}, int(e.idx()), int(f.idx()), int(e.idx()),
+            border ? kBoundary : 0);
+  }
+}
+
+// Every vertex with a face and all its neighbours, in order around it (a
+// boundary gap last, kOpen), as `stars` but for any valence.
+void OneRings(const Mesh& mesh, const std::vector<bool>& boundary, ElementSet& out,
+              const std::function<bool(VertexIndex)>& keep) {
+  for (VertexIndex v : mesh.vertices()) {
+    if (mesh.is_isolated(v) || !keep(v)) continue;
+    std::vector<HalfedgeIndex> in;
+    for (HalfedgeIndex h : mesh.halfedges_around_target(mesh.halfedge(v))) in.push_back(h);
+    bool open = false;
+    for (size_t k = 0; k < in.size(); ++k) {
+      if (mesh.is_border(in[k])) {
+        std::rotate(in.begin(), in.begin() + (k + 1) % in.size(), in.end());
+        open = true;
+        break;
+      }
+    }
+    std::vector<int> vs{I(v)};
+    for (HalfedgeIndex h : in) vs.push_back(I(mesh.source(h)));
+    out.Add(vs, I(v), -1, -1,
+            std::uint8_t((open ? kOpen : 0) | (boundary[v.idx()] ? kBoundary : 0)));
+  }
+}
+
+// Interior vertices of valence 4 none of whose faces is a triangle.
+bool QuadStar(const Mesh& mesh, const std::vector<bool>& boundary, VertexIndex v) {
+  if (boundary[v.idx()] || mesh.degree(v) != 4) return false;
+  for (FaceIndex f : CGAL::faces_around_target(mesh.halfedge(v), mesh)) {
+    if (f == Mesh::null_face() || mesh.degree(f) < 4) return false;
+  }
+  return true;
+}
+
+// The fans whose faces are all triangles.
+void TriangleFans(const Mesh& mesh, const std::vector<bool>& boundary, ElementSet& out) {
+  std::vector<int> ring;
+  bool closed = true;
+  for (VertexIndex v : mesh.vertices()) {
+    if (!Fan(mesh, v, &ring, &closed)) continue;
+    bool triangles = true;
+    for (FaceIndex f : CGAL::faces_around_target(mesh.halfedge(v), mesh)) {
+      if (f != Mesh::null_face() && mesh.degree(f) != 3) triangles = false;
+    }
+    if (!triangles) continue;
+    std::vector<int> vs{I(v)};
+    vs.insert(vs.end(), ring.begin(), ring.end());
+    out.Add(vs, I(v), -1, -1,
+            std::uint8_t((closed ? 0 : kOpen) | (boundary[v.idx()] ? kBoundary : 0)));
+  }
+}
+
 const std::map<std::string, Builder>& Builders() {
   static const std::map<std::string, Builder> builders = {
       {"vertices",
@@ -205,6 +271,23 @@ const std::map<std::string, Builder>& Builders() {
                       ElementSet& out) { Faces(m, b, out, [](size_t d) { return d > 4; }); }},
       {"non_triangles", [](const Mesh& m, const std::vector<bool>& b,
                            ElementSet& out) { Faces(m, b, out, [](size_t d) { return d > 3; }); }},
+      {"boundary_vertices",
+       [](const Mesh& m, const std::vector<bool>& b, ElementSet& out) {
+         for (VertexIndex v : m.vertices()) {
+           if (!m.is_isolated(v) && b[v.idx()]) out.Add({I(v)}, I(v), -1, -1, kBoundary);
+         }
+       }},
+      {"edges", [](const Mesh& m, const std::vector<bool>&,
+                   ElementSet& out) { Edges(m, out, false); }},
+      {"boundary_edges", [](const Mesh& m, const std::vector<bool>&,
+                            ElementSet& out) { Edges(m, out, true); }},
+      {"one_rings", [](const Mesh& m, const std::vector<bool>& b,
+                       ElementSet& out) { OneRings(m, b, out, [](VertexIndex) { return true; }); }},
+      {"valence4_stars",
+       [](const Mesh& m, const std::vector<bool>& b, ElementSet& out) {
+         OneRings(m, b, out, [&](VertexIndex v) { return QuadStar(m, b, v); });
+       }},
+      {"triangle_fans", &TriangleFans},
       {"interior_edges", &InteriorEdges},
       {"edge_quads", &EdgeQuads},
       {"stars", &Stars},

@@ -29,6 +29,17 @@
 //   umbrella_triples     at every vertex of `fans`: closed, (w_i, v,
 //                        w_{i+⌊k/2⌋}) for i < k/2 (k even) or i < k (k odd);
 //                        open, (first, v, last); site: v
+//   boundary_vertices    the vertices on the boundary; site: the vertex
+//   edges                every edge (a, b); `face`: a face at it; site: the
+//                        edge; kBoundary only when the edge itself is a
+//                        border edge (not when one end is on the boundary)
+//   boundary_edges       the border edges, (a, b) along the border halfedge,
+//                        so the edges of a loop chain head to tail; site: edge
+//   one_rings            every vertex with a face and all its neighbours in
+//                        order around it (as `stars`, any valence); site: v
+//   valence4_stars       `stars` at interior vertices of valence 4 none of
+//                        whose faces is a triangle (conical meshes); site: v
+//   triangle_fans        `fans` whose faces are all triangles; site: v
 #pragma once
 
 #include <string>
@@ -44,7 +55,8 @@ const std::vector<std::string>& ElementSetNames();
 
 // Builds the set `name` (one of ElementSetNames(); CHECKed). Sets with the
 // kBoundary flag: every element whose site is on the mesh boundary (a
-// boundary vertex; a face or edge with a boundary vertex).
+// boundary vertex; a face or edge with a boundary vertex; for `edges` and
+// `boundary_edges` a border edge).
 ElementSet BuildElementSet(const Mesh& mesh, const std::string& name);
 
 }  // namespace archgeo

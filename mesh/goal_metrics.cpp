@@ -161,6 +161,23 @@ LengthSpread BoundaryEdgeLengthSpread(const Mesh& mesh) {
   return SpreadOf(lengths);
 }
 
+int NonConvexQuads(const Mesh& mesh) {
+  int count = 0;
+  for (FaceIndex f : mesh.faces()) {
+    if (mesh.degree(f) != 4) continue;
+    const Vec3 n = VectorArea(mesh, f);
+    std::vector<Vec3> p;
+    for (VertexIndex v : mesh.vertices_around_face(mesh.halfedge(f))) p.push_back(Position(mesh, v));
+    bool convex = Norm(n) > 0;
+    for (int k = 0; k < 4 && convex; ++k) {
+      const Vec3 turn = Cross(Sub(p[k], p[(k + 3) % 4]), Sub(p[(k + 1) % 4], p[k]));
+      convex = Dot(turn, n) > 0;
+    }
+    if (!convex) ++count;
+  }
+  return count;
+}
+
 std::vector<double> TributaryAreas(const Mesh& mesh) {
   std::vector<double> areas(mesh.num_vertices(), 0.0);
   for (FaceIndex f : mesh.faces()) {

@@ -69,6 +69,11 @@ LengthSpread EdgeLengthSpread(const Mesh& mesh);
 // "within 1% of their mean" is max_relative_deviation ≤ 0.01).
 LengthSpread BoundaryEdgeLengthSpread(const Mesh& mesh);
 
+// The quads that are not convex: seen along the face's Newell normal n, a
+// corner turns the wrong way ((p_k − p_{k−1}) × (p_{k+1} − p_k)·n ≤ 0), or
+// the quad has no area. Planar convex panels have none.
+int NonConvexQuads(const Mesh& mesh);
+
 // Tributary area of every vertex (indexed by vertex index): the sum over its
 // faces of area(f) / degree(f), area = |Newell vector area| (exact for planar
 // faces). Sums to the total area. A vertex load is A_v q for a load q per

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "analysis/validity.h"
+#include "mesh/goal_metrics.h"
 #include "mesh/grid_metrics.h"
 #include "mesh/hnet.h"
 #include "mesh/smoothness_metrics.h"
@@ -110,6 +112,49 @@ void AddHNet(const Mesh& mesh, AnalysisRows& rows) {
                   K::kRatio});
 }
 
+// Every mesh with panels (faces of four or more sides): how many are convex.
+void AddPanels(const Mesh& mesh, AnalysisRows& rows) {
+  using K = AnalysisRow::Kind;
+  const PanelShapes shapes = MeasurePanelShapes(mesh);
+  if (shapes.panels == 0) return;
+  rows.push_back({"nonconvex_panels", "non-convex panels (of 4+ sides)", double(shapes.nonconvex),
+                  K::kCount});
+  rows.push_back({"worst_reflex_degrees", "worst corner bent inward", shapes.worst_reflex_degrees,
+                  K::kDegrees});
+}
+
+// Conical meshes [Liu 2006; Gebreiter 2012, §10.1]: the angle criterion,
+// constant face offsets (offset = the mean edge length) and convex quads.
+void AddConical(const Mesh& mesh, AnalysisRows& rows) {
+  using K = AnalysisRow::Kind;
+  const ConicalMeasure conical = MeasureConical(mesh);
+  const double edge = EdgeLengthSpread(mesh).mean;
+  const FaceOffsetMeasure offsets = MeasureFaceOffsets(mesh, edge);
+  rows.push_back({"conical_max", "conical residual max (rad)", conical.max, K::kRatio});
+  rows.push_back({"conical_mean", "conical residual mean (rad)", conical.mean, K::kRatio});
+  rows.push_back({"face_offset_miss", "face-offset miss / mean edge", offsets.max_relative,
+                  K::kRatio});
+  rows.push_back({"non_convex_quads", "non-convex quads", double(NonConvexQuads(mesh)),
+                  K::kCount});
+}
+
+// Spread of edge lengths and of the boundary spacing [Gebreiter 2012,
+// §11.2.2, §11.7.1].
+void AddSpreads(const Mesh& mesh, AnalysisRows& rows) {
+  using K = AnalysisRow::Kind;
+  const LengthSpread all = EdgeLengthSpread(mesh);
+  rows.push_back({"edge_length_spread", "edge lengths max |ℓ/mean − 1|", all.max_relative_deviation,
+                  K::kRatio});
+  rows.push_back({"edge_length_ratio", "edge lengths max / min", all.ratio, K::kRatio});
+  const LengthSpread boundary = BoundaryEdgeLengthSpread(mesh);
+  if (boundary.count > 0) {
+    rows.push_back({"boundary_spacing_spread", "boundary edges max |ℓ/mean − 1|",
+                    boundary.max_relative_deviation, K::kRatio});
+    rows.push_back({"boundary_length_ratio", "boundary edges max / min", boundary.ratio,
+                    K::kRatio});
+  }
+}
+
 }  // namespace
 
 std::set<std::string> ApplicableAnalyses(const Mesh& mesh) {
@@ -117,15 +162,22 @@ std::set<std::string> ApplicableAnalyses(const Mesh& mesh) {
   if (mesh.number_of_faces() > 1) names.insert("smoothness");
   if (PureQuad(mesh)) names.insert("hnet");
   if (IsGrid(mesh)) names.insert("grid");
+  bool quads = false;
+  for (FaceIndex f : mesh.faces()) quads = quads || mesh.degree(f) == 4;
+  if (quads && MeasureConical(mesh).vertices > 0) names.insert("conical");
+  if (mesh.number_of_edges() > 0) names.insert("spreads");
   return names;
 }
 
 AnalysisRows Analyse(const Mesh& mesh, const std::set<std::string>& names) {
   AnalysisRows rows;
+  AddPanels(mesh, rows);
   const std::set<std::string> applicable = ApplicableAnalyses(mesh);
   if (names.count("smoothness") && applicable.count("smoothness")) AddSmoothness(mesh, rows);
   if (names.count("hnet") && applicable.count("hnet")) AddHNet(mesh, rows);
   if (names.count("grid") && applicable.count("grid")) AddGrid(mesh, rows);
+  if (names.count("conical") && applicable.count("conical")) AddConical(mesh, rows);
+  if (names.count("spreads") && applicable.count("spreads")) AddSpreads(mesh, rows);
   return rows;
 }
 

@@ -1,6 +1,7 @@
 // archgeo — the analyses a report shows besides the planarity/proximity
 // metrics (mesh/metrics.h): visual smoothness [Pellis 2019], A-net / H-net
-// quality [Shi 2014] and grid quality [force-directed grids paper, §4].
+// quality [Shi 2014], conical meshes and length spreads [Gebreiter 2012, §10,
+// §11; mesh/goal_metrics.h] and grid quality [force-directed grids paper, §4].
 // `archgeo solve` shows the ones its problem names (ProblemDecl::analyses),
 // `archgeo measure` every one that applies to the mesh.
 //
@@ -33,7 +34,10 @@ struct AnalysisRow {
 using AnalysisRows = std::vector<AnalysisRow>;
 
 // Names of the analyses that apply to `mesh` ("smoothness": any mesh with an
-// interior edge; "hnet": pure quad meshes; "grid": grids, see above).
+// interior edge; "hnet": pure quad meshes; "conical": meshes with quads and
+// an interior valence-4 vertex — conical residual, face-offset miss,
+// non-convex quads; "spreads": any mesh with an edge — edge-length and
+// boundary-spacing spread; "grid": grids, see above).
 std::set<std::string> ApplicableAnalyses(const Mesh& mesh);
 
 // The rows of the analyses in `names` that apply to `mesh`, in file units.

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <map>
+#include <random>
 #include <sstream>
 
 #include "mesh/asymptotic_nets.h"
@@ -31,6 +32,28 @@ void Scale(Mesh& mesh, double s) {
   }
 }
 
+// Moves every vertex along a uniformly random direction by up to `noise`
+// times the mean edge length (QuadGrid's noise, mesh/generators.h).
+void AddNoise(Mesh& mesh, double noise, unsigned seed) {
+  double length_sum = 0.0;
+  for (EdgeIndex e : mesh.edges()) {
+    length_sum += std::sqrt(CGAL::squared_distance(mesh.point(mesh.vertex(e, 0)),
+                                                   mesh.point(mesh.vertex(e, 1))));
+  }
+  const double max_offset = noise * length_sum / double(mesh.number_of_edges());
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> gaussian(0.0, 1.0);
+  std::uniform_real_distribution<double> uniform(0.0, max_offset);
+  for (VertexIndex v : mesh.vertices()) {
+    Vector direction;
+    do {  // a normalised isotropic Gaussian is uniform on the unit sphere
+      direction = Vector(gaussian(rng), gaussian(rng), gaussian(rng));
+    } while (direction.squared_length() < 1e-12);
+    direction = direction / std::sqrt(direction.squared_length());
+    mesh.point(v) = mesh.point(v) + uniform(rng) * direction;
+  }
+}
+
 std::string Number(double x) {
   std::ostringstream text;
   text << x;
@@ -44,10 +67,13 @@ void CheckOptions(const GenerateOptions& o, bool is_net) {
                      "must be in [" + Number(kMinGenerateScale) + ", " +
                          Number(kMaxGenerateScale) + "], got " + Number(o.scale));
   }
-  if (!(o.noise >= 0 && o.noise <= kMaxGenerateNoise)) {
+  if (o.noise && !(*o.noise >= 0 && *o.noise <= kMaxGenerateNoise)) {
     throw InputError("--noise", 0, "noise",
                      "must be in [0, " + Number(kMaxGenerateNoise) +
-                         "] (mean edge lengths), got " + Number(o.noise));
+                         "] (mean edge lengths), got " + Number(*o.noise));
+  }
+  if (o.noise && o.surface != "roof" && o.surface != "torus") {
+    throw InputError("--noise", 0, "noise", "noise applies to roof and torus only");
   }
   if (is_net) {
     if (o.refinement < 1 || o.refinement > kMaxGenerateRefinement) {
@@ -90,7 +116,7 @@ std::string GenerateSurfaceNames() {
       "roof                   quad grid (--nu x --nv) on z = 0.3 sin 2x + 0.25 cos 2y with "
       "--noise (planar_quads demo)\n"
       "torus                  principal quad mesh of the torus R = 3, r = 1 (--nu x --nv; "
-      "Pellis Fig. 7)\n"
+      "Pellis Fig. 7; conical: --noise for a noisy copy)\n"
       "cone_start             triangle mesh between circles r = 1 at z = 0 and 0.5 at z = 1, "
       "bulged by 0.2 (--nu around, --nv rings; Pellis §4)\n";
   for (const auto& [name, which] : Nets()) {
@@ -114,9 +140,10 @@ RunResult GenerateSurface(const std::string& path, const GenerateOptions& o) {
   }
   CheckOptions(o, is_net);
   if (o.surface == "roof") {
-    mesh = QuadGrid(o.nu, o.nv, RoofSurface, o.noise, o.seed);
+    mesh = QuadGrid(o.nu, o.nv, RoofSurface, o.noise.value_or(0.1), o.seed);
   } else if (o.surface == "torus") {
     mesh = TorusPrincipalQuads(3.0, 1.0, o.nu, o.nv);
+    if (o.noise.value_or(0.0) > 0) AddNoise(mesh, *o.noise, o.seed);
   } else if (o.surface == "cone_start") {
     mesh = RevolutionTriangles(RevolutionProfile{}, o.nu, o.nv);
   } else {

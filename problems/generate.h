@@ -1,6 +1,7 @@
 // archgeo — `archgeo generate`: analytic test meshes written to a file.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "problems/run.h"
@@ -26,11 +27,12 @@ struct GenerateOptions {
   // (torus: >= 3, cone_start: nu >= 3), nu·nv quads (cone_start: 2·nu·nv
   // triangles) at most kMaxGeneratedFaces.
   int nu = 20, nv = 15;
-  double noise = 0.1;    // roof only: random vertex offsets, mean edge lengths, in
-                         // [0, kMaxGenerateNoise]
+  // roof, torus: random vertex offsets, mean edge lengths, in
+  // [0, kMaxGenerateNoise]; unset: the surface's default (roof 0.1, torus 0).
+  std::optional<double> noise;
   double scale = 1.0;    // uniform scale of the written mesh, in
                          // [kMinGenerateScale, kMaxGenerateScale]
-  unsigned seed = 1;     // roof only
+  unsigned seed = 1;     // roof, torus: random seed of the noise
   int refinement = 1;    // asymptotic nets: quads per parameter step, in
                          // [1, kMaxGenerateRefinement]
   std::string reference; // asymptotic nets: optional path for the analytic reference

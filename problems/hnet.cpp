@@ -192,7 +192,9 @@ ProblemDecl hnet() {
              {"proximity", 1, {{"point_weight", 0.1}}},
              {"anchor", 0.1},
              {"fairness", 0.01, {{"relative_to_original", false}}, "polyline_quadruples"},
-             {"frame_coplanarity", 10}};
+             {"frame_coplanarity", 10},
+             {"min_edge_length", 1000, {}, "", true},
+             {"convexity", 1000, {}, "", true}};
   d.blocks = {{"frame_weights", Site::kEdge, 2, FrameMap::kInvariant, false, Carry::kReinitialise,
                false, true, "the shape parameters (W_l, W_r) step 3 holds fixed at an edge"}};
   Key direction;
@@ -248,10 +250,11 @@ ProblemDecl hnet() {
   d.stages = [](const Settings&) {
     Stage anet;
     anet.name = "A-net";
-    anet.terms = {"anet_planarity", "boundary_proximity", "proximity", "anchor", "fairness"};
+    anet.terms = {"anet_planarity", "boundary_proximity", "proximity", "anchor", "fairness",
+                  "min_edge_length", "convexity"};
     anet.rounds_key = "schedule.outer_iterations";
     anet.tolerances = {{"star_planarity_max", "hnet.star_planarity"}};
-    anet.continued = {"anet_planarity", "frame_coplanarity"};
+    anet.continued = {"anet_planarity", "frame_coplanarity", "min_edge_length", "convexity"};
     anet.factor_key = "hnet.continuation_factor";
     anet.rest_move = 1e-6;
     anet.logged = {"star_planarity_max", "alpha_max", "alpha_mean"};

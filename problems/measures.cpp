@@ -7,6 +7,7 @@
 
 #include "energies/total_absolute_curvature.h"
 #include "mesh/elements.h"
+#include "mesh/goal_metrics.h"
 #include "mesh/hnet.h"
 #include "mesh/metrics.h"
 #include "mesh/smoothness_metrics.h"
@@ -52,6 +53,46 @@ std::map<std::string, double> Stars(HookContext& c) {
   return {{"star_planarity_max", p.max}, {"star_planarity_mean", p.mean}};
 }
 
+std::map<std::string, double> Conical(HookContext& c) {
+  const ConicalMeasure m = MeasureConical(c.store->mesh());
+  return {{"conical_max", m.max}, {"conical_mean", m.mean}};
+}
+
+std::map<std::string, double> FaceOffsets(HookContext& c) {
+  const Mesh& mesh = c.store->mesh();
+  return {{"face_offset_miss", MeasureFaceOffsets(mesh, EdgeLengthSpread(mesh).mean).max_relative}};
+}
+
+std::map<std::string, double> EdgeSpread(HookContext& c) {
+  return {{"edge_length_spread", EdgeLengthSpread(c.store->mesh()).max_relative_deviation}};
+}
+
+std::map<std::string, double> BoundarySpread(HookContext& c) {
+  return {{"boundary_spacing_spread",
+           BoundaryEdgeLengthSpread(c.store->mesh()).max_relative_deviation}};
+}
+
+// The net of the load term (energies/load.cpp): its vertex loads and spring
+// rest lengths are constant blocks, its stiffness a setting.
+std::map<std::string, double> ForceBalance(HookContext& c) {
+  Store& store = *c.store;
+  if (!store.Has("load_force") || !store.Has("load_rest_length")) {
+    return {{"force_balance_max", 0.0}};
+  }
+  const Mesh& mesh = store.mesh();
+  std::vector<Vec3> loads;
+  for (VertexIndex v : mesh.vertices()) {
+    const double* f = store.At("load_force", int(v.idx()));
+    loads.push_back({f[0], f[1], f[2]});
+  }
+  std::vector<double> rest;
+  for (EdgeIndex e : mesh.edges()) rest.push_back(store.At("load_rest_length", int(e.idx()))[0]);
+  const std::vector<double> stiffness(mesh.number_of_edges(),
+                                      c.settings->Number("terms.load.stiffness"));
+  return {{"force_balance_max",
+           MeasureForceBalance(mesh, loads, stiffness, rest, c.fixed).max_relative}};
+}
+
 const std::map<std::string, MeasureGroup>& Groups() {
   static const std::map<std::string, MeasureGroup> groups = {
       {"pq_normalized_max", &Planarity},
@@ -63,6 +104,12 @@ const std::map<std::string, MeasureGroup>& Groups() {
       {"displacement_max", &Displacement},
       {"star_planarity_max", &Stars},
       {"star_planarity_mean", &Stars},
+      {"conical_max", &Conical},
+      {"conical_mean", &Conical},
+      {"face_offset_miss", &FaceOffsets},
+      {"edge_length_spread", &EdgeSpread},
+      {"boundary_spacing_spread", &BoundarySpread},
+      {"force_balance_max", &ForceBalance},
   };
   return groups;
 }

@@ -12,6 +12,19 @@
 //                              at the start of the solve
 //   star_planarity_max, _mean  vertex-star planarity (A-nets; mesh/hnet.h
 //                              InteriorStarPlanarity)
+//   conical_max, _mean         |(ω1 + ω3) − (ω2 + ω4)| (radians) over interior
+//                              valence-4 vertices [Liu 2006, §3]
+//                              (mesh/goal_metrics.h MeasureConical)
+//   face_offset_miss           how far the face planes at an interior vertex,
+//                              offset by the mean edge length, miss a common
+//                              point, max over vertices / mean edge length
+//                              (MeasureFaceOffsets; includes non-planarity)
+//   edge_length_spread         max |ℓ/mean − 1| over every edge
+//   boundary_spacing_spread    the same over the boundary edges
+//   force_balance_max          largest resultant force at a free vertex of the
+//                              load term's net (vertex loads + the springs of
+//                              every edge), over the mean free-vertex load; 0
+//                              without a load term (MeasureForceBalance)
 //
 // A problem adds its own (ProblemDecl::measures).
 #pragma once

@@ -13,12 +13,14 @@
 #include <memory>
 
 #include "energies/registry.h"
+#include "mesh/curves.h"
 #include "mesh/elements.h"
 #include "mesh/reference.h"
 #include "mesh/similarity.h"
 #include "mesh/smoothness_metrics.h"
 #include "mesh/topology.h"
 #include "problems/measures.h"
+#include "problems/selection.h"
 
 namespace archgeo {
 namespace {
@@ -119,6 +121,21 @@ class MeshModel::View : public TermContext {
   const Settings& settings() const override { return *model_.hooks_.settings; }
   const std::string& term_name() const override { return name_; }
 
+  void FromFile(FrameMap map, double* values, int width) const override {
+    BlockToCanonical(map, model_.hooks_.frame, values, width);
+  }
+
+  const std::vector<Curve>& Curves(const std::string& option) override {
+    if (const auto it = curves_.find(option); it != curves_.end()) return it->second;
+    const Mesh& reference = model_.hooks_.reference ? model_.hooks_.reference->Triangles()
+                                                    : model_.store_.mesh();
+    const std::vector<Polyline> polylines = TermCurves(
+        *model_.hooks_.settings, "terms." + name_ + "." + option, model_.hooks_.frame, reference);
+    std::vector<Curve>& out = curves_[option];
+    for (const Polyline& p : polylines) out.push_back({Coordinates(p), p.closed});
+    return out;
+  }
+
   void Add(ceres::CostFunction* cost, const std::vector<double*>& blocks, const char* part,
            double weight) override {
     CHECK(problem_) << name_ << ": Add outside Build";
@@ -155,6 +172,7 @@ class MeshModel::View : public TermContext {
   MeshModel& model_;
   const TermSpec& spec_;
   std::string name_;
+  std::map<std::string, std::vector<Curve>> curves_;  // per option, read once per solve
   ceres::Problem* problem_ = nullptr;
   TermBlocks* blocks_ = nullptr;
   std::string loss_ = "none";
@@ -198,12 +216,6 @@ MeshModel::MeshModel(const ProblemDecl& declaration, std::vector<const TermSpec*
   for (const BlockDecl& b : declaration_.blocks) store_.Declare(b);
   for (const TermSpec* t : terms_) {
     for (const BlockDecl& b : t->declares) store_.Declare(b);
-  }
-  for (const TermSpec* t : terms_) {
-    for (const std::string& b : t->reads) {
-      CHECK(store_.Has(b)) << "term '" << t->name << "' reads block '" << b
-                           << "', which no term of problem '" << declaration_.name << "' declares";
-    }
   }
   if (declaration_.init) declaration_.init(hooks_);
   for (const TermSpec* t : terms_) {
@@ -309,34 +321,18 @@ const ElementSet& MeshModel::Elements(const std::string& name) {
   return it->second;
 }
 
+// `terms.<t>.select` (problems/selection.h) on the set `terms.<t>.on`.
 const ElementSet& MeshModel::Selected(const TermSpec& spec) {
   const std::string name = spec.name;
   if (const auto it = selected_.find(name); it != selected_.end()) return it->second;
   const Settings& s = *hooks_.settings;
   const std::string on = s.String("terms." + name + ".on");
   const ElementSet& all = Elements(on);
-  const Value& select = s.Get("terms." + name + ".select");
-  std::vector<size_t> keep;
-  if (const auto* ids = std::get_if<std::vector<long long>>(&select)) {
-    std::vector<bool> listed;
-    for (long long id : *ids) {
-      if (id >= 0) {
-        if (size_t(id) >= listed.size()) listed.resize(size_t(id) + 1, false);
-        listed[size_t(id)] = true;
-      }
-    }
-    for (size_t i = 0; i < all.size(); ++i) {
-      const int site = all.sites[i];
-      if (site >= 0 && size_t(site) < listed.size() && listed[site]) keep.push_back(i);
-    }
-  } else {
-    const std::string& mode = std::get<std::string>(select);
-    if (mode == "all") return selected_.emplace(name, all).first->second;
-    for (size_t i = 0; i < all.size(); ++i) {
-      const bool on_boundary = all.Has(i, kBoundary);
-      if ((mode == "boundary") == on_boundary) keep.push_back(i);
-    }
-  }
+  const std::string key = "terms." + name + ".select";
+  const Selection selection = ParseSelection(s, key);
+  if (selection.all()) return selected_.emplace(name, all).first->second;
+  const std::vector<size_t> keep =
+      SelectElements(selection, all, store_.mesh(), hooks_.fixed, hooks_.frame, s, key);
   return selected_.emplace(name, all.Subset(keep)).first->second;
 }
 
@@ -351,6 +347,14 @@ TermBlocks MeshModel::Build(const std::vector<ActiveTerm>& terms, int round,
     for (int i = 0; i < n; ++i) constant_blocks_.insert(store_.At(name, i));
   }
   for (const ActiveTerm& a : terms) {
+    // The blocks a term reads are checked when it is active: a problem may
+    // declare them in its init hook (global blocks), and a term no stage
+    // activates needs none.
+    for (const std::string& b : a.spec->reads) {
+      CHECK(store_.Has(b)) << "term '" << a.spec->name << "' reads block '" << b
+                           << "', which neither problem '" << declaration_.name
+                           << "' nor its terms declare";
+    }
     View& view = *views_.at(a.spec->name);
     view.elements = &Selected(*a.spec);
     view.weight = a.weight;

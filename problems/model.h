@@ -107,11 +107,13 @@ class MeshModel : public Model {
   void SetConstant(const std::string& block, int index);
   // The element set `name` (built on first use), narrowed by `select`.
   const ElementSet& Elements(const std::string& name);
+  // The elements term `spec` acts on: its set `terms.<t>.on` narrowed by
+  // `terms.<t>.select` (problems/selection.h); cached for the solve.
+  const ElementSet& Selected(const TermSpec& spec);
 
  private:
   class View;
   friend class View;
-  const ElementSet& Selected(const TermSpec& spec);
   void ComputeVertexNormals();
   bool IsConstant(const double* block) const;
 

@@ -4,7 +4,12 @@
 // Objective [Zadravec 2010, §6, eq. 8], ½ Σ w r² in the canonical frame (unit
 // mean edge length), so every weight is unit-free:
 //   pq_diagonal (quads) + face_planarity (polygons > 4 sides)
-//   + boundary_proximity + proximity (+ point_weight) + anchor + fairness.
+//   + boundary_proximity + proximity (+ point_weight) + anchor + fairness,
+// and two validity barriers, zero unless violated and continued with the
+// planarity weights: convexity (no panel corner folds inward) and
+// min_edge_length (no edge collapses). Without them, planarity is reached on
+// some nets by bending quads inward or collapsing edges (Conjugate: 9 quads
+// bent ~20°).
 // Rounds: project every vertex onto the reference (closest point and tangent
 // plane, or boundary tangent line), rebuild, solve. The tolerance τ on max
 // δ_PQ,n drives the run, not the weights:
@@ -34,7 +39,9 @@ ProblemDecl planar_quads() {
              {"boundary_proximity", 2},
              {"proximity", 2, {{"point_weight", 0.01}}},
              {"anchor", 0.1},
-             {"fairness", 0, {{"relative_to_original", true}}}};
+             {"fairness", 0, {{"relative_to_original", true}}},
+             {"convexity", 1000, {}, "", true},
+             {"min_edge_length", 1000, {}, "", true}};
   d.keys = {
       NumberKey("tolerance.pq_normalized_max", 1e-3, 0, 1,
                 "stop as soon as every quad has δ_PQ,n at most this; 0 = fixed weights, "
@@ -48,7 +55,7 @@ ProblemDecl planar_quads() {
     Stage s;
     s.rounds_key = "schedule.outer_iterations";
     s.tolerances = {{"pq_normalized_max", "tolerance.pq_normalized_max", true}};
-    s.continued = {"pq_diagonal", "face_planarity"};
+    s.continued = {"pq_diagonal", "face_planarity", "convexity", "min_edge_length"};
     s.factor_key = "continuation.factor";
     s.band_key = "continuation.band";
     s.rest_move = 1e-6;

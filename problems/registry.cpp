@@ -8,6 +8,9 @@
   X(total_absolute_curvature) \
   X(principal_symmetric)      \
   X(hnet)                     \
+  X(conjugate_field)          \
+  X(level_sets)               \
+  X(conjugate_layout)         \
   X(grid)
 
 namespace archgeo {

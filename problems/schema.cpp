@@ -111,11 +111,17 @@ std::vector<Key> TermKeys(const ProblemDecl& d) {
     }
     keys.push_back(ChoiceKey(p + "on", sets.front(), sets,
                              "the elements it acts on (mesh/elements.h)"));
-    Key select = ChoiceKey(p + "select", "all", {"all", "boundary", "interior"},
-                           "which of them: all, boundary, interior, or a list of site ids "
-                           "(vertex, face or edge indices)");
-    select.type = Type::kChoiceOrIntegers;
-    select.lo = 0;
+    // Parsed by the problem layer (problems/selection.h).
+    Key select;
+    select.name = p + "select";
+    select.type = Type::kCustom;
+    select.fallback = std::string("all");
+    select.example = "all";
+    select.doc = "which of them: all, boundary, interior, free (all but fixed), a list of site "
+                 "ids (vertex, face or edge indices), or a mapping whose conditions all hold: "
+                 "{boundary: true|false, free: true, ids: [...], loop: k (boundary loop k, "
+                 "longest first), degree: n (face sides / vertex valence), curve: FILE.obj "
+                 "(+ within: d mean edge lengths, default 1e-3)}";
     keys.push_back(select);
     keys.push_back(ChoiceKey(p + "loss", "none",
                              {"none", "huber", "soft_l1", "cauchy", "arctan", "tolerant"},

@@ -7,6 +7,7 @@
 //  (c) values on analytic cases, and the zero sets the paper defines
 //      (a prescribed direction belongs to the conjugate pair iff r = 0, …);
 //  (d) degenerate inputs give finite residuals and Jacobians.
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <random>
@@ -391,7 +392,7 @@ TEST(LevelSetAlignment, RigidMotionAndScalingInvariance) {
   }
 }
 
-TEST(LevelSetNormalised, CosineOfTheAngleBetweenVAndTheGradientAndInvariances) {
+TEST(LevelSetNormalised, UnitGradientMinusRvAndInvariances) {
   std::mt19937 rng(kSeed + 9);
   std::normal_distribution<double> g;
   std::uniform_real_distribution<double> angle(-M_PI, M_PI), scale(0.2, 5.0);
@@ -403,21 +404,32 @@ TEST(LevelSetNormalised, CosineOfTheAngleBetweenVAndTheGradientAndInvariances) {
     std::unique_ptr<ceres::CostFunction> cost(MakeLevelSetNormalised(c6.data(), v2, inv_total));
     const double th = angle(rng);
     const Vec2 a = scale(rng) * Vec2(std::cos(th), std::sin(th));
-    const double expected =
-        std::sqrt(Area(p) * inv_total) * v.normalized().dot(a.normalized());
-    EXPECT_NEAR(Evaluate(*cost, Linear(p, a, g(rng)))[0], expected, 1e-10);
-    // Zero for ∇g ⊥ v, whatever ‖∇g‖ (eq. 5's minimiser with any spacing).
-    EXPECT_NEAR(Evaluate(*cost, Linear(p, 0.37 * Vec2(-v.y(), v.x()), 1.0))[0], 0.0, 1e-12);
+    const Vec2 rv = Vec2(-v.y(), v.x()).normalized();
+    const Vec2 expected = std::sqrt(Area(p) * inv_total) * (a.normalized() - rv);
+    const std::vector<double> r = Evaluate(*cost, Linear(p, a, g(rng)));
+    EXPECT_NEAR(r[0], expected.x(), 1e-10);
+    EXPECT_NEAR(r[1], expected.y(), 1e-10);
+    // ‖r‖² = (A/A_Φ)·4 sin²(θ/2), θ the angle between ∇g and R v: the paper's
+    // sin²θ to second order.
+    const double theta = std::acos(std::clamp(a.normalized().dot(rv), -1.0, 1.0));
+    EXPECT_NEAR(Norm(r), std::sqrt(Area(p) * inv_total) * 2 * std::sin(theta / 2), 1e-9);
+    // Zero for ∇g along +R v, whatever ‖∇g‖ (eq. 5's minimiser with any
+    // spacing); the folded gradient −R v costs the most (the paper's sin²θ
+    // would be 0 there). (ε² / ‖∇g‖² ≈ 1e-12 is the regularisation's share.)
+    EXPECT_NEAR(Norm(Evaluate(*cost, Linear(p, 0.37 * Vec2(-v.y(), v.x()), 1.0))), 0.0, 1e-10);
+    EXPECT_NEAR(Norm(Evaluate(*cost, Linear(p, -0.37 * Vec2(-v.y(), v.x()), 1.0))),
+                2 * std::sqrt(Area(p) * inv_total), 1e-9);
     // g → k g + b (k > 0): unchanged up to ε.
     const Blocks values = {{g(rng)}, {g(rng)}, {g(rng)}};
     const double k = scale(rng);
-    EXPECT_NEAR(Evaluate(*cost, values)[0],
-                Evaluate(*cost, {{k * values[0][0] + 1}, {k * values[1][0] + 1},
-                                 {k * values[2][0] + 1}})[0],
-                1e-8);
+    const std::vector<double> r1 = Evaluate(*cost, values);
+    const std::vector<double> r2 = Evaluate(
+        *cost, {{k * values[0][0] + 1}, {k * values[1][0] + 1}, {k * values[2][0] + 1}});
+    EXPECT_NEAR(r1[0], r2[0], 1e-8);
+    EXPECT_NEAR(r1[1], r2[1], 1e-8);
     ExpectGradientsMatch(*cost, values);
   }
-  // Rigid motion of the frame (corners and v turn and shift): unchanged.
+  // Rigid motion of the frame (corners and v turn and shift): ‖r‖ unchanged.
   for (int s = 0; s < kNumSamples; ++s) {
     const std::vector<Vec2> p = RandomTriangle(rng);
     const Vec2 v(g(rng), g(rng)), shift(g(rng), g(rng));
@@ -430,13 +442,15 @@ TEST(LevelSetNormalised, CosineOfTheAngleBetweenVAndTheGradientAndInvariances) {
     const double vp[2] = {v.x(), v.y()}, vqb[2] = {vq.x(), vq.y()};
     std::unique_ptr<ceres::CostFunction> a(MakeLevelSetNormalised(p6.data(), vp, 0.5));
     std::unique_ptr<ceres::CostFunction> b(MakeLevelSetNormalised(q6.data(), vqb, 0.5));
-    EXPECT_NEAR(Evaluate(*a, values)[0], Evaluate(*b, values)[0], 1e-10);
+    EXPECT_NEAR(Norm(Evaluate(*a, values)), Norm(Evaluate(*b, values)), 1e-10);
+    EXPECT_GT(Norm(Evaluate(*a, values)), 1e-6);
   }
-  // Constant g: finite (regularised).
+  // Constant g: finite (regularised), ‖r‖ = sqrt(A/A_Φ).
   const std::vector<double> c6 = {0, 0, 1, 0, 0, 1};
   const double v2[2] = {1, 0};
   std::unique_ptr<ceres::CostFunction> cost(MakeLevelSetNormalised(c6.data(), v2, 1.0));
   ExpectFiniteEverywhere(*cost, {{2.0}, {2.0}, {2.0}});
+  EXPECT_NEAR(Norm(Evaluate(*cost, {{2.0}, {2.0}, {2.0}})), std::sqrt(0.5), 1e-12);
 }
 
 TEST(LevelSetConjugacy, PrincipalLevelSetsAreConjugateAndTheAnalyticValue) {

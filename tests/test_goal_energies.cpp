@@ -17,6 +17,8 @@
 #include <Eigen/Geometry>
 #include <ceres/cost_function.h>
 #include <ceres/manifold.h>
+#include <ceres/problem.h>
+#include <ceres/solver.h>
 #include <gtest/gtest.h>
 
 #include "energies/bending.h"
@@ -686,6 +688,38 @@ TEST(CurveManifold, JacobiansAreTheUnitTangent) {
     EXPECT_NEAR(minus_jacobian.dot(plus_jacobian), 1.0, 1e-15);  // MinusJ · PlusJ = I
     EXPECT_NEAR(plus_jacobian.norm(), 1.0, 1e-15);
   }
+}
+
+// At a polyline vertex the Jacobian is the unit bisector of the two segments
+// (their central difference): a vertex sitting on a right-angled corner sees
+// the pull of the segment behind it and slides back onto it.
+TEST(CurveManifold, AtACornerTheJacobianIsTheBisectorAndTheVertexCanMoveBack) {
+  const auto curve = LCurve();  // (0,0,0) → (2,0,0) → (2,3,0)
+  std::unique_ptr<ceres::Manifold> m(MakeCurveManifold(curve));
+  Vec3 x(2, 0, 0), plus_jacobian, minus_jacobian;
+  ASSERT_TRUE(m->PlusJacobian(x.data(), plus_jacobian.data()));
+  ASSERT_TRUE(m->MinusJacobian(x.data(), minus_jacobian.data()));
+  EXPECT_NEAR((plus_jacobian - Vec3(1, 1, 0).normalized()).norm(), 0.0, 1e-15);
+  EXPECT_NEAR(minus_jacobian.dot(plus_jacobian), 1.0, 1e-15);
+  // The open curve's ends keep their one segment.
+  Vec3 end(0, 0, 0), end_jacobian;
+  ASSERT_TRUE(m->PlusJacobian(end.data(), end_jacobian.data()));
+  EXPECT_NEAR((end_jacobian - Vec3(1, 0, 0)).norm(), 0.0, 1e-15);
+  // A zero-length spring to (0.5, 0, 0) pulls the corner vertex back along
+  // the first segment (with the forward tangent (0, 1, 0) alone the pull has
+  // no component along the curve and the vertex would stay).
+  Vec3 anchor(0.5, 0, 0);
+  ceres::Problem problem;
+  problem.AddResidualBlock(MakeSpring(0.0, 1.0), nullptr, x.data(), anchor.data());
+  problem.SetParameterBlockConstant(anchor.data());
+  problem.SetManifold(x.data(), MakeCurveManifold(curve));
+  ceres::Solver::Options options;
+  options.function_tolerance = 1e-16;
+  options.parameter_tolerance = 1e-16;
+  options.gradient_tolerance = 1e-16;
+  ceres::Solver::Summary summary;
+  ceres::Solve(options, &problem, &summary);
+  EXPECT_NEAR((x - Vec3(0.5, 0, 0)).norm(), 0.0, 1e-9) << summary.BriefReport();
 }
 
 }  // namespace

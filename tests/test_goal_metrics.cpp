@@ -176,5 +176,21 @@ TEST(MeasureForceBalance, CentreOfAThreeByThreeNet) {
   EXPECT_NEAR(sagged.max_resultant, std::abs(4 * k * (s - h) * (-z) / s - P), kRounding);
 }
 
+// A square and a rectangle are convex; a dart (one corner pushed inside)
+// and a bow tie (two corners swapped) are not.
+TEST(NonConvexQuads, DartsAndBowTies) {
+  const std::vector<Vec3> square = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  EXPECT_EQ(NonConvexQuads(MakeMesh(square, {{0, 1, 2, 3}})), 0);
+  EXPECT_EQ(NonConvexQuads(MakeMesh({{0, 0, 0}, {3, 0, 0}, {3, 1, 0.2}, {0, 1, 0}}, {{0, 1, 2, 3}})),
+            0);
+  EXPECT_EQ(NonConvexQuads(MakeMesh({{0, 0, 0}, {2, 0, 0}, {0.6, 0.6, 0}, {0, 2, 0}}, {{0, 1, 2, 3}})),
+            1);
+  EXPECT_EQ(NonConvexQuads(MakeMesh({{0, 0, 0}, {1, 1, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2, 3}})),
+            1);
+  // A grid: none; the triangles of a mixed mesh are not counted.
+  EXPECT_EQ(NonConvexQuads(QuadGrid(4, 3, [](double u, double v) { return Vec3{u, v, u * v}; })), 0);
+  EXPECT_EQ(NonConvexQuads(MakeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}})), 0);
+}
+
 }  // namespace
 }  // namespace archgeo

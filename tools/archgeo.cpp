@@ -64,7 +64,7 @@ int Terms() {
   return 0;
 }
 
-int Spec(const std::string& name, bool keys) {
+int Spec(const std::string& name, bool keys, bool common) {
   const archgeo::ProblemDecl* problem = archgeo::FindProblem(name);
   if (!problem) {
     std::string list;
@@ -76,7 +76,7 @@ int Spec(const std::string& name, bool keys) {
                                   "; `problem: custom` composes terms: see README)");
   }
   if (keys) {
-    std::cout << archgeo::KeyTable(*problem, false);
+    std::cout << archgeo::KeyTable(*problem, common);
   } else {
     std::cout << archgeo::SpecTemplate(*problem);
   }
@@ -128,6 +128,10 @@ int main(int argc, char** argv) {
                                             "principal_symmetric, hnet")
       ->required();
   spec->add_flag("--keys", keys_only, "Print the problem's own keys as a Markdown table instead");
+  bool common_keys = false;
+  spec->add_flag("--common", common_keys,
+                 "With --keys: the keys every problem has (mesh, outputs, schedule, solver, "
+                 "validity, limits) with this problem's defaults");
 
   CLI::App* terms = app.add_subcommand(
       "terms", "List every registered term (energy): what a spec's `terms:` can name");
@@ -153,10 +157,12 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   generate->add_option("--nv", gen.nv, "Resolution along v (roof: y in [0, 1.5])")
       ->capture_default_str();
-  generate->add_option("--noise", gen.noise, "roof: random vertex offsets, in mean edge lengths")
-      ->capture_default_str();
+  generate->add_option("--noise", gen.noise,
+                       "roof, torus: random vertex offsets, in mean edge lengths (default: roof "
+                       "0.1, torus 0)");
   generate->add_option("--scale", gen.scale, "Uniform scale (file units)")->capture_default_str();
-  generate->add_option("--seed", gen.seed, "roof: random seed")->capture_default_str();
+  generate->add_option("--seed", gen.seed, "roof, torus: random seed of the noise")
+      ->capture_default_str();
   generate->add_option("--refinement", gen.refinement,
                        "Asymptotic nets: subdivide each parameter step K times")
       ->capture_default_str();
@@ -200,7 +206,7 @@ int main(int argc, char** argv) {
 
   try {
     if (*solve) return Solve(spec_path, overrides, quiet);
-    if (*spec) return Spec(problem_name, keys_only);
+    if (*spec) return Spec(problem_name, keys_only, common_keys);
     if (*terms) return Terms();
     if (*generate) {
       std::cout << archgeo::GenerateSurface(grid_path, gen).summary;

@@ -1,0 +1,89 @@
+#include "energies/convexity.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <ceres/autodiff_cost_function.h>
+#include <glog/logging.h>
+
+namespace archgeo {
+
+double CornerTurnSine(const double a[3], const double b[3], const double c[3],
+                      const double normal[3]) {
+  const Eigen::Vector3d u = Eigen::Vector3d(b[0], b[1], b[2]) - Eigen::Vector3d(a[0], a[1], a[2]);
+  const Eigen::Vector3d v = Eigen::Vector3d(c[0], c[1], c[2]) - Eigen::Vector3d(b[0], b[1], b[2]);
+  return u.cross(v).dot(Eigen::Vector3d(normal[0], normal[1], normal[2])) /
+         (std::sqrt(u.squaredNorm() + 1e-18) * std::sqrt(v.squaredNorm() + 1e-18));
+}
+
+ceres::CostFunction* MakeConvexity(const double normal[3], double threshold) {
+  CHECK(normal != nullptr);
+  const double n2 = normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2];
+  CHECK(std::isfinite(n2) && std::abs(n2 - 1.0) < 2e-6) << "MakeConvexity: normal not unit";
+  CHECK(std::isfinite(threshold) && threshold >= -1.0 && threshold <= 1.0)
+      << "MakeConvexity: threshold must be in [-1, 1], got " << threshold;
+  return new ceres::AutoDiffCostFunction<Convexity, 1, 3, 3, 3>(new Convexity(normal, threshold));
+}
+
+}  // namespace archgeo
+
+// --- term `convexity` ------------------------------------------------------------
+#include "core/term.h"
+
+namespace archgeo::terms {
+namespace {
+
+constexpr double kDegrees = 3.14159265358979323846 / 180.0;
+
+// Newell's normal of the polygon vs[0..k) at `position(v)`, unit (0 if degenerate).
+template <typename Positions>
+Eigen::Vector3d Newell(const int* vs, int k, Positions position) {
+  Eigen::Vector3d n(0, 0, 0);
+  for (int j = 0; j < k; ++j) {
+    const double* p = position(vs[j]);
+    const double* q = position(vs[(j + 1) % k]);
+    n += Eigen::Vector3d((p[1] - q[1]) * (p[2] + q[2]), (p[2] - q[2]) * (p[0] + q[0]),
+                         (p[0] - q[0]) * (p[1] + q[1]));
+  }
+  const double length = n.norm();
+  return length > 0 ? Eigen::Vector3d(n / length) : Eigen::Vector3d(0, 0, 0);
+}
+
+void AddConvexity(TermContext& c, size_t i) {
+  const int* vs = c.elements->Vertices(i);
+  const int k = c.elements->Count(i);
+  const Eigen::Vector3d now = Newell(vs, k, [&](int v) { return c.Previous(v); });
+  const Eigen::Vector3d start = Newell(vs, k, [&](int v) { return c.Original(v); });
+  if (now.squaredNorm() == 0 || start.squaredNorm() == 0) return;  // a degenerate face
+  const double margin = std::sin(c.Number("margin_degrees") * kDegrees);
+  for (int j = 0; j < k; ++j) {
+    const int a = vs[(j + k - 1) % k], b = vs[j], d = vs[(j + 1) % k];
+    const double input = CornerTurnSine(c.Original(a), c.Original(b), c.Original(d), start.data());
+    const double threshold = std::max(-1.0, std::min(margin, input));
+    c.Add(MakeConvexity(now.data(), threshold), {c.Position(a), c.Position(b), c.Position(d)});
+  }
+}
+
+}  // namespace
+
+const TermSpec& convexity() {
+  static const TermSpec spec = [] {
+    TermSpec t;
+    t.name = "convexity";
+    t.summary = "barrier: every corner of a panel stays convex (no worse than the input)";
+    t.paper = "[panel validity; Zadravec 2010, §6, Fig. 13]";
+    t.elements = "non_triangles";
+    t.element_choices = {"faces", "quads", "polygons"};
+    t.options = {NumberKey("margin_degrees", 2.0, 0.0, 45.0,
+                           "corners are kept at least this far from straight and from a spike "
+                           "(interior angle in [m, 180° − m]); corners the input already has "
+                           "outside it are kept no worse than in the input")};
+    t.barrier = true;
+    t.add = &AddConvexity;
+    return t;
+  }();
+  return spec;
+}
+
+}  // namespace archgeo::terms

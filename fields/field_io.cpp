@@ -1,0 +1,113 @@
+#include "fields/field_io.h"
+
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include "mesh/input_error.h"
+#include "mesh/output_files.h"
+
+namespace archgeo {
+namespace {
+
+std::string Xyz(const Eigen::Vector3d& x) {
+  char s[96];
+  std::snprintf(s, sizeof s, "%.9g %.9g %.9g", x.x(), x.y(), x.z());
+  return s;
+}
+
+Eigen::Vector3d InFile(const Similarity& frame, const Eigen::Vector3d& x) {
+  const Vec3 y = frame.FromCanonical(Vec3{x.x(), x.y(), x.z()});
+  return Eigen::Vector3d(y[0], y[1], y[2]);
+}
+
+}  // namespace
+
+void WriteFieldPly(const std::string& path, const Mesh& mesh, const FieldGeometry& geometry,
+                   const TcdField& field, const Similarity& frame, const std::string& key) {
+  std::vector<std::string> vertices, edges;
+  for (FaceIndex f : mesh.faces()) {
+    const ConjugatePair& pair = field.pairs[f.idx()];
+    if (!pair.valid) continue;
+    const double length = 0.7 * std::sqrt(2.0 * geometry.frames.area[f.idx()]);
+    const Eigen::Vector3d c = geometry.frames.centroid[f.idx()];
+    for (int k = 0; k < 2; ++k) {
+      const Eigen::Vector3d d = FromFrame(geometry.frames, f, k == 0 ? pair.v : pair.w);
+      const char* rgb = k == 0 ? "220 50 40" : "40 90 220";
+      const size_t first = vertices.size();
+      vertices.push_back(Xyz(InFile(frame, c - 0.5 * length * d)) + " " + rgb);
+      vertices.push_back(Xyz(InFile(frame, c + 0.5 * length * d)) + " " + rgb);
+      edges.push_back(std::to_string(first) + " " + std::to_string(first + 1) + " " + rgb);
+    }
+  }
+  std::string comments;
+  for (const Singularity& s : field.singularities) {
+    const Eigen::Vector3d p = InFile(frame, s.position);
+    char line[160];
+    std::snprintf(line, sizeof line, "comment singularity index %+g at %s (vertex %d)\n", s.index,
+                  Xyz(p).c_str(), static_cast<int>(s.vertex.idx()));
+    comments += line;
+    vertices.push_back(Xyz(p) + (s.index > 0 ? " 250 220 0" : " 230 0 230"));
+  }
+  std::ostringstream out;
+  out << "ply\nformat ascii 1.0\n"
+      << "comment archgeo TCD field [Zadravec 2010]: per face the conjugate directions v (red) "
+         "and w (blue) through the face centroid; singularities as points (yellow +, magenta -)\n"
+      << comments << "element vertex " << vertices.size()
+      << "\nproperty float x\nproperty float y\nproperty float z\n"
+         "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+      << "element edge " << edges.size()
+      << "\nproperty int vertex1\nproperty int vertex2\n"
+         "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n";
+  for (const std::string& v : vertices) out << v << "\n";
+  for (const std::string& e : edges) out << e << "\n";
+  WriteTextFile(path, out.str(), key);
+}
+
+Eigen::MatrixXd ReadDmat(const std::string& path, const std::string& key) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, 0, key, "cannot open the DMAT file");
+  std::string header;
+  std::getline(in, header);
+  std::istringstream h(header);
+  long long cols = -1, rows = -1;
+  if (!(h >> cols >> rows) || cols < 0 || rows < 0) {
+    throw InputError(path, 1, key, "expected a DMAT header \"cols rows\"");
+  }
+  if (cols == 0 && rows == 0) {
+    throw InputError(path, 1, key, "binary DMAT files are not supported; write it as ASCII");
+  }
+  Eigen::MatrixXd m(rows, cols);
+  int line = 2;  // the first number follows the header line
+  for (long long c = 0; c < cols; ++c) {
+    for (long long r = 0; r < rows; ++r) {
+      std::string token;
+      // One or more numbers per line; count lines for messages.
+      while (true) {
+        const int next = in.peek();
+        if (next == '\n') ++line;
+        if (next == EOF || !std::isspace(next)) break;
+        in.get();
+      }
+      if (!(in >> token)) {
+        throw InputError(path, line, key,
+                         "the header promises " + std::to_string(rows) + " x " +
+                             std::to_string(cols) + " numbers; the file ends after " +
+                             std::to_string(c * rows + r));
+      }
+      char* end = nullptr;
+      const double x = std::strtod(token.c_str(), &end);
+      if (end == token.c_str() || *end != '\0' || !std::isfinite(x)) {
+        throw InputError(path, line, key, "'" + token + "' is not a finite number");
+      }
+      m(r, c) = x;
+    }
+  }
+  return m;
+}
+
+}  // namespace archgeo

@@ -1,0 +1,34 @@
+// archgeo — files of the field pipeline: the field as a viewable PLY of line
+// segments, and libigl's dense-matrix (DMAT) files of per-face constraints.
+//
+// Include only where CGAL is acceptable (pulls in mesh/surface_mesh.h).
+#pragma once
+
+#include <string>
+
+#include <Eigen/Core>
+
+#include "fields/tcd_field.h"
+#include "mesh/similarity.h"
+#include "mesh/surface_mesh.h"
+
+namespace archgeo {
+
+// The field as an ASCII PLY that mesh viewers (MeshLab, CloudCompare) show:
+// per valid face two line segments through its centroid (`element edge`),
+// v red and w blue, each 0.7·sqrt(2·area) long; then one vertex per
+// singularity (not on an edge: shown as a point), yellow for index > 0 and
+// magenta for index < 0, its index in a `comment` line. `mesh`, `geometry`
+// and `field` in the canonical frame; written in file units (`frame`).
+// Throws InputError(path, 0, key, ...) when the file cannot be written.
+void WriteFieldPly(const std::string& path, const Mesh& mesh, const FieldGeometry& geometry,
+                   const TcdField& field, const Similarity& frame, const std::string& key);
+
+// A libigl DMAT file (igl::readDMAT, ASCII): a first line "cols rows", then
+// cols·rows numbers in column-major order (all of column 0 first). Throws
+// InputError(path, line, key, ...) for a file that cannot be read or does not
+// follow the format (the binary variant, "0 0" followed by a binary header,
+// is refused with a message).
+Eigen::MatrixXd ReadDmat(const std::string& path, const std::string& key);
+
+}  // namespace archgeo
