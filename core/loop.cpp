@@ -302,6 +302,10 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
         result.stop = "tolerances met";
         break;
       }
+      if (!step.stop.empty()) {  // a step that reached its own end
+        result.stop = step.stop;
+        break;
+      }
       if (!active.empty() && !met) scale *= factor;  // continuation
       if (!stopping_tolerance) {
         if (rest_move > 0 && row.max_move < rest_move) {

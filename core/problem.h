@@ -46,6 +46,9 @@ struct StepResult {
   std::string message;  // why not usable
   int iterations = 0;
   double cost = 0;
+  // Non-empty: the step reached its own end (e.g. a force-directed method
+  // that stalled); the stage ends after this round, with this as the reason.
+  std::string stop;
 };
 
 struct Stage {
@@ -123,6 +126,11 @@ struct ProblemDecl {
   Hook init;    // per solve (and multiresolution level), after blocks are initialised
   Hook finish;  // after the last stage: details and headline for the report
   Hook write;   // write the extra outputs
+  // Optional: the problem's own hard validity checks of the current state
+  // (after every round and on the result, beside analysis/validity.h): ""
+  // when valid, else one line per failed check. E.g. a grid sliding on its
+  // surface checks its faces against the surface normal.
+  std::function<std::string(HookContext&)> invalid;
 };
 
 }  // namespace archgeo

@@ -15,3 +15,37 @@ ceres::CostFunction* MakeGridEquilaterality(const Surface& surface, double ideal
 }
 
 }  // namespace archgeo
+
+// --- term `grid_equilaterality` -----------------------------------------------
+#include "core/term.h"
+#include "energies/grid_shared.h"
+
+namespace archgeo::terms {
+namespace {
+
+// Element: a grid edge (a, b) of the grid problem (seam edges included);
+// the variables are the vertices' "uv" blocks.
+void AddGridEquilaterality(TermContext& c, size_t i) {
+  const GridShared g = SharedGrid(c);
+  const int* v = c.elements->Vertices(i);
+  c.Add(MakeGridEquilaterality(*g.surface, g.length),
+        {c.Block("uv", v[0]), c.Block("uv", v[1])});
+}
+
+}  // namespace
+
+const TermSpec& grid_equilaterality() {
+  static const TermSpec spec = [] {
+    TermSpec t;
+    t.name = "grid_equilaterality";
+    t.summary = "edge length towards the ideal length L: (|e| − L)/L per grid edge";
+    t.paper = "[force-directed grids paper, §3 goal (2), Listing 1 step 2; eq. 6]";
+    t.elements = "grid_edges";
+    t.reads = {"uv"};
+    t.add = &AddGridEquilaterality;
+    return t;
+  }();
+  return spec;
+}
+
+}  // namespace archgeo::terms

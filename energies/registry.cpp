@@ -16,6 +16,11 @@
   X(face_planarity)            \
   X(fairness)                  \
   X(frame_coplanarity)         \
+  X(grid_boundary)             \
+  X(grid_equilaterality)       \
+  X(grid_fairness)             \
+  X(grid_orthogonality)        \
+  X(grid_quad_equilaterality)  \
   X(handles)                   \
   X(laplacian)                 \
   X(level_set_alignment)       \

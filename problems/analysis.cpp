@@ -4,6 +4,7 @@
 
 #include "analysis/validity.h"
 #include "mesh/goal_metrics.h"
+#include "mesh/grid_metrics.h"
 #include "mesh/hnet.h"
 #include "mesh/smoothness_metrics.h"
 #include "problems/hnet_net.h"
@@ -33,6 +34,9 @@ std::string Cell(const AnalysisRow& row, double scale) {
     case AnalysisRow::Kind::kRatio:
       std::snprintf(buf, sizeof buf, "%.4e", row.value);
       break;
+    case AnalysisRow::Kind::kPercent:
+      std::snprintf(buf, sizeof buf, "%.4g%%", row.value);
+      break;
   }
   return buf;
 }
@@ -43,6 +47,32 @@ bool PureQuad(const Mesh& mesh) {
     if (mesh.degree(f) != 4) return false;
   }
   return true;
+}
+
+// A pure quad mesh with interior valence 4 and boundary valence 2 or 3.
+bool IsGrid(const Mesh& mesh) {
+  if (!PureQuad(mesh) || mesh.has_garbage()) return false;
+  for (VertexIndex v : mesh.vertices()) {
+    if (mesh.is_isolated(v)) return false;
+    const size_t k = mesh.degree(v);
+    if (mesh.is_border(v) ? (k != 2 && k != 3) : k != 4) return false;
+  }
+  return true;
+}
+
+void AddGrid(const Mesh& mesh, AnalysisRows& rows) {
+  using K = AnalysisRow::Kind;
+  const GridQuality q = MeasureQuadGridMesh(mesh);
+  rows.push_back({"mdo", "MDO (eq. 4, splines)", q.spline.mdo, K::kDegrees});
+  rows.push_back({"ado", "ADO (eq. 5, splines)", q.spline.ado, K::kDegrees});
+  rows.push_back({"mde", "MDE (eq. 6, quad sides)", q.discrete.mde, K::kPercent});
+  rows.push_back({"ade", "ADE (eq. 6, quad sides)", q.discrete.ade, K::kPercent});
+  rows.push_back({"mdo_discrete", "MDO on the polygon", q.discrete.mdo, K::kDegrees});
+  rows.push_back({"ado_discrete", "ADO on the polygon", q.discrete.ado, K::kDegrees});
+  rows.push_back({"mde_spline", "MDE on spline arcs", q.spline.mde, K::kPercent});
+  rows.push_back({"ade_spline", "ADE on spline arcs", q.spline.ade, K::kPercent});
+  rows.push_back({"grid_crossings", "grid crossings measured", double(q.crossings), K::kCount});
+  rows.push_back({"grid_quads", "grid quads measured", double(q.quads), K::kCount});
 }
 
 void AddSmoothness(const Mesh& mesh, AnalysisRows& rows) {
@@ -131,6 +161,7 @@ std::set<std::string> ApplicableAnalyses(const Mesh& mesh) {
   std::set<std::string> names;
   if (mesh.number_of_faces() > 1) names.insert("smoothness");
   if (PureQuad(mesh)) names.insert("hnet");
+  if (IsGrid(mesh)) names.insert("grid");
   bool quads = false;
   for (FaceIndex f : mesh.faces()) quads = quads || mesh.degree(f) == 4;
   if (quads && MeasureConical(mesh).vertices > 0) names.insert("conical");
@@ -144,6 +175,7 @@ AnalysisRows Analyse(const Mesh& mesh, const std::set<std::string>& names) {
   const std::set<std::string> applicable = ApplicableAnalyses(mesh);
   if (names.count("smoothness") && applicable.count("smoothness")) AddSmoothness(mesh, rows);
   if (names.count("hnet") && applicable.count("hnet")) AddHNet(mesh, rows);
+  if (names.count("grid") && applicable.count("grid")) AddGrid(mesh, rows);
   if (names.count("conical") && applicable.count("conical")) AddConical(mesh, rows);
   if (names.count("spreads") && applicable.count("spreads")) AddSpreads(mesh, rows);
   return rows;

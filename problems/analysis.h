@@ -1,8 +1,17 @@
 // archgeo — the analyses a report shows besides the planarity/proximity
 // metrics (mesh/metrics.h): visual smoothness [Pellis 2019], A-net / H-net
 // quality [Shi 2014], conical meshes and length spreads [Gebreiter 2012, §10,
-// §11; mesh/goal_metrics.h]. `archgeo solve` shows the ones its builder names
-// (Builder::Analyses), `archgeo measure` every one that applies to the mesh.
+// §11; mesh/goal_metrics.h] and grid quality [force-directed grids paper, §4].
+// `archgeo solve` shows the ones its problem names (ProblemDecl::analyses),
+// `archgeo measure` every one that applies to the mesh.
+//
+// "grid" (any pure quad mesh whose interior vertices have valence 4 and whose
+// boundary vertices valence 2 or 3: a grid; mesh/grid_metrics.h): keys
+//   mdo, ado   MDO, ADO (eqs. 4–5, degrees) on the grid-interpolating splines
+//              (the paper's evaluation)
+//   mde, ade   MDE, ADE (eq. 6, percent) on the quad sides (edges)
+//   mdo_discrete, ado_discrete, mde_spline, ade_spline  the other evaluation
+//   grid_crossings, grid_quads  what was measured
 #pragma once
 
 #include <set>
@@ -16,7 +25,7 @@
 namespace archgeo {
 
 struct AnalysisRow {
-  enum class Kind { kLength, kDegrees, kCount, kRatio };
+  enum class Kind { kLength, kDegrees, kCount, kRatio, kPercent };
   std::string key;    // JSON key
   std::string label;  // table label
   double value = 0;
@@ -28,7 +37,7 @@ using AnalysisRows = std::vector<AnalysisRow>;
 // interior edge; "hnet": pure quad meshes; "conical": meshes with quads and
 // an interior valence-4 vertex — conical residual, face-offset miss,
 // non-convex quads; "spreads": any mesh with an edge — edge-length and
-// boundary-spacing spread).
+// boundary-spacing spread; "grid": grids, see above).
 std::set<std::string> ApplicableAnalyses(const Mesh& mesh);
 
 // The rows of the analyses in `names` that apply to `mesh`, in file units.

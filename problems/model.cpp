@@ -472,7 +472,10 @@ ValidityLimits LimitsOf(const Settings& s) {
 
 std::string MeshModel::Invalid() {
   if (!Finite()) return "finite: non-finite coordinates";
-  return CheckValidity(store_.mesh(), &start_, LimitsOf(*hooks_.settings), false).Reason();
+  std::string reason =
+      CheckValidity(store_.mesh(), &start_, LimitsOf(*hooks_.settings), false).Reason();
+  if (declaration_.invalid) reason += declaration_.invalid(hooks_);
+  return reason;
 }
 
 bool MeshModel::Finite() const {

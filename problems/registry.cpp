@@ -10,7 +10,8 @@
   X(hnet)                     \
   X(conjugate_field)          \
   X(level_sets)               \
-  X(conjugate_layout)
+  X(conjugate_layout)         \
+  X(grid)
 
 namespace archgeo {
 namespace problems {

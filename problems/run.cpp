@@ -204,10 +204,15 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   rep["validity"] = validity.ToJson();
   rep["validity"]["restored_round"] =
       solved.restored_valid ? nlohmann::json(solved.output_round) : nlohmann::json(nullptr);
-  if (!validity.valid()) {
+  // The problem's own checks (ProblemDecl::invalid), on the state written.
+  const std::string own = d.invalid ? d.invalid(solution->hooks) : std::string();
+  rep["validity"]["problem"] = own.empty() ? nlohmann::json(nullptr) : nlohmann::json(own);
+  if (!own.empty()) rep["validity"]["valid"] = false;
+  if (!validity.valid() || !own.empty()) {
     run.exit_code = 3;
     rep["message"] = "the result is not valid";
     run.summary = "archgeo: the result is not valid (nothing was written):\n" + validity.Reason() +
+                  own +
                   "(limits: validity.* keys; the report's validity section lists every check)\n";
     return run;
   }

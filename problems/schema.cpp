@@ -201,7 +201,8 @@ std::string SpecTemplate(const ProblemDecl& d) {
       open.push_back(parts[i]);
     }
     const std::string indent(2 * (parts.size() - 1), ' ');
-    std::string value = k.name == "mesh" ? "REQUIRED.obj" : DefaultText(k);
+    // A problem that makes its own net (makes_input) reads no mesh.
+    std::string value = k.name == "mesh" && !d.makes_input ? "REQUIRED.obj" : DefaultText(k);
     if (k.type == Type::kChoice) value += "   # " + [&] {
       std::string list;
       for (const std::string& c : k.choices) list += (list.empty() ? "" : " | ") + c;

@@ -171,9 +171,12 @@ std::unique_ptr<Solution> Solve(const ProblemSpec& spec, const Mesh& mesh, const
                         std::to_string(s.Integer("limits.max_subdivided_faces")) + ")");
     }
   }
-  std::vector<bool> fixed =
-      FixedVertices(s, sol->net.derived && FixedByIds(s) ? mesh : input, spec.mesh());
-  if (sol->net.derived && FixedByIds(s)) fixed = OnNet(s, fixed, sol->net, spec.mesh());
+  // Fixed vertex ids name input vertices, or the net's when the problem
+  // makes its own input (there is no input mesh then).
+  const bool ids_of_input = sol->net.derived && FixedByIds(s) && !d.makes_input;
+  std::vector<bool> fixed = FixedVertices(s, ids_of_input ? mesh : input,
+                                          d.makes_input ? std::string("the net") : spec.mesh());
+  if (ids_of_input) fixed = OnNet(s, fixed, sol->net, spec.mesh());
 
   // The canonical frame: every length below is in input mean edge lengths.
   hooks.frame = sol->frame = CanonicalFrame(input);

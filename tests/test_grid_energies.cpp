@@ -1,5 +1,5 @@
 // Tests for the grid energies (energies/grid_orthogonality, grid_equilaterality,
-// grid_boundary, grid_fairness), whose variables are the (u, v) of grid
+// grid_quad_equilaterality, grid_boundary, grid_fairness), whose variables are the (u, v) of grid
 // vertices on a parametric surface:
 //  (a) autodiff Jacobians (through the surface map) against numeric
 //      differences (ceres::GradientChecker) on four surfaces, random
@@ -10,7 +10,8 @@
 //      by s, with the reference length scaled by s);
 //  (d) analytic values: a square plane grid gives zero residuals, a sheared
 //      one the known cosine and signed distance, a stretched edge its
-//      relative deviation, a circle on a cylinder its second difference.
+//      relative deviation, a 2 × 1 rectangle its sides' deviations from
+//      their mean (±1/3), a circle on a cylinder its second difference.
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -29,6 +30,7 @@
 #include "energies/grid_equilaterality.h"
 #include "energies/grid_fairness.h"
 #include "energies/grid_orthogonality.h"
+#include "energies/grid_quad_equilaterality.h"
 #include "surfaces/surface_factory.h"
 
 namespace archgeo {
@@ -95,6 +97,9 @@ TEST(GridEnergies, GradientsMatchNumericDifferences) {
       ExpectGridGradientsMatch(*orthogonality, {Block(st.l0), Block(st.l1), Block(st.t0), Block(st.t1)});
       std::unique_ptr<ceres::CostFunction> equilaterality(MakeGridEquilaterality(s, L));
       ExpectGridGradientsMatch(*equilaterality, {Block(st.p), Block(st.l1)});
+      std::unique_ptr<ceres::CostFunction> quad(MakeGridQuadEquilaterality(s, 1.0 / L));
+      ExpectGridGradientsMatch(*quad, {Block(st.p), Block(st.l1), Block(st.l1 + st.t1 - st.p),
+                                       Block(st.t1)});
       std::unique_ptr<ceres::CostFunction> boundary(MakeGridBoundary(s, 1.0 / L));
       ExpectGridGradientsMatch(*boundary, {Block(st.p), Block(st.l0), Block(st.l1), Block(st.t1)});
       std::unique_ptr<ceres::CostFunction> fairness(MakeGridFairness(s, 1.0 / L));
@@ -111,6 +116,10 @@ TEST(GridEnergies, DegenerateStencilsStayFinite) {
   ExpectFiniteEverywhere(*orthogonality, {Block(p), Block(p), Block(p), Block(q)});  // a = 0
   std::unique_ptr<ceres::CostFunction> equilaterality(MakeGridEquilaterality(s, 1.0));
   ExpectFiniteEverywhere(*equilaterality, {Block(p), Block(p)});
+  std::unique_ptr<ceres::CostFunction> quad(MakeGridQuadEquilaterality(s, 1.0));
+  ExpectFiniteEverywhere(*quad, {Block(p), Block(p), Block(p), Block(p)});  // a point
+  for (double r : Evaluate(*quad, {Block(p), Block(p), Block(p), Block(p)})) EXPECT_EQ(r, 0.0);
+  ExpectFiniteEverywhere(*quad, {Block(p), Block(p), Block(q), Block(q)});  // two sides 0
   std::unique_ptr<ceres::CostFunction> boundary(MakeGridBoundary(s, 1.0));
   ExpectFiniteEverywhere(*boundary, {Block(p), Block(q), Block(q), Block(p)});  // p1 = p2
   // At a = 0 the orthogonality residual is 0; at p1 = p2 the boundary one too.
@@ -128,6 +137,8 @@ std::vector<double> AllResiduals(const Surface& s, const Stencil& st, double L) 
   add(MakeGridOrthogonality(s, 1.0 / L), {Block(st.l0), Block(st.l1), Block(st.t0), Block(st.t1)});
   add(MakeGridEquilaterality(s, L), {Block(st.p), Block(st.t1)});
   add(MakeGridBoundary(s, 1.0 / L), {Block(st.p), Block(st.l0), Block(st.l1), Block(st.t1)});
+  add(MakeGridQuadEquilaterality(s, 1.0 / L), {Block(st.p), Block(st.l1), Block(st.t1 + st.l1 - st.p),
+                                               Block(st.t1)});
   // Fairness: only its norm is invariant under rotation.
   std::unique_ptr<ceres::CostFunction> fairness(MakeGridFairness(s, 1.0 / L));
   r.push_back(AsVec(Evaluate(*fairness, {Block(st.t0), Block(st.p), Block(st.t1)})).norm());
@@ -137,7 +148,7 @@ std::vector<double> AllResiduals(const Surface& s, const Stencil& st, double L) 
 TEST(GridEnergies, InvariantUnderRigidMotionsOfTheSurface) {
   std::mt19937 rng(kSeed + 1);
   const Surface torus = MakeSurface("torus");
-  std::vector<double> largest(4, 0.0);  // not a vacuous invariance: residuals ≠ 0
+  std::vector<double> largest(8, 0.0);  // not a vacuous invariance: residuals ≠ 0
   for (int sample = 0; sample < kNumSamples; ++sample) {
     const Surface moved = torus.Placed(RandomRotation(rng), RandomVec(rng, 10.0));
     const Stencil st = RandomStencil(torus, rng);
@@ -203,6 +214,22 @@ TEST(GridEnergies, EdgeLengthDeviationIsRelative) {
   EXPECT_NEAR(Evaluate(*equilaterality, {Block(Uv(1, 1)), Block(Uv(1, 3.2))})[0], 0.1, 1e-10);
   EXPECT_NEAR(Evaluate(*equilaterality, {Block(Uv(1, 1)), Block(Uv(2.2, 2.6))})[0], 0.0, 1e-10);
   EXPECT_NEAR(Evaluate(*equilaterality, {Block(Uv(1, 1)), Block(Uv(2, 1))})[0], -0.5, 1e-10);
+}
+
+TEST(GridEnergies, QuadSidesDeviateFromTheirMean) {
+  // A 2 × 1 rectangle (sides 2, 1, 2, 1, mean 1.5): r = ±1/3 up to the
+  // regularisation ε L (relative effect ≤ (ε L)² / 2 = 5e-13 with L = 1).
+  const Surface plane = MakeSurface("plane");
+  std::unique_ptr<ceres::CostFunction> quad(MakeGridQuadEquilaterality(plane, 1.0));
+  const std::vector<double> r =
+      Evaluate(*quad, {Block(Uv(1, 1)), Block(Uv(3, 1)), Block(Uv(3, 2)), Block(Uv(1, 2))});
+  const double expected[] = {1.0 / 3, -1.0 / 3, 1.0 / 3, -1.0 / 3};
+  for (int k = 0; k < 4; ++k) EXPECT_NEAR(r[k], expected[k], 1e-10) << k;
+  // A rhombus (equal sides, not a square): 0 — the term measures sides only.
+  const std::vector<double> rhombus =
+      Evaluate(*quad, {Block(Uv(0, 0)), Block(Uv(2, 0)), Block(Uv(3, std::sqrt(3.0))),
+                       Block(Uv(1, std::sqrt(3.0)))});
+  for (double x : rhombus) EXPECT_NEAR(x, 0.0, 1e-10);
 }
 
 TEST(GridEnergies, FairnessOfACircleOnACylinder) {
