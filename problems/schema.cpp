@@ -188,6 +188,8 @@ std::string SpecTemplate(const ProblemDecl& d) {
   const Schema schema = ProblemSchema(d);
   std::vector<std::string> open;  // the sections of the previous key
   for (const Key& k : schema.keys()) {
+    // A problem that makes its own net (makes_input) reads no mesh.
+    if (d.makes_input && (k.name == "mesh" || k.name == "reference")) continue;
     std::vector<std::string> parts;
     std::stringstream ss(k.name);
     for (std::string part; std::getline(ss, part, '.');) parts.push_back(part);
@@ -201,8 +203,7 @@ std::string SpecTemplate(const ProblemDecl& d) {
       open.push_back(parts[i]);
     }
     const std::string indent(2 * (parts.size() - 1), ' ');
-    // A problem that makes its own net (makes_input) reads no mesh.
-    std::string value = k.name == "mesh" && !d.makes_input ? "REQUIRED.obj" : DefaultText(k);
+    std::string value = k.name == "mesh" ? "REQUIRED.obj" : DefaultText(k);
     if (k.type == Type::kChoice) value += "   # " + [&] {
       std::string list;
       for (const std::string& c : k.choices) list += (list.empty() ? "" : " | ") + c;
