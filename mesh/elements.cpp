@@ -38,26 +38,6 @@ void Faces(const Mesh& mesh, const std::vector<bool>& boundary, ElementSet& out,
   }
 }
 
-// Neighbours of v in order, a boundary gap last (hnet's stars).
-void Stars(const Mesh& mesh, const std::vector<bool>& boundary, ElementSet& out) {
-  for (VertexIndex v : mesh.vertices()) {
-    if (mesh.is_isolated(v) || mesh.degree(v) < 3) continue;
-    std::vector<HalfedgeIndex> in;
-    for (HalfedgeIndex h : mesh.halfedges_around_target(mesh.halfedge(v))) in.push_back(h);
-    bool open = false;
-    for (size_t k = 0; k < in.size(); ++k) {
-      if (mesh.is_border(in[k])) {
-        std::rotate(in.begin(), in.begin() + (k + 1) % in.size(), in.end());
-        open = true;
-        break;
-      }
-    }
-    std::vector<int> vs{I(v)};
-    for (HalfedgeIndex h : in) vs.push_back(I(mesh.source(h)));
-    out.Add(vs, I(v), -1, -1,
-            std::uint8_t((open ? kOpen : 0) | (boundary[v.idx()] ? kBoundary : 0)));
-  }
-}
 
 // The counter-clockwise one-ring (an open fan from one boundary neighbour to
 // the other); false for isolated vertices, more than one boundary gap, and
@@ -224,6 +204,12 @@ void OneRings(const Mesh& mesh, const std::vector<bool>& boundary, ElementSet& o
     out.Add(vs, I(v), -1, -1,
             std::uint8_t((open ? kOpen : 0) | (boundary[v.idx()] ? kBoundary : 0)));
   }
+}
+
+// Neighbours of v in order, a boundary gap last (hnet's stars): the one rings
+// of vertices with three neighbours or more.
+void Stars(const Mesh& mesh, const std::vector<bool>& boundary, ElementSet& out) {
+  OneRings(mesh, boundary, out, [&](VertexIndex v) { return mesh.degree(v) >= 3; });
 }
 
 // Interior vertices of valence 4 none of whose faces is a triangle.

@@ -37,14 +37,17 @@ Mesh QuadGrid(int nu, int nv, const std::function<Vec3(double, double)>& surface
       CHECK(f != Mesh::null_face()) << "QuadGrid: add_face failed at (" << i << ", " << j << ")";
     }
   }
-  if (noise == 0.0) return mesh;
+  if (noise != 0.0) AddNoise(mesh, noise, seed);
+  return mesh;
+}
 
+void AddNoise(Mesh& mesh, double noise, std::uint64_t seed) {
   double length_sum = 0.0;
   for (EdgeIndex e : mesh.edges()) {
     length_sum += std::sqrt(CGAL::squared_distance(mesh.point(mesh.vertex(e, 0)),
                                                    mesh.point(mesh.vertex(e, 1))));
   }
-  const double max_offset = noise * length_sum / mesh.number_of_edges();
+  const double max_offset = noise * length_sum / double(mesh.number_of_edges());
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> gaussian(0.0, 1.0);
   std::uniform_real_distribution<double> uniform(0.0, max_offset);
@@ -56,7 +59,6 @@ Mesh QuadGrid(int nu, int nv, const std::function<Vec3(double, double)>& surface
     direction = direction / std::sqrt(direction.squared_length());
     mesh.point(v) = mesh.point(v) + uniform(rng) * direction;
   }
-  return mesh;
 }
 
 Vec3 RoofSurface(double u, double v) {

@@ -15,6 +15,11 @@ namespace archgeo {
 Mesh QuadGrid(int nu, int nv, const std::function<Vec3(double, double)>& surface,
               double noise = 0.0, std::uint64_t seed = 1);
 
+// Moves every vertex along a uniformly random direction (a normalised
+// isotropic Gaussian) by a uniformly random distance of up to `noise` times
+// the mean edge length (QuadGrid's noise; `archgeo generate --noise`).
+void AddNoise(Mesh& mesh, double noise, std::uint64_t seed);
+
 // A doubly curved roof-like patch (x, y) -> (x, y, 0.3 sin(2x) + 0.25 cos(2y))
 // over [0, 2] x [0, 1.5], used by demos, tests and scaling runs. It is a
 // translational surface, so its parameter lines are conjugate and the

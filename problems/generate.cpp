@@ -32,27 +32,6 @@ void Scale(Mesh& mesh, double s) {
   }
 }
 
-// Moves every vertex along a uniformly random direction by up to `noise`
-// times the mean edge length (QuadGrid's noise, mesh/generators.h).
-void AddNoise(Mesh& mesh, double noise, unsigned seed) {
-  double length_sum = 0.0;
-  for (EdgeIndex e : mesh.edges()) {
-    length_sum += std::sqrt(CGAL::squared_distance(mesh.point(mesh.vertex(e, 0)),
-                                                   mesh.point(mesh.vertex(e, 1))));
-  }
-  const double max_offset = noise * length_sum / double(mesh.number_of_edges());
-  std::mt19937_64 rng(seed);
-  std::normal_distribution<double> gaussian(0.0, 1.0);
-  std::uniform_real_distribution<double> uniform(0.0, max_offset);
-  for (VertexIndex v : mesh.vertices()) {
-    Vector direction;
-    do {  // a normalised isotropic Gaussian is uniform on the unit sphere
-      direction = Vector(gaussian(rng), gaussian(rng), gaussian(rng));
-    } while (direction.squared_length() < 1e-12);
-    direction = direction / std::sqrt(direction.squared_length());
-    mesh.point(v) = mesh.point(v) + uniform(rng) * direction;
-  }
-}
 
 std::string Number(double x) {
   std::ostringstream text;
