@@ -91,7 +91,7 @@ std::string Summary(const PicturePanel& panel, double red_at) {
     red += v >= red_at;
   }
   char buf[128];
-  std::snprintf(buf, sizeof buf, "max %s, %.0f%% of faces at red", Number(max).c_str(),
+  std::snprintf(buf, sizeof buf, "max %s, %.1f%% of faces at red", Number(max).c_str(),
                 100.0 * double(red) / double(panel.face_values.size()));
   return buf;
 }
