@@ -111,6 +111,10 @@ nlohmann::json ArraysJson(const FaceValues& values, const Mesh& output, const Me
 }  // namespace
 
 RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
+  return RunSpec(spec, progress, MeshInputs{});
+}
+
+RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const MeshInputs& meshes) {
   const auto start = Clock::now();
   ConfigureThreading();
   CHECK(spec.declaration) << "RunSpec: the spec has no problem (use ReadSpec)";
@@ -153,9 +157,14 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   limits.max_faces = size_t(s.Integer("limits.max_faces"));
   limits.max_face_degree = size_t(s.Integer("limits.max_face_degree"));
   limits.max_file_bytes = std::uint64_t(s.Integer("limits.max_file_bytes"));
-  const Mesh read = d.makes_input ? Mesh() : ReadMesh(spec.mesh(), &info, limits);
+  const Mesh read = d.makes_input ? Mesh()
+                    : meshes.mesh ? *meshes.mesh
+                                  : ReadMesh(spec.mesh(), &info, limits);
+  if (meshes.mesh) info.format = "memory";
   std::unique_ptr<Mesh> reference_mesh;
-  if (!spec.reference().empty()) {
+  if (meshes.reference) {
+    reference_mesh = std::make_unique<Mesh>(*meshes.reference);
+  } else if (!spec.reference().empty()) {
     reference_mesh = std::make_unique<Mesh>(ReadMesh(spec.reference(), nullptr, limits));
   }
   const double read_seconds = Since(start);
@@ -307,6 +316,7 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
     writing([&] { WriteTextFile(temporaries.at("output.report"), rep.dump(2) + "\n", "output.report"); });
   }
   staged.Commit();
+  if (meshes.output) *meshes.output = output;
 
   char head[512];
   std::snprintf(head, sizeof head,
