@@ -15,7 +15,7 @@
 namespace archgeo {
 namespace {
 
-constexpr int kBarWidth = 150;    // colour bar column, pixels
+constexpr int kBarWidth = 180;    // colour bar column, pixels
 constexpr int kTitleHeight = 56;  // panel titles
 constexpr int kCaptionHeight = 34;
 constexpr double kPi = 3.14159265358979323846;

@@ -104,9 +104,9 @@ TEST_F(Render, OneMeshExactlyAsDocumented) {
   const std::string flat = WriteFile("flat.obj", GridObj(8, 0.0));
   const Outcome o = Shell(Archgeo() + " render " + flat + " --out " + Path("view.png"));
   ASSERT_EQ(o.code, 0) << o.output;
-  // One panel (720 × 560 by default) + the colour-bar column (150) and caption (34).
+  // One panel (720 × 560 by default) + the colour-bar column (180) and caption (34).
   const Pixels p = CountPixels(Path("view.png"), 0, 60, 720, 560);
-  EXPECT_EQ(p.width, 720 + 150);
+  EXPECT_EQ(p.width, 720 + 180);
   EXPECT_EQ(p.height, 560 + 34);
   // Planar quads: the mesh covers a good part of the panel, all green, no red.
   EXPECT_GT(p.drawn, 720 * 500 / 10);
@@ -123,7 +123,7 @@ TEST_F(Render, BeforeAfterSideBySideOnOneScale) {
   ASSERT_EQ(o.code, 0) << o.output;
   const Pixels before = CountPixels(Path("pair.png"), 0, 60, 720, 560);
   const Pixels after = CountPixels(Path("pair.png"), 720, 60, 1440, 560);
-  EXPECT_EQ(before.width, 2 * 720 + 150);
+  EXPECT_EQ(before.width, 2 * 720 + 180);
   EXPECT_GT(before.red, before.drawn / 2);
   EXPECT_EQ(before.green, 0);
   EXPECT_GT(after.green, after.drawn / 2);
@@ -145,7 +145,7 @@ TEST_F(Render, SolveWritesImageAndPlyValuesThatMeshioReads) {
                           " --set output.image=" + Path("out.png"));
   ASSERT_TRUE(o.code == 0 || o.code == 4) << o.output;
   const Pixels input = CountPixels(Path("out.png"), 0, 60, 720, 560);
-  EXPECT_EQ(input.width, 2 * 720 + 150);
+  EXPECT_EQ(input.width, 2 * 720 + 180);
   EXPECT_GT(input.drawn, 720 * 500 / 10);
 
   // The PLY property equals δ_PQ,n recomputed from the written vertices.
