@@ -236,25 +236,33 @@ Soup ToSoup(const Mesh& mesh) {
 // header, then the vertices and the faces in soup order. `colors` and each
 // property's values are in soup (mesh.faces()) order.
 bool WritePly(std::ostream& out, const Soup& soup, const std::vector<Rgb>* colors,
-              const std::vector<FaceProperty>& properties, bool ascii) {
+              const std::vector<PlyValues>& properties,
+              const std::vector<PlyValues>& vertex_properties, bool ascii) {
   out << "ply\nformat " << (ascii ? "ascii" : "binary_little_endian") << " 1.0\n"
       << "comment archgeo\n"
       << "element vertex " << soup.points.size() << "\n"
-      << "property double x\nproperty double y\nproperty double z\n"
-      << "element face " << soup.polygons.size() << "\n"
+      << "property double x\nproperty double y\nproperty double z\n";
+  for (const PlyValues& p : vertex_properties) out << "property float " << p.name << "\n";
+  out << "element face " << soup.polygons.size() << "\n"
       << "property list uchar int vertex_indices\n";
   if (colors) out << "property uchar red\nproperty uchar green\nproperty uchar blue\n";
-  for (const FaceProperty& p : properties) out << "property float " << p.name << "\n";
+  for (const PlyValues& p : properties) out << "property float " << p.name << "\n";
   out << "end_header\n";
   const auto raw = [&](const auto& value) {  // little-endian hosts only (x86-64, arm64)
     out.write(reinterpret_cast<const char*>(&value), sizeof value);
   };
   if (ascii) out.precision(17);
-  for (const Point& p : soup.points) {
+  for (std::size_t i = 0; i < soup.points.size(); ++i) {
+    const Point& p = soup.points[i];
     if (ascii) {
-      out << p.x() << " " << p.y() << " " << p.z() << "\n";
+      out << p.x() << " " << p.y() << " " << p.z();
+      out.precision(9);
+      for (const PlyValues& v : vertex_properties) out << " " << float(v.values[i]);
+      out.precision(17);
+      out << "\n";
     } else {
       for (double x : {p.x(), p.y(), p.z()}) raw(x);
+      for (const PlyValues& v : vertex_properties) raw(float(v.values[i]));
     }
   }
   for (std::size_t j = 0; j < soup.polygons.size(); ++j) {
@@ -266,7 +274,7 @@ bool WritePly(std::ostream& out, const Soup& soup, const std::vector<Rgb>* color
         for (int c = 0; c < 3; ++c) out << " " << int((*colors)[j][c]);
       }
       out.precision(9);
-      for (const FaceProperty& p : properties) out << " " << float(p.values[j]);
+      for (const PlyValues& p : properties) out << " " << float(p.values[j]);
       out.precision(17);
       out << "\n";
     } else {
@@ -275,7 +283,7 @@ bool WritePly(std::ostream& out, const Soup& soup, const std::vector<Rgb>* color
       if (colors) {
         for (int c = 0; c < 3; ++c) raw(std::uint8_t((*colors)[j][c]));
       }
-      for (const FaceProperty& p : properties) raw(float(p.values[j]));
+      for (const PlyValues& p : properties) raw(float(p.values[j]));
     }
   }
   return bool(out);
@@ -310,7 +318,8 @@ Mesh ReadMeshFromMemory(const std::string& name, std::string_view data, ReadInfo
 }
 
 void WriteMesh(const std::string& path, const Mesh& mesh, const std::vector<Rgb>* face_colors,
-               bool ascii_ply, const std::vector<FaceProperty>* face_properties) {
+               bool ascii_ply, const std::vector<PlyValues>* face_values,
+               const std::vector<PlyValues>* vertex_values) {
   const Format format = FormatOf(path);
   std::size_t written = 0;  // the vertex's number in the file
   for (VertexIndex v : mesh.vertices()) {
@@ -350,21 +359,29 @@ void WriteMesh(const std::string& path, const Mesh& mesh, const std::vector<Rgb>
           colors.push_back((*face_colors)[f.idx()]);
         }
       }
-      std::vector<FaceProperty> properties;  // in soup order
-      for (std::size_t i = 0; face_properties && i < face_properties->size(); ++i) {
-        const FaceProperty& p = (*face_properties)[i];
-        CHECK(!p.name.empty() && p.name.find_first_not_of(
-                                     "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                     "0123456789_") == std::string::npos)
-            << "PLY property name '" << p.name << "'";
-        FaceProperty& q = properties.emplace_back();
-        q.name = p.name;
-        for (FaceIndex f : mesh.faces()) {
-          CHECK_LT(f.idx(), p.values.size()) << "one value per face";
-          q.values.push_back(p.values[f.idx()]);
+      // In soup order: mesh.faces() and mesh.vertices() order.
+      const auto in_soup_order = [&](const std::vector<PlyValues>* given, auto range) {
+        std::vector<PlyValues> out;
+        for (std::size_t i = 0; given && i < given->size(); ++i) {
+          const PlyValues& p = (*given)[i];
+          CHECK(!p.name.empty() && p.name.find_first_not_of(
+                                       "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                       "0123456789_") == std::string::npos)
+              << "PLY property name '" << p.name << "'";
+          PlyValues& q = out.emplace_back();
+          q.name = p.name;
+          for (auto element : range) {
+            CHECK_LT(element.idx(), p.values.size()) << "one value per element";
+            q.values.push_back(p.values[element.idx()]);
+          }
         }
-      }
-      ok = WritePly(out, soup, face_colors != nullptr ? &colors : nullptr, properties, ascii_ply);
+        return out;
+      };
+      const std::vector<PlyValues> properties = in_soup_order(face_values, mesh.faces());
+      const std::vector<PlyValues> vertex_properties =
+          in_soup_order(vertex_values, mesh.vertices());
+      ok = WritePly(out, soup, face_colors != nullptr ? &colors : nullptr, properties,
+                    vertex_properties, ascii_ply);
       break;
     }
   }

@@ -280,10 +280,21 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const M
   if (s.Bool("output.arrays")) rep["arrays"] = ArraysJson(face_values, output, input);
   if (temporaries.count("output.mesh")) {
     const FaceColors colors = ColorsOf(face_values);
-    const std::vector<FaceProperty> properties = {{face_values.name, face_values.values}};
+    const std::vector<PlyValues> properties = {{face_values.name, face_values.values}};
+    // Per vertex: the displacement from the input (file units), when the
+    // output has the input's vertices.
+    std::vector<PlyValues> vertex_values;
+    if (output.number_of_vertices() == input.number_of_vertices()) {
+      PlyValues& d = vertex_values.emplace_back();
+      d.name = "displacement";
+      d.values.assign(output.num_vertices(), 0.0);
+      for (VertexIndex v : output.vertices()) {
+        d.values[v.idx()] = std::sqrt(CGAL::squared_distance(output.point(v), input.point(v)));
+      }
+    }
     writing([&] {
       WriteMesh(temporaries.at("output.mesh"), output, &colors, s.Bool("output.ascii_ply"),
-                &properties);
+                &properties, &vertex_values);
     });
   }
   if (temporaries.count("output.image")) {

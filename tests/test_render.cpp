@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -154,15 +155,22 @@ TEST_F(Render, SolveWritesImageAndPlyValuesThatMeshioReads) {
   const Outcome m = Shell(std::string(kPython) + " -W ignore -c \"import meshio, json; m = "
                           "meshio.read('" + Path("out.ply") + "'); print(json.dumps({'points': "
                           "len(m.points), 'pq': [float(x) for b in m.cell_data['pq_normalized'] "
-                          "for x in b], 'red': [int(x) for b in m.cell_data['red'] for x in b]}))\"");
+                          "for x in b], 'red': [int(x) for b in m.cell_data['red'] for x in b], "
+                          "'displacement': [float(x) for x in m.point_data['displacement']]}))\"");
   ASSERT_EQ(m.code, 0) << m.output;
   const nlohmann::json read = nlohmann::json::parse(m.output);
   EXPECT_EQ(read["points"], written.number_of_vertices());
+  // Per vertex: the displacement from the input, as the report's maximum.
+  ASSERT_EQ(read["displacement"].size(), written.number_of_vertices());
+  double largest = 0;
+  for (double d : read["displacement"]) largest = std::max(largest, d);
   ASSERT_EQ(read["pq"].size(), written.number_of_faces());
   const nlohmann::json report = nlohmann::json::parse(std::ifstream(Path("out.json")));
   const double red_at = report["colors"]["red_at"];
   EXPECT_EQ(report["colors"]["red_from"], "tolerance.pq_normalized_max");
   EXPECT_EQ(red_at, report["settings"]["tolerance"]["pq_normalized_max"].get<double>());
+  EXPECT_NEAR(largest, report["after"]["displacement_max"].get<double>(), 1e-6 * (1 + largest));
+  EXPECT_GT(largest, 0);
   for (FaceIndex f : written.faces()) {  // faces are read in file order: index = file order
     const double value = read["pq"][f.idx()];
     EXPECT_NEAR(value, planarity.normalized[f.idx()], 1e-6 * (1 + planarity.normalized[f.idx()]));
@@ -174,7 +182,7 @@ TEST_F(Render, BinaryPlyCarriesTheNamedFloatProperty) {
   const std::string twisted = WriteFile("twisted.obj", GridObj(3, 0.05));
   const Mesh mesh = ReadMesh(twisted);
   const PlanarityMeasure planarity = MeasureFacePlanarity(mesh);
-  const std::vector<FaceProperty> properties = {{"pq_normalized", planarity.normalized}};
+  const std::vector<PlyValues> properties = {{"pq_normalized", planarity.normalized}};
   const std::vector<Rgb> colors(mesh.number_of_faces(), Rgb{255, 0, 0});
   WriteMesh(Path("b.ply"), mesh, &colors, false, &properties);
   std::ifstream in(Path("b.ply"), std::ios::binary);
