@@ -38,8 +38,9 @@ std::string RenderFiles(const RenderRequest& r) {
   std::string extension = std::filesystem::path(r.out).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });
-  if (extension != ".png") {
-    throw InputError(r.out, 0, "--out", "pictures are written as PNG: use a .png name");
+  if (extension != ".png" && extension != ".html") {
+    throw InputError(r.out, 0, "--out",
+                     "views are written as PNG pictures or HTML pages: use a .png or .html name");
   }
   if (!r.titles.empty() && r.titles.size() != r.meshes.size()) {
     throw InputError("", 0, "--titles",
@@ -80,7 +81,7 @@ std::string RenderFiles(const RenderRequest& r) {
   std::vector<std::string> inputs = r.meshes;
   StagedOutputs staged(inputs);
   staged.Write(r.out, "--out", [&](const std::string& temporary) {
-    WritePicture(temporary, panels, scale, r.options, "--out");
+    WriteView(temporary, panels, scale, r.options, "--out");
   });
   staged.Commit();
   return "wrote " + r.out + ": " + std::to_string(panels.size()) + " panel(s), colour: " +

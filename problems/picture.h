@@ -21,7 +21,7 @@ PictureScale ScaleOf(const FaceValues& values);
 // `archgeo render MESH... --out OUT.png`.
 struct RenderRequest {
   std::vector<std::string> meshes;  // drawn side by side, the first sets camera and scale
-  std::string out;                  // .png
+  std::string out;                  // .png (a picture) or .html (a page to rotate)
   std::string value = "auto";       // a FaceValueNames() entry, "none", or "auto": planarity
                                     // when the first mesh has a face of 4+ sides, else bending
   double color_max = 0;             // > 0: the value drawn red; else the value's default
@@ -32,7 +32,7 @@ struct RenderRequest {
 // Reads the meshes, draws them and writes `out` (all-or-nothing, as every
 // output). Returns the summary line(s). Throws InputError for unreadable
 // meshes, a wrong number of titles, an unknown value or an output name not
-// ending in .png.
+// ending in .png or .html.
 std::string RenderFiles(const RenderRequest& request);
 
 }  // namespace archgeo

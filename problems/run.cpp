@@ -302,8 +302,8 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const M
     std::vector<PicturePanel> panels = {PanelOf(input, before.values, "input"),
                                         PanelOf(output, face_values.values, "output")};
     writing([&] {
-      WritePicture(temporaries.at("output.image"), panels, ScaleOf(face_values), {},
-                   "output.image");
+      WriteView(temporaries.at("output.image"), panels, ScaleOf(face_values), {},
+                "output.image");
     });
   }
   HookContext& hooks = solution->hooks;

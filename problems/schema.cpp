@@ -84,8 +84,9 @@ std::vector<Key> CommonKeys(const ProblemDecl& d) {
                            "the value shown as pure red in the face colours and pictures; "
                            "unset: the problem's tolerance (problems/colors.h)"));
   keys.push_back(PathKey("output.image", Type::kOutputPath,
-                         "a PNG picture: input and output side by side, faces coloured by the "
-                         "problem's per-face value with a colour bar; empty: not drawn"));
+                         "a PNG picture (or, named .html, a page to rotate): input and output "
+                         "side by side, faces coloured by the problem's per-face value with a "
+                         "colour bar; empty: not drawn"));
   keys.push_back(BoolKey("output.arrays", false,
                          "the report lists the per-face value of the colours and the per-vertex "
                          "displacement (arrays.face, arrays.vertex)"));

@@ -179,6 +179,14 @@ void DrawPanel(cairo_t* cr, const PicturePanel& panel, const Camera& camera, dou
 
 }  // namespace
 
+std::array<std::array<double, 3>, 3> DefaultCamera(const PicturePanel& panel,
+                                                   double tilt_degrees) {
+  const Camera c = MakeCamera(panel, tilt_degrees);
+  return {{{c.right.x(), c.right.y(), c.right.z()},
+           {c.up.x(), c.up.y(), c.up.z()},
+           {c.toward.x(), c.toward.y(), c.toward.z()}}};
+}
+
 void WritePicture(const std::string& path, const std::vector<PicturePanel>& panels,
                   const PictureScale& scale, const PictureOptions& options,
                   const std::string& key) {

@@ -46,4 +46,22 @@ void WritePicture(const std::string& path, const std::vector<PicturePanel>& pane
                   const PictureScale& scale, const PictureOptions& options = {},
                   const std::string& key = "");
 
+// The camera described above for `panel`: screen right, screen up and the
+// direction towards the viewer (unit vectors, right-handed).
+std::array<std::array<double, 3>, 3> DefaultCamera(const PicturePanel& panel,
+                                                   double tilt_degrees);
+
+// The same view as a self-contained HTML page (no server, no network: data
+// and script inline): one canvas per panel, drag to rotate, the colour bar
+// with the scale's label, units and red value. Throws InputError(path, 0,
+// key, ...) as WritePicture.
+void WriteHtmlView(const std::string& path, const std::vector<PicturePanel>& panels,
+                   const PictureScale& scale, const PictureOptions& options = {},
+                   const std::string& key = "");
+
+// WritePicture or WriteHtmlView by the extension of `path` (.png, .html).
+void WriteView(const std::string& path, const std::vector<PicturePanel>& panels,
+               const PictureScale& scale, const PictureOptions& options = {},
+               const std::string& key = "");
+
 }  // namespace archgeo

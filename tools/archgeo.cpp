@@ -8,7 +8,7 @@
 //                        [--seed K] [--refinement K] [--reference REF_OUT]
 //   archgeo darboux NET OUT.ply [--c C] [--minus] [--projective 16 numbers]
 //                        [--samples N] [--isophotes DEG] [--direction X Y Z] [--rulings R.obj]
-//   archgeo render MESH... --out VIEW.png [--value NAME] [--color-max X] [--titles A,B]
+//   archgeo render MESH... --out VIEW.png|VIEW.html [--value NAME] [--color-max X] [--titles A,B]
 //   archgeo help [COMMAND]      (the same text as --help)
 //   archgeo --version
 //
@@ -215,7 +215,9 @@ int main(int argc, char** argv) {
   render->add_option("meshes", render_request.meshes,
                      "Meshes (OBJ, OFF, PLY); the first sets the camera and the colour scale")
       ->required();
-  render->add_option("--out,-o", render_request.out, "Output picture (.png)")->required();
+  render->add_option("--out,-o", render_request.out,
+                     "Output picture (.png) or self-contained page to rotate (.html)")
+      ->required();
   std::string value_names = "auto, none";
   for (const std::string& n : archgeo::FaceValueNames()) value_names += ", " + n;
   render->add_option("--value", render_request.value,
