@@ -2,7 +2,9 @@
 
 #include <glog/logging.h>
 
+#include <cctype>
 #include <chrono>
+#include <filesystem>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -135,6 +137,15 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const M
         CheckMeshExtension(s.String(k.name));
       } catch (const InputError& e) {
         throw s.Error(k.name, "'" + s.String(k.name) + "': " + e.message());
+      }
+    }
+    if (k.name == "output.image") {
+      std::string extension = std::filesystem::path(s.String(k.name)).extension().string();
+      for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+      if (extension != ".png" && extension != ".html") {
+        throw s.Error(k.name, "'" + s.String(k.name) +
+                                  "': views are written as PNG pictures or HTML pages: use a "
+                                  ".png or .html name");
       }
     }
     temporaries[k.name] = staged.Stage(s.String(k.name), k.name);

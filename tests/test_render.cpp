@@ -178,6 +178,17 @@ TEST_F(Render, SolveWritesImageAndPlyValuesThatMeshioReads) {
   }
 }
 
+TEST_F(Render, SolveRefusesAnImageNameThatIsNotPngOrHtml) {
+  const Outcome o = Shell(Archgeo() + " solve " + Source("examples/planar_quads_gentle.yaml") +
+                          " --quiet --set output.mesh=" + Path("out.ply") +
+                          " --set output.report= --set output.image=" + Path("out.stl"));
+  EXPECT_EQ(o.code, 2);
+  EXPECT_NE(o.output.find("'" + Path("out.stl") + "'"), std::string::npos) << o.output;
+  EXPECT_EQ(o.output.find(".tmp-"), std::string::npos) << o.output;  // never a temporary
+  EXPECT_FALSE(fs::exists(Path("out.stl")));
+  EXPECT_FALSE(fs::exists(Path("out.ply")));  // refused before any work
+}
+
 TEST_F(Render, BinaryPlyCarriesTheNamedFloatProperty) {
   const std::string twisted = WriteFile("twisted.obj", GridObj(3, 0.05));
   const Mesh mesh = ReadMesh(twisted);
