@@ -174,7 +174,8 @@ std::string ProblemKeys(const std::string& problem) {
   const ProblemDecl* d = FindProblem(problem);
   if (!d) throw Error("'" + problem + "' is not a problem", "", 0, "problem");
   nlohmann::json keys = nlohmann::json::array();
-  for (const Key& k : ProblemSchema(*d).keys()) {
+  const Schema schema = ProblemSchema(*d);  // alive while its keys are read
+  for (const Key& k : schema.keys()) {
     keys.push_back({{"name", k.name}, {"default", ToJson(k.fallback)}, {"doc", k.doc}});
   }
   return keys.dump(2);

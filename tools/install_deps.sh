@@ -15,6 +15,8 @@ packages=(
   libcairo2-dev fonts-dejavu-core
   # tests: report schema (jsonschema), PLY readers (meshio), Debian's /usr/bin/python3.
   python3 python3-jsonschema python3-meshio python3-numpy
+  # python/ (cmake -DARCHGEO_PYTHON=ON): the module and its pytest tests.
+  pybind11-dev python3-dev python3-pytest
   # tests/test_render_html.cpp: the HTML view in a headless browser.
   chromium
   # tools/fuzz_smoke.sh: clang with libFuzzer and the sanitizer runtimes.
