@@ -155,7 +155,8 @@ int main(int argc, char** argv) {
     const double amax = Get(r, "/details/alpha_max"), amean = Get(r, "/details/alpha_mean");
     const double wmin = Get(r, "/details/W_min"), wmax = Get(r, "/details/W_max");
     const Json& t = r["settings"]["terms"];
-    const std::string solved = r.contains("net") ? r["net"].value("net", "mesh") : "mesh";
+    const Json& d = r["details"];  // report schema 1: the derived net under details.net
+    const std::string solved = d.contains("net") ? d["net"].value("net", "mesh") : "mesh";
     table.Add({c.name, c.paper->name, solved, std::to_string(int(Get(r, "/after/faces"))),
                std::to_string(int(Get(r, "/after/vertices"))),
                Fmt("%.3g", t["fairness"]["weight"].get<double>()),

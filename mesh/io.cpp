@@ -232,22 +232,61 @@ Soup ToSoup(const Mesh& mesh) {
   return soup;
 }
 
-// PLY through a fresh Surface_mesh holding only points, faces and, if given,
-// uchar face properties red/green/blue (`colors` in soup order): CGAL's
-// Surface_mesh writer writes every property map it finds (its "f:color"
-// would add alpha), and the soup writer has no colours.
-bool WritePly(std::ostream& out, const Soup& soup, const std::vector<Rgb>* colors, bool ascii) {
-  Mesh clean;
-  PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, clean);
-  if (colors != nullptr) {
-    const char* names[3] = {"f:red", "f:green", "f:blue"};
-    for (int c = 0; c < 3; ++c) {
-      auto channel = clean.add_property_map<FaceIndex, std::uint8_t>(names[c]).first;
-      for (FaceIndex f : clean.faces()) channel[f] = (*colors)[f.idx()][c];
+// PLY written directly (CGAL's writer has no float face properties): the
+// header, then the vertices and the faces in soup order. `colors` and each
+// property's values are in soup (mesh.faces()) order.
+bool WritePly(std::ostream& out, const Soup& soup, const std::vector<Rgb>* colors,
+              const std::vector<PlyValues>& properties,
+              const std::vector<PlyValues>& vertex_properties, bool ascii) {
+  out << "ply\nformat " << (ascii ? "ascii" : "binary_little_endian") << " 1.0\n"
+      << "comment archgeo\n"
+      << "element vertex " << soup.points.size() << "\n"
+      << "property double x\nproperty double y\nproperty double z\n";
+  for (const PlyValues& p : vertex_properties) out << "property float " << p.name << "\n";
+  out << "element face " << soup.polygons.size() << "\n"
+      << "property list uchar int vertex_indices\n";
+  if (colors) out << "property uchar red\nproperty uchar green\nproperty uchar blue\n";
+  for (const PlyValues& p : properties) out << "property float " << p.name << "\n";
+  out << "end_header\n";
+  const auto raw = [&](const auto& value) {  // little-endian hosts only (x86-64, arm64)
+    out.write(reinterpret_cast<const char*>(&value), sizeof value);
+  };
+  if (ascii) out.precision(17);
+  for (std::size_t i = 0; i < soup.points.size(); ++i) {
+    const Point& p = soup.points[i];
+    if (ascii) {
+      out << p.x() << " " << p.y() << " " << p.z();
+      out.precision(9);
+      for (const PlyValues& v : vertex_properties) out << " " << float(v.values[i]);
+      out.precision(17);
+      out << "\n";
+    } else {
+      for (double x : {p.x(), p.y(), p.z()}) raw(x);
+      for (const PlyValues& v : vertex_properties) raw(float(v.values[i]));
     }
   }
-  CGAL::IO::set_mode(out, ascii ? CGAL::IO::ASCII : CGAL::IO::BINARY);
-  return CGAL::IO::write_PLY(out, clean, CGAL::parameters::stream_precision(17));
+  for (std::size_t j = 0; j < soup.polygons.size(); ++j) {
+    const auto& polygon = soup.polygons[j];
+    if (ascii) {
+      out << polygon.size();
+      for (std::size_t v : polygon) out << " " << v;
+      if (colors) {
+        for (int c = 0; c < 3; ++c) out << " " << int((*colors)[j][c]);
+      }
+      out.precision(9);
+      for (const PlyValues& p : properties) out << " " << float(p.values[j]);
+      out.precision(17);
+      out << "\n";
+    } else {
+      raw(std::uint8_t(polygon.size()));
+      for (std::size_t v : polygon) raw(std::int32_t(v));
+      if (colors) {
+        for (int c = 0; c < 3; ++c) raw(std::uint8_t((*colors)[j][c]));
+      }
+      for (const PlyValues& p : properties) raw(float(p.values[j]));
+    }
+  }
+  return bool(out);
 }
 
 }  // namespace
@@ -279,7 +318,8 @@ Mesh ReadMeshFromMemory(const std::string& name, std::string_view data, ReadInfo
 }
 
 void WriteMesh(const std::string& path, const Mesh& mesh, const std::vector<Rgb>* face_colors,
-               bool ascii_ply) {
+               bool ascii_ply, const std::vector<PlyValues>* face_values,
+               const std::vector<PlyValues>* vertex_values) {
   const Format format = FormatOf(path);
   std::size_t written = 0;  // the vertex's number in the file
   for (VertexIndex v : mesh.vertices()) {
@@ -319,7 +359,29 @@ void WriteMesh(const std::string& path, const Mesh& mesh, const std::vector<Rgb>
           colors.push_back((*face_colors)[f.idx()]);
         }
       }
-      ok = WritePly(out, soup, face_colors != nullptr ? &colors : nullptr, ascii_ply);
+      // In soup order: mesh.faces() and mesh.vertices() order.
+      const auto in_soup_order = [&](const std::vector<PlyValues>* given, auto range) {
+        std::vector<PlyValues> out;
+        for (std::size_t i = 0; given && i < given->size(); ++i) {
+          const PlyValues& p = (*given)[i];
+          CHECK(!p.name.empty() && p.name.find_first_not_of(
+                                       "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                       "0123456789_") == std::string::npos)
+              << "PLY property name '" << p.name << "'";
+          PlyValues& q = out.emplace_back();
+          q.name = p.name;
+          for (auto element : range) {
+            CHECK_LT(element.idx(), p.values.size()) << "one value per element";
+            q.values.push_back(p.values[element.idx()]);
+          }
+        }
+        return out;
+      };
+      const std::vector<PlyValues> properties = in_soup_order(face_values, mesh.faces());
+      const std::vector<PlyValues> vertex_properties =
+          in_soup_order(vertex_values, mesh.vertices());
+      ok = WritePly(out, soup, face_colors != nullptr ? &colors : nullptr, properties,
+                    vertex_properties, ascii_ply);
       break;
     }
   }

@@ -52,16 +52,29 @@ void CheckMeshExtension(const std::string& path);
 
 using Rgb = std::array<unsigned char, 3>;
 
+// A named scalar per face or per vertex, written as a PLY property
+// `float <name>` of the face or vertex element.
+struct PlyValues {
+  std::string name;            // a PLY property name: letters, digits, '_'
+  std::vector<double> values;  // one per face (vertex), indexed by face (vertex) index
+};
+
 // Writes `mesh` to `path` (format from the extension: .obj, .off, .ply),
 // full double precision. PLY is binary little-endian unless `ascii_ply`;
 // `face_colors` (one per face, indexed by face index) is written as PLY
-// face properties red/green/blue and ignored for OBJ/OFF. Writes exactly
-// `path` (use StagedOutputs for atomic outputs). Throws InputError (naming
-// `path`) if the file cannot be written, the extension is unknown, a PLY face
-// has more than 255 vertices, or a vertex has a non-finite coordinate (the
-// message names the first such vertex, numbered as in the file; nothing is
-// written), since no reader could read such a file back.
+// face properties uchar red/green/blue, `face_values` as float face
+// properties after them and `vertex_values` as float vertex properties
+// after x y z; all three are ignored for OBJ/OFF. PLY layout: vertex x y z
+// (double) [values], face vertex_indices (uchar count, int indices) [red
+// green blue] [values]. Writes exactly `path` (use StagedOutputs for atomic
+// outputs). Throws InputError (naming `path`) if the file cannot be written,
+// the extension is unknown, a PLY face has more than 255 vertices, or a
+// vertex has a non-finite coordinate (the message names the first such
+// vertex, numbered as in the file; nothing is written), since no reader
+// could read such a file back.
 void WriteMesh(const std::string& path, const Mesh& mesh,
-               const std::vector<Rgb>* face_colors = nullptr, bool ascii_ply = false);
+               const std::vector<Rgb>* face_colors = nullptr, bool ascii_ply = false,
+               const std::vector<PlyValues>* face_values = nullptr,
+               const std::vector<PlyValues>* vertex_values = nullptr);
 
 }  // namespace archgeo

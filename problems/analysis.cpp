@@ -1,5 +1,6 @@
 #include "problems/analysis.h"
 
+#include <cmath>
 #include <cstdio>
 
 #include "analysis/validity.h"
@@ -183,7 +184,11 @@ AnalysisRows Analyse(const Mesh& mesh, const std::set<std::string>& names) {
 
 void AnalysisToJson(const AnalysisRows& rows, double scale, nlohmann::json& json) {
   for (const AnalysisRow& row : rows) {
-    json[row.key] = row.value;
+    if (row.kind == AnalysisRow::Kind::kCount && std::isfinite(row.value)) {
+      json[row.key] = std::llround(row.value);  // counts are JSON integers
+    } else {
+      json[row.key] = row.value;
+    }
     if (row.kind == AnalysisRow::Kind::kLength) json[row.key + "_relative"] = row.value / scale;
   }
 }

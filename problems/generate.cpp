@@ -136,12 +136,14 @@ RunResult GenerateSurface(const std::string& path, const GenerateOptions& o) {
     CheckFinite(reference, o.reference);
   }
   StagedOutputs staged;
-  WriteMesh(staged.Stage(path), mesh);
+  // Write() names `path`, never the temporary, in a writer's error.
+  staged.Write(path, "", [&](const std::string& temporary) { WriteMesh(temporary, mesh); });
   RunResult run;
   run.summary = "wrote " + path + ": " + std::to_string(mesh.number_of_vertices()) +
                 " vertices, " + std::to_string(mesh.number_of_faces()) + " faces\n";
   if (!o.reference.empty()) {
-    WriteMesh(staged.Stage(o.reference), reference);
+    staged.Write(o.reference, "--reference",
+                 [&](const std::string& temporary) { WriteMesh(temporary, reference); });
     run.summary += "wrote " + o.reference + ": " + std::to_string(reference.number_of_faces()) +
                    " triangles (analytic reference)\n";
   }

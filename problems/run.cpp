@@ -2,7 +2,10 @@
 
 #include <glog/logging.h>
 
+#include <cctype>
 #include <chrono>
+#include <filesystem>
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <map>
@@ -18,6 +21,7 @@
 #include "analysis/validity.h"
 #include "problems/analysis.h"
 #include "problems/colors.h"
+#include "problems/picture.h"
 #include "problems/model.h"
 #include "problems/report.h"
 #include "problems/solve.h"
@@ -69,9 +73,50 @@ nlohmann::json BlocksJson(const Store& store, const Similarity& frame) {
   return blocks;
 }
 
+// Measures that count things (written as JSON integers in the round log).
+bool IsCountMeasure(const std::string& name) {
+  return name == "self_intersecting_pyramids" || name == "bad_saddles" ||
+         name == "saddle_violations";
+}
+
+// The round log with counts as integers (RoundLog keeps every measure as a
+// double).
+nlohmann::json RoundsJson(const nlohmann::json& rounds) {
+  nlohmann::json out = rounds;
+  for (nlohmann::json& row : out) {
+    if (!row.contains("measures")) continue;
+    for (auto& [name, value] : row["measures"].items()) {
+      if (IsCountMeasure(name) && value.is_number() && std::isfinite(value.get<double>())) {
+        value = std::llround(value.get<double>());
+      }
+    }
+  }
+  return out;
+}
+
+// Per-face values (file order of the output's faces) and per-vertex
+// displacement (when the output has the input's vertices), for output.arrays.
+nlohmann::json ArraysJson(const FaceValues& values, const Mesh& output, const Mesh& input) {
+  nlohmann::json face = nlohmann::json::array();
+  for (FaceIndex f : output.faces()) face.push_back(values.values[f.idx()]);
+  nlohmann::json arrays = {{"face", {{values.name, face}}}, {"vertex", nlohmann::json::object()}};
+  if (output.number_of_vertices() == input.number_of_vertices()) {
+    nlohmann::json displacement = nlohmann::json::array();
+    for (VertexIndex v : output.vertices()) {
+      displacement.push_back(std::sqrt(CGAL::squared_distance(output.point(v), input.point(v))));
+    }
+    arrays["vertex"]["displacement"] = displacement;
+  }
+  return arrays;
+}
+
 }  // namespace
 
 RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
+  return RunSpec(spec, progress, MeshInputs{});
+}
+
+RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const MeshInputs& meshes) {
   const auto start = Clock::now();
   ConfigureThreading();
   CHECK(spec.declaration) << "RunSpec: the spec has no problem (use ReadSpec)";
@@ -94,6 +139,15 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
         throw s.Error(k.name, "'" + s.String(k.name) + "': " + e.message());
       }
     }
+    if (k.name == "output.image") {
+      std::string extension = std::filesystem::path(s.String(k.name)).extension().string();
+      for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+      if (extension != ".png" && extension != ".html") {
+        throw s.Error(k.name, "'" + s.String(k.name) +
+                                  "': views are written as PNG pictures or HTML pages: use a "
+                                  ".png or .html name");
+      }
+    }
     temporaries[k.name] = staged.Stage(s.String(k.name), k.name);
   }
   // An error a writer reports about a temporary names the user's path.
@@ -114,9 +168,14 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   limits.max_faces = size_t(s.Integer("limits.max_faces"));
   limits.max_face_degree = size_t(s.Integer("limits.max_face_degree"));
   limits.max_file_bytes = std::uint64_t(s.Integer("limits.max_file_bytes"));
-  const Mesh read = d.makes_input ? Mesh() : ReadMesh(spec.mesh(), &info, limits);
+  const Mesh read = d.makes_input ? Mesh()
+                    : meshes.mesh ? *meshes.mesh
+                                  : ReadMesh(spec.mesh(), &info, limits);
+  if (meshes.mesh) info.format = "memory";
   std::unique_ptr<Mesh> reference_mesh;
-  if (!spec.reference().empty()) {
+  if (meshes.reference) {
+    reference_mesh = std::make_unique<Mesh>(*meshes.reference);
+  } else if (!spec.reference().empty()) {
     reference_mesh = std::make_unique<Mesh>(ReadMesh(spec.reference(), nullptr, limits));
   }
   const double read_seconds = Since(start);
@@ -150,7 +209,6 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   rep["reference"] = spec.reference().empty() ? spec.mesh() : spec.reference();
   rep["problem"] = d.name;
   rep["input"] = {{"format", info.format}, {"reoriented_faces", info.reoriented_faces}};
-  if (!net.details.empty()) rep["net"] = net.details;
   rep["units"] = {{"lengths", "file units"},
                   {"relative", net.derived ? "file units / bounding-box diagonal of the net "
                                              "solved (before solving)"
@@ -164,12 +222,13 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   rep["settings"] = s.ToJson();
   rep["blas"] = BlasLibrary();
   rep["details"] = solution->details;
+  if (!net.details.empty()) rep["details"]["net"] = net.details;  // a net the problem made
   if (s.Bool("output.blocks")) rep["blocks"] = BlocksJson(*solution->store, solution->frame);
   if (levels > 0) {
     rep["multiresolution"] = {{"scheme", s.String("multiresolution.scheme")},
                               {"levels", solution->levels}};
   }
-  rep["rounds"] = solution->rounds;
+  rep["rounds"] = RoundsJson(solution->rounds);
   rep["output_round"] = solved.output_round;
   rep["stop"] = solved.stop;
   rep["usable"] = solved.usable;
@@ -228,20 +287,50 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   const double metrics_seconds = Since(metrics_start);
 
   const auto write_start = Clock::now();
+  // The per-face value of the colours, the PLY properties and the picture;
+  // the input gives the scale where the problem has no tolerance for it.
+  const FaceValues face_values = ComputeFaceValues(d.colors, output, &input, &s);
+  rep["colors"] = {{"value", face_values.name},  {"label", face_values.label},
+                   {"units", face_values.units}, {"red_at", face_values.red_at},
+                   {"red_from", face_values.red_from}};
+  if (s.Bool("output.arrays")) rep["arrays"] = ArraysJson(face_values, output, input);
   if (temporaries.count("output.mesh")) {
-    const FaceColors colors = OutputColors(d.colors, output, s);
+    const FaceColors colors = ColorsOf(face_values);
+    const std::vector<PlyValues> properties = {{face_values.name, face_values.values}};
+    // Per vertex: the displacement from the input (file units), when the
+    // output has the input's vertices.
+    std::vector<PlyValues> vertex_values;
+    if (output.number_of_vertices() == input.number_of_vertices()) {
+      PlyValues& d = vertex_values.emplace_back();
+      d.name = "displacement";
+      d.values.assign(output.num_vertices(), 0.0);
+      for (VertexIndex v : output.vertices()) {
+        d.values[v.idx()] = std::sqrt(CGAL::squared_distance(output.point(v), input.point(v)));
+      }
+    }
     writing([&] {
-      WriteMesh(temporaries.at("output.mesh"), output, &colors, s.Bool("output.ascii_ply"));
+      WriteMesh(temporaries.at("output.mesh"), output, &colors, s.Bool("output.ascii_ply"),
+                &properties, &vertex_values);
+    });
+  }
+  if (temporaries.count("output.image")) {
+    const FaceValues before = ComputeFaceValues(d.colors, input, &input, &s);
+    std::vector<PicturePanel> panels = {PanelOf(input, before.values, "input"),
+                                        PanelOf(output, face_values.values, "output")};
+    writing([&] {
+      WriteView(temporaries.at("output.image"), panels, ScaleOf(face_values), {},
+                "output.image");
     });
   }
   HookContext& hooks = solution->hooks;
   for (const auto& [key, temporary] : temporaries) {
-    if (key != "output.mesh" && key != "output.report") {
+    if (key != "output.mesh" && key != "output.report" && key != "output.image") {
       hooks.temporaries[key.substr(std::string("output.").size())] = temporary;
     }
   }
   if (d.write && !hooks.temporaries.empty()) writing([&] { d.write(hooks); });
   rep["details"] = hooks.details;
+  if (!net.details.empty()) rep["details"]["net"] = net.details;  // a net the problem made
   nlohmann::json seconds = {{"read", read_seconds},
                             {"reference_and_metrics_before", setup_seconds},
                             {"solve", solve_seconds},
@@ -254,6 +343,7 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
     writing([&] { WriteTextFile(temporaries.at("output.report"), rep.dump(2) + "\n", "output.report"); });
   }
   staged.Commit();
+  if (meshes.output) *meshes.output = output;
 
   char head[512];
   std::snprintf(head, sizeof head,

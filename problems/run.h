@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/loop.h"
+#include "mesh/surface_mesh.h"
 #include "problems/spec.h"
 
 namespace archgeo {
@@ -27,6 +28,18 @@ struct RunResult {
 
 // Throws InputError for bad input (nothing is written then).
 RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress);
+
+// Meshes in memory instead of the spec's files (the public API, python/):
+// `mesh` (file units) replaces reading `mesh`, `reference` (may be null)
+// replaces reading `reference`; the spec's keys may then be missing. When
+// `output` is not null it receives the result (file units, the input's
+// vertex order) if one is usable and valid (exit 0 or 4).
+struct MeshInputs {
+  const Mesh* mesh = nullptr;
+  const Mesh* reference = nullptr;
+  Mesh* output = nullptr;
+};
+RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const MeshInputs& meshes);
 
 // `archgeo measure`: metrics of `mesh_path`, against `reference_path` if not
 // empty (displacement too when the vertex counts agree). Throws InputError.

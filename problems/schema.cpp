@@ -81,8 +81,19 @@ std::vector<Key> CommonKeys(const ProblemDecl& d) {
   keys.push_back(PathKey("output.report", Type::kOutputPath,
                          "the JSON run report; empty: not written"));
   keys.push_back(NumberKey("output.color_max", 0.01, 1e-12, 1e12,
-                           "the value shown as pure red in the face colours"));
-  keys.push_back(BoolKey("output.ascii_ply", false, "ASCII instead of binary PLY"));
+                           "the value shown as pure red in the face colours and pictures; "
+                           "unset: the problem's tolerance (problems/colors.h)"));
+  keys.push_back(PathKey("output.image", Type::kOutputPath,
+                         "a PNG picture (or, named .html, a page to rotate): input and output "
+                         "side by side, faces coloured by the problem's per-face value with a "
+                         "colour bar; empty: not drawn"));
+  keys.push_back(BoolKey("output.arrays", false,
+                         "the report lists the per-face value of the colours and the per-vertex "
+                         "displacement (arrays.face, arrays.vertex)"));
+  keys.push_back(BoolKey("output.ascii_ply", true,
+                         "ASCII PLY (every reader, Debian's meshio 5 included, reads its face "
+                         "colours and values); false: binary little-endian, smaller (meshio 5 "
+                         "misreads binary face properties)"));
   keys.push_back(BoolKey("output.blocks", false,
                          "the report lists every output variable block per element (file units)"));
   for (const std::string& k : d.output_keys) {

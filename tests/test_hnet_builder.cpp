@@ -195,16 +195,16 @@ TEST_F(HNetBuilder, NetAlongItsDiagonalsIsSolvedAsItsDiagonalNet) {
   const RunResult run = RunSpec(ReadSpec(Spec(mesh, nullptr, "output: {mesh: out.obj}\n")), {});
   ASSERT_EQ(run.exit_code, 0);
   const nlohmann::json& r = run.report;
-  ASSERT_TRUE(r.contains("net"));
-  EXPECT_EQ(r["net"]["setting"], "auto");
-  EXPECT_NE(r["net"]["net"].get<std::string>().find("diagonal_"), std::string::npos);
+  ASSERT_TRUE(r["details"].contains("net"));  // report schema 1: problem data under details
+  EXPECT_EQ(r["details"]["net"]["setting"], "auto");
+  EXPECT_NE(r["details"]["net"]["net"].get<std::string>().find("diagonal_"), std::string::npos);
   EXPECT_LE(Num(r, "star_planarity_max"), kExactStarPlanarity);
   EXPECT_NEAR(Num(r, "W_min"), 1.0, kExactW);
   EXPECT_NEAR(Num(r, "W_max"), 1.0, kExactW);
   EXPECT_LE(Num(r, "alpha_max"), kExactKinkDegrees);
   EXPECT_LE(r["after"]["displacement_max_relative"].get<double>(), 1e-9);
   const Mesh out = ReadMesh(Path("out.obj"));
-  EXPECT_EQ(out.number_of_vertices(), r["net"]["vertices"].get<size_t>());
+  EXPECT_EQ(out.number_of_vertices(), r["details"]["net"]["vertices"].get<size_t>());
   EXPECT_NE(run.summary.find("diagonal net"), std::string::npos) << run.summary;
 
   // hnet.net: mesh keeps the input (and cannot flatten it without moving):
@@ -213,7 +213,7 @@ TEST_F(HNetBuilder, NetAlongItsDiagonalsIsSolvedAsItsDiagonalNet) {
       RunSpec(ReadSpec(Spec(mesh, nullptr, "hnet: {net: mesh, alternations: 0}\n"
                                            "schedule: {outer_iterations: 1}\n")), {});
   ASSERT_EQ(kept.exit_code, 4);
-  EXPECT_FALSE(kept.report.contains("net"));
+  EXPECT_FALSE(kept.report["details"].contains("net"));
   EXPECT_EQ(kept.report["after"]["vertices"].get<size_t>(), mesh.number_of_vertices());
 }
 
@@ -236,8 +236,8 @@ TEST_F(HNetBuilder, NegshellMeetsTheIssueBounds) {
       {});
   ASSERT_EQ(run.exit_code, 0);
   const nlohmann::json& r = run.report;
-  EXPECT_EQ(r["net"]["net"], "diagonal_0");
-  EXPECT_GT(r["net"]["candidates"]["mesh"]["star_planarity_max"].get<double>(), 0.14);
+  EXPECT_EQ(r["details"]["net"]["net"], "diagonal_0");
+  EXPECT_GT(r["details"]["net"]["candidates"]["mesh"]["star_planarity_max"].get<double>(), 0.14);
   EXPECT_LE(Num(r, "star_planarity_max"), kNegshellStarPlanarity);
   EXPECT_LE(r["after"]["displacement_max_relative"].get<double>(), kNegshellDisplacement);
   EXPECT_GT(Num(r, "W_min"), 0);

@@ -8,11 +8,17 @@
 //                        [--seed K] [--refinement K] [--reference REF_OUT]
 //   archgeo darboux NET OUT.ply [--c C] [--minus] [--projective 16 numbers]
 //                        [--samples N] [--isophotes DEG] [--direction X Y Z] [--rulings R.obj]
+//   archgeo render MESH... --out VIEW.png|VIEW.html [--value NAME] [--color-max X] [--titles A,B]
+//   archgeo help [COMMAND]      (the same text as --help)
+//   archgeo --version
 //
 // Exit codes: 0 a valid result with every tolerance met, 4 a valid result
 // written with a tolerance missed, 3 no usable or no valid result (nothing
 // written), 2 bad input (file, YAML, argument), 1 an internal error.
 #include <CLI/CLI.hpp>
+#include <ceres/version.h>
+#include <CGAL/config.h>
+#include <CGAL/version.h>
 #include <glog/logging.h>
 
 #include <iomanip>
@@ -22,6 +28,7 @@
 #include "mesh/output_files.h"
 #include "problems/darboux.h"
 #include "problems/generate.h"
+#include "problems/picture.h"
 #include "energies/registry.h"
 #include "problems/registry.h"
 #include "problems/run.h"
@@ -105,6 +112,16 @@ int main(int argc, char** argv) {
 
   CLI::App app{"archgeo: optimisation of freeform-architecture meshes (planar quads, ...)"};
   app.require_subcommand(1);
+  app.set_version_flag("--version",
+                       std::string("archgeo ") + ARCHGEO_VERSION + " (report schema_version " +
+                           std::to_string(archgeo::kReportSchemaVersion) + "; Ceres " +
+                           CERES_VERSION_STRING + ", CGAL " + CGAL_STRINGIZE(CGAL_VERSION) + ")",
+                       "Print the version and exit");
+
+  std::string help_topic;
+  CLI::App* help = app.add_subcommand("help", "Print the help of archgeo or of one command");
+  help->add_option("command", help_topic, "A command (solve, spec, terms, measure, generate, "
+                                          "darboux, render)");
 
   std::string spec_path;
   std::vector<std::string> overrides;
@@ -197,6 +214,38 @@ int main(int argc, char** argv) {
   darboux->add_option("--rulings", darboux_options.rulings,
                       "Also write the mapped rulings (circular arcs) as OBJ polylines");
 
+  archgeo::RenderRequest render_request;
+  CLI::App* render = app.add_subcommand(
+      "render", "Draw meshes side by side as a PNG, faces coloured by a per-face value with a "
+                "colour bar (e.g. input and output of a solve)");
+  render->add_option("meshes", render_request.meshes,
+                     "Meshes (OBJ, OFF, PLY); the first sets the camera and the colour scale")
+      ->required();
+  render->add_option("--out,-o", render_request.out,
+                     "Output picture (.png) or self-contained page to rotate (.html)")
+      ->required();
+  std::string value_names = "auto, none";
+  for (const std::string& n : archgeo::FaceValueNames()) value_names += ", " + n;
+  render->add_option("--value", render_request.value,
+                     "Per-face value shown (" + value_names +
+                         "); auto: planarity if the first mesh has quads, else bending")
+      ->capture_default_str();
+  render->add_option("--color-max", render_request.color_max,
+                     "The value drawn red (default: planarity 1e-3 = planar_quads' default "
+                     "tolerance; bending the first mesh's largest value; kinks 1 degree)");
+  render->add_option("--titles", render_request.titles, "One title per mesh (default: file names)")
+      ->delimiter(',');
+  render->add_option("--width", render_request.options.panel_width, "Pixels per panel, across")
+      ->capture_default_str()
+      ->check(CLI::Range(200, 4000));
+  render->add_option("--height", render_request.options.panel_height, "Pixels per panel, down")
+      ->capture_default_str()
+      ->check(CLI::Range(200, 4000));
+  render->add_option("--tilt", render_request.options.tilt_degrees,
+                     "View tilt from the surface's normal, degrees")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 90.0));
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -204,10 +253,29 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : kBadInput;
   }
 
+  if (*help) {
+    if (help_topic.empty()) {
+      std::cout << app.help();
+      return 0;
+    }
+    for (CLI::App* command : app.get_subcommands({})) {
+      if (command->get_name() == help_topic && command != help) {
+        std::cout << command->help();
+        return 0;
+      }
+    }
+    std::cerr << "archgeo: error: '" << help_topic << "' is not a command (archgeo help lists them)\n";
+    return kBadInput;
+  }
+
   try {
     if (*solve) return Solve(spec_path, overrides, quiet);
     if (*spec) return Spec(problem_name, keys_only, common_keys);
     if (*terms) return Terms();
+    if (*render) {
+      std::cout << archgeo::RenderFiles(render_request);
+      return 0;
+    }
     if (*generate) {
       std::cout << archgeo::GenerateSurface(grid_path, gen).summary;
       return 0;

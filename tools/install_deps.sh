@@ -11,6 +11,14 @@ packages=(
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev googletest libbenchmark-dev
   libopenblas0-pthread libopenblas-pthread-dev
+  # render/: PNG pictures (cairo) with DejaVu text.
+  libcairo2-dev fonts-dejavu-core
+  # tests: report schema (jsonschema), PLY readers (meshio), Debian's /usr/bin/python3.
+  python3 python3-jsonschema python3-meshio python3-numpy
+  # python/ (cmake -DARCHGEO_PYTHON=ON): the module and its pytest tests.
+  pybind11-dev python3-dev python3-pytest
+  # tests/test_render_html.cpp: the HTML view in a headless browser.
+  chromium
   # tools/fuzz_smoke.sh: clang with libFuzzer and the sanitizer runtimes.
   clang libclang-rt-14-dev
 )

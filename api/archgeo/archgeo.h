@@ -1,0 +1,90 @@
+// archgeo — the public C++ API (installed as <archgeo/archgeo.h>, target
+// archgeo::archgeo). No CGAL, Ceres or YAML in this header: meshes are plain
+// arrays in file units (any unit: the library moves them into its canonical
+// frame — centred, principal axes, mean edge length 1 — and back itself);
+// specs are YAML text with the keys of `archgeo spec PROBLEM`.
+//
+//   archgeo::MeshData roof = archgeo::Generate({"roof", 20, 15});
+//   archgeo::SolveResult r = archgeo::Solve("problem: planar_quads\n", roof);
+//   // r.mesh: the optimised vertices (same order and faces), r.report: JSON
+//
+// Errors in the user's input (a spec key, a mesh) throw archgeo::Error with
+// exactly the message the command-line tool prints after "archgeo: error: ".
+#pragma once
+
+#include <array>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace archgeo {
+
+// A polygon mesh: vertex positions and faces as 0-based vertex indices
+// (counter-clockwise seen from outside; 3 or more vertices each).
+struct MeshData {
+  std::vector<std::array<double, 3>> vertices;
+  std::vector<std::vector<int>> faces;
+};
+
+// An input error (file, line and key as far as known; what() = the message).
+class Error : public std::runtime_error {
+ public:
+  Error(const std::string& message, std::string file, int line, std::string key)
+      : std::runtime_error(message), file_(std::move(file)), line_(line), key_(std::move(key)) {}
+  const std::string& file() const { return file_; }
+  int line() const { return line_; }
+  const std::string& key() const { return key_; }
+
+ private:
+  std::string file_;
+  int line_;
+  std::string key_;
+};
+
+struct SolveResult {
+  // 0: valid, every tolerance met; 4: valid, a tolerance missed; 3: no usable
+  // or valid result (`mesh` is then empty). As the CLI's exit codes.
+  int status = 0;
+  MeshData mesh;        // the result in file units (same vertex order and faces)
+  std::string report;   // the JSON report (docs/report.schema.json)
+  std::string summary;  // the text the CLI prints
+};
+
+// Solves the problem of the YAML spec `spec_yaml` on `mesh` (its `mesh` key
+// may be omitted). `reference`: the surface to stay close to (null: the mesh
+// itself). `overrides`: "dotted.key=value" as `archgeo solve --set`. Output
+// keys in the spec (output.mesh, output.report, ...) are written as by the
+// CLI, relative to the current folder. Throws Error.
+// `spec_name` names the spec in messages and anchors its relative paths
+// (e.g. the path of the YAML file the text came from).
+SolveResult Solve(const std::string& spec_yaml, const MeshData& mesh,
+                  const MeshData* reference = nullptr,
+                  const std::vector<std::string>& overrides = {},
+                  const std::string& spec_name = "<spec>");
+
+// `archgeo solve SPEC.yaml --set ...`: the spec's files, the result read back.
+SolveResult SolveFile(const std::string& spec_path, const std::vector<std::string>& overrides = {});
+
+// `archgeo measure --json`: the metrics report (JSON) of `mesh`, against
+// `reference` if given. Throws Error.
+std::string Measure(const MeshData& mesh, const MeshData* reference = nullptr);
+
+// `archgeo generate`: an analytic test mesh (see `archgeo generate --help`).
+struct SurfaceOptions {
+  std::string surface = "roof";
+  int nu = 20, nv = 15;
+  double noise = 0.1, scale = 1.0;
+  unsigned seed = 1;
+  int refinement = 1;
+};
+MeshData Generate(const SurfaceOptions& options);
+
+// Problem names and a problem's keys (JSON array of {name, type, default,
+// doc}), as `archgeo spec PROBLEM --keys`.
+std::vector<std::string> Problems();
+std::string ProblemKeys(const std::string& problem);
+
+// The library version ("0.1.0").
+std::string Version();
+
+}  // namespace archgeo

@@ -1,0 +1,232 @@
+// Pictures and coloured outputs (issue 15): the per-face value of every
+// problem and its red value (problems/colors.h), the PLY's named float face
+// property read back by Debian's meshio (python3-meshio) and by archgeo's own
+// reader, and `archgeo render` / output.image PNGs decoded with cairo and
+// checked pixel by pixel (a planar grid is drawn green, a twisted one red).
+#include <cairo.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "mesh/io.h"
+#include "mesh/metrics.h"
+#include "problems/colors.h"
+#include "problems/spec.h"
+#include "tests/scratch_dir.h"
+
+namespace archgeo {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kPython = "/usr/bin/python3";  // Debian's, with python3-meshio
+
+struct Outcome {
+  int code;
+  std::string output;
+};
+
+Outcome Shell(const std::string& command) {
+  Outcome o{0, ""};
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  std::array<char, 4096> buf;
+  while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) o.output.append(buf.data(), n);
+  const int status = pclose(pipe);
+  o.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return o;
+}
+
+std::string Source(const std::string& path) { return std::string(ARCHGEO_SOURCE_DIR) + "/" + path; }
+std::string Archgeo() { return ARCHGEO_BINARY; }
+
+// An n × n grid of unit quads over z = twist · x · y (0: planar quads; a
+// hyperbolic paraboloid's quads are twisted, δ_PQ,n ≈ twist / √2 for unit quads).
+std::string GridObj(int n, double twist) {
+  std::string obj;
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i) {
+      const double x = i - n / 2.0, y = j - n / 2.0;
+      obj += "v " + std::to_string(x) + " " + std::to_string(y) + " " +
+             std::to_string(twist * x * y) + "\n";
+    }
+  }
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i + 1;
+      obj += "f " + std::to_string(a) + " " + std::to_string(a + 1) + " " +
+             std::to_string(a + n + 2) + " " + std::to_string(a + n + 1) + "\n";
+    }
+  }
+  return obj;
+}
+
+struct Pixels {
+  int width = 0, height = 0;
+  int red = 0, green = 0, drawn = 0;  // mesh pixels by dominant channel; drawn = not white
+};
+
+// Counts the pixels of the rectangle [x0, x1) × [y0, y1) of a PNG.
+Pixels CountPixels(const std::string& png, int x0, int y0, int x1, int y1) {
+  cairo_surface_t* s = cairo_image_surface_create_from_png(png.c_str());
+  Pixels p;
+  if (cairo_surface_status(s) != CAIRO_STATUS_SUCCESS) {
+    cairo_surface_destroy(s);
+    return p;
+  }
+  p.width = cairo_image_surface_get_width(s);
+  p.height = cairo_image_surface_get_height(s);
+  const unsigned char* data = cairo_image_surface_get_data(s);
+  const int stride = cairo_image_surface_get_stride(s);
+  for (int y = y0; y < std::min(y1, p.height); ++y) {
+    for (int x = x0; x < std::min(x1, p.width); ++x) {
+      const uint32_t v = *reinterpret_cast<const uint32_t*>(data + y * stride + 4 * x);
+      const int r = (v >> 16) & 255, g = (v >> 8) & 255, b = v & 255;
+      if (r > 245 && g > 245 && b > 245) continue;
+      ++p.drawn;
+      if (r > g + 60 && r > b + 60) ++p.red;
+      if (g > r + 60 && g > b + 60) ++p.green;
+    }
+  }
+  cairo_surface_destroy(s);
+  return p;
+}
+
+class Render : public ScratchDirTest {};
+
+TEST_F(Render, OneMeshExactlyAsDocumented) {
+  const std::string flat = WriteFile("flat.obj", GridObj(8, 0.0));
+  const Outcome o = Shell(Archgeo() + " render " + flat + " --out " + Path("view.png"));
+  ASSERT_EQ(o.code, 0) << o.output;
+  // One panel (720 × 560 by default) + the colour-bar column (180) and caption (34).
+  const Pixels p = CountPixels(Path("view.png"), 0, 60, 720, 560);
+  EXPECT_EQ(p.width, 720 + 180);
+  EXPECT_EQ(p.height, 560 + 34);
+  // Planar quads: the mesh covers a good part of the panel, all green, no red.
+  EXPECT_GT(p.drawn, 720 * 500 / 10);
+  EXPECT_GT(p.green, p.drawn / 2);
+  EXPECT_EQ(p.red, 0);
+}
+
+TEST_F(Render, BeforeAfterSideBySideOnOneScale) {
+  // δ_PQ,n of the twisted grid is far above the default red value 1e-3.
+  const std::string flat = WriteFile("flat.obj", GridObj(8, 0.0));
+  const std::string twisted = WriteFile("twisted.obj", GridObj(8, 0.05));
+  const Outcome o = Shell(Archgeo() + " render " + twisted + " " + flat + " --titles before,after" +
+                          " --out " + Path("pair.png"));
+  ASSERT_EQ(o.code, 0) << o.output;
+  const Pixels before = CountPixels(Path("pair.png"), 0, 60, 720, 560);
+  const Pixels after = CountPixels(Path("pair.png"), 720, 60, 1440, 560);
+  EXPECT_EQ(before.width, 2 * 720 + 180);
+  EXPECT_GT(before.red, before.drawn / 2);
+  EXPECT_EQ(before.green, 0);
+  EXPECT_GT(after.green, after.drawn / 2);
+  EXPECT_EQ(after.red, 0);
+}
+
+TEST_F(Render, RefusesANameThatIsNotPngAndNamesIt) {
+  const std::string flat = WriteFile("flat.obj", GridObj(2, 0.0));
+  const Outcome o = Shell(Archgeo() + " render " + flat + " --out " + Path("view.jpg"));
+  EXPECT_EQ(o.code, 2);
+  EXPECT_NE(o.output.find(Path("view.jpg")), std::string::npos) << o.output;
+  EXPECT_FALSE(fs::exists(Path("view.jpg")));
+}
+
+TEST_F(Render, SolveWritesImageAndPlyValuesThatMeshioReads) {
+  const Outcome o = Shell(Archgeo() + " solve " + Source("examples/planar_quads_gentle.yaml") +
+                          " --quiet --set output.mesh=" + Path("out.ply") +
+                          " --set output.report=" + Path("out.json") +
+                          " --set output.image=" + Path("out.png"));
+  ASSERT_TRUE(o.code == 0 || o.code == 4) << o.output;
+  const Pixels input = CountPixels(Path("out.png"), 0, 60, 720, 560);
+  EXPECT_EQ(input.width, 2 * 720 + 180);
+  EXPECT_GT(input.drawn, 720 * 500 / 10);
+
+  // The PLY property equals δ_PQ,n recomputed from the written vertices.
+  const Mesh written = ReadMesh(Path("out.ply"));
+  const PlanarityMeasure planarity = MeasureFacePlanarity(written);
+  const Outcome m = Shell(std::string(kPython) + " -W ignore -c \"import meshio, json; m = "
+                          "meshio.read('" + Path("out.ply") + "'); print(json.dumps({'points': "
+                          "len(m.points), 'pq': [float(x) for b in m.cell_data['pq_normalized'] "
+                          "for x in b], 'red': [int(x) for b in m.cell_data['red'] for x in b], "
+                          "'displacement': [float(x) for x in m.point_data['displacement']]}))\"");
+  ASSERT_EQ(m.code, 0) << m.output;
+  const nlohmann::json read = nlohmann::json::parse(m.output);
+  EXPECT_EQ(read["points"], written.number_of_vertices());
+  // Per vertex: the displacement from the input, as the report's maximum.
+  ASSERT_EQ(read["displacement"].size(), written.number_of_vertices());
+  double largest = 0;
+  for (double d : read["displacement"]) largest = std::max(largest, d);
+  ASSERT_EQ(read["pq"].size(), written.number_of_faces());
+  const nlohmann::json report = nlohmann::json::parse(std::ifstream(Path("out.json")));
+  const double red_at = report["colors"]["red_at"];
+  EXPECT_EQ(report["colors"]["red_from"], "tolerance.pq_normalized_max");
+  EXPECT_EQ(red_at, report["settings"]["tolerance"]["pq_normalized_max"].get<double>());
+  EXPECT_NEAR(largest, report["after"]["displacement_max"].get<double>(), 1e-6 * (1 + largest));
+  EXPECT_GT(largest, 0);
+  for (FaceIndex f : written.faces()) {  // faces are read in file order: index = file order
+    const double value = read["pq"][f.idx()];
+    EXPECT_NEAR(value, planarity.normalized[f.idx()], 1e-6 * (1 + planarity.normalized[f.idx()]));
+    EXPECT_EQ(read["red"][f.idx()].get<int>(), ScaleColor(value, red_at)[0]);
+  }
+}
+
+TEST_F(Render, SolveRefusesAnImageNameThatIsNotPngOrHtml) {
+  const Outcome o = Shell(Archgeo() + " solve " + Source("examples/planar_quads_gentle.yaml") +
+                          " --quiet --set output.mesh=" + Path("out.ply") +
+                          " --set output.report= --set output.image=" + Path("out.stl"));
+  EXPECT_EQ(o.code, 2);
+  EXPECT_NE(o.output.find("'" + Path("out.stl") + "'"), std::string::npos) << o.output;
+  EXPECT_EQ(o.output.find(".tmp-"), std::string::npos) << o.output;  // never a temporary
+  EXPECT_FALSE(fs::exists(Path("out.stl")));
+  EXPECT_FALSE(fs::exists(Path("out.ply")));  // refused before any work
+}
+
+TEST_F(Render, BinaryPlyCarriesTheNamedFloatProperty) {
+  const std::string twisted = WriteFile("twisted.obj", GridObj(3, 0.05));
+  const Mesh mesh = ReadMesh(twisted);
+  const PlanarityMeasure planarity = MeasureFacePlanarity(mesh);
+  const std::vector<PlyValues> properties = {{"pq_normalized", planarity.normalized}};
+  const std::vector<Rgb> colors(mesh.number_of_faces(), Rgb{255, 0, 0});
+  WriteMesh(Path("b.ply"), mesh, &colors, false, &properties);
+  std::ifstream in(Path("b.ply"), std::ios::binary);
+  std::string header, line;
+  while (std::getline(in, line) && line != "end_header") header += line + "\n";
+  EXPECT_NE(header.find("format binary_little_endian 1.0"), std::string::npos);
+  EXPECT_NE(header.find("property uchar blue\nproperty float pq_normalized\n"), std::string::npos)
+      << header;
+  // Each face: uchar 4, 4 int indices, 3 uchar colours, 1 float.
+  const auto data_start = in.tellg();
+  in.seekg(0, std::ios::end);
+  EXPECT_EQ(size_t(in.tellg() - data_start),
+            mesh.number_of_vertices() * 24 + mesh.number_of_faces() * (1 + 16 + 3 + 4));
+  EXPECT_EQ(ReadMesh(Path("b.ply")).number_of_faces(), mesh.number_of_faces());
+}
+
+// Every problem's colours honour output.color_max; planar_quads' default is
+// its tolerance.
+TEST_F(Render, EveryProblemHonoursColorMax) {
+  const Mesh grid = ReadMesh(Source("examples/roof_grid.obj"));
+  for (const char* example : {"planar_quads", "smooth_mesh", "total_absolute_curvature",
+                              "principal_symmetric", "hnet"}) {
+    const ProblemSpec spec =
+        ReadSpec(Source(std::string("examples/") + example + ".yaml"), {"output.color_max=0.123"});
+    const FaceValues v = ComputeFaceValues(spec.declaration->colors, grid, &grid, &spec.settings);
+    EXPECT_EQ(v.red_at, 0.123) << example;
+    EXPECT_EQ(v.red_from, "output.color_max") << example;
+    EXPECT_EQ(v.values.size(), grid.number_of_faces()) << example;
+  }
+  const ProblemSpec pq = ReadSpec(Source("examples/planar_quads.yaml"),
+                                  {"tolerance.pq_normalized_max=0.004"});
+  EXPECT_EQ(ComputeFaceValues("planarity", grid, &grid, &pq.settings).red_at, 0.004);
+}
+
+}  // namespace
+}  // namespace archgeo
