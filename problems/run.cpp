@@ -2,10 +2,11 @@
 
 #include <glog/logging.h>
 
+#include <algorithm>
 #include <cctype>
 #include <chrono>
-#include <filesystem>
 #include <cmath>
+#include <filesystem>
 #include <cstdio>
 #include <functional>
 #include <map>
@@ -132,20 +133,30 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const M
   std::map<std::string, std::string> temporaries;  // output key -> staged file
   for (const Key& k : s.schema().keys()) {
     if (k.type != Type::kOutputPath || s.String(k.name).empty()) continue;
-    if (k.name == "output.mesh") {
+    const std::string& path = s.String(k.name);
+    if (k.name == "output.mesh" || k.name == "output.layout" || k.name == "output.grid") {
       try {
-        CheckMeshExtension(s.String(k.name));
+        CheckMeshExtension(path);
       } catch (const InputError& e) {
-        throw s.Error(k.name, "'" + s.String(k.name) + "': " + e.message());
+        throw s.Error(k.name, "'" + path + "': " + e.message());
       }
     }
-    if (k.name == "output.image") {
-      std::string extension = std::filesystem::path(s.String(k.name)).extension().string();
+    // Outputs written in one format only: another name would hide the
+    // content (a PLY patchwork named .stl), so it is refused before any work.
+    static const std::map<std::string, std::vector<std::string>> kFormats = {
+        {"output.image", {".png", ".html"}},
+        {"output.patchwork", {".ply"}},
+        {"output.rulings", {".obj"}},
+        {"output.field", {".ply"}}};
+    if (const auto format = kFormats.find(k.name); format != kFormats.end()) {
+      std::string extension = std::filesystem::path(path).extension().string();
       for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
-      if (extension != ".png" && extension != ".html") {
-        throw s.Error(k.name, "'" + s.String(k.name) +
-                                  "': views are written as PNG pictures or HTML pages: use a "
-                                  ".png or .html name");
+      const std::vector<std::string>& allowed = format->second;
+      if (std::find(allowed.begin(), allowed.end(), extension) == allowed.end()) {
+        std::string names;
+        for (const std::string& a : allowed) names += (names.empty() ? "" : " or ") + a;
+        throw s.Error(k.name, "'" + path + "': this output is written as " + names +
+                                  " only: use a " + names + " name");
       }
     }
     temporaries[k.name] = staged.Stage(s.String(k.name), k.name);

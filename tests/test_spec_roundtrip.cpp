@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh/input_error.h"
 #include "problems/generate.h"
 #include "problems/registry.h"
 #include "problems/run.h"
@@ -78,6 +79,27 @@ TEST_F(SpecRoundTrip, EveryProblemsTemplateSolves) {
     EXPECT_TRUE(run.exit_code == 0 || run.exit_code == 3 || run.exit_code == 4) << run.exit_code;
     EXPECT_EQ(std::filesystem::exists(Path(name + "_out.obj")), run.exit_code != 3);
     EXPECT_TRUE(std::filesystem::exists(Path(name + ".json")) || run.exit_code == 3);
+  }
+}
+
+// Outputs written in one format only refuse another name before any work
+// (hnet's patchwork used to be written as PLY under a .stl name).
+TEST_F(SpecRoundTrip, FixedFormatOutputsRefuseOtherNames) {
+  GenerateOptions net;
+  net.surface = "hyperbolic_paraboloid";
+  const std::string mesh = Generated("net", net);
+  const std::string spec = WriteFile("hnet.yaml", SpecTemplate(*FindProblem("hnet")));
+  for (const std::string& key : {"output.patchwork", "output.rulings", "output.image"}) {
+    SCOPED_TRACE(key);
+    const std::string target = Path("out.stl");
+    try {
+      RunSpec(ReadSpec(spec, {"mesh=" + mesh, key + "=" + target}), {});
+      ADD_FAILURE() << "accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.key(), key);
+      EXPECT_NE(e.message().find("out.stl"), std::string::npos) << e.message();
+    }
+    EXPECT_FALSE(std::filesystem::exists(target));
   }
 }
 
