@@ -20,6 +20,7 @@
 #include "mesh/input_error.h"
 #include "mesh/output_files.h"
 #include "tests/scratch_dir.h"
+#include "tests/shell.h"
 
 namespace archgeo {
 namespace {
@@ -186,20 +187,6 @@ TEST_F(OutputsTest, AFullDiskIsAnErrorNamingTheFile) {
 
 // --- end to end -----------------------------------------------------------------
 
-struct Outcome {
-  int code = 0;       // exit code, or 128 + signal
-  std::string output;  // stdout + stderr
-};
-
-Outcome Shell(const std::string& command) {
-  Outcome o;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  std::array<char, 4096> buf;
-  while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) o.output.append(buf.data(), n);
-  const int status = pclose(pipe);
-  o.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  return o;
-}
 
 std::string Archgeo() { return std::string(ARCHGEO_BINARY); }
 std::string Example(const std::string& name) {

@@ -18,26 +18,13 @@
 
 #include "mesh/io.h"
 #include "tests/scratch_dir.h"
+#include "tests/shell.h"
 
 namespace archgeo {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int code;
-  std::string output;
-};
-
-Outcome Shell(const std::string& command) {
-  Outcome o{0, ""};
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  std::array<char, 4096> buf;
-  while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) o.output.append(buf.data(), n);
-  const int status = pclose(pipe);
-  o.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return o;
-}
 
 const char* kConsumerCMake = R"(cmake_minimum_required(VERSION 3.16)
 project(consumer LANGUAGES CXX)

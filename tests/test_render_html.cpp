@@ -14,6 +14,7 @@
 #include <string>
 
 #include "tests/scratch_dir.h"
+#include "tests/shell.h"
 
 namespace archgeo {
 namespace {
@@ -23,11 +24,9 @@ namespace fs = std::filesystem;
 constexpr const char* kChromium = "/usr/bin/chromium";  // Debian's chromium (install_deps)
 
 int Shell(const std::string& command, std::string* output) {
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  std::array<char, 4096> buf;
-  while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) output->append(buf.data(), n);
-  const int status = pclose(pipe);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  const Outcome o = archgeo::Shell(command);
+  output->append(o.output);
+  return o.code;
 }
 
 std::string GridObj(int n, double twist) {

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "tests/scratch_dir.h"
+#include "tests/shell.h"
 
 namespace archgeo {
 namespace {
@@ -29,20 +30,6 @@ namespace fs = std::filesystem;
 // python3 of a virtual environment earlier on PATH.
 constexpr const char* kPython = "/usr/bin/python3";
 
-struct Outcome {
-  int code;
-  std::string output;
-};
-
-Outcome Shell(const std::string& command) {
-  Outcome o{0, ""};
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  std::array<char, 4096> buf;
-  while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) o.output.append(buf.data(), n);
-  const int status = pclose(pipe);
-  o.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return o;
-}
 
 std::string Source(const std::string& path) { return std::string(ARCHGEO_SOURCE_DIR) + "/" + path; }
 

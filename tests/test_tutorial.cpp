@@ -15,24 +15,15 @@
 #include <string>
 #include <vector>
 
+#include "tests/shell.h"
+
 namespace {
+
+using archgeo::Outcome;
+using archgeo::Shell;
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int code;
-  std::string output;
-};
-
-Outcome Shell(const std::string& command) {
-  Outcome o{0, ""};
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  std::array<char, 4096> buf;
-  while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) o.output.append(buf.data(), n);
-  const int status = pclose(pipe);
-  o.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return o;
-}
 
 std::vector<std::string> Steps(const std::string& markdown) {
   std::vector<std::string> steps;
