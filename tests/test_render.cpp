@@ -21,6 +21,7 @@
 #include "problems/colors.h"
 #include "problems/spec.h"
 #include "tests/scratch_dir.h"
+#include "tests/grid_obj.h"
 #include "tests/shell.h"
 
 namespace archgeo {
@@ -34,26 +35,6 @@ constexpr const char* kPython = "/usr/bin/python3";  // Debian's, with python3-m
 std::string Source(const std::string& path) { return std::string(ARCHGEO_SOURCE_DIR) + "/" + path; }
 std::string Archgeo() { return ARCHGEO_BINARY; }
 
-// An n × n grid of unit quads over z = twist · x · y (0: planar quads; a
-// hyperbolic paraboloid's quads are twisted, δ_PQ,n ≈ twist / √2 for unit quads).
-std::string GridObj(int n, double twist) {
-  std::string obj;
-  for (int j = 0; j <= n; ++j) {
-    for (int i = 0; i <= n; ++i) {
-      const double x = i - n / 2.0, y = j - n / 2.0;
-      obj += "v " + std::to_string(x) + " " + std::to_string(y) + " " +
-             std::to_string(twist * x * y) + "\n";
-    }
-  }
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) {
-      const int a = j * (n + 1) + i + 1;
-      obj += "f " + std::to_string(a) + " " + std::to_string(a + 1) + " " +
-             std::to_string(a + n + 2) + " " + std::to_string(a + n + 1) + "\n";
-    }
-  }
-  return obj;
-}
 
 struct Pixels {
   int width = 0, height = 0;

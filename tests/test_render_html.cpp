@@ -14,6 +14,7 @@
 #include <string>
 
 #include "tests/scratch_dir.h"
+#include "tests/grid_obj.h"
 #include "tests/shell.h"
 
 namespace archgeo {
@@ -29,24 +30,6 @@ int Shell(const std::string& command, std::string* output) {
   return o.code;
 }
 
-std::string GridObj(int n, double twist) {
-  std::string obj;
-  for (int j = 0; j <= n; ++j) {
-    for (int i = 0; i <= n; ++i) {
-      const double x = i - n / 2.0, y = j - n / 2.0;
-      obj += "v " + std::to_string(x) + " " + std::to_string(y) + " " +
-             std::to_string(twist * x * y) + "\n";
-    }
-  }
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) {
-      const int a = j * (n + 1) + i + 1;
-      obj += "f " + std::to_string(a) + " " + std::to_string(a + 1) + " " +
-             std::to_string(a + n + 2) + " " + std::to_string(a + n + 1) + "\n";
-    }
-  }
-  return obj;
-}
 
 struct Count {
   int red = 0, green = 0;
@@ -70,7 +53,7 @@ Count CountPixels(cairo_surface_t* s, int x0, int x1, int y0, int y1) {
 class RenderHtml : public ScratchDirTest {};
 
 TEST_F(RenderHtml, HeadlessChromiumDrawsTheMesh) {
-  if (!fs::exists(kChromium)) GTEST_SKIP() << "no " << kChromium << " (tools/install_deps.sh)";
+  ASSERT_TRUE(fs::exists(kChromium)) << "no " << kChromium << " (tools/install_deps.sh installs it)";
   std::ofstream(Path("twisted.obj")) << GridObj(8, 0.05);
   std::ofstream(Path("flat.obj")) << GridObj(8, 0.0);
   std::string output;
