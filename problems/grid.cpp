@@ -703,15 +703,16 @@ ProblemDecl grid() {
       st.rounds_key = "schedule.outer_iterations";
       // The §4 thresholds (tolerance.*) stop Ceres the moment they all hold
       // (per iteration). Fitting (open grids) adds "outside" ≤
-      // grid.fit_tolerance: with a threshold set it is watched per iteration
-      // too (the solve stops when the grid is good enough and on its patch);
-      // without one, each round converges, to show how far the grid reaches
-      // (watched alone, "outside" would stop the first iteration).
+      // grid.fit_tolerance, checked at the end of each round only: a round
+      // ends when the grid is good enough (or converged), and if it then
+      // reaches beyond its patch the next round starts with L shrunk to fit
+      // (FitLength). Watched per iteration, "outside" would keep a round
+      // iterating while the grid, already good enough, grows beyond the
+      // patch (100 × 100 function graph: 10 iterations instead of 2), and
+      // without thresholds it would stop the first iteration.
       const bool fit = s.Number("grid.fit_tolerance") > 0 && s.String("grid.type") == "open";
-      bool thresholds = false;
-      for (const char* m : kMeasures) thresholds = thresholds || s.Number(std::string("tolerance.") + m) > 0;
       st.tolerances = Tolerances(true);
-      if (fit) st.tolerances.push_back({"outside", "grid.fit_tolerance", thresholds});
+      if (fit) st.tolerances.push_back({"outside", "grid.fit_tolerance"});
       st.before_round = &FitLength;
       st.rest_move = 1e-9;
     }
