@@ -263,6 +263,14 @@ std::string ApplyOverride(YAML::Node& root, const std::string& assignment) {
   node.reset(root);
   for (size_t i = 0; i + 1 < parts.size(); ++i) {
     YAML::Node child = node[parts[i]];
+    if (i == 1 && parts[0] == "terms" && child.IsScalar()) {
+      // `terms.X: w` is short for `terms.X: {weight: w}`: an option of X
+      // set from the command line keeps the spec's weight.
+      YAML::Node expanded(YAML::NodeType::Map);
+      expanded["weight"] = YAML::Clone(child);
+      node[parts[i]] = expanded;
+      child = node[parts[i]];
+    }
     if (!child.IsMap()) {
       if (child.IsDefined() && !child.IsNull()) {
         throw InputError("--set", 0, key, "'" + parts[i] + "' is not a mapping in the spec");

@@ -65,6 +65,17 @@ TEST_F(SpecTest, SetOverridesByDottedPath) {
   EXPECT_EQ(s.settings.Where("fixed").file, "--set");
 }
 
+TEST_F(SpecTest, SetAnOptionOfATermGivenAsAWeight) {
+  // `terms.fairness: 0.5` is short for {weight: 0.5}: --set of one of its
+  // options keeps the weight; --set of its weight replaces it.
+  const ProblemSpec s = ReadSpec(Write("mesh: a.obj\nterms:\n  fairness: 0.5\n  anchor: 2\n"),
+                                 {"terms.fairness.relative_to_original=false",
+                                  "terms.anchor.weight=0"});
+  EXPECT_DOUBLE_EQ(s.settings.Number("terms.fairness.weight"), 0.5);
+  EXPECT_FALSE(s.settings.Bool("terms.fairness.relative_to_original"));
+  EXPECT_DOUBLE_EQ(s.settings.Number("terms.anchor.weight"), 0);
+}
+
 TEST_F(SpecTest, EmptyOutputsAreNotWritten) {
   const ProblemSpec s = ReadSpec(Write("mesh: a.obj\noutput: {mesh: out.ply, report: r.json}\n"),
                                  {"output.mesh=", "output.report="});
