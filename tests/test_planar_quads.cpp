@@ -56,7 +56,10 @@ TEST(PlanarQuads, MeetsTheToleranceOnANoisyGrid) {
   EXPECT_TRUE(s->loop.usable);
   EXPECT_TRUE(Met(*s));
   EXPECT_LE(MaxPlanarity(c.mesh), kTolerance);
-  EXPECT_EQ(s->loop.variables, 3 * int(c.mesh.number_of_vertices()));
+  // Positions, and the plane of every quad: unit normal and offset
+  // (face_planarity; the dihedral energy reads the normal).
+  EXPECT_EQ(s->loop.variables,
+            3 * int(c.mesh.number_of_vertices()) + 4 * int(c.mesh.number_of_faces()));
   EXPECT_GT(s->loop.objective.at("total"), 0);
   const Metrics m = ComputeMetrics(c.mesh, &reference, &c.original);
   EXPECT_LT(m.surface_distance_max, 0.1);  // mean edge lengths: the canonical unit
@@ -114,8 +117,10 @@ TEST(PlanarQuads, TrianglesInAQuadDominantMeshAreAllowed) {
 
 TEST(PlanarQuads, FixedWeightsRunToRest) {
   Case c = NoisyGrid(8, 6, 0.05);
-  const auto s = PlanarQuads(c, "tolerance: {pq_normalized_max: 0}\nschedule: {outer_iterations: 30}\n");
-  EXPECT_LT(s->loop.rounds, 30);
+  // (The re-projection onto the reference after each round and the fairness
+  // relative to the input settle geometrically, by about 0.8 per round here.)
+  const auto s = PlanarQuads(c, "tolerance: {pq_normalized_max: 0}\nschedule: {outer_iterations: 60}\n");
+  EXPECT_LT(s->loop.rounds, 60);
   EXPECT_LT(s->loop.log.back().max_move, 1e-6);
   EXPECT_DOUBLE_EQ(s->loop.log.back().weight_scale, 1.0);  // no continuation
 }
