@@ -22,13 +22,14 @@ std::string Upper(std::string s) {
   return s;
 }
 
-// The lower-case names of an enum's values, by Ceres' own *ToString, for
-// the values `usable` accepts.
+// The lower-case names of an enum's values 0..last (its last enumerator in
+// Ceres 2.1: converting an int beyond an enum's range is undefined), by
+// Ceres' own *ToString, for the values `usable` accepts.
 template <typename E>
-std::vector<std::string> Names(const char* (*to_string)(E), int count,
+std::vector<std::string> Names(const char* (*to_string)(E), E last,
                                const std::function<bool(E)>& usable = nullptr) {
   std::vector<std::string> names;
-  for (int i = 0; i < count; ++i) {
+  for (int i = 0; i <= int(last); ++i) {
     const E e = static_cast<E>(i);
     const std::string name = to_string(e);
     if (name == "UNKNOWN" || (usable && !usable(e))) continue;
@@ -39,7 +40,7 @@ std::vector<std::string> Names(const char* (*to_string)(E), int count,
 
 std::vector<std::string> SparseLibraries() {
   return Names<ceres::SparseLinearAlgebraLibraryType>(
-      &ceres::SparseLinearAlgebraLibraryTypeToString, 8,
+      &ceres::SparseLinearAlgebraLibraryTypeToString, ceres::NO_SPARSE,
       [](ceres::SparseLinearAlgebraLibraryType t) {
         return t != ceres::NO_SPARSE && ceres::IsSparseLinearAlgebraLibraryTypeAvailable(t);
       });
@@ -47,7 +48,7 @@ std::vector<std::string> SparseLibraries() {
 
 std::vector<std::string> DenseLibraries() {
   return Names<ceres::DenseLinearAlgebraLibraryType>(
-      &ceres::DenseLinearAlgebraLibraryTypeToString, 8,
+      &ceres::DenseLinearAlgebraLibraryTypeToString, ceres::CUDA,
       [](ceres::DenseLinearAlgebraLibraryType t) {
         return ceres::IsDenseLinearAlgebraLibraryTypeAvailable(t);
       });
@@ -80,29 +81,31 @@ std::vector<Key> SolverKeys() {
   };
   return {
       choice("linear_solver_type", "sparse_normal_cholesky",
-             Names<ceres::LinearSolverType>(&ceres::LinearSolverTypeToString, 8),
+             Names<ceres::LinearSolverType>(&ceres::LinearSolverTypeToString, ceres::CGNR),
              "linear solver of each step (Ceres LinearSolverType)"),
       choice("sparse_linear_algebra_library_type", "suite_sparse", SparseLibraries(),
              "sparse factorisation library (suite_sparse: CHOLMOD)"),
       choice("dense_linear_algebra_library_type", "eigen", DenseLibraries(),
              "dense linear algebra for the dense solvers"),
       choice("preconditioner_type", "jacobi",
-             Names<ceres::PreconditionerType>(&ceres::PreconditionerTypeToString, 8),
+             Names<ceres::PreconditionerType>(&ceres::PreconditionerTypeToString, ceres::SUBSET),
              "preconditioner of the iterative solvers (cgnr, iterative_schur)"),
       choice("trust_region_strategy_type", "levenberg_marquardt",
-             Names<ceres::TrustRegionStrategyType>(&ceres::TrustRegionStrategyTypeToString, 4),
+             Names<ceres::TrustRegionStrategyType>(&ceres::TrustRegionStrategyTypeToString,
+                                                   ceres::DOGLEG),
              "trust-region strategy"),
       choice("dogleg_type", "traditional_dogleg",
-             Names<ceres::DoglegType>(&ceres::DoglegTypeToString, 4),
+             Names<ceres::DoglegType>(&ceres::DoglegTypeToString, ceres::SUBSPACE_DOGLEG),
              "dogleg variant (with trust_region_strategy_type: dogleg)"),
       choice("minimizer_type", "trust_region",
-             Names<ceres::MinimizerType>(&ceres::MinimizerTypeToString, 4),
+             Names<ceres::MinimizerType>(&ceres::MinimizerTypeToString, ceres::TRUST_REGION),
              "trust_region, or line_search (then the line_search_* keys apply)"),
       choice("line_search_direction_type", "lbfgs",
-             Names<ceres::LineSearchDirectionType>(&ceres::LineSearchDirectionTypeToString, 8),
+             Names<ceres::LineSearchDirectionType>(&ceres::LineSearchDirectionTypeToString,
+                                                   ceres::BFGS),
              "direction of the line-search minimizer"),
       choice("line_search_type", "wolfe",
-             Names<ceres::LineSearchType>(&ceres::LineSearchTypeToString, 4),
+             Names<ceres::LineSearchType>(&ceres::LineSearchTypeToString, ceres::WOLFE),
              "line search of the line-search minimizer"),
       integer("max_num_iterations", 50, 0, 1000000, "Ceres iterations per round at most"),
       number("max_solver_time_in_seconds", 1e9, 0, 1e9, "wall time per round at most"),
