@@ -7,14 +7,14 @@
 # (ctest --stop-on-failure), so a noticed term costs seconds and only an
 # unnoticed one costs the whole suite; ARCHGEO_MUTATION_FULL=1 runs every
 # test for every term and counts them (about 40 × 2 minutes on 2 cores).
-# Not part of CI.
+# ARCHGEO_MUTATION_TERMS='a b' checks only those terms. Not part of CI.
 #   bash tools/mutation_check.sh [build-dir]   (default: build-mutation)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 dir=${1:-build-mutation}
 cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DARCHGEO_MUTATION_TESTING=ON > /dev/null
 cmake --build "$dir" -j "$(nproc)" > "$dir/build.log" 2>&1 || { tail -20 "$dir/build.log"; exit 2; }
-terms=$("$dir/archgeo" terms | grep -E '^[a-z_]+  \(energies/' | cut -d' ' -f1)
+terms=${ARCHGEO_MUTATION_TERMS:-$("$dir/archgeo" terms | grep -E '^[a-z_]+  \(energies/' | cut -d' ' -f1)}
 # The unmutated suite must pass, or every term would look noticed.
 if ! ctest --test-dir "$dir" -j "$(nproc)" --timeout 300 > "$dir/mutation_none.log" 2>&1; then
   tail -20 "$dir/mutation_none.log"
@@ -30,7 +30,7 @@ for term in $terms; do
   ARCHGEO_ZERO_TERM="$term" ctest --test-dir "$dir" -j "$(nproc)" --timeout 300 "${stop[@]}" \
     > "$log" 2>&1 || true
   failing=$(grep -cE '^\s+[0-9]+ - ' "$log" || true)
-  names=$(grep -E '^\s+[0-9]+ - ' "$log" | sed -E 's/^\s+[0-9]+ - ([^ ]+).*/\1/' | head -3 | tr '\n' ' ')
+  names=$(grep -E '^\s+[0-9]+ - ' "$log" | sed -E 's/^\s+[0-9]+ - ([^ ]+).*/\1/' | head -3 | tr '\n' ' ' || true)
   printf '%-28s %8s  %s\n' "$term" "$failing" "$names"
   if [ "$failing" -eq 0 ]; then missed=$((missed + 1)); fi
 done
