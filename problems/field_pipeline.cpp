@@ -128,6 +128,13 @@ void CheckLevelSetKeys(const Settings& s) {
     throw s.Error("level_sets.edge_length",
                   "give either level_sets.target_faces or level_sets.edge_length, not both");
   }
+  // Eq. 5 is what gives g and h their slope (eq. 6 and 7 are invariant to
+  // scaling g and h): without it both stay constant and there is no layout.
+  if (!(s.Number("terms.level_set_alignment.weight") > 0)) {
+    throw s.Error("terms.level_set_alignment",
+                  "level_sets needs level_set_alignment (eq. 5) with a weight > 0: it sets the "
+                  "spacing of the level sets; a `terms:` section that does not list it turns it off");
+  }
 }
 
 void CheckFieldOutputs(const Settings& s) {

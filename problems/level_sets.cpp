@@ -188,21 +188,27 @@ void Init(HookContext& c) {
   c.SetElements("level_set_branch_points", std::move(branches));
 }
 
+// ∇g of face f (frame coordinates of the face) from the block's values at
+// its three corner wedges.
+V2 FaceGradient(HookContext& c, const char* block, FaceIndex f) {
+  const State& st = St(c);
+  const Mesh& mesh = c.store->mesh();
+  const std::array<V2, 3> p = FaceCorners2D(mesh, st.field->geometry.frames, f);
+  const double corners[6] = {p[0].x(), p[0].y(), p[1].x(), p[1].y(), p[2].x(), p[2].y()};
+  const HalfedgeIndex h0 = mesh.halfedge(f), h1 = mesh.next(h0), h2 = mesh.next(h1);
+  return TriangleGradient(corners)(*c.store->At(block, st.cut.corner_wedge[h0.idx()]),
+                                   *c.store->At(block, st.cut.corner_wedge[h1.idx()]),
+                                   *c.store->At(block, st.cut.corner_wedge[h2.idx()]));
+}
+
 // Area-weighted mean ‖∇g‖ over the faces where the field is defined.
 double MeanGradient(HookContext& c, const char* block, const std::vector<V2>& dir) {
   const State& st = St(c);
-  const Mesh& mesh = c.store->mesh();
   const FaceFrames& frames = st.field->geometry.frames;
   double sum = 0, area = 0;
-  for (FaceIndex f : mesh.faces()) {
+  for (FaceIndex f : c.store->mesh().faces()) {
     if (dir[f.idx()].isZero()) continue;
-    const std::array<V2, 3> p = FaceCorners2D(mesh, frames, f);
-    const double corners[6] = {p[0].x(), p[0].y(), p[1].x(), p[1].y(), p[2].x(), p[2].y()};
-    const HalfedgeIndex h0 = mesh.halfedge(f), h1 = mesh.next(h0), h2 = mesh.next(h1);
-    const V2 grad = TriangleGradient(corners)(*c.store->At(block, st.cut.corner_wedge[h0.idx()]),
-                                              *c.store->At(block, st.cut.corner_wedge[h1.idx()]),
-                                              *c.store->At(block, st.cut.corner_wedge[h2.idx()]));
-    sum += grad.norm() * frames.area[f.idx()];
+    sum += FaceGradient(c, block, f).norm() * frames.area[f.idx()];
     area += frames.area[f.idx()];
   }
   return area > 0 ? sum / area : 1.0;
@@ -242,21 +248,13 @@ void Round(HookContext& c) {
 // Mean angle between ∇g and R v over the faces where the field is defined
 // (plain and area-weighted), degrees.
 std::array<double, 2> GradientAngle(HookContext& c, const char* block, const std::vector<V2>& dir) {
-  const State& st = St(c);
-  const Mesh& mesh = c.store->mesh();
-  const FaceFrames& frames = st.field->geometry.frames;
+  const FaceFrames& frames = St(c).field->geometry.frames;
   double sum = 0, weighted = 0, area = 0;
   int n = 0;
-  for (FaceIndex f : mesh.faces()) {
+  for (FaceIndex f : c.store->mesh().faces()) {
     const V2& d = dir[f.idx()];
     if (d.isZero()) continue;
-    const std::array<V2, 3> p = FaceCorners2D(mesh, frames, f);
-    const double corners[6] = {p[0].x(), p[0].y(), p[1].x(), p[1].y(), p[2].x(), p[2].y()};
-    const TriangleGradient gradient(corners);
-    const HalfedgeIndex h0 = mesh.halfedge(f), h1 = mesh.next(h0), h2 = mesh.next(h1);
-    const V2 grad = gradient(*c.store->At(block, st.cut.corner_wedge[h0.idx()]),
-                             *c.store->At(block, st.cut.corner_wedge[h1.idx()]),
-                             *c.store->At(block, st.cut.corner_wedge[h2.idx()]));
+    const V2 grad = FaceGradient(c, block, f);
     const V2 target(-d.y(), d.x());
     const double cosine = grad.norm() > 0 ? grad.dot(target) / (grad.norm() * target.norm()) : -1.0;
     const double angle = std::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / M_PI;
@@ -266,6 +264,27 @@ std::array<double, 2> GradientAngle(HookContext& c, const char* block, const std
     ++n;
   }
   return {n > 0 ? sum / n : 0.0, area > 0 ? weighted / area : 0.0};
+}
+
+// How far the level sets of g and h are from conjugate [Zadravec 2010,
+// eq. 7], area-weighted over the curved faces where the field is defined:
+// |t_gᵀ M t_h| / max(|κ1|, |κ2|) with t_g, t_h the unit tangents R∇g/‖∇g‖,
+// R∇h/‖∇h‖ (0: conjugate; at most 1). Unit-free.
+double LevelSetConjugacy(HookContext& c) {
+  const State& st = St(c);
+  const FieldGeometry& geo = st.field->geometry;
+  double sum = 0, area = 0;
+  for (FaceIndex f : c.store->mesh().faces()) {
+    const FaceCurvature& k = geo.curvature[f.idx()];
+    if (st.v[f.idx()].isZero() || k.flat) continue;
+    const V2 g = FaceGradient(c, "level_set_g", f), h = FaceGradient(c, "level_set_h", f);
+    const double scale = std::max(std::abs(k.k1), std::abs(k.k2));
+    if (g.norm() == 0 || h.norm() == 0 || scale == 0) continue;
+    const V2 tg = V2(-g.y(), g.x()) / g.norm(), th = V2(-h.y(), h.x()) / h.norm();
+    sum += std::abs(tg.dot(k.M * th)) / scale * geo.frames.area[f.idx()];
+    area += geo.frames.area[f.idx()];
+  }
+  return area > 0 ? sum / area : 0.0;
 }
 
 V3 Centroid(const Mesh& mesh, FaceIndex f) {
@@ -305,7 +324,11 @@ void Finish(HookContext& c) {
   options.merge_fraction = c.settings->Number("extraction.merge_fraction");
   options.corner_angle_deg = c.settings->Number("extraction.corner_angle");
   options.boundary_snap_fraction = c.settings->Number("extraction.boundary_snap");
-  result->layout = ExtractQuadMesh(mesh, fn, options);
+  if (st.spacing_g > 0 && st.spacing_h > 0) {
+    result->layout = ExtractQuadMesh(mesh, fn, options);
+  } else {
+    result->layout.error = "g or h is constant (no level sets to cut along)";
+  }
   const Extraction& x = result->layout;
 
   nlohmann::json& d = result->details;
@@ -327,6 +350,7 @@ void Finish(HookContext& c) {
                                   {"h_vs_Rw", angle_h[0]},
                                   {"g_vs_Rv_area_weighted", angle_g[1]},
                                   {"h_vs_Rw_area_weighted", angle_h[1]}};
+  d["conjugacy_mean"] = LevelSetConjugacy(c);
   char line[512];
   std::snprintf(line, sizeof line,
                 "level sets: spacing %.4g (file units), %zu cut chains; mean angle ∇g vs Rv "

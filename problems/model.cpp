@@ -161,6 +161,15 @@ class MeshModel::View : public TermContext {
   void SetUnit(double* block) override { SetManifold(block, new ceres::SphereManifold<3>()); }
 
   void SetManifold(double* block, ceres::Manifold* manifold) override {
+#ifdef ARCHGEO_MUTATION_TESTING
+    // The zeroed term's manifolds go too (on_curve has no residual, only its
+    // manifold).
+    const char* zeroed = std::getenv("ARCHGEO_ZERO_TERM");
+    if (zeroed && name_ == zeroed) {
+      delete manifold;
+      return;
+    }
+#endif
     if (problem_->HasParameterBlock(block) && !problem_->GetManifold(block)) {
       problem_->SetManifold(block, manifold);
     } else {

@@ -277,6 +277,59 @@ TEST(ConjugateField, EveryFaceStaysConjugateUnderEveryConstraint) {
   EXPECT_GT(r.details.at("boundary_aligned_faces").get<int>(), 0);
 }
 
+// ‖z_N − z_M‖ of face f (frame coordinates; z_M of Prop. 1).
+double DistanceToZM(const FieldResult& r, int f) {
+  return (r.field.z_n[size_t(f)] - r.geometry.curvature[size_t(f)].z_m).norm();
+}
+
+// Placing a singularity [Zadravec 2010, §4]: tcd_singularity_placement pulls
+// z_N onto z_M at the chosen face, where the conjugate pair degenerates
+// (v = w). Unplaced, the field stays near the principal one there.
+TEST(ConjugateField, APlacedSingularityPutsZNOntoZM) {
+  const Mesh mesh = EllipsoidTop(30, 20);
+  const int placed = NearestFace(mesh, 0.3, 0.1);
+  const auto free = SolveYaml(kUnconstrained, mesh);
+  const auto s = SolveYaml("problem: conjugate_field\nfield: {boundary_alignment: 0, "
+                           "singularities: [" + std::to_string(placed) + "]}\n", mesh);
+  const FieldResult& r0 = *FieldOf(*free);
+  const FieldResult& r = *FieldOf(*s);
+  ASSERT_TRUE(r.geometry.curvature[size_t(placed)].z_m_finite);
+  const double before = DistanceToZM(r0, placed), after = DistanceToZM(r, placed);
+  std::printf("placed singularity: ‖z_N − z_M‖ %.3e unplaced, %.3e placed\n", before, after);
+  EXPECT_GT(before, 0.1);
+  EXPECT_LT(after, 0.05 * before);
+}
+
+// Singularity avoidance (Ψ of §4): on the closed ellipsoid the principal
+// field meets z_M at the four umbilics; with Ψ on, the field keeps z_N away
+// from z_M everywhere it can (the four +1/2 indices stay: χ = 2).
+TEST(ConjugateField, SingularityAvoidanceKeepsZNAwayFromZM) {
+  const Mesh mesh = TriangulatedEllipsoid(1.5, 1.0, 0.6, 4);
+  const auto plain = SolveYaml(kUnconstrained, mesh);
+  const auto avoided = SolveYaml(std::string(kUnconstrained) +
+                                     "terms: {tcd_singularity_avoidance: 1}\n", mesh);
+  const auto nearest = [](const FieldResult& r) {
+    double m = 1e300, mean = 0;
+    int n = 0;
+    for (size_t f = 0; f < r.field.z_n.size(); ++f) {
+      if (!r.geometry.curvature[f].z_m_finite) continue;
+      const double d = DistanceToZM(r, int(f));
+      m = std::min(m, d);
+      mean += std::min(d, 1.0);
+      ++n;
+    }
+    return std::array<double, 2>{m, mean / n};
+  };
+  const auto a = nearest(*FieldOf(*plain)), b = nearest(*FieldOf(*avoided));
+  std::printf("avoidance: min ‖z_N − z_M‖ %.3e -> %.3e, mean of min(‖z_N − z_M‖, ρ) %.3f -> %.3f\n",
+              a[0], b[0], a[1], b[1]);
+  // Without Ψ, z_N passes within 0.1 ρ of z_M (at the umbilics); with Ψ, no
+  // face comes closer than ρ / 2, and the indices still sum to χ = 2.
+  EXPECT_LT(a[0], 0.1);
+  EXPECT_GT(b[0], 0.5);
+  EXPECT_EQ(FieldOf(*avoided)->field.index_sum, 2.0);
+}
+
 TEST(ConjugateField, APlaneFallsBackToTheSmoothFieldWithAWarning) {
   const Mesh mesh = TriangulatedGrid(12, 10, [](double u, double v) -> Vec3 {
     return {2 * u + 0.5 * v, 1.5 * v, 0.3 * u - 0.2 * v};
@@ -357,6 +410,25 @@ TEST(LevelSets, EvenRoundingGivesQuadsAroundAMinusHalfOddAHexagon) {
   }
 }
 
+// Eq. 7 [Zadravec 2010, §5]: level_set_conjugacy makes the level sets of g
+// and h conjugate through M_f, beyond what following the field (eq. 5, 6)
+// gives: the report's conjugacy_mean, |t_gᵀ M t_h| / max|κ|, drops.
+TEST(LevelSets, Equation7MakesTheLevelSetsMoreConjugate) {
+  const Mesh mesh = EllipsoidTop(24, 16);
+  double figure[2];
+  for (int on = 0; on < 2; ++on) {
+    const auto s = SolveYaml(std::string("problem: level_sets\nlevel_sets: {target_faces: 200}\n"
+                                         "field: {boundary_alignment: 0}\nterms: {"
+                                         "tcd_dirichlet: 1, tcd_transversality: 0.1, "
+                                         "level_set_alignment: 0.1, level_set_normalised: 1, "
+                                         "level_set_conjugacy: ") + (on ? "10" : "0") + "}\n",
+                             mesh);
+    figure[on] = LevelSetsOf(*s)->details.at("conjugacy_mean").get<double>();
+  }
+  std::printf("level-set conjugacy (eq. 7): %.3e without, %.3e with\n", figure[0], figure[1]);
+  EXPECT_LT(figure[1], 0.5 * figure[0]);
+}
+
 class ConjugateLayoutTest : public ScratchDirTest {};
 
 // The whole pipeline on the inspired mesh: the PQ step reaches δ_PQ,n ≤ 1e-3
@@ -419,6 +491,10 @@ TEST_F(FieldInputTest, QuadMeshesFaceIdsAndTargetFaceCountsAreChecked) {
   ExpectInputError("mesh: top.obj\nproblem: level_sets\nlevel_sets: {target_faces: 50, "
                    "edge_length: 0.1}\n",
                    "level_sets.edge_length");
+  // A `terms:` section without eq. 5 leaves g and h constant: refused, not a
+  // crash in the extraction.
+  ExpectInputError("mesh: top.obj\nproblem: level_sets\nterms: {level_set_conjugacy: 1}\n",
+                   "terms.level_set_alignment");
 }
 
 }  // namespace
