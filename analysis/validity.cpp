@@ -123,8 +123,9 @@ std::string Validity::Reason() const {
   for (const ValidityCheck& c : checks) {
     if (!c.hard || c.passed()) continue;
     char line[256];
-    std::snprintf(line, sizeof line, "%s: %d (worst %.4g %s, limit %.4g; e.g. element %d)\n",
-                  c.name.c_str(), c.count, c.worst, c.unit.c_str(), c.limit, c.example);
+    std::snprintf(line, sizeof line, "%s: %d (worst %.4g %s, limit %.4g%s)\n", c.name.c_str(),
+                  c.count, c.worst, c.unit.c_str(), c.limit,
+                  c.example >= 0 ? ("; e.g. element " + std::to_string(c.example)).c_str() : "");
     text += line;
   }
   return text;

@@ -19,6 +19,12 @@
 // terms, so the result is the principal field; constraints and avoidance move
 // it, and the Dirichlet energy spreads their effect smoothly.
 //
+// Moving a singularity (field.moves, §4 "local correction"): after the
+// global solve, a last stage `move` subtracts the σ-blended correction of
+// eq. 4 around each move's `from` face so that z_N = z_M at its `to` face
+// (fields/singularities.h MoveSingularity), then re-optimises only the faces
+// in each blend's transition band (0 < β < 1), every other face held.
+//
 // Report: the singularities (index, vertex, position in file units; index of
 // a vertex from the rotation of the bisector of (v, w) around it, §3), the
 // index sum, the conjugacy error max |vᵀ M w| / (|κ|max ‖v‖‖w‖) (≈ 1e-16, by
@@ -38,6 +44,7 @@
 #include "core/problem.h"
 #include "energies/tcd_prescribed_direction.h"
 #include "fields/field_io.h"
+#include "fields/singularities.h"
 #include "mesh/input_error.h"
 #include "mesh/topology.h"
 #include "problems/field_pipeline.h"
@@ -99,6 +106,61 @@ std::vector<Prescribed> ReadDirections(const Settings& s) {
   return out;
 }
 
+// field.moves: a list of {from: face, to: face, inner_radius: r1, outer_radius: r2}.
+struct Move {
+  int from = 0, to = 0;
+  double inner = 0, outer = 0;  // file units; 0 = default
+  std::string key;
+  int line = 0;
+};
+
+std::vector<Move> ReadMoves(const Settings& s) {
+  std::vector<Move> out;
+  if (!s.Given("field.moves")) return out;
+  const YAML::Node list = std::any_cast<YAML::Node>(s.Custom("field.moves"));
+  const Origin at = s.Where("field.moves");
+  auto fail = [&](const YAML::Node& node, const std::string& key, const std::string& message) {
+    const int line = at.file == "--set" ? 0 : (node.Mark().line >= 0 ? node.Mark().line + 1 : at.line);
+    throw InputError(at.file, line, key, message);
+  };
+  if (!list.IsSequence()) fail(list, "field.moves", "expected a list of {from, to}");
+  for (size_t i = 0; i < list.size(); ++i) {
+    const YAML::Node m = list[i];
+    Move move;
+    move.key = "field.moves[" + std::to_string(i) + "]";
+    move.line = at.file == "--set" ? 0 : m.Mark().line + 1;
+    if (!m.IsMap()) fail(m, move.key, "expected {from: face, to: face, inner_radius, outer_radius}");
+    for (const auto& e : m) {
+      const std::string k = e.first.IsScalar() ? e.first.Scalar() : "";
+      if (k != "from" && k != "to" && k != "inner_radius" && k != "outer_radius") {
+        fail(e.first, move.key + "." + k, "unknown key (allowed: from, to, inner_radius, outer_radius)");
+      }
+    }
+    for (const auto& [name, target] : {std::make_pair("from", &move.from), std::make_pair("to", &move.to)}) {
+      long long face = -1;
+      if (!m[name] || !m[name].IsScalar() || !YAML::convert<long long>::decode(m[name], face) ||
+          face < 0 || face > (1LL << 30)) {
+        fail(m, move.key + "." + name, "expected a face index ≥ 0");
+      }
+      *target = int(face);
+    }
+    for (const auto& [name, target] : {std::make_pair("inner_radius", &move.inner),
+                                       std::make_pair("outer_radius", &move.outer)}) {
+      if (!m[name]) continue;
+      if (!m[name].IsScalar() || !YAML::convert<double>::decode(m[name], *target) ||
+          !std::isfinite(*target) || *target <= 0) {
+        fail(m[name], move.key + "." + name, "expected a length > 0 (file units)");
+      }
+    }
+    if (move.from == move.to) fail(m, move.key + ".to", "`to` is the `from` face: nothing to move");
+    if (move.inner > 0 && move.outer > 0 && move.outer <= move.inner) {
+      fail(m, move.key + ".outer_radius", "must be larger than inner_radius");
+    }
+    out.push_back(move);
+  }
+  return out;
+}
+
 JetOptions Jets(const Settings& s) {
   JetOptions o;
   o.degree = int(s.Integer("jets.degree"));
@@ -130,6 +192,9 @@ std::vector<int> FaceVertices(const Mesh& mesh, FaceIndex f) {
 
 struct Constraints {
   std::vector<int> placements;
+  std::vector<Move> moves;
+  bool moved = false;
+  nlohmann::json moves_done = nlohmann::json::array();
   std::vector<std::pair<int, V2>> prescribed;  // face, direction in the face frame
   int file_rows = 0, file_flagged = 0, file_skipped = 0;
   int boundary_faces = 0;  // boundary tangents prescribed (field.boundary_alignment)
@@ -166,6 +231,24 @@ void Init(HookContext& c) {
                     "the surface [Zadravec 2010, Prop. 4]");
     }
     con.placements.push_back(int(id));
+  }
+
+  con.moves = ReadMoves(s);
+  for (const Move& m : con.moves) {
+    const Origin at = s.Where("field.moves");
+    for (const auto& [name, f] : {std::make_pair(".from", m.from), std::make_pair(".to", m.to)}) {
+      if (f >= faces) {
+        throw InputError(at.file, m.line, m.key + name,
+                         "face " + std::to_string(f) + " does not exist: the mesh has " +
+                             std::to_string(faces) + " faces (ids are 0-based)");
+      }
+    }
+    const FaceCurvature& k = g.curvature[size_t(m.to)];
+    if (!k.z_m_finite || (k.z_m - V2(1, 0)).norm() >= 1.0) {
+      throw InputError(at.file, m.line, m.key + ".to",
+                       "face " + std::to_string(m.to) + " has K ≤ 0 or mean curvature 0: no "
+                       "singularity can be moved there [Zadravec 2010, Prop. 4]");
+    }
   }
 
   std::vector<Prescribed> prescribed = ReadDirections(s);
@@ -285,6 +368,57 @@ void Init(HookContext& c) {
   c.SetElements("tcd_prescribed", std::move(directions));
 }
 
+// Before the `move` stage: each move's σ-blended correction (eq. 4), then
+// every face outside the blends' transition bands (0 < β < 1) held constant:
+// the re-optimisation smooths the seam of each blend and keeps the moved
+// field inside r1 (re-optimising the whole disc pulls the singularity back
+// to where the energy had it, e.g. to an umbilic).
+void ApplyMoves(HookContext& c) {
+  Constraints& con = c.State<Constraints>("constraints");
+  if (con.moved) return;
+  con.moved = true;
+  const Mesh& mesh = c.store->mesh();
+  const auto g = std::any_cast<std::shared_ptr<const FieldGeometry>>(c.state.at("geometry"));
+  const Origin at = c.settings->Where("field.moves");
+  std::vector<bool> touched(mesh.number_of_faces(), false), held(mesh.number_of_faces(), false);
+  for (const Move& m : con.moves) {
+    std::vector<V2> z(mesh.number_of_faces());
+    for (FaceIndex f : mesh.faces()) z[f.idx()] = Eigen::Map<const V2>(c.store->At("z_n", int(f.idx())));
+    const double apart =
+        (g->frames.centroid[size_t(m.from)] - g->frames.centroid[size_t(m.to)]).norm();
+    const double inner = m.inner > 0 ? m.inner / c.frame.scale : 2 * apart;
+    const double outer = m.outer > 0 ? m.outer / c.frame.scale : 2 * inner;
+    if (outer <= inner) {
+      throw InputError(at.file, m.line, m.key + ".outer_radius",
+                       "must be larger than inner_radius (" + std::to_string(inner * c.frame.scale) + ")");
+    }
+    const SingularityMove move = MoveSingularity(mesh, g->frames, g->transports, g->curvature, z,
+                                                 FaceIndex(m.from), FaceIndex(m.to), inner, outer);
+    if (!move.error.empty()) throw InputError(at.file, m.line, m.key, move.error);
+    if (!move.reached) {
+      throw InputError(at.file, m.line, m.key + ".inner_radius",
+                       "face " + std::to_string(m.to) + " is farther from face " +
+                           std::to_string(m.from) + " (through the mesh) than inner_radius " +
+                           std::to_string(inner * c.frame.scale) + ": the blend does not reach it");
+    }
+    int count = 0;
+    for (FaceIndex f : mesh.faces()) {
+      Eigen::Map<V2>(c.store->At("z_n", int(f.idx()))) = move.z_n[f.idx()];
+      if (move.beta[f.idx()] > 0) ++count;
+      if (move.beta[f.idx()] > 0 && move.beta[f.idx()] < 1) touched[f.idx()] = true;
+    }
+    held[size_t(m.to)] = true;
+    int band = 0;
+    for (FaceIndex f : mesh.faces()) band += move.beta[f.idx()] > 0 && move.beta[f.idx()] < 1;
+    con.moves_done.push_back({{"from", m.from}, {"to", m.to}, {"inner_radius", inner * c.frame.scale},
+                              {"outer_radius", outer * c.frame.scale}, {"faces_blended", count},
+                              {"faces_reoptimised", band}});
+  }
+  for (FaceIndex f : mesh.faces()) {
+    if (!touched[f.idx()] || held[f.idx()]) c.model->SetConstant("z_n", int(f.idx()));
+  }
+}
+
 double LineDeg(const V2& a, const V2& b) {
   return std::abs(WrapLineAngle(LineAngle(a) - LineAngle(b))) * 180.0 / M_PI;
 }
@@ -345,6 +479,7 @@ void Finish(HookContext& c) {
   d["angle_mean_deg"] = field.mean_angle_deg;
   d["principal_deviation_mean_deg"] = counted > 0 ? deviation / counted : 0.0;
   d["placements"] = con.placements.size();
+  if (!con.moves_done.empty()) d["moves"] = con.moves_done;
   d["boundary_aligned_faces"] = con.boundary_faces;
   d["prescribed"] = {{"faces", con.prescribed.size()},
                      {"deviation_max_deg", prescribed_max},
@@ -417,11 +552,17 @@ ProblemDecl conjugate_field() {
     CheckFieldOutputs(s);
   };
   d.init = &Init;
-  d.stages = [](const Settings&) {
+  d.stages = [](const Settings& settings) {
     Stage s;
     s.name = "field";
     s.rounds_key = "field.rounds";
-    return std::vector<Stage>{s};
+    std::vector<Stage> stages{s};
+    if (settings.Given("field.moves")) {
+      s.name = "move";
+      s.before_round = &ApplyMoves;
+      stages.push_back(s);
+    }
+    return stages;
   };
   d.finish = &Finish;
   d.output_keys = {"field"};

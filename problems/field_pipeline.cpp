@@ -65,6 +65,16 @@ std::vector<Key> FieldKeys() {
   directions.doc =
       "prescribed conjugate directions: a list of {face: id, direction: [x, y, z]} (file units; "
       "projected onto the face)";
+  Key moves;
+  moves.name = "field.moves";
+  moves.type = Type::kCustom;
+  moves.example = "[{from: 120, to: 180}]";
+  moves.doc =
+      "singularities moved locally after the solve [Zadravec 2010, §4, eq. 4]: a list of "
+      "{from: face, to: face, inner_radius: r1, outer_radius: r2} (file units; the σ blend is 1 "
+      "within r1 of `from` and 0 beyond r2; defaults r1 = 2 × the distance from `from` to `to`, "
+      "r2 = 2 r1); z_N = z_M at `to`, then the faces of the transition band (r1 to r2) are "
+      "re-optimised";
   Key constraints;
   constraints.name = "field.constraints";
   constraints.type = Type::kInputPath;
@@ -77,6 +87,7 @@ std::vector<Key> FieldKeys() {
                      "jet neighbourhood: vertices within this many edges (grown until it has "
                      "twice the jet's coefficients)"),
           singularities,
+          moves,
           directions,
           constraints,
           NumberKey("field.boundary_alignment", 1, 0, 1e6,

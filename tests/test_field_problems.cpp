@@ -330,6 +330,58 @@ TEST(ConjugateField, SingularityAvoidanceKeepsZNAwayFromZM) {
   EXPECT_EQ(FieldOf(*avoided)->field.index_sum, 2.0);
 }
 
+// Moving a singularity (§4, eq. 4) through the spec: on the closed
+// ellipsoid one of the four +1/2 singularities at the umbilics is moved ≈ 0.25
+// along y; the blend's transition band is re-optimised, the rest stays as
+// blended or as solved. The
+// moved singularity is a +1/2 near its target, none is left at its old place,
+// the index sum stays χ = 2, and the faces beyond the blend are unchanged.
+TEST(ConjugateField, FieldMovesTakeASingularityToItsTarget) {
+  const Mesh mesh = TriangulatedEllipsoid(1.5, 1.0, 0.6, 4);
+  const auto first = SolveYaml(kUnconstrained, mesh);
+  const FieldResult& r0 = *FieldOf(*first);
+  ASSERT_EQ(r0.field.singularities.size(), 4u);
+  // File units: the singularity's position and the faces nearest it and
+  // 0.25 away from it.
+  const Vec3 p = r0.frame.FromCanonical(Vec3{r0.field.singularities[0].position.x(),
+                                              r0.field.singularities[0].position.y(),
+                                              r0.field.singularities[0].position.z()});
+  const V3 old(p[0], p[1], p[2]), target = old + V3(0, 0.25, 0);
+  int from = 0, to = 0;
+  for (FaceIndex f : mesh.faces()) {
+    if ((Centroid(r0, f) - old).norm() < (Centroid(r0, FaceIndex(from)) - old).norm()) from = int(f.idx());
+    if ((Centroid(r0, f) - target).norm() < (Centroid(r0, FaceIndex(to)) - target).norm()) to = int(f.idx());
+  }
+  const auto s = SolveYaml("problem: conjugate_field\nfield: {boundary_alignment: 0, moves: "
+                           "[{from: " + std::to_string(from) + ", to: " + std::to_string(to) +
+                           ", inner_radius: 0.35, outer_radius: 0.7}]}\n", mesh);
+  const FieldResult& r = *FieldOf(*s);
+  ASSERT_TRUE(r.details.contains("moves"));
+  const int blended = r.details.at("moves")[0].at("faces_blended").get<int>();
+  int near_old = 0, near_new = 0;
+  for (const Singularity& x : r.field.singularities) {
+    const Vec3 q = r.frame.FromCanonical(Vec3{x.position.x(), x.position.y(), x.position.z()});
+    const V3 at(q[0], q[1], q[2]);
+    if ((at - old).norm() < 0.08) ++near_old;
+    if ((at - Centroid(r, FaceIndex(to))).norm() < 0.08) {
+      ++near_new;
+      EXPECT_EQ(x.index, 0.5);
+    }
+  }
+  const int band = r.details.at("moves")[0].at("faces_reoptimised").get<int>();
+  int unchanged = 0;
+  for (FaceIndex f : mesh.faces()) unchanged += r.field.z_n[f.idx()] == r0.field.z_n[f.idx()];
+  std::printf("moved singularity: %d faces blended (%d re-optimised), %d unchanged of %zu; +1/2 "
+              "near the target %d, near the old place %d\n", blended, band, unchanged,
+              size_t(mesh.number_of_faces()), near_new, near_old);
+  EXPECT_EQ(r.field.index_sum, 2.0);
+  EXPECT_EQ(near_new, 1);
+  EXPECT_EQ(near_old, 0);
+  EXPECT_GT(band, 0);
+  EXPECT_LT(band, blended);
+  EXPECT_EQ(unchanged + blended, int(mesh.number_of_faces()));
+}
+
 TEST(ConjugateField, APlaneFallsBackToTheSmoothFieldWithAWarning) {
   const Mesh mesh = TriangulatedGrid(12, 10, [](double u, double v) -> Vec3 {
     return {2 * u + 0.5 * v, 1.5 * v, 0.3 * u - 0.2 * v};
@@ -491,6 +543,13 @@ TEST_F(FieldInputTest, QuadMeshesFaceIdsAndTargetFaceCountsAreChecked) {
   ExpectInputError("mesh: top.obj\nproblem: level_sets\nlevel_sets: {target_faces: 50, "
                    "edge_length: 0.1}\n",
                    "level_sets.edge_length");
+  ExpectInputError("mesh: top.obj\nproblem: conjugate_field\nfield: {moves: [{from: 3, to: 3}]}\n",
+                   "field.moves[0].to");
+  ExpectInputError("mesh: top.obj\nproblem: conjugate_field\nfield: {moves: [{from: 3, to: 9999}]}\n",
+                   "field.moves[0].to");
+  ExpectInputError("mesh: top.obj\nproblem: conjugate_field\nfield:\n  moves:\n"
+                   "    - {from: 3, to: 150, inner_radius: 0.01}\n",
+                   "field.moves[0].inner_radius");
   // A `terms:` section without eq. 5 leaves g and h constant: refused, not a
   // crash in the extraction.
   ExpectInputError("mesh: top.obj\nproblem: level_sets\nterms: {level_set_conjugacy: 1}\n",
