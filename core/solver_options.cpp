@@ -208,6 +208,14 @@ void ConfigureThreading() {
   // Let libgomp shrink CHOLMOD's hard-coded 4-thread teams to the cores we
   // have, unless the user decided with OMP_DYNAMIC.
   if (!std::getenv("OMP_DYNAMIC")) omp_set_dynamic(1);
+  // OpenBLAS on one thread (looked up at run time: another BLAS may serve
+  // dgemm_), unless the user decided with OPENBLAS_NUM_THREADS.
+  if (!std::getenv("OPENBLAS_NUM_THREADS")) {
+    using SetThreads = void (*)(int);
+    if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"))) {
+      set(1);
+    }
+  }
 }
 
 std::string BlasLibrary() {
