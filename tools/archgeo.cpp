@@ -9,6 +9,9 @@
 //   archgeo darboux NET OUT.ply [--c C] [--minus] [--projective 16 numbers]
 //                        [--samples N] [--isophotes DEG] [--direction X Y Z] [--rulings R.obj]
 //   archgeo render MESH... --out VIEW.png|VIEW.html [--value NAME] [--color-max X] [--titles A,B]
+//   archgeo bench SPEC --mesh M... [--vary 'KEY=[A,B]']... [--repeat N] [--out R.csv]
+//                        [--emit-jobs JOBS.txt [--records DIR]]
+//   archgeo bench --collect DIR [--out R.csv]
 //   archgeo help [COMMAND]      (the same text as --help)
 //   archgeo --version
 //
@@ -21,9 +24,12 @@
 #include <CGAL/version.h>
 #include <glog/logging.h>
 
+#include <unistd.h>
+
 #include <iomanip>
 #include <iostream>
 
+#include "bench/bench.h"
 #include "mesh/input_error.h"
 #include "mesh/output_files.h"
 #include "problems/darboux.h"
@@ -121,7 +127,7 @@ int main(int argc, char** argv) {
   std::string help_topic;
   CLI::App* help = app.add_subcommand("help", "Print the help of archgeo or of one command");
   help->add_option("command", help_topic, "A command (solve, spec, terms, measure, generate, "
-                                          "darboux, render)");
+                                          "darboux, render, bench)");
 
   std::string spec_path;
   std::vector<std::string> overrides;
@@ -246,6 +252,31 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Range(0.0, 90.0));
 
+  archgeo::BenchRequest bench_request;
+  CLI::App* bench = app.add_subcommand(
+      "bench", "Sweep solver settings over meshes: each run in its own process; a table, CSV and "
+               "JSON of times, memory and quality (docs/bench.md)");
+  bench->add_option("spec", bench_request.spec, "YAML problem spec every run solves");
+  bench->add_option("--mesh", bench_request.meshes, "An input mesh (repeatable)");
+  bench->add_option("--vary", bench_request.vary,
+                    "A key and its values, e.g. 'solver.linear_solver_type=[sparse_normal_cholesky,"
+                    "cgnr]' (repeatable; the runs are the cross product × the meshes)");
+  bench->add_option("--repeat", bench_request.repeat, "Runs of each setting and mesh (wall time: "
+                                                      "median, min, max)")
+      ->capture_default_str();
+  bench->add_option("--out", bench_request.out, "CSV of the rows; the same rows as JSON beside it "
+                                                "(.json)");
+  bench->add_option("--emit-jobs", bench_request.emit_jobs,
+                    "Write one shell command per run to this file instead of running them");
+  bench->add_option("--records", bench_request.records,
+                    "Folder the emitted jobs write their records into (default: JOBS_runs)");
+  bench->add_option("--collect", bench_request.collect,
+                    "Merge the records of this folder (from --emit-jobs) into the table");
+  bench->add_option("--set", bench_request.sets, "One run's setting KEY=VALUE (with --record)");
+  bench->add_option("--record", bench_request.record,
+                    "Run once (the --set settings; --repeat is the repeat's number) and write its "
+                    "record here (what an emitted job does)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -272,6 +303,14 @@ int main(int argc, char** argv) {
     if (*solve) return Solve(spec_path, overrides, quiet);
     if (*spec) return Spec(problem_name, keys_only, common_keys);
     if (*terms) return Terms();
+    if (*bench) {
+      bench_request.self = "/proc/self/exe";
+      char resolved[4096];
+      const ssize_t n = readlink("/proc/self/exe", resolved, sizeof resolved - 1);
+      if (n > 0) bench_request.self.assign(resolved, size_t(n));
+      std::cout << archgeo::RunBench(bench_request);
+      return 0;
+    }
     if (*render) {
       std::cout << archgeo::RenderFiles(render_request);
       return 0;

@@ -1,0 +1,490 @@
+#include "bench/bench.h"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "mesh/input_error.h"
+#include "mesh/output_files.h"
+#include "problems/spec.h"
+
+extern char** environ;
+
+namespace archgeo {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+using Settings_ = std::vector<std::pair<std::string, std::string>>;
+
+std::string Trim(const std::string& s) {
+  const size_t a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");
+  return a == std::string::npos ? "" : s.substr(a, b - a + 1);
+}
+
+// 'key=[a,b,c]' or 'key=a'.
+std::pair<std::string, std::vector<std::string>> ParseVary(const std::string& text) {
+  const size_t eq = text.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    throw InputError("", 0, "--vary", "'" + text + "': expected KEY=[VALUE,VALUE,...]");
+  }
+  const std::string key = Trim(text.substr(0, eq));
+  std::string list = Trim(text.substr(eq + 1));
+  std::vector<std::string> values;
+  if (!list.empty() && list.front() == '[') {
+    if (list.back() != ']') throw InputError("", 0, "--vary", "'" + text + "': missing ']'");
+    list = list.substr(1, list.size() - 2);
+    std::stringstream in(list);
+    for (std::string v; std::getline(in, v, ',');) values.push_back(Trim(v));
+  } else {
+    values.push_back(list);
+  }
+  for (const std::string& v : values) {
+    if (v.empty()) throw InputError("", 0, "--vary", "'" + text + "': an empty value");
+  }
+  return {key, values};
+}
+
+std::pair<std::string, std::string> ParseSet(const std::string& text) {
+  const size_t eq = text.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    throw InputError("", 0, "--set", "'" + text + "': expected KEY=VALUE");
+  }
+  return {Trim(text.substr(0, eq)), Trim(text.substr(eq + 1))};
+}
+
+std::string Absolute(const std::string& path) { return fs::absolute(path).lexically_normal().string(); }
+
+// Single-quoted for a POSIX shell.
+std::string Quote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+std::string ReadText(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The first line of `text` that contains `marker` ("" if none).
+std::string LineWith(const std::string& text, const std::string& marker) {
+  std::stringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    if (line.find(marker) != std::string::npos) return line;
+  }
+  return "";
+}
+
+std::string LastLine(const std::string& text) {
+  std::stringstream in(text);
+  std::string last;
+  for (std::string line; std::getline(in, line);) {
+    if (!Trim(line).empty()) last = line;
+  }
+  return last;
+}
+
+// The spec read with `mesh` (bad spec or mesh: InputError, as `solve` says it).
+ProblemSpec Read(const std::string& spec, const std::string& mesh,
+                 const Settings_& settings = {}) {
+  std::vector<std::string> overrides = {"mesh=" + mesh};
+  for (const auto& [k, v] : settings) overrides.push_back(k + "=" + v);
+  return ReadSpec(spec, overrides);
+}
+
+double Median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
+}
+
+std::string Number(double x, const char* format = "%.4g") {
+  char text[64];
+  std::snprintf(text, sizeof text, format, x);
+  return text;
+}
+
+std::string SettingsText(const json& settings) {
+  std::string text;
+  for (const auto& [k, v] : settings.items()) {
+    text += (text.empty() ? "" : " ") + k + "=" + v.get<std::string>();
+  }
+  return text.empty() ? "(spec)" : text;
+}
+
+// The table, CSV and JSON of merged rows.
+std::vector<std::string> Columns(const json& rows) {
+  std::vector<std::string> measures;
+  for (const json& r : rows) {
+    for (const auto& [k, v] : r["measures"].items()) {
+      if (std::find(measures.begin(), measures.end(), k) == measures.end()) measures.push_back(k);
+    }
+  }
+  return measures;
+}
+
+std::string Csv(const json& rows) {
+  const std::vector<std::string> measures = Columns(rows);
+  std::vector<std::string> keys;
+  for (const json& r : rows) {
+    for (const auto& [k, v] : r["settings"].items()) {
+      if (std::find(keys.begin(), keys.end(), k) == keys.end()) keys.push_back(k);
+    }
+  }
+  auto cell = [](std::string s) {
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string q = "\"";
+    for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+  };
+  std::string out = "mesh";
+  for (const std::string& k : keys) out += "," + k;
+  out += ",repeats,exit_code,wall_median_s,wall_min_s,wall_max_s,evaluation_s,linear_solver_s,"
+         "ceres_s,iterations,peak_memory_mb,tolerance_met,objective";
+  for (const std::string& m : measures) out += "," + m;
+  out += ",message\n";
+  for (const json& r : rows) {
+    out += cell(r["mesh"]);
+    for (const std::string& k : keys) out += "," + cell(r["settings"].value(k, ""));
+    out += "," + std::to_string(r["repeats"].get<int>()) + "," +
+           std::to_string(r["exit_code"].get<int>());
+    for (const char* k : {"wall_median_s", "wall_min_s", "wall_max_s", "evaluation_s",
+                          "linear_solver_s", "ceres_s"}) {
+      out += "," + (r[k].is_null() ? std::string() : Number(r[k].get<double>(), "%.6g"));
+    }
+    out += "," + (r["iterations"].is_null() ? std::string() : std::to_string(r["iterations"].get<int>()));
+    out += "," + Number(r["peak_memory_mb"].get<double>(), "%.1f");
+    out += "," + (r["tolerance_met"].is_null() ? std::string()
+                                                : std::string(r["tolerance_met"].get<bool>() ? "true" : "false"));
+    out += "," + (r["objective"].is_null() ? std::string() : Number(r["objective"].get<double>(), "%.10g"));
+    for (const std::string& m : measures) {
+      out += "," + (r["measures"].contains(m) ? Number(r["measures"][m].get<double>(), "%.6g") : "");
+    }
+    out += "," + cell(r["message"]) + "\n";
+  }
+  return out;
+}
+
+std::string Table(const json& rows) {
+  const std::vector<std::string> measures = Columns(rows);
+  std::vector<std::vector<std::string>> cells = {{"mesh", "settings", "exit", "wall s (min-max)",
+                                                  "eval s", "linear s", "iter", "MB", "tol"}};
+  for (const std::string& m : measures) cells[0].push_back(m);
+  for (const json& r : rows) {
+    std::vector<std::string> c = {fs::path(r["mesh"].get<std::string>()).filename().string(),
+                                  SettingsText(r["settings"]), std::to_string(r["exit_code"].get<int>())};
+    c.push_back(r["wall_median_s"].is_null()
+                    ? "-"
+                    : Number(r["wall_median_s"].get<double>(), "%.3f") + " (" +
+                          Number(r["wall_min_s"].get<double>(), "%.3f") + "-" +
+                          Number(r["wall_max_s"].get<double>(), "%.3f") + ")");
+    for (const char* k : {"evaluation_s", "linear_solver_s"}) {
+      c.push_back(r[k].is_null() ? "-" : Number(r[k].get<double>(), "%.3f"));
+    }
+    c.push_back(r["iterations"].is_null() ? "-" : std::to_string(r["iterations"].get<int>()));
+    c.push_back(Number(r["peak_memory_mb"].get<double>(), "%.0f"));
+    c.push_back(r["tolerance_met"].is_null() ? "-" : (r["tolerance_met"].get<bool>() ? "met" : "missed"));
+    for (const std::string& m : measures) {
+      c.push_back(r["measures"].contains(m) ? Number(r["measures"][m].get<double>(), "%.3e") : "-");
+    }
+    cells.push_back(c);
+  }
+  std::vector<size_t> width(cells[0].size(), 0);
+  for (const auto& row : cells) {
+    for (size_t i = 0; i < row.size(); ++i) width[i] = std::max(width[i], row[i].size());
+  }
+  std::string out;
+  for (size_t r = 0; r < cells.size(); ++r) {
+    for (size_t i = 0; i < cells[r].size(); ++i) {
+      out += cells[r][i] + std::string(width[i] - cells[r][i].size() + 2, ' ');
+    }
+    out += "\n";
+    if (r == 0) out += std::string(out.size() - 1, '-') + "\n";
+  }
+  for (const json& r : rows) {
+    if (!r["message"].get<std::string>().empty()) {
+      out += fs::path(r["mesh"].get<std::string>()).filename().string() + ", " +
+             SettingsText(r["settings"]) + ": " + r["message"].get<std::string>() + "\n";
+    }
+  }
+  return out;
+}
+
+void WriteOutputs(const json& rows, const std::string& csv_path) {
+  if (csv_path.empty()) return;
+  fs::path json_path = csv_path;
+  json_path.replace_extension(".json");
+  WriteTextFile(csv_path, Csv(rows), "--out");
+  WriteTextFile(json_path.string(), rows.dump(2) + "\n", "--out");
+}
+
+// The validated plan: every combination of the --vary values, in order.
+std::vector<Settings_> Combinations(const BenchRequest& q) {
+  std::vector<Settings_> plan = {{}};
+  for (const std::string& text : q.vary) {
+    const auto [key, values] = ParseVary(text);
+    std::vector<Settings_> next;
+    for (const Settings_& s : plan) {
+      for (const std::string& v : values) {
+        Settings_ t = s;
+        t.push_back({key, v});
+        next.push_back(t);
+      }
+    }
+    plan = next;
+  }
+  return plan;
+}
+
+void Validate(const BenchRequest& q, const std::vector<Settings_>& plan) {
+  if (q.meshes.empty()) throw InputError("", 0, "--mesh", "give at least one --mesh");
+  if (q.repeat < 1) throw InputError("", 0, "--repeat", "must be at least 1");
+  for (const std::string& m : q.meshes) {
+    if (!fs::is_regular_file(m)) throw InputError(m, 0, "--mesh", "no such file");
+  }
+  const ProblemSpec spec = Read(q.spec, q.meshes.front());
+  for (const Settings_& s : plan) {
+    for (const auto& [key, value] : s) {
+      if (!spec.settings.schema().Find(key)) {
+        throw InputError("", 0, "--vary",
+                         "'" + key + "' is not a key of this spec's problem (archgeo spec " +
+                             spec.settings.String("problem") + " --keys lists them)");
+      }
+    }
+  }
+}
+
+}  // namespace
+
+json RunOnce(const std::string& self, const std::string& spec, const std::string& mesh,
+             const Settings_& settings, int repeat) {
+  json record = {{"mesh", Absolute(mesh)}, {"settings", json::object()}, {"repeat", repeat}};
+  for (const auto& [k, v] : settings) record["settings"][k] = v;
+  char pattern[] = "/tmp/archgeo_bench.XXXXXX";
+  const char* made = mkdtemp(pattern);
+  if (!made) throw InputError("/tmp", 0, "", "cannot create a scratch folder");
+  const fs::path scratch = made;
+
+  std::vector<std::string> args = {self, "solve", Absolute(spec), "--quiet", "--set",
+                                   "mesh=" + Absolute(mesh)};
+  for (const auto& [k, v] : settings) args.insert(args.end(), {"--set", k + "=" + v});
+  // Every output the spec writes goes into the scratch folder.
+  try {
+    const ProblemSpec read = Read(spec, mesh);
+    for (const Key& k : read.settings.schema().keys()) {
+      if (k.type != Type::kOutputPath || k.name == "output.report") continue;
+      const std::string path = read.settings.String(k.name);
+      if (!path.empty()) {
+        args.insert(args.end(),
+                    {"--set", k.name + "=" + (scratch / fs::path(path).filename()).string()});
+      }
+    }
+  } catch (const InputError&) {
+    // The run itself reports it.
+  }
+  const fs::path report = scratch / "report.json";
+  args.insert(args.end(), {"--set", "output.report=" + report.string()});
+
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, (scratch / "stdout.txt").c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, 2, (scratch / "stderr.txt").c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const auto start = std::chrono::steady_clock::now();
+  pid_t pid = 0;
+  const int spawned = posix_spawn(&pid, self.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) {
+    fs::remove_all(scratch);
+    throw InputError(self, 0, "", "cannot run the archgeo binary");
+  }
+  int status = 0;
+  rusage usage{};
+  while (wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const int exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  record["exit_code"] = exit_code;
+  record["wall_s"] = wall;
+  record["peak_memory_mb"] = double(usage.ru_maxrss) / 1024.0;
+  record["command"] = args;
+
+  const std::string out = ReadText(scratch / "stdout.txt"), err = ReadText(scratch / "stderr.txt");
+  std::string message;
+  if (exit_code != 0) {
+    message = LineWith(err, "archgeo: ");
+    if (message.empty()) message = LineWith(out, "warning");
+    if (message.empty()) message = LastLine(err);
+  }
+  record["message"] = message;
+  if (fs::is_regular_file(report)) {
+    try {
+      const json r = json::parse(ReadText(report));
+      const json& seconds = r.at("seconds");
+      record["ceres_s"] = seconds.value("ceres", 0.0);
+      record["evaluation_s"] = seconds.value("jacobian", 0.0);
+      record["linear_solver_s"] = seconds.value("linear_solver", 0.0);
+      record["iterations"] = r.at("iterations").value("inner", 0);
+      record["objective"] = r.at("objective").value("total", 0.0);
+      bool met = true;
+      json measures = json::object();
+      for (const auto& [name, t] : r.at("tolerances").items()) {
+        met = met && t.value("met", false);
+        const std::string measure = name.substr(name.find('.') + 1);
+        if (r.at("after").contains(measure) && r["after"][measure].is_number()) {
+          measures[measure] = r["after"][measure];
+        }
+      }
+      record["tolerance_met"] = met;
+      record["measures"] = measures;
+    } catch (const json::exception& e) {
+      record["message"] = std::string("unreadable report: ") + e.what();
+    }
+  }
+  fs::remove_all(scratch);
+  return record;
+}
+
+json MergeRecords(const std::vector<json>& records) {
+  std::vector<std::pair<std::string, json>> order;
+  std::map<std::string, std::vector<json>> groups;
+  for (const json& r : records) {
+    const std::string id = r["mesh"].get<std::string>() + "\n" + r["settings"].dump();
+    if (!groups.count(id)) order.push_back({id, r});
+    groups[id].push_back(r);
+  }
+  json rows = json::array();
+  for (const auto& [id, first] : order) {
+    const std::vector<json>& g = groups[id];
+    json row = {{"mesh", first["mesh"]}, {"settings", first["settings"]},
+                {"repeats", int(g.size())}, {"exit_code", 0}, {"message", ""}};
+    std::vector<double> wall, eval, linear, ceres;
+    double memory = 0;
+    for (const json& r : g) {
+      if (r["exit_code"].get<int>() != 0 && row["exit_code"].get<int>() == 0) {
+        row["exit_code"] = r["exit_code"];
+        row["message"] = r["message"];
+      }
+      wall.push_back(r["wall_s"].get<double>());
+      memory = std::max(memory, r["peak_memory_mb"].get<double>());
+      if (r.contains("ceres_s")) {
+        ceres.push_back(r["ceres_s"].get<double>());
+        eval.push_back(r["evaluation_s"].get<double>());
+        linear.push_back(r["linear_solver_s"].get<double>());
+      }
+    }
+    row["wall_median_s"] = Median(wall);
+    row["wall_min_s"] = *std::min_element(wall.begin(), wall.end());
+    row["wall_max_s"] = *std::max_element(wall.begin(), wall.end());
+    row["peak_memory_mb"] = memory;
+    row["ceres_s"] = ceres.empty() ? json() : json(Median(ceres));
+    row["evaluation_s"] = eval.empty() ? json() : json(Median(eval));
+    row["linear_solver_s"] = linear.empty() ? json() : json(Median(linear));
+    // The quality figures are the same in every repeat (deterministic runs).
+    row["iterations"] = first.contains("iterations") ? first["iterations"] : json();
+    row["objective"] = first.contains("objective") ? first["objective"] : json();
+    row["tolerance_met"] = first.contains("tolerance_met") ? first["tolerance_met"] : json();
+    row["measures"] = first.value("measures", json::object());
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+std::string RunBench(const BenchRequest& q) {
+  // Merge the records of a folder.
+  if (!q.collect.empty()) {
+    if (!fs::is_directory(q.collect)) throw InputError(q.collect, 0, "--collect", "not a folder");
+    std::vector<fs::path> files;
+    for (const auto& e : fs::directory_iterator(q.collect)) {
+      if (e.path().extension() == ".json") files.push_back(e.path());
+    }
+    std::sort(files.begin(), files.end());
+    if (files.empty()) throw InputError(q.collect, 0, "--collect", "no records (*.json) in it");
+    std::vector<json> records;
+    for (const fs::path& f : files) {
+      try {
+        records.push_back(json::parse(ReadText(f)));
+        (void)records.back().at("exit_code");
+      } catch (const json::exception& e) {
+        throw InputError(f.string(), 0, "--collect", std::string("not a bench record: ") + e.what());
+      }
+    }
+    const json rows = MergeRecords(records);
+    WriteOutputs(rows, q.out);
+    return Table(rows) + (q.out.empty() ? "" : "wrote " + q.out + "\n");
+  }
+  if (q.spec.empty()) throw InputError("", 0, "SPEC", "give a spec (or --collect DIR)");
+
+  // One run into one record (what an emitted job does).
+  if (!q.record.empty()) {
+    if (q.meshes.size() != 1) throw InputError("", 0, "--mesh", "--record runs one mesh");
+    Settings_ settings;
+    for (const std::string& s : q.sets) settings.push_back(ParseSet(s));
+    BenchRequest check = q;
+    check.vary.clear();
+    Validate(check, {settings});
+    const json record = RunOnce(q.self, q.spec, q.meshes[0], settings, q.repeat);
+    WriteTextFile(q.record, record.dump(2) + "\n", "--record");
+    return "wrote " + q.record + " (exit code " + std::to_string(record["exit_code"].get<int>()) + ")\n";
+  }
+
+  const std::vector<Settings_> plan = Combinations(q);
+  Validate(q, plan);
+
+  // Jobs for a scheduler.
+  if (!q.emit_jobs.empty()) {
+    fs::path records = q.records;
+    if (records.empty()) records = fs::path(q.emit_jobs).replace_extension("").string() + "_runs";
+    records = Absolute(records.string());
+    std::string jobs;
+    int index = 0;
+    for (const Settings_& s : plan) {
+      for (const std::string& mesh : q.meshes) {
+        ++index;
+        for (int r = 1; r <= q.repeat; ++r) {
+          char name[64];
+          std::snprintf(name, sizeof name, "run-%04d-r%d.json", index, r);
+          std::string line = "mkdir -p " + Quote(records.string()) + " && " + Quote(q.self) +
+                             " bench " + Quote(Absolute(q.spec)) + " --mesh " + Quote(Absolute(mesh));
+          for (const auto& [k, v] : s) line += " --set " + Quote(k + "=" + v);
+          line += " --repeat " + std::to_string(r) + " --record " + Quote((records / name).string());
+          jobs += line + "\n";
+        }
+      }
+    }
+    WriteTextFile(q.emit_jobs, jobs, "--emit-jobs");
+    return "wrote " + std::to_string(index * q.repeat) + " jobs to " + q.emit_jobs +
+           "; each writes its record into " + records.string() +
+           "\nrun them, e.g.: xargs -P 2 -I{} sh -c {} < " + q.emit_jobs +
+           "\nthen: archgeo bench --collect " + records.string() + " --out results.csv\n";
+  }
+
+  std::vector<json> records;
+  for (const Settings_& s : plan) {
+    for (const std::string& mesh : q.meshes) {
+      for (int r = 1; r <= q.repeat; ++r) records.push_back(RunOnce(q.self, q.spec, mesh, s, r));
+    }
+  }
+  const json rows = MergeRecords(records);
+  WriteOutputs(rows, q.out);
+  return Table(rows) + (q.out.empty() ? "" : "wrote " + q.out + "\n");
+}
+
+}  // namespace archgeo
