@@ -330,7 +330,8 @@ json RunOnce(const std::string& self, const std::string& spec, const std::string
   std::string message;
   if (exit_code != 0) {
     message = LineWith(err, "archgeo: ");
-    if (message.empty()) message = LineWith(out, "warning");
+    if (message.empty()) message = LineWith(out, "NOT met");     // exit 4: which tolerance
+    if (message.empty()) message = LineWith(out, "WARNING");
     if (message.empty()) message = LastLine(err);
   }
   record["message"] = message;

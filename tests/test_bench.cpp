@@ -3,6 +3,7 @@
 //    the CSV and the JSON; the combination Ceres rejects (cgnr with dogleg)
 //    is a row with exit code 2 and Ceres' reason, the sweep goes on; wall
 //    min ≤ median ≤ max; every other row meets planar_quads' tolerance;
+//  - a run that misses its tolerance is a row with exit 4 naming it;
 //  - --emit-jobs, the jobs run with `xargs -P 2`, then --collect gives the
 //    same rows (times and memory aside);
 //  - a --vary key the problem does not have is refused (exit 2, the key
@@ -109,6 +110,23 @@ TEST_F(BenchTest, SweepGivesOneRowPerSettingAndMeshWithFailuresAsRows) {
   EXPECT_EQ(failed, 2);
   // The printed table names every run's failure.
   EXPECT_NE(o.output.find("DOGLEG only supports"), std::string::npos) << o.output;
+}
+
+// A run that misses its tolerance (exit 4: valid, written) is a row that
+// names the tolerance.
+TEST_F(BenchTest, AMissedToleranceIsARowThatNamesIt) {
+  const Outcome o = Shell(std::string(ARCHGEO_BINARY) + " bench " + spec_ + " --mesh " + Path("a.obj") +
+                      " --vary 'solver.max_num_iterations=[1]' --vary 'schedule.outer_iterations=[1]'"
+                      " --out " + Path("r.csv"));
+  ASSERT_EQ(o.code, 0) << o.output;
+  const json rows = ReadJson(Path("r.json"));
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0]["exit_code"], 4);
+  EXPECT_FALSE(rows[0]["tolerance_met"].get<bool>());
+  EXPECT_GT(rows[0]["measures"]["pq_normalized_max"].get<double>(), 1e-3);
+  EXPECT_NE(rows[0]["message"].get<std::string>().find("pq_normalized_max <= 0.001: NOT met"),
+            std::string::npos)
+      << rows[0]["message"];
 }
 
 TEST_F(BenchTest, EmittedJobsCollectedGiveTheSameRows) {
