@@ -54,6 +54,35 @@ inline void InitLogging(const char* argv0) {
   FLAGS_logtostderr = true;
 }
 
+// `--set KEY=VALUE` arguments of a benchmark program: added to every solve
+// it runs (Solve, SolveCommand), e.g. `--set terms.dihedral_energy.weight=0`
+// to see its acceptance fail without the energy it is about.
+inline std::vector<std::string>& ExtraSets() {
+  static std::vector<std::string> sets;
+  return sets;
+}
+
+// InitLogging, and the --set arguments taken out of argv (the rest is left
+// for the program, argv[0] first). Returns the remaining arguments.
+inline std::vector<std::string> Init(int argc, char** argv) {
+  InitLogging(argv[0]);
+  std::vector<std::string> rest;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--set" && i + 1 < argc) {
+      ExtraSets().push_back(argv[++i]);
+    } else {
+      rest.push_back(a);
+    }
+  }
+  if (!ExtraSets().empty()) {
+    std::printf("every run with:");
+    for (const std::string& s : ExtraSets()) std::printf(" --set %s", s.c_str());
+    std::printf("\n\n");
+  }
+  return rest;
+}
+
 // A scratch folder under $TMPDIR (or /tmp), created on first use.
 inline fs::path Scratch() {
   static const fs::path dir = [] {
@@ -70,6 +99,7 @@ inline fs::path Scratch() {
 inline Json Solve(const std::string& spec_path, const std::vector<std::string>& overrides,
                   const archgeo::ProgressSink& progress = {}) {
   std::vector<std::string> all = overrides;
+  all.insert(all.end(), ExtraSets().begin(), ExtraSets().end());
   all.push_back("output.mesh=");  // no output files
   all.push_back("output.report=");
   const archgeo::ProblemSpec spec = archgeo::ReadSpec(spec_path, all);
@@ -133,6 +163,7 @@ inline ProcessResult SolveCommand(const std::string& spec, std::vector<std::stri
   const std::string rep = (out.string() + ".json"), mesh = out.string() + ".ply";
   fs::remove(rep);
   std::vector<std::string> argv = {ARCHGEO_BINARY, "solve", spec, "--quiet"};
+  sets.insert(sets.end(), ExtraSets().begin(), ExtraSets().end());
   sets.push_back(write_mesh ? "output={mesh: " + mesh + ", report: " + rep + "}"
                             : "output={report: " + rep + "}");
   for (const std::string& s : sets) argv.insert(argv.end(), {"--set", s});

@@ -63,8 +63,8 @@ std::string WriteRevolution(const std::string& name, double r0, double r1, int n
 
 }  // namespace
 
-int main(int, char** argv) {
-  bench::InitLogging(argv[0]);
+int main(int argc, char** argv) {
+  bench::Init(argc, argv);
   const std::string spec = bench::Source("examples/total_absolute_curvature.yaml");
   std::vector<Case> cases = {
       {"cone 40x12", "13c (555 V)", WriteRevolution("fig19_cone_s", 1, 0.5, 40, 12), 1, 0.5},

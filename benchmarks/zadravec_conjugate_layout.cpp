@@ -31,8 +31,8 @@ struct Row {
 
 }  // namespace
 
-int main(int, char** argv) {
-  bench::InitLogging(argv[0]);
+int main(int argc, char** argv) {
+  bench::Init(argc, argv);
   const Row rows[] = {
       {"ours: inspired_mesh.obj", "examples/conjugate_layout.yaml", "libigl_inspired_mesh.obj", true},
       {"libigl Conjugate layout", "examples/planar_quads.yaml",
