@@ -1,6 +1,8 @@
 // Orthogonal, locally equilateral grids, Table 1 — one command:
 //   build/benchmarks/grids_table1 [--scene NAME] [--method least_squares|force]
-//                                 [--no-timing]
+//                                 [--no-timing] [--set KEY=VALUE ...]
+// Exit 1 if a least-squares result is invalid or worse than the paper's
+// after row on any of MDO, ADO, MDE, ADE.
 // For every scene of Table 1 of "An iterative force-directed algorithm for
 // orthogonal, locally equilateral grids on parametric surfaces" (text in
 // ../shared/papers/force-directed-orthogonal-grids.md) it solves the example
@@ -92,8 +94,10 @@ struct Run {
 };
 
 Run SolveExample(const std::string& example, const std::vector<std::string>& overrides) {
+  std::vector<std::string> all = overrides;
+  all.insert(all.end(), bench::ExtraSets().begin(), bench::ExtraSets().end());
   const archgeo::ProblemSpec spec =
-      archgeo::ReadSpec(bench::Source("examples/grid_" + example + ".yaml"), overrides);
+      archgeo::ReadSpec(bench::Source("examples/grid_" + example + ".yaml"), all);
   Run r;
   const auto start = bench::Clock::now();
   r.solution = archgeo::Solve(spec, archgeo::Mesh(), nullptr, {});
@@ -129,8 +133,12 @@ std::string Parameters(const Json& net) {
 
 // Least squares against the paper's after row: "all ≤" when every measure is
 // at most the paper's, and the largest factor paper / ours.
+bool AllAtMost(const Measures& q, const PaperRow& p) {
+  return q.mdo <= p.mdo && q.ado <= p.ado && q.mde <= p.mde && q.ade <= p.ade;
+}
+
 std::string Versus(const Measures& q, const PaperRow& p) {
-  const bool all = q.mdo <= p.mdo && q.ado <= p.ado && q.mde <= p.mde && q.ade <= p.ade;
+  const bool all = AllAtMost(q, p);
   const double ratios[] = {p.mdo / q.mdo, p.ado / q.ado, p.mde / q.mde, p.ade / q.ade};
   const char* names[] = {"MDO", "ADO", "MDE", "ADE"};
   const int best = int(std::max_element(ratios, ratios + 4) - ratios);
@@ -141,7 +149,7 @@ std::string Versus(const Measures& q, const PaperRow& p) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  bench::InitLogging(argv[0]);
+  bench::Init(argc, argv);
   std::string only, only_method;
   bool timing = true;
   for (int i = 1; i < argc; ++i) {
@@ -149,6 +157,8 @@ int main(int argc, char** argv) {
       only = argv[++i];
     } else if (!std::strcmp(argv[i], "--method") && i + 1 < argc) {
       only_method = argv[++i];
+    } else if (!std::strcmp(argv[i], "--set") && i + 1 < argc) {
+      ++i;  // taken by bench::Init
     } else if (!std::strcmp(argv[i], "--no-timing")) {
       timing = false;
     } else {
@@ -168,6 +178,7 @@ int main(int argc, char** argv) {
   bench::Table table({"scene", "type", "grid", "row", "MDO     ADO     MDE      ADE", "rounds/iter",
                       "stop", "time", "outside", "valid", "least squares vs paper after"});
   std::vector<std::string> stand_ins;
+  bool ok = true;  // acceptance: every least-squares result valid and ≤ the paper's after row
   for (const Scene& scene : Scenes()) {
     if (!only.empty() && only != scene.example) continue;
     bool first = true;
@@ -185,6 +196,7 @@ int main(int argc, char** argv) {
       }
       const Measures after = Of(s.details.at("quality_after"));
       const bool force = method == "force";
+      if (!force) ok = ok && r.invalid.empty() && AllAtMost(after, scene.paper.back());
       const std::string iterations =
           force ? std::to_string(s.details.at("force").at("iterations").get<int>()) + " it"
                 : Fmt("%d / %d", s.loop.rounds, s.loop.iterations);
@@ -200,6 +212,11 @@ int main(int argc, char** argv) {
     }
   }
   table.Print();
+  if (std::find(methods.begin(), methods.end(), "least_squares") != methods.end()) {
+    std::cout << "\nacceptance (least squares: every result valid, all four measures at most the "
+                 "paper's after row): "
+              << (ok ? "pass" : "FAIL") << "\n";
+  }
   std::cout << "\nstand-ins (surfaces/surface_factory.h, formulas in surfaces/*.h):\n";
   for (const std::string& s : stand_ins) std::cout << "  " << s << "\n";
 
@@ -227,5 +244,5 @@ int main(int argc, char** argv) {
                        s.loop.stop.c_str(), r.invalid.empty() ? "" : ", NOT valid");
     }
   }
-  return 0;
+  return ok ? 0 : 1;
 }

@@ -20,6 +20,7 @@
 // before/after within a row, not across). The paper's table prints its
 // columns as "V F E" but its numbers are V, E (edges), F (e.g. 714, 2058,
 // 1344 for a triangle mesh with F ≈ 2V): we copy them as printed.
+// --quick: the two acceptance meshes only.
 // Exit 1 if the acceptance fails. `--set KEY=VALUE` (repeatable) is added to
 // every run, e.g. --set terms.dihedral_energy.weight=0 (then it fails).
 #include <cstdio>
@@ -68,12 +69,14 @@ int main(int argc, char** argv) {
   const std::string torus_path = (bench::Scratch() / "pellis_fig20_torus.obj").string();
   archgeo::WriteMesh(torus_path,
                      archgeo::PrincipalSymmetricTorus(3.0, 1.0, 48, 40, 0.1, 3, nullptr));
-  const std::vector<Case> cases = {
+  const bool quick = !args.empty() && args[0] == "--quick";  // the acceptance meshes only
+  std::vector<Case> cases = {
       {"Concerthall", bench::Data("directional_Concerthall.off"), "14e", true},
       {"train-station", bench::Data("directional_train-station.off"), "18", true},
       {"libigl inspired", bench::Data("libigl_inspired_mesh.obj"), "14h", false},
       {"torus 48x40 noisy", torus_path, "14d", false},
   };
+  if (quick) cases.resize(2);
 
   std::printf("Pellis 2019, Fig. 20 — statistics for mesh design (smooth_mesh, "
               "examples/smooth_mesh.yaml unchanged)\n\n");
