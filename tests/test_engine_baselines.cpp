@@ -8,6 +8,12 @@
 // the engine rewrite (issue 10's list; principal_symmetric: the value the
 // example gave on this machine then, 0.007114199572022 — the issue lists
 // 0.007092241141455, which no version of the code here reproduces).
+// principal_symmetric's figure is with OpenBLAS on one thread, archgeo's
+// default since core/solver_options.cpp ConfigureThreading pins it:
+// 0.0071170901102163. Its 11-round run amplifies the last bits that the BLAS
+// thread count changes (README "Guarantees", determinism): with
+// OPENBLAS_NUM_THREADS=2 the same code gives the value of before,
+// 0.007114199572022 (checked; 4e-4 apart). The other four are unchanged.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -57,7 +63,7 @@ INSTANTIATE_TEST_SUITE_P(
                   "schedule.outer_iterations=12"}},
         Baseline{"smooth_mesh", 448.5586306767, {"output.mesh="}},
         Baseline{"total_absolute_curvature", 49.37123332010, {"output.mesh="}},
-        Baseline{"principal_symmetric", 0.007114199572022,
+        Baseline{"principal_symmetric", 0.0071170901102163,
                  {"output.mesh=", "output.principal_edges="}},
         Baseline{"hnet", 0.7763665407956,
                  {"output.mesh=", "output.patchwork=", "output.rulings=",
