@@ -16,7 +16,7 @@
 //                  perimeter to 1e-9 of the diagonal);
 //   hanging_net.yaml    (acceptance: force balance ≤ 1e-6 of the load).
 //
-//   goal_examples        (no arguments)
+//   goal_examples [--set KEY=VALUE ...]   (added to every run)
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -61,7 +61,7 @@ bool conical_ok(const bench::Json& r) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  bench::InitLogging(argv[0]);
+  bench::Init(argc, argv);
   archgeo::ConfigureThreading();
   bool ok = true;
 
