@@ -82,7 +82,7 @@ double HookContext::Measure(const std::string& name) {
 class MeshModel::View : public TermContext {
  public:
   View(MeshModel& model, const TermSpec& spec)
-      : model_(model), spec_(spec), name_(spec.name) {}
+      : model_(model), name_(spec.name) {}
 
   void Prepare(ceres::Problem* problem, TermBlocks* blocks, const std::string& loss,
                double loss_scale) {
@@ -179,7 +179,6 @@ class MeshModel::View : public TermContext {
 
  private:
   MeshModel& model_;
-  const TermSpec& spec_;
   std::string name_;
   std::map<std::string, std::vector<Curve>> curves_;  // per option, read once per solve
   ceres::Problem* problem_ = nullptr;

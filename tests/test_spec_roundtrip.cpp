@@ -89,7 +89,8 @@ TEST_F(SpecRoundTrip, FixedFormatOutputsRefuseOtherNames) {
   net.surface = "hyperbolic_paraboloid";
   const std::string mesh = Generated("net", net);
   const std::string spec = WriteFile("hnet.yaml", SpecTemplate(*FindProblem("hnet")));
-  for (const std::string& key : {"output.patchwork", "output.rulings", "output.image"}) {
+  for (const char* name : {"output.patchwork", "output.rulings", "output.image"}) {
+    const std::string key = name;
     SCOPED_TRACE(key);
     const std::string target = Path("out.stl");
     try {
