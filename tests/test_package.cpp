@@ -83,8 +83,13 @@ TEST_F(Package, ConsumerFindsLinksAndSolves) {
   fs::create_directories(Path("consumer"));
   std::ofstream(Path("consumer/CMakeLists.txt")) << kConsumerCMake;
   std::ofstream(Path("consumer/main.cpp")) << kConsumerMain;
-  const Outcome configure = Shell("cmake -S " + Path("consumer") + " -B " + Path("consumer/build") +
-                                  " -DCMAKE_PREFIX_PATH=" + prefix);
+  // A consumer links the way this build links its own programs: a sanitizer
+  // build (tools/sanitize.sh) installs instrumented static libraries, which
+  // need the sanitizer runtimes at link time.
+  const Outcome configure =
+      Shell("cmake -S " + Path("consumer") + " -B " + Path("consumer/build") +
+            " -DCMAKE_PREFIX_PATH=" + prefix + " '-DCMAKE_EXE_LINKER_FLAGS=" +
+            ARCHGEO_EXE_LINKER_FLAGS + "'");
   ASSERT_EQ(configure.code, 0) << configure.output;
   const Outcome compile = Shell("cmake --build " + Path("consumer/build"));
   ASSERT_EQ(compile.code, 0) << compile.output;
