@@ -118,13 +118,23 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
   TermBlocks blocks;
   int round_number = 0;
   for (const Stage& stage : stages) {
-    const int rounds = int(s.Integer(stage.rounds_key));
     std::vector<Tolerance> active;
     for (const Tolerance& t : stage.tolerances) {
       if (Bound(s, t) > 0) active.push_back(t);
     }
     bool stopping_tolerance = false;
     for (const Tolerance& t : active) stopping_tolerance = stopping_tolerance || t.stops;
+    // A stage marked skip_if_met whose tolerances (one of them stopping)
+    // already hold runs no round.
+    bool met_at_start = stage.skip_if_met && stopping_tolerance;
+    for (const Tolerance& t : active) {
+      met_at_start = met_at_start && model.Measure(t.measure) <= Bound(s, t);
+    }
+    const int rounds = met_at_start ? 0 : int(s.Integer(stage.rounds_key));
+    if (met_at_start) {
+      result.stop = "tolerances met before " +
+                    (stage.name.empty() ? std::string("the first round") : stage.name + " round 1");
+    }
     const double factor = stage.factor_key.empty() ? 1.0 : s.Number(stage.factor_key);
     // The tolerance band of continued terms (< 0: none).
     const double band = stage.band_key.empty()

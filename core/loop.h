@@ -1,6 +1,7 @@
 // archgeo — the one solve loop. Every problem runs here:
 //
 //   for each stage of the declaration:
+//     no round if it is skip_if_met and its tolerances already hold
 //     for each round (at most the stage's rounds):
 //       before-round hook; re-project onto the reference (if a term needs it)
 //       build the Ceres problem from the active terms (weights × continuation)

@@ -56,6 +56,11 @@ struct Stage {
   std::vector<std::string> terms;  // the terms active in this stage (empty: all)
   std::string rounds_key;          // setting: rounds at most
   std::vector<Tolerance> tolerances;
+  // The stage runs no round when its tolerances (one of them stopping)
+  // already hold before its first round: for a refinement stage that only
+  // serves the tolerances (hnet's step 3). Other stages run at least one
+  // round, since their terms may serve goals no tolerance measures.
+  bool skip_if_met = false;
   // Continuation on the penalty weight: after a round that misses a
   // tolerance, the weights of `continued` terms are multiplied by the value of
   // `factor_key`; terms that support a band get band = value of `band_key` ×

@@ -11,6 +11,8 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
 #include <glog/logging.h>
 
 #include "mesh/input_error.h"
@@ -301,9 +303,11 @@ HNet BuildHNet(const Mesh& mesh, const HNetOptions& options) {
   std::vector<int> roots{options.start_face};
   for (int f = 0; f < num_faces; ++f) roots.push_back(f);
   int num_components = 0;
+  std::vector<int> component_root;
   for (int root : roots) {
     if (hnet.component[root] >= 0) continue;
     const int id = num_components++;
+    component_root.push_back(root);
     hnet.component[root] = id;
     Wp[root] = 1.0;
     std::queue<int> queue;
@@ -329,6 +333,38 @@ HNet BuildHNet(const Mesh& mesh, const HNetOptions& options) {
         crossed[e.idx()] = true;
         queue.push(other);
       }
+    }
+  }
+
+  // --- Least squares over every equitwist edge (HNetShape::kLeastSquares).
+  if (options.shape == HNetShape::kLeastSquares) {
+    // The propagated diagonal of face f passes through vertex v: log W_f(v) = y_f, else −y_f.
+    const auto sign = [&](int f, int v) {
+      return OnDiagonal(hnet.patch_vertices[f], v) != flipped[f] ? 1.0 : -1.0;
+    };
+    std::vector<Eigen::Triplet<double>> entries;
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(num_faces);
+    for (EdgeIndex e : mesh.edges()) {
+      if (hnet.join[e.idx()] != EdgeJoin::kEquitwist) continue;
+      const EdgeLayout& l = layout[e.idx()];
+      // Eq. 7 in logarithms: s_r y_r − s_l y_l = log(W_r(b0) / W_l(b0)).
+      const int idx[2] = {l.right, l.left};
+      const double a[2] = {sign(l.right, l.b0), -sign(l.left, l.b0)};
+      const double c = std::log(l.determinants.ratio());
+      for (int i = 0; i < 2; ++i) {
+        rhs[idx[i]] += a[i] * c;
+        for (int j = 0; j < 2; ++j) entries.emplace_back(idx[i], idx[j], a[i] * a[j]);
+      }
+    }
+    // The gauge: each component keeps y = 0 at its root (λ rescales below).
+    for (int root : component_root) entries.emplace_back(root, root, 1.0);
+    Eigen::SparseMatrix<double> normal(num_faces, num_faces);
+    normal.setFromTriplets(entries.begin(), entries.end());
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(normal);
+    CHECK(solver.info() == Eigen::Success) << "BuildHNet: least-squares shape parameters";
+    const Eigen::VectorXd solution = solver.solve(rhs);
+    for (int f = 0; f < num_faces; ++f) {
+      if (std::isfinite(solution[f])) Wp[f] = std::exp(solution[f]);
     }
   }
 

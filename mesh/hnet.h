@@ -32,7 +32,23 @@
 
 namespace archgeo {
 
+// How the shape parameters W are obtained from eq. 7 [Shi 2014, §3.2 step 2].
+enum class HNetShape {
+  // The paper's traversal: W is propagated over a spanning tree of the faces
+  // (BFS from the start face); every crossed edge meets eq. 7 exactly, and the
+  // edges the tree does not cross (closing edges) get whatever mismatch the
+  // net's holonomy leaves: around a hole that can be a factor of 2 on one edge.
+  kPropagated,
+  // log W minimising Σ_edges (log W_r(b0) − log W_l(b0) − log ratio_e)² over
+  // every equitwist edge (a sparse Poisson solve, gauge fixed at each
+  // component's root). Identical to kPropagated where eq. 7 can hold
+  // everywhere (a simply connected A-net); around holes and non-planar stars
+  // it spreads the mismatch over all edges instead of one closing edge.
+  kLeastSquares,
+};
+
 struct HNetOptions {
+  HNetShape shape = HNetShape::kLeastSquares;
   int start_face = 0;     // face index whose initial shape parameter is W⁰ = 1
   int kink_samples = 9;   // ≥ 5 points per edge (end points included) for the kink angle
 };

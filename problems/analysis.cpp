@@ -89,9 +89,9 @@ void AddSmoothness(const Mesh& mesh, AnalysisRows& rows) {
                   double(m.self_intersecting_pyramids), K::kCount});
 }
 
-void AddHNet(const Mesh& mesh, AnalysisRows& rows) {
+void AddHNet(const Mesh& mesh, const HNetOptions& options, AnalysisRows& rows) {
   using K = AnalysisRow::Kind;
-  const HNet h = BuildHNet(mesh);
+  const HNet h = BuildHNet(mesh, options);
   rows.push_back({"star_planarity_max", "A-net star planarity max", h.star_planarity_max,
                   K::kRatio});
   rows.push_back({"star_planarity_mean", "A-net star planarity mean", h.star_planarity_mean,
@@ -170,12 +170,13 @@ std::set<std::string> ApplicableAnalyses(const Mesh& mesh) {
   return names;
 }
 
-AnalysisRows Analyse(const Mesh& mesh, const std::set<std::string>& names) {
+AnalysisRows Analyse(const Mesh& mesh, const std::set<std::string>& names,
+                     const HNetOptions& hnet) {
   AnalysisRows rows;
   AddPanels(mesh, rows);
   const std::set<std::string> applicable = ApplicableAnalyses(mesh);
   if (names.count("smoothness") && applicable.count("smoothness")) AddSmoothness(mesh, rows);
-  if (names.count("hnet") && applicable.count("hnet")) AddHNet(mesh, rows);
+  if (names.count("hnet") && applicable.count("hnet")) AddHNet(mesh, hnet, rows);
   if (names.count("grid") && applicable.count("grid")) AddGrid(mesh, rows);
   if (names.count("conical") && applicable.count("conical")) AddConical(mesh, rows);
   if (names.count("spreads") && applicable.count("spreads")) AddSpreads(mesh, rows);

@@ -20,6 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "mesh/hnet.h"
 #include "mesh/surface_mesh.h"
 
 namespace archgeo {
@@ -40,8 +41,11 @@ using AnalysisRows = std::vector<AnalysisRow>;
 // boundary-spacing spread; "grid": grids, see above).
 std::set<std::string> ApplicableAnalyses(const Mesh& mesh);
 
-// The rows of the analyses in `names` that apply to `mesh`, in file units.
-AnalysisRows Analyse(const Mesh& mesh, const std::set<std::string>& names);
+// The rows of the analyses in `names` that apply to `mesh`, in file units;
+// the H-net rows with `hnet` (the hnet problem's settings, see
+// problems/hnet_net.h HNetOptionsOf).
+AnalysisRows Analyse(const Mesh& mesh, const std::set<std::string>& names,
+                     const HNetOptions& hnet = {});
 
 // Adds every row to `json` (lengths also as "<key>_relative" = value / scale).
 void AnalysisToJson(const AnalysisRows& rows, double scale, nlohmann::json& json);

@@ -8,6 +8,7 @@
 #include "mesh/hnet.h"
 #include "mesh/metrics.h"
 #include "mesh/smoothness_metrics.h"
+#include "problems/hnet_net.h"
 
 namespace archgeo {
 namespace {
@@ -41,12 +42,7 @@ std::vector<double> Bending(const Mesh& mesh) {
 }
 
 std::vector<double> Kinks(const Mesh& mesh, const Settings* s) {
-  HNetOptions options;
-  if (s) {
-    options.start_face = int(s->Integer("hnet.start_face"));
-    options.kink_samples = int(s->Integer("hnet.kink_samples"));
-  }
-  const HNet h = BuildHNet(mesh, options);
+  const HNet h = BuildHNet(mesh, s ? HNetOptionsOf(*s) : HNetOptions{});
   std::vector<double> values(mesh.num_faces(), 0.0);
   for (EdgeIndex e : mesh.edges()) {
     const double k = h.kink_degrees[e.idx()];

@@ -66,10 +66,7 @@ WorkingNet ChooseHNetNet(const Mesh& input, const std::string& path, const std::
     for (int colour = 0; colour < 2; ++colour) {
       if (!nets[colour] || flat[colour].mean < 0) continue;
       if (!(flat[colour].mean * kDiagonalGain < mesh_flat.mean)) continue;
-      const bool better = chosen < 0 || nets[colour]->holes < nets[chosen]->holes ||
-                          (nets[colour]->holes == nets[chosen]->holes &&
-                           flat[colour].mean < flat[chosen].mean);
-      if (better) chosen = colour;
+      if (chosen < 0 || flat[colour].mean < flat[chosen].mean) chosen = colour;
     }
   } else {
     chosen = choice == "diagonal_0" ? 0 : 1;
@@ -99,6 +96,16 @@ WorkingNet ChooseHNetNet(const Mesh& input, const std::string& path, const std::
       Sci(flat[chosen].mean) + " (the input's: max " + Sci(mesh_flat.max) + ", mean " +
       Sci(mesh_flat.mean) + ")\n";
   return result;
+}
+
+HNetOptions HNetOptionsOf(const Settings& s) {
+  HNetOptions o;
+  if (s.schema().Find("hnet.start_face") == nullptr) return o;
+  o.start_face = int(s.Integer("hnet.start_face"));
+  o.kink_samples = int(s.Integer("hnet.kink_samples"));
+  o.shape = s.String("hnet.shape_parameters") == "propagated" ? HNetShape::kPropagated
+                                                               : HNetShape::kLeastSquares;
+  return o;
 }
 
 }  // namespace archgeo

@@ -14,19 +14,22 @@
 //   diagonal_1   vertex 0, see TwoColouring in mesh/topology.h), or colour 1;
 //   auto         (default) a diagonal net whose mean interior star planarity
 //                (mesh/hnet.h) is below 1/kDiagonalGain of the input's, else
-//                the input. Of two such nets, the one with fewer holes (a
-//                hole is an other-colour vertex of valence ≠ 4: the other
-//                net keeps it as an even-valence vertex, which Theorem 4
-//                allows, where a hole breaks simple connectivity), then the
-//                flatter one. (The mean, not the max: the few stars at
-//                irregular vertices start further off-plane, e.g. 0.03 on
-//                the negshell's colour-0 net, whose mean is 1.7e-4.)
+//                the input. Of two such nets, the flatter one: the net that
+//                already is an A-net. Holes do not count against a net (a
+//                hole is an other-colour vertex of valence ≠ 4): the shape
+//                parameters are found by least squares over every edge
+//                (mesh/hnet.h HNetShape), so W need not close around a hole.
+//                On the negshell the colour-1 net (mean 5.4e-7, 9 holes)
+//                wins over the colour-0 net (1.7e-4, no holes). (The mean,
+//                not the max: the few stars at irregular vertices start
+//                further off-plane, e.g. 0.03 on the colour-0 net.)
 // The choice and the three star planarities go to the report ("net") and the
 // terminal.
 #pragma once
 
 #include <string>
 
+#include "mesh/hnet.h"
 #include "mesh/surface_mesh.h"
 #include "problems/model.h"
 
@@ -47,5 +50,10 @@ double DiagonalNetStarPlanarityMean(const Mesh& mesh);
 // built.
 WorkingNet ChooseHNetNet(const Mesh& input, const std::string& path, const std::string& choice,
                          const std::string& spec_file, int spec_line);
+
+// The H-net options of the settings hnet.start_face, hnet.kink_samples and
+// hnet.shape_parameters; the defaults of HNetOptions for settings without
+// them (another problem's).
+HNetOptions HNetOptionsOf(const Settings& s);
 
 }  // namespace archgeo

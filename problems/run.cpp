@@ -22,6 +22,7 @@
 #include "analysis/validity.h"
 #include "problems/analysis.h"
 #include "problems/colors.h"
+#include "problems/hnet_net.h"
 #include "problems/picture.h"
 #include "problems/model.h"
 #include "problems/report.h"
@@ -207,7 +208,7 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const M
   Metrics before = ComputeMetrics(input, &reference, &input, before_options);
   if (!reference_mesh) before.hausdorff = 0;
   const double scale = before.bbox_diagonal;
-  const AnalysisRows extra_before = Analyse(input, d.analyses);
+  const AnalysisRows extra_before = Analyse(input, d.analyses, HNetOptionsOf(s));
   const double setup_seconds = Since(setup_start);
   const int levels = int(s.Integer("multiresolution.levels"));
 
@@ -292,7 +293,7 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const M
   const auto metrics_start = Clock::now();
   const bool same_vertices = output.number_of_vertices() == input.number_of_vertices();
   const Metrics after = ComputeMetrics(output, &reference, same_vertices ? &input : nullptr);
-  const AnalysisRows extra_after = Analyse(output, d.analyses);
+  const AnalysisRows extra_after = Analyse(output, d.analyses, HNetOptionsOf(s));
   rep["after"] = MetricsToJson(after, scale);
   AnalysisToJson(extra_after, scale, rep["after"]);
   const double metrics_seconds = Since(metrics_start);

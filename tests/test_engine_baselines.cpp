@@ -67,7 +67,11 @@ INSTANTIATE_TEST_SUITE_P(
                  {"output.mesh=", "output.principal_edges="}},
         Baseline{"hnet", 0.7763665407956,
                  {"output.mesh=", "output.patchwork=", "output.rulings=",
-                  "terms.convexity.weight=0", "terms.min_edge_length.weight=0"}}),
+                  "terms.convexity.weight=0", "terms.min_edge_length.weight=0",
+                  // Then: auto chose the hole-free colour-0 net, W was
+                  // propagated, and every alternation ran.
+                  "hnet.net=diagonal_0", "hnet.shape_parameters=propagated",
+                  "hnet.alpha_max=0"}}),
     [](const ::testing::TestParamInfo<Baseline>& info) { return std::string(info.param.example); });
 
 }  // namespace

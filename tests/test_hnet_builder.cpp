@@ -37,8 +37,10 @@ constexpr double kKinkMaxDegrees = 0.5;
 constexpr double kKinkMeanDegrees = 0.07;
 constexpr double kReferenceDistance = 0.005;   // of the reference's bbox diagonal
 constexpr double kMeasureAgreement = 1e-6;     // degrees, kinks of the re-read net
-constexpr double kNegshellStarPlanarity = 1e-4;  // relative, after the pipeline
-constexpr double kNegshellDisplacement = 0.01;   // of the bbox diagonal
+// The issue's targets on the negshell's own A-net (its colour-1 diagonal net).
+constexpr double kNegshellStarPlanarity = 1e-6;  // relative, after the pipeline
+constexpr double kNegshellDisplacement = 0.001;  // of the bbox diagonal
+constexpr double kNegshellKinkDegrees = 0.5;     // Shi Table 1's real shells: 0.4–4.5°
 const char* const kNegshell = ARCHGEO_DATA_DIR "/dos_free_negshell_marc_anet.obj";
 
 class HNetBuilder : public ScratchDirTest {
@@ -226,6 +228,9 @@ TEST_F(HNetBuilder, MeasureShowsTheFlatterDiagonalNet) {
   EXPECT_NE(measured.summary.find("of the flatter diagonal net"), std::string::npos);
 }
 
+// The file's own A-net is its colour-1 diagonal net (stars 4.5e-6), which has
+// 9 holes; auto takes it (the flatter net) and the least-squares W closes
+// around the holes: step 1 alone meets the targets, so no step-3 round runs.
 TEST_F(HNetBuilder, NegshellMeetsTheIssueBounds) {
   // examples/hnet.yaml unchanged but for the outputs.
   const std::string patchwork = Path("negshell_patchwork.ply");
@@ -236,26 +241,64 @@ TEST_F(HNetBuilder, NegshellMeetsTheIssueBounds) {
       {});
   ASSERT_EQ(run.exit_code, 0);
   const nlohmann::json& r = run.report;
-  EXPECT_EQ(r["details"]["net"]["net"], "diagonal_0");
+  EXPECT_EQ(r["details"]["net"]["net"], "diagonal_1");
+  EXPECT_EQ(r["details"]["net"]["holes"], 9);
   EXPECT_GT(r["details"]["net"]["candidates"]["mesh"]["star_planarity_max"].get<double>(), 0.14);
   EXPECT_LE(Num(r, "star_planarity_max"), kNegshellStarPlanarity);
   EXPECT_LE(r["after"]["displacement_max_relative"].get<double>(), kNegshellDisplacement);
   EXPECT_GT(Num(r, "W_min"), 0);
-  EXPECT_LT(Num(r, "alpha_max"), 4.322);   // the paper's Cagliari row
-  EXPECT_LT(Num(r, "alpha_mean"), 0.534);
+  EXPECT_LE(Num(r, "alpha_max"), kNegshellKinkDegrees);
+  EXPECT_LT(Num(r, "alpha_mean"), 0.534);  // the paper's Cagliari row
   EXPECT_GT(std::filesystem::file_size(patchwork), 0u);
   const HNet measured = BuildHNet(ReadMesh(Path("negshell.obj")));
   EXPECT_NEAR(measured.kink_max, Num(r, "alpha_max"), kMeasureAgreement);
   EXPECT_NEAR(measured.kink_mean, Num(r, "alpha_mean"), kMeasureAgreement);
 }
 
+// Step 3 on a net with holes (the negshell's own A-net), forced by a kink
+// bound of 0.02° that step 1 does not meet: with the least-squares W every
+// round lowers α_max (none is undone), the result is valid and meets the
+// targets; with the paper's propagated W (whole holonomy on one edge per
+// hole) the same run has to move the vertices by more than 1% (measured:
+// 1.6%) — or, without the barriers, is undone (next tests).
+TEST_F(HNetBuilder, StepThreeSucceedsOnANetWithHoles) {
+  const auto run = [&](const std::string& shape) {
+    return RunSpec(ReadSpec(ARCHGEO_SOURCE_DIR "/examples/hnet.yaml",
+                            {"mesh=" + std::string(kNegshell), "hnet.alpha_max=0.02",
+                             "hnet.alternations=4", "hnet.shape_parameters=" + shape,
+                             "output={report: " + Path(shape + ".json") + "}"}),
+                   {});
+  };
+  const RunResult spread = run("least_squares");
+  ASSERT_EQ(spread.exit_code, 0);
+  const nlohmann::json& r = spread.report;
+  EXPECT_EQ(r["details"]["net"]["net"], "diagonal_1");
+  EXPECT_TRUE(r["validity"]["valid"].get<bool>());
+  double step1_alpha = -1;
+  int frame_rounds = 0;
+  for (const auto& round : r["rounds"]) {
+    if (round["stage"] == "A-net") step1_alpha = round["measures"]["alpha_max"].get<double>();
+    if (round["stage"] != "frame") continue;
+    ++frame_rounds;
+    EXPECT_FALSE(round["undone"].get<bool>());
+  }
+  EXPECT_GE(frame_rounds, 1);
+  EXPECT_GT(step1_alpha, 0.1);  // 0.20° after step 1
+  EXPECT_LE(Num(r, "alpha_max"), 0.02);
+  EXPECT_LE(Num(r, "star_planarity_max"), kNegshellStarPlanarity);
+  EXPECT_LE(r["after"]["displacement_max_relative"].get<double>(), 0.005);  // 0.26%
+  const RunResult tree = run("propagated");
+  EXPECT_GT(tree.report["after"]["displacement_max_relative"].get<double>(), 0.01);
+}
+
 TEST_F(HNetBuilder, StepThreeRoundsThatRaiseTheKinksAreUndone) {
-  // The negshell's colour-1 diagonal net has 9 holes: W cannot agree around
-  // them and, without the validity barriers, the frame terms degenerate
-  // patches (α_max → 180°).
+  // The negshell's colour-1 diagonal net has 9 holes: the propagated W cannot
+  // agree around them and, without the validity barriers, the frame terms
+  // degenerate patches (α_max → 180°).
   const RunResult run = RunSpec(
       ReadSpec(ARCHGEO_SOURCE_DIR "/examples/hnet.yaml",
                {"mesh=" + std::string(kNegshell), "hnet.net=diagonal_1", "hnet.alternations=2",
+                "hnet.shape_parameters=propagated", "hnet.alpha_max=0",
                 "terms.convexity.weight=0", "terms.min_edge_length.weight=0",
                 "output={report: " + Path("r.json") + "}"}),
       {});
@@ -274,14 +317,16 @@ TEST_F(HNetBuilder, StepThreeRoundsThatRaiseTheKinksAreUndone) {
 }
 
 // With the barriers (convexity, min_edge_length: on by default) the same
-// step 3 keeps every patch valid and flattens the kinks from 3.2° to below
-// Shi's real shells (0.4–4.5°, Table 1) instead of being undone; the price is
-// movement and star planarity, and the missed star tolerance is an exit 4,
-// not a success (measured: α_max 0.045°, stars 1.8e-5, 1.6% of the diagonal).
+// step 3 with the propagated W keeps every patch valid and flattens the kinks
+// from 3.2° to below Shi's real shells (0.4–4.5°, Table 1) instead of being
+// undone; the price is movement and star planarity, and the missed star
+// tolerance is an exit 4, not a success (measured: α_max 0.045°, stars
+// 1.8e-5, 1.6% of the diagonal).
 TEST_F(HNetBuilder, BarriersKeepStepThreeValidOnANetWithHoles) {
   const RunResult run = RunSpec(
       ReadSpec(ARCHGEO_SOURCE_DIR "/examples/hnet.yaml",
                {"mesh=" + std::string(kNegshell), "hnet.net=diagonal_1", "hnet.alternations=2",
+                "hnet.shape_parameters=propagated", "hnet.alpha_max=0",
                 "output={report: " + Path("r.json") + "}"}),
       {});
   EXPECT_EQ(run.exit_code, 4);

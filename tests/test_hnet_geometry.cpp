@@ -564,9 +564,11 @@ TEST(Darboux, FailuresAreReported) {
 // ------------------------------------------------------------- (f) ring band
 
 TEST(HNet, ClosedRingReportsMismatchOnClosingEdge) {
+  HNetOptions propagated;
+  propagated.shape = HNetShape::kPropagated;
   for (int around : {7, 8}) {
     const Mesh ring = RingBand(around, V3(0.05, -0.03, 0.04));
-    const HNet hnet = BuildHNet(ring);
+    const HNet hnet = BuildHNet(ring, propagated);
     EXPECT_EQ(hnet.bipartite, around % 2 == 0) << around;
     EXPECT_EQ(hnet.monochrome_edges.empty(), around % 2 == 0) << around;
     ASSERT_TRUE(hnet.not_equitwist_edges.empty());
@@ -590,6 +592,43 @@ TEST(HNet, ClosedRingReportsMismatchOnClosingEdge) {
               << ", kink " << hnet.kink_degrees[closing] << " deg, alpha_max " << hnet.kink_max
               << ", W in [" << hnet.W_min << ", " << hnet.W_max << "]\n";
   }
+}
+
+// Least squares over every edge spreads the ring's holonomy H (the product of
+// the eq. 7 ratios around it) evenly: on a cycle of n edges every edge's
+// residual log(W_r/W_l/ratio) is ±log(H)/n (the sign is the edge's
+// orientation), so every edge misses eq. 7 by the factor H^(±1/n), where the
+// propagation leaves all of H on the one closing edge (mismatch |H − 1|).
+TEST(HNet, LeastSquaresSpreadsTheRingsHolonomyOverEveryEdge) {
+  const int around = 8;  // bipartite: the ring's equations have one gauge freedom
+  const Mesh ring = RingBand(around, V3(0.05, -0.03, 0.04));
+  HNetOptions propagated;
+  propagated.shape = HNetShape::kPropagated;
+  const HNet tree = BuildHNet(ring, propagated);
+  ASSERT_EQ(tree.closing_edges.size(), 1u);
+  const double closing = tree.edge_mismatch[tree.closing_edges[0]];
+  const HNet spread = BuildHNet(ring);  // the default: least squares
+  // H = 1 ± closing (the mismatch is an absolute value); each edge misses by
+  // the factor e^(±r), r = |log H| / n: mismatch e^r − 1 or 1 − e^(−r).
+  std::vector<double> mismatches;
+  for (double m : spread.edge_mismatch) {
+    if (m >= 0) mismatches.push_back(m);
+  }
+  ASSERT_EQ(int(mismatches.size()), around);
+  // The distance of the farthest edge from its share, for the better H.
+  double best = 1;
+  for (double H : {1 + closing, 1 - closing}) {
+    const double r = std::abs(std::log(H)) / around;
+    double worst = 0;
+    for (double m : mismatches) {
+      worst = std::max(worst, std::min(std::abs(m - std::expm1(r)), std::abs(m + std::expm1(-r))));
+    }
+    best = std::min(best, worst);
+  }
+  EXPECT_LE(best, 1e-9) << "not every edge misses eq. 7 by the same factor H^(±1/n)";
+  EXPECT_LT(spread.mismatch_max, 1.5 * closing / around);
+  std::cout << "ring of " << around << ": propagated mismatch " << closing
+            << " on one edge; least squares " << spread.mismatch_max << " on every edge\n";
 }
 
 // ------------------------------------------- (g) sampling, rulings, output
