@@ -61,6 +61,7 @@
 #include "mesh/patchwork_io.h"
 #include "problems/hnet_net.h"
 #include "problems/model.h"
+#include "problems/suitability.h"
 
 namespace archgeo::problems {
 namespace {
@@ -250,6 +251,7 @@ ProblemDecl hnet() {
     c.net = ChooseHNetNet(*c.input, s.String("mesh"), s.String("hnet.net"),
                           at.file.empty() ? s.spec_file() : at.file, at.line);
     const Mesh& net = c.net.derived ? c.net.mesh : *c.input;
+    CheckAsymptoticNet(c, net);
     if (s.Integer("hnet.start_face") >= (long long)net.number_of_faces()) {
       throw s.Error("hnet.start_face",
                     "face " + std::to_string(s.Integer("hnet.start_face")) +

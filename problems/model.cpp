@@ -486,9 +486,23 @@ std::string MeshModel::Invalid() {
   return reason;
 }
 
+// The variables: positions and the optimised blocks. Constant blocks are
+// data and may hold NaN on purpose (hnet's frame_weights: no smooth join).
 bool MeshModel::Finite() const {
-  for (double x : store_.Save()) {
-    if (!std::isfinite(x)) return false;
+  const Mesh& mesh = store_.mesh();
+  for (VertexIndex v : mesh.vertices()) {
+    const Point& p = mesh.point(v);
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z())) return false;
+  }
+  for (const std::string& name : store_.Names()) {
+    const BlockDecl& decl = store_.Decl(name);
+    if (decl.constant) continue;
+    for (int i = 0; i < store_.Count(name); ++i) {
+      const double* x = store_.At(name, i);
+      for (int k = 0; k < decl.width; ++k) {
+        if (!std::isfinite(x[k])) return false;
+      }
+    }
   }
   return true;
 }

@@ -34,6 +34,7 @@
 // tolerance (τ = 0) the weights stay fixed and the rounds stop when a round
 // moves no vertex by more than 1e-6 mean edge lengths.
 #include "core/problem.h"
+#include "problems/suitability.h"
 
 namespace archgeo::problems {
 
@@ -76,6 +77,9 @@ ProblemDecl planar_quads() {
     return std::vector<Stage>{s};
   };
   d.analyses = {"planarity", "smoothness"};
+  // Before solving: warn when the quads are far from a conjugate net
+  // (problems/suitability.h).
+  d.net = [](HookContext& c) { CheckConjugateNet(c, *c.input); };
   return d;
 }
 

@@ -46,6 +46,7 @@
 #include "mesh/smoothness_metrics.h"
 #include "mesh/vec3.h"
 #include "problems/model.h"
+#include "problems/suitability.h"
 
 namespace archgeo::problems {
 namespace {
@@ -115,6 +116,7 @@ void Net(HookContext& c) {
     throw s.Error(Split(s) ? "split.principal" : "principal_edges", problem);
   }
   labels.vertices = int(triangles.number_of_vertices());
+  CheckPrincipalLabels(c, triangles, labels.edges);
 }
 
 // `classify`: marks the saddles (angle sum > 2π); then starts the dummies of

@@ -285,6 +285,11 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const M
     run.summary = "archgeo: the result is not valid (nothing was written):\n" + validity.Reason() +
                   own +
                   "(limits: validity.* keys; the report's validity section lists every check)\n";
+    const nlohmann::json& details = solution->details;
+    if (details.contains("suitability") && details["suitability"].contains("warning")) {
+      run.summary += "WARNING (input suitability): " +
+                     details["suitability"]["warning"].get<std::string>() + "\n";
+    }
     return run;
   }
   bool tolerances_met = true;

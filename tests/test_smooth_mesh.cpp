@@ -201,6 +201,26 @@ TEST_F(SmoothMeshTest, PrincipalSymmetricTorusIsPrincipalSymmetric) {
   EXPECT_LT(report.at("after").at("displacement_max_relative").get<double>(), 1e-3);
 }
 
+// With split:, the report's "before" is the mesh actually solved — the
+// split triangles — not the quads read (whose E counts other edges).
+TEST_F(SmoothMeshTest, PrincipalSymmetricBeforeIsTheSplitInput) {
+  const Mesh quads = QuadGrid(10, 10, Saddle, 0.05, 3);
+  WriteMesh(Path("quads.obj"), quads);
+  const ProblemSpec spec = ReadSpec(WriteFile(
+      "spec.yaml", "mesh: quads.obj\nproblem: principal_symmetric\nsplit: {diagonal: first, "
+                   "principal: first}\nschedule: {outer_iterations: 1}\noutput: {report: r.json}\n"));
+  const RunResult run = RunSpec(spec, {});
+  ASSERT_TRUE(run.report.contains("before")) << run.summary;
+  std::vector<VertexPair> labels;
+  const Mesh split = SplitQuads(quads, false, "first", &labels, "", "");
+  const double E_split = ComputeSmoothnessMetrics(split).E;
+  const double E_quads = ComputeSmoothnessMetrics(quads).E;
+  const double before = run.report.at("before").at("E").get<double>();
+  EXPECT_NEAR(before, E_split, 1e-9 * E_split);
+  EXPECT_GT(std::abs(before - E_quads), 1e-3 * E_quads);  // not the unsplit quads
+  EXPECT_EQ(run.report.at("before").at("faces").get<int>(), int(split.number_of_faces()));
+}
+
 TEST_F(SmoothMeshTest, SplitQuadsLabelsOneFamily) {
   // Quads split by diagonals: with principal: first, a third of the edges
   // (one quad family) are principal and every interior vertex has two opposite.
