@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <functional>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "core/solver_options.h"
@@ -400,20 +401,26 @@ RunResult MeasureFiles(const std::string& mesh_path, const std::string& referenc
     metrics = ComputeMetrics(mesh, &reference, same ? &reference_mesh : nullptr);
   }
   const AnalysisRows analysis = Analyse(mesh, ApplicableAnalyses(mesh));
-  // With a reference of the same topology (an output and its input): the
-  // validity checks of `archgeo solve` (default limits).
+  // The validity checks of `archgeo solve` (default limits): against the
+  // reference when it has the mesh's topology (an output and its input),
+  // else those of the mesh alone (panels, short edges, self-intersections).
   std::string validity_text;
   nlohmann::json validity_json;
-  if (!reference_path.empty()) {
-    const Mesh input = ReadMesh(reference_path);
-    if (input.number_of_vertices() == mesh.number_of_vertices() &&
-        input.number_of_faces() == mesh.number_of_faces()) {
-      const Validity v = CheckValidity(mesh, &input, ValidityLimits{}, true);
-      validity_json = v.ToJson();
-      validity_text = v.valid() ? "validity against the reference: every hard check passed\n"
-                                : "validity against the reference: NOT valid\n" + v.Reason();
-      if (!v.Warnings().empty()) validity_text += "warnings:\n" + v.Warnings();
-    }
+  {
+    std::optional<Mesh> input;
+    if (!reference_path.empty()) input = ReadMesh(reference_path);
+    const bool paired = input && input->number_of_vertices() == mesh.number_of_vertices() &&
+                        input->number_of_faces() == mesh.number_of_faces();
+    const Validity v = CheckValidity(mesh, paired ? &*input : nullptr, ValidityLimits{}, true);
+    validity_json = v.ToJson();
+    validity_json["against_reference"] = paired;
+    const std::string what =
+        paired ? "validity against the reference"
+               : input ? "validity of the mesh alone (the reference has another topology: no "
+                         "flips, creases or shortened edges compared)"
+                       : "validity of the mesh alone";
+    validity_text = what + (v.valid() ? ": every hard check passed\n" : ": NOT valid\n" + v.Reason());
+    if (!v.Warnings().empty()) validity_text += "warnings:\n" + v.Warnings();
   }
   run.report = {{"schema_version", kReportSchemaVersion},
                 {"archgeo", "measure"},

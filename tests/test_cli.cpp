@@ -97,6 +97,23 @@ TEST_F(CliTest, PlanarisesAGeneratedNonPlanarGrid) {
               report["after"]["pq_normalized_max"].get<double>(), 1e-12);
   EXPECT_NEAR(measured["metrics"]["displacement_max"].get<double>(),
               report["after"]["displacement_max"].get<double>(), 1e-12);
+  // ... and the validity section, against the input ...
+  EXPECT_TRUE(measured["validity"]["valid"].get<bool>());
+  EXPECT_TRUE(measured["validity"]["against_reference"].get<bool>());
+  // ... for any pair: a folded copy of the output against it is not valid; a
+  // reference of another topology gives the checks of the mesh alone.
+  Mesh folded = out;
+  const VertexIndex centre(VertexIndex(out.number_of_vertices() / 2));
+  folded.point(centre) = folded.point(centre) + 5 * (folded.point(VertexIndex(0)) - folded.point(centre));
+  WriteMesh(Path("folded.ply"), folded);
+  const Outcome f = Archgeo("measure " + Path("folded.ply") + " --reference " + Path("out.ply"));
+  EXPECT_NE(f.output.find("validity against the reference: NOT valid"), std::string::npos)
+      << f.output;
+  ASSERT_EQ(Archgeo("generate " + Path("other.obj") + " --nu 5 --nv 4").code, 0);
+  const Outcome alone = Archgeo("measure " + Path("out.ply") + " --reference " + Path("other.obj"));
+  EXPECT_NE(alone.output.find("validity of the mesh alone (the reference has another topology"),
+            std::string::npos)
+      << alone.output;
 }
 
 // The same problem scaled by 1000 and rotated: same relative metrics, same
