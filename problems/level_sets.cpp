@@ -4,9 +4,11 @@
 //
 // The field: a nested conjugate_field solve with this spec's field keys
 // (problems/field_pipeline.h). Its pair (v, w) per face, oriented
-// consistently on the surface cut open (fields/cut_jumps.h OrientField), is
+// consistently on the surface cut open (fields/cut_jumps.h OrientPair), is
 // the target of g (level sets along v) and h (along w); faces without a pair
-// (flat or exactly singular) get the Dirichlet energy instead.
+// (flat or exactly singular) get the Dirichlet energy instead. Both are
+// oriented from the bisector of the pair (fields/cut_jumps.h OrientPair), so
+// their matchings across the cuts agree with the singularities' indices.
 //
 // Cuts (fields/cuts.h): from every singularity to the boundary or an earlier
 // cut, plus cuts that make the surface simply connected. g and h are one
@@ -115,8 +117,10 @@ void Init(HookContext& c) {
     }
     cell_area += geo.frames.area[f] * sine;
   }
-  st.ov = OrientField(mesh, st.cut, geo.transports, geo.edge_to_transport, v);
-  st.ow = OrientField(mesh, st.cut, geo.transports, geo.edge_to_transport, w);
+  const PairOrientation orientation =
+      OrientPair(mesh, st.cut, geo.transports, geo.edge_to_transport, v, w);
+  st.ov = orientation.v;
+  st.ow = orientation.w;
   st.v.resize(faces);
   st.w.resize(faces);
   for (size_t f = 0; f < faces; ++f) {
