@@ -197,6 +197,57 @@ void SimpleCycles(std::vector<int> cycle, std::vector<std::vector<int>>* out, in
   }
 }
 
+// Merges the two faces of every interior valence-2 vertex (see the call).
+void MergeValenceTwo(std::vector<std::vector<int>>* faces, int* merged, int* dropped) {
+  for (bool changed = true; changed;) {
+    changed = false;
+    std::map<std::pair<int, int>, std::vector<int>> edge_faces;
+    std::map<int, std::set<int>> neighbours;
+    for (size_t f = 0; f < faces->size(); ++f) {
+      const std::vector<int>& c = (*faces)[f];
+      for (size_t i = 0; i < c.size(); ++i) {
+        const int a = c[i], b = c[(i + 1) % c.size()];
+        edge_faces[{std::min(a, b), std::max(a, b)}].push_back(static_cast<int>(f));
+        neighbours[a].insert(b);
+        neighbours[b].insert(a);
+      }
+    }
+    for (const auto& [v, around] : neighbours) {
+      if (around.size() != 2) continue;
+      const int a = *around.begin(), b = *around.rbegin();
+      const std::vector<int>& fa = edge_faces[{std::min(v, a), std::max(v, a)}];
+      const std::vector<int>& fb = edge_faces[{std::min(v, b), std::max(v, b)}];
+      if (fa.size() != 2 || fb.size() != 2) continue;  // on the boundary
+      const std::set<int> two(fa.begin(), fa.end());
+      if (two.size() != 2 || two != std::set<int>(fb.begin(), fb.end())) continue;
+      // Each face as the path after v around it (v dropped).
+      auto after = [&](int f) {
+        const std::vector<int>& c = (*faces)[f];
+        const size_t at = static_cast<size_t>(std::find(c.begin(), c.end(), v) - c.begin());
+        std::vector<int> path;
+        for (size_t k = 1; k < c.size(); ++k) path.push_back(c[(at + k) % c.size()]);
+        return path;
+      };
+      std::vector<int> first = after(*two.begin()), second = after(*two.rbegin());
+      if (first.size() < 2 || second.size() < 2 || first.front() != second.back() ||
+          first.back() != second.front()) {
+        continue;
+      }
+      // first: (b … a), second: (a … b): the merged face is first + second's inside.
+      std::vector<int> merged_face = first;
+      merged_face.insert(merged_face.end(), second.begin() + 1, second.end() - 1);
+      std::vector<std::vector<int>> next;
+      for (size_t f = 0; f < faces->size(); ++f)
+        if (two.count(static_cast<int>(f)) == 0) next.push_back((*faces)[f]);
+      SimpleCycles(merged_face, &next, dropped);
+      faces->swap(next);
+      ++*merged;
+      changed = true;
+      break;
+    }
+  }
+}
+
 }  // namespace
 
 Extraction ExtractQuadMesh(const Mesh& mesh, const LevelSetFunctions& fn,
@@ -261,6 +312,17 @@ Extraction ExtractQuadMesh(const Mesh& mesh, const LevelSetFunctions& fn,
     if (std::abs(W[i] - std::round(W[i])) < options.snap_tolerance) W[i] = std::round(W[i]);
   }
 
+  if (cut != nullptr && std::getenv("ARCHGEO_DEBUG_SING")) {  // DEBUG
+    for (VertexIndex sv : cut->singular_vertices) {
+      std::fprintf(stderr, "sing v%d:", int(sv.idx()));
+      for (int w = 0; w < cut->num_wedges; ++w)
+        if (cut->wedge_vertex[w] == sv) std::fprintf(stderr, " (%.4f %.4f)", U[w], W[w]);
+      for (size_t c = 0; c < cut->chains.size(); ++c)
+        if (cut->chains[c].start == sv || cut->chains[c].end == sv)
+          std::fprintf(stderr, " chain%zu[%d->%d n%zu kg%g kh%g sg%d sh%d]", c, int(cut->chains[c].start.idx()), int(cut->chains[c].end.idx()), cut->chains[c].halfedges.size(), kg[c], kh[c], fn.sign_g[c], fn.sign_h[c]);
+      std::fprintf(stderr, "\n");
+    }
+  }
   // Transitions of cut edges: the left face of each cut edge.
   std::vector<FaceIndex> left_face(mesh.number_of_edges());
   if (cut != nullptr) {
@@ -687,6 +749,15 @@ Extraction ExtractQuadMesh(const Mesh& mesh, const LevelSetFunctions& fn,
     }
     faces.swap(kept);
   }
+
+  // An interior vertex on two faces only (valence 2: a +1/2 singularity on a
+  // level of both functions, or two level crossings merged beside one) is
+  // removed by merging its two faces: F1 = (v, b, X…, a), F2 = (v, a, Y…, b)
+  // become (b, X…, a, Y…) — two quads a quad whose corners a and b have
+  // valence 3, the configuration of a +1/2 singularity with both levels odd.
+  // A valence-2 vertex gives two corners of about 180° that the PQ step
+  // cannot keep apart (a face folded onto its neighbour).
+  if (options.merge_valence_two) MergeValenceTwo(&faces, &out.merged_valence_two, &out.dropped_small_faces);
 
   // Compact the points and build the mesh.
   std::vector<int> used(points.size(), -1);

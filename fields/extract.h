@@ -60,7 +60,11 @@
 //     half that is collapsed (a corner keeps its place, else the midpoint);
 //     a boundary vertex then used by a
 //     single face with more than four vertices (not a boundary corner) is
-//     dissolved from it; then the polygon soup becomes a CGAL Surface_mesh
+//     dissolved from it; with merge_valence_two, an interior vertex on two
+//     faces only (valence 2) is removed and the two faces merged into one
+//     (two quads: a quad, whose corners at the valence-2 vertex's neighbours
+//     then have valence 3 — the both-odd configuration of a +1/2
+//     singularity); then the polygon soup becomes a CGAL Surface_mesh
 //     (PMP::polygon_soup_to_polygon_mesh; non-manifold vertices are
 //     duplicated by PMP::orient_polygon_soup and counted).
 //
@@ -103,6 +107,9 @@ struct ExtractOptions {
   // small triangle a level crossing near the boundary cuts off disappears and
   // its neighbours become quads. 0: off.
   double boundary_snap_fraction = 0.0;
+  // Interior vertices of valence 2 are removed by merging their two faces
+  // (step 6): no two corners of about 180° at one vertex.
+  bool merge_valence_two = false;
 };
 
 struct Extraction {
@@ -120,6 +127,7 @@ struct Extraction {
   int merged_vertices = 0;           // removed by step 6 (short edges)
   int snapped_vertices = 0;          // moved onto the boundary by step 6
   int dissolved_vertices = 0;        // boundary vertices left on one face only (step 6)
+  int merged_valence_two = 0;        // interior valence-2 vertices removed (step 6)
   int collapsed_boundary_edges = 0;  // boundary edges < boundary_snap_fraction / 2 (step 6)
   int dropped_small_faces = 0;       // fewer than 3 vertices (step 4)
   int dropped_non_disk_regions = 0;  // several loops with vertices (step 4)

@@ -127,6 +127,10 @@ std::vector<Key> LevelSetKeys() {
                     "fraction of the median edge is moved onto it (fewer cut-off boundary "
                     "triangles) and a boundary edge shorter than half of it is collapsed (no "
                     "sliver sides); 0 = off"),
+          BoolKey("extraction.merge_valence_two", true,
+                  "an interior layout vertex on two faces only (a +1/2 singularity on a level "
+                  "of both functions) is removed by merging its two faces (two quads give a "
+                  "quad); off: it stays, with two corners of about 180°"),
           NumberKey("extraction.corner_angle", 30, 0, 180,
                     "boundary vertices where the boundary turns by more than this (degrees) are "
                     "kept as corners of the layout")};

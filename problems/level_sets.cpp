@@ -328,6 +328,7 @@ void Finish(HookContext& c) {
   options.merge_fraction = c.settings->Number("extraction.merge_fraction");
   options.corner_angle_deg = c.settings->Number("extraction.corner_angle");
   options.boundary_snap_fraction = c.settings->Number("extraction.boundary_snap");
+  options.merge_valence_two = c.settings->Bool("extraction.merge_valence_two");
   if (st.spacing_g > 0 && st.spacing_h > 0) {
     result->layout = ExtractQuadMesh(mesh, fn, options);
   } else {
@@ -415,6 +416,7 @@ void Finish(HookContext& c) {
         {"merged_vertices", x.merged_vertices},
         {"snapped_vertices", x.snapped_vertices},
         {"dissolved_vertices", x.dissolved_vertices},
+        {"merged_valence_two", x.merged_valence_two},
         {"collapsed_boundary_edges", x.collapsed_boundary_edges},
         {"dropped_small_faces", x.dropped_small_faces},
         {"dropped_non_disk_regions", x.dropped_non_disk_regions},
