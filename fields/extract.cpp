@@ -8,6 +8,8 @@
 #include <queue>
 #include <set>
 #include <sstream>
+#include <cstdio>
+#include <cstdlib>
 
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -248,6 +250,49 @@ void MergeValenceTwo(std::vector<std::vector<int>>* faces, int* merged, int* dro
   }
 }
 
+// Merges cap triangles into their neighbour across the longest side (see the call).
+void MergeCaps(const std::vector<V3>& points, double cap_angle_deg,
+               std::vector<std::vector<int>>* faces, int* merged, int* dropped) {
+  const double limit = cap_angle_deg * M_PI / 180.0;
+  for (bool changed = true; changed;) {
+    changed = false;
+    std::map<std::pair<int, int>, std::vector<int>> edge_faces;
+    for (size_t f = 0; f < faces->size(); ++f) {
+      const std::vector<int>& c = (*faces)[f];
+      for (size_t i = 0; i < c.size(); ++i) {
+        const int a = c[i], b = c[(i + 1) % c.size()];
+        edge_faces[{std::min(a, b), std::max(a, b)}].push_back(static_cast<int>(f));
+      }
+    }
+    for (size_t f = 0; f < faces->size() && !changed; ++f) {
+      const std::vector<int>& t = (*faces)[f];
+      if (t.size() != 3) continue;
+      for (int k = 0; k < 3; ++k) {
+        const int x = t[k], p = t[(k + 1) % 3], q = t[(k + 2) % 3];  // f runs x → p → q
+        const V3 a = points[p] - points[x], b = points[q] - points[x];
+        if (std::atan2(a.cross(b).norm(), a.dot(b)) <= limit) continue;
+        const std::vector<int>& across = edge_faces[{std::min(p, q), std::max(p, q)}];
+        if (across.size() != 2) break;  // a boundary side: keep the triangle
+        const int g = across[0] == static_cast<int>(f) ? across[1] : across[0];
+        std::vector<int> grown;  // g runs q → p: insert x between them
+        const std::vector<int>& c = (*faces)[g];
+        for (size_t i = 0; i < c.size(); ++i) {
+          grown.push_back(c[i]);
+          if (c[i] == q && c[(i + 1) % c.size()] == p) grown.push_back(x);
+        }
+        std::vector<std::vector<int>> next;
+        for (size_t h = 0; h < faces->size(); ++h)
+          if (h != f && static_cast<int>(h) != g) next.push_back((*faces)[h]);
+        SimpleCycles(grown, &next, dropped);
+        faces->swap(next);
+        ++*merged;
+        changed = true;
+        break;
+      }
+    }
+  }
+}
+
 }  // namespace
 
 Extraction ExtractQuadMesh(const Mesh& mesh, const LevelSetFunctions& fn,
@@ -322,6 +367,11 @@ Extraction ExtractQuadMesh(const Mesh& mesh, const LevelSetFunctions& fn,
           std::fprintf(stderr, " chain%zu[%d->%d n%zu kg%g kh%g sg%d sh%d]", c, int(cut->chains[c].start.idx()), int(cut->chains[c].end.idx()), cut->chains[c].halfedges.size(), kg[c], kh[c], fn.sign_g[c], fn.sign_h[c]);
       std::fprintf(stderr, "\n");
     }
+    for (size_t c = 0; c < cut->chains.size(); ++c)
+      for (HalfedgeIndex h : cut->chains[c].halfedges) {
+        const V3 a = Pos(mesh, mesh.source(h)), b = Pos(mesh, mesh.target(h));
+        std::fprintf(stderr, "cutedge %zu %d %d %g\n", c, int(mesh.source(h).idx()), int(mesh.target(h).idx()), a.x() + b.x() * 0);
+      }
   }
   // Transitions of cut edges: the left face of each cut edge.
   std::vector<FaceIndex> left_face(mesh.number_of_edges());
@@ -758,6 +808,14 @@ Extraction ExtractQuadMesh(const Mesh& mesh, const LevelSetFunctions& fn,
   // A valence-2 vertex gives two corners of about 180° that the PQ step
   // cannot keep apart (a face folded onto its neighbour).
   if (options.merge_valence_two) MergeValenceTwo(&faces, &out.merged_valence_two, &out.dropped_small_faces);
+  // A triangle whose three vertices lie nearly on a line (a corner above
+  // cap_angle_deg: a level line passing a crossing at a fraction of an edge,
+  // typically between two singularities closer than the spacing) is merged
+  // into the face across its longest side: that face gets the middle vertex
+  // as a corner of about 180°, instead of a sliver the PQ step turns over.
+  if (options.cap_angle_deg > 0) {
+    MergeCaps(points, options.cap_angle_deg, &faces, &out.merged_caps, &out.dropped_small_faces);
+  }
 
   // Compact the points and build the mesh.
   std::vector<int> used(points.size(), -1);

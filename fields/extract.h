@@ -64,7 +64,10 @@
 //     faces only (valence 2) is removed and the two faces merged into one
 //     (two quads: a quad, whose corners at the valence-2 vertex's neighbours
 //     then have valence 3 — the both-odd configuration of a +1/2
-//     singularity); then the polygon soup becomes a CGAL Surface_mesh
+//     singularity); with cap_angle_deg, an interior triangle with a corner
+//     above it (three vertices nearly on a line, e.g. between two
+//     singularities closer than the spacing) is merged into the face across
+//     its longest side; then the polygon soup becomes a CGAL Surface_mesh
 //     (PMP::polygon_soup_to_polygon_mesh; non-manifold vertices are
 //     duplicated by PMP::orient_polygon_soup and counted).
 //
@@ -110,6 +113,9 @@ struct ExtractOptions {
   // Interior vertices of valence 2 are removed by merging their two faces
   // (step 6): no two corners of about 180° at one vertex.
   bool merge_valence_two = false;
+  // A triangle with a corner above this (degrees: its vertices nearly on a
+  // line) is merged into the face across its longest side (step 6). 0: off.
+  double cap_angle_deg = 0.0;
 };
 
 struct Extraction {
@@ -128,6 +134,7 @@ struct Extraction {
   int snapped_vertices = 0;          // moved onto the boundary by step 6
   int dissolved_vertices = 0;        // boundary vertices left on one face only (step 6)
   int merged_valence_two = 0;        // interior valence-2 vertices removed (step 6)
+  int merged_caps = 0;               // cap triangles merged into a neighbour (step 6)
   int collapsed_boundary_edges = 0;  // boundary edges < boundary_snap_fraction / 2 (step 6)
   int dropped_small_faces = 0;       // fewer than 3 vertices (step 4)
   int dropped_non_disk_regions = 0;  // several loops with vertices (step 4)

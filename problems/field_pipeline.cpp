@@ -101,7 +101,7 @@ std::vector<Key> FieldKeys() {
 std::vector<TermUse> LevelSetTerms() {
   return {{"level_set_alignment", 0.1},
           {"level_set_normalised", 1},
-          {"level_set_conjugacy", 0},
+          {"level_set_conjugacy", 1},
           {"level_set_jump", 100},
           {"level_set_branch_point", 100}};
 }
@@ -131,6 +131,10 @@ std::vector<Key> LevelSetKeys() {
                   "an interior layout vertex on two faces only (a +1/2 singularity on a level "
                   "of both functions) is removed by merging its two faces (two quads give a "
                   "quad); off: it stays, with two corners of about 180°"),
+          NumberKey("extraction.cap_angle", 160, 0, 180,
+                    "an interior layout triangle with a corner above this (degrees: its vertices "
+                    "nearly on a line, e.g. between two singularities closer than the spacing) "
+                    "is merged into the face across its longest side; 0 = off"),
           NumberKey("extraction.corner_angle", 30, 0, 180,
                     "boundary vertices where the boundary turns by more than this (degrees) are "
                     "kept as corners of the layout")};

@@ -48,6 +48,7 @@
 // (and ∇h, R w). Outputs: output.layout (the layout), output.field.
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <tuple>
 
@@ -224,7 +225,11 @@ double MeanGradient(HookContext& c, const char* block, const std::vector<V2>& di
 // (area-weighted mean ‖∇g‖), and Δw_h likewise, so that the layout has the
 // cell size asked for. The jump constants are rounded to multiples of these
 // and held constant.
+std::array<double, 2> GradientAngle(HookContext& c, const char* block, const std::vector<V2>& dir);
 void Round(HookContext& c) {
+  if (std::getenv("ARCHGEO_DEBUG_SING")) {  // DEBUG
+    std::fprintf(stderr, "before rounding: angle g %.2f h %.2f\n", GradientAngle(c, "level_set_g", St(c).v)[0], GradientAngle(c, "level_set_h", St(c).w)[0]);
+  }
   State& st = St(c);
   if (st.rounded) return;
   st.rounded = true;
@@ -242,6 +247,10 @@ void Round(HookContext& c) {
       st.rounding_ok = false;
     }
     if (!message.empty()) st.rounding_message += std::string(block) + ": " + message + "; ";
+    if (std::getenv("ARCHGEO_DEBUG_SING")) {  // DEBUG
+      for (size_t k = 0; k < rounded.size(); ++k)
+        std::fprintf(stderr, "round %s chain %zu s%d sing%d %.3f -> %.0f\n", block, k, orientation->chain_sign[k], int(st.cut.chains[k].from_singularity), alpha[k] / spacing, rounded[k] / spacing);
+    }
     for (size_t k = 0; k < rounded.size(); ++k) {
       *c.store->At(block, int(k)) = rounded[k];
       c.model->SetConstant(block, int(k));
@@ -329,6 +338,7 @@ void Finish(HookContext& c) {
   options.corner_angle_deg = c.settings->Number("extraction.corner_angle");
   options.boundary_snap_fraction = c.settings->Number("extraction.boundary_snap");
   options.merge_valence_two = c.settings->Bool("extraction.merge_valence_two");
+  options.cap_angle_deg = c.settings->Number("extraction.cap_angle");
   if (st.spacing_g > 0 && st.spacing_h > 0) {
     result->layout = ExtractQuadMesh(mesh, fn, options);
   } else {
@@ -417,6 +427,7 @@ void Finish(HookContext& c) {
         {"snapped_vertices", x.snapped_vertices},
         {"dissolved_vertices", x.dissolved_vertices},
         {"merged_valence_two", x.merged_valence_two},
+        {"merged_caps", x.merged_caps},
         {"collapsed_boundary_edges", x.collapsed_boundary_edges},
         {"dropped_small_faces", x.dropped_small_faces},
         {"dropped_non_disk_regions", x.dropped_non_disk_regions},
