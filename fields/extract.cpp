@@ -8,8 +8,6 @@
 #include <queue>
 #include <set>
 #include <sstream>
-#include <cstdio>
-#include <cstdlib>
 
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -357,22 +355,6 @@ Extraction ExtractQuadMesh(const Mesh& mesh, const LevelSetFunctions& fn,
     if (std::abs(W[i] - std::round(W[i])) < options.snap_tolerance) W[i] = std::round(W[i]);
   }
 
-  if (cut != nullptr && std::getenv("ARCHGEO_DEBUG_SING")) {  // DEBUG
-    for (VertexIndex sv : cut->singular_vertices) {
-      std::fprintf(stderr, "sing v%d:", int(sv.idx()));
-      for (int w = 0; w < cut->num_wedges; ++w)
-        if (cut->wedge_vertex[w] == sv) std::fprintf(stderr, " (%.4f %.4f)", U[w], W[w]);
-      for (size_t c = 0; c < cut->chains.size(); ++c)
-        if (cut->chains[c].start == sv || cut->chains[c].end == sv)
-          std::fprintf(stderr, " chain%zu[%d->%d n%zu kg%g kh%g sg%d sh%d]", c, int(cut->chains[c].start.idx()), int(cut->chains[c].end.idx()), cut->chains[c].halfedges.size(), kg[c], kh[c], fn.sign_g[c], fn.sign_h[c]);
-      std::fprintf(stderr, "\n");
-    }
-    for (size_t c = 0; c < cut->chains.size(); ++c)
-      for (HalfedgeIndex h : cut->chains[c].halfedges) {
-        const V3 a = Pos(mesh, mesh.source(h)), b = Pos(mesh, mesh.target(h));
-        std::fprintf(stderr, "cutedge %zu %d %d %g\n", c, int(mesh.source(h).idx()), int(mesh.target(h).idx()), a.x() + b.x() * 0);
-      }
-  }
   // Transitions of cut edges: the left face of each cut edge.
   std::vector<FaceIndex> left_face(mesh.number_of_edges());
   if (cut != nullptr) {

@@ -23,7 +23,8 @@
 //           levels) with the jumps (level_set_jump, level_set_branch_point);
 //  eq6      from there, level_set_normalised (eq. 6: only the direction of
 //           ∇g) with level_set_alignment at its (smaller) weight keeping the
-//           spacing, level_set_conjugacy (eq. 7, off by default) and the jumps;
+//           spacing, level_set_conjugacy (eq. 7: conjugacy of the level sets
+//           through M_f, weight 1) and the jumps;
 //  rounded  the jump constants rounded (fields/cut_jumps.h RoundJumps): chains
 //           from ±1/2 singularities to even (level_sets.rounding: even; quads
 //           around the singularity) or odd multiples of Δw (valence-4
@@ -48,7 +49,6 @@
 // (and ∇h, R w). Outputs: output.layout (the layout), output.field.
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <tuple>
 
@@ -225,11 +225,7 @@ double MeanGradient(HookContext& c, const char* block, const std::vector<V2>& di
 // (area-weighted mean ‖∇g‖), and Δw_h likewise, so that the layout has the
 // cell size asked for. The jump constants are rounded to multiples of these
 // and held constant.
-std::array<double, 2> GradientAngle(HookContext& c, const char* block, const std::vector<V2>& dir);
 void Round(HookContext& c) {
-  if (std::getenv("ARCHGEO_DEBUG_SING")) {  // DEBUG
-    std::fprintf(stderr, "before rounding: angle g %.2f h %.2f\n", GradientAngle(c, "level_set_g", St(c).v)[0], GradientAngle(c, "level_set_h", St(c).w)[0]);
-  }
   State& st = St(c);
   if (st.rounded) return;
   st.rounded = true;
@@ -247,10 +243,6 @@ void Round(HookContext& c) {
       st.rounding_ok = false;
     }
     if (!message.empty()) st.rounding_message += std::string(block) + ": " + message + "; ";
-    if (std::getenv("ARCHGEO_DEBUG_SING")) {  // DEBUG
-      for (size_t k = 0; k < rounded.size(); ++k)
-        std::fprintf(stderr, "round %s chain %zu s%d sing%d %.3f -> %.0f\n", block, k, orientation->chain_sign[k], int(st.cut.chains[k].from_singularity), alpha[k] / spacing, rounded[k] / spacing);
-    }
     for (size_t k = 0; k < rounded.size(); ++k) {
       *c.store->At(block, int(k)) = rounded[k];
       c.model->SetConstant(block, int(k));
