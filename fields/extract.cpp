@@ -291,6 +291,85 @@ void MergeCaps(const std::vector<V3>& points, double cap_angle_deg,
   }
 }
 
+// Interior angles (radians, in [0, 2π)) of a polygon in the plane of its
+// Newell normal, counter-clockwise about it.
+std::vector<double> InteriorAngles(const std::vector<V3>& p) {
+  const size_t n = p.size();
+  V3 normal = V3::Zero();
+  for (size_t i = 0; i < n; ++i) normal += p[i].cross(p[(i + 1) % n]);
+  std::vector<double> angles(n, M_PI);
+  if (normal.norm() == 0.0) return angles;
+  normal.normalize();
+  for (size_t i = 0; i < n; ++i) {
+    V3 a = p[(i + n - 1) % n] - p[i], b = p[(i + 1) % n] - p[i];
+    a -= normal * a.dot(normal);
+    b -= normal * b.dot(normal);
+    double angle = std::atan2(b.cross(a).dot(normal), a.dot(b));
+    if (angle < 0.0) angle += 2.0 * M_PI;
+    angles[i] = angle;
+  }
+  return angles;
+}
+
+// Splits faces with a reflex corner at an interior vertex (see the call).
+// The diagonal from the reflex corner x to a vertex y is chosen among those
+// whose two parts have convex corners at x and y (checked in each part's own
+// plane), preferring parts with four vertices, then the largest smallest
+// corner at x and y.
+void SplitReflexCorners(const std::vector<V3>& points, const std::vector<bool>& on_boundary,
+                        double margin_deg, std::vector<std::vector<int>>* faces, int* split) {
+  const double limit = M_PI + margin_deg * M_PI / 180.0;
+  auto positions = [&](const std::vector<int>& c) {
+    std::vector<V3> p;
+    for (int v : c) p.push_back(points[v]);
+    return p;
+  };
+  for (size_t f = 0; f < faces->size(); ++f) {
+    const std::vector<int> c = (*faces)[f];
+    const size_t n = c.size();
+    if (n < 4) continue;
+    const std::vector<double> angle = InteriorAngles(positions(c));
+    size_t x = n;
+    for (size_t i = 0; i < n; ++i)
+      if (!on_boundary[c[i]] && angle[i] > limit && (x == n || angle[i] > angle[x])) x = i;
+    if (x == n) continue;
+    double best_score = -1.0;
+    std::vector<int> best_a, best_b;
+    for (size_t k = 2; k + 1 < n; ++k) {
+      const size_t y = (x + k) % n;
+      std::vector<int> a, b;  // x … y and y … x
+      for (size_t i = x;; i = (i + 1) % n) {
+        a.push_back(c[i]);
+        if (i == y) break;
+      }
+      for (size_t i = y;; i = (i + 1) % n) {
+        b.push_back(c[i]);
+        if (i == x) break;
+      }
+      const std::vector<double> ea = InteriorAngles(positions(a)), eb = InteriorAngles(positions(b));
+      const double corners[4] = {ea.front(), ea.back(), eb.front(), eb.back()};
+      double smallest = M_PI;
+      bool convex = true;
+      for (double corner : corners) {
+        convex = convex && corner < M_PI;
+        smallest = std::min(smallest, corner);
+      }
+      if (!convex) continue;
+      const double score = (a.size() == 4) + (b.size() == 4) + smallest / M_PI;
+      if (score > best_score) {
+        best_score = score;
+        best_a = a;
+        best_b = b;
+      }
+    }
+    if (best_score < 0.0) continue;
+    (*faces)[f] = best_a;
+    faces->push_back(best_b);
+    ++*split;
+    --f;  // the first part may have another reflex corner
+  }
+}
+
 }  // namespace
 
 Extraction ExtractQuadMesh(const Mesh& mesh, const LevelSetFunctions& fn,
@@ -797,6 +876,16 @@ Extraction ExtractQuadMesh(const Mesh& mesh, const LevelSetFunctions& fn,
   // as a corner of about 180°, instead of a sliver the PQ step turns over.
   if (options.cap_angle_deg > 0) {
     MergeCaps(points, options.cap_angle_deg, &faces, &out.merged_caps, &out.dropped_small_faces);
+  }
+  // A face bent inward at an interior vertex (a corner above 180° +
+  // reflex_margin_deg in the plane of its Newell normal: a polygon wrapped
+  // around a singularity near another or near the boundary, or the merge of
+  // a valence-2 vertex) is split along a diagonal from that corner into two
+  // faces, so that panels are convex there: the PQ step keeps corners from
+  // folding further and cannot make such a face planar otherwise.
+  if (options.reflex_margin_deg >= 0) {
+    SplitReflexCorners(points, point_on_boundary, options.reflex_margin_deg, &faces,
+                       &out.split_reflex_corners);
   }
 
   // Compact the points and build the mesh.

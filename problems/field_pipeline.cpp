@@ -135,6 +135,10 @@ std::vector<Key> LevelSetKeys() {
                     "an interior layout triangle with a corner above this (degrees: its vertices "
                     "nearly on a line, e.g. between two singularities closer than the spacing) "
                     "is merged into the face across its longest side; 0 = off"),
+          NumberKey("extraction.reflex_margin", 2, -1, 180,
+                    "a layout face bent inward at an interior vertex by more than this (degrees "
+                    "beyond 180°) is split along a diagonal from that corner into two convex-cornered "
+                    "faces (the PQ step cannot make it planar without folding it further); -1 = off"),
           NumberKey("extraction.corner_angle", 30, 0, 180,
                     "boundary vertices where the boundary turns by more than this (degrees) are "
                     "kept as corners of the layout")};

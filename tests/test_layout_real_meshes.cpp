@@ -72,13 +72,14 @@ TEST_P(RealMeshLayout, ConjugateLayoutExampleGivesAValidPlanarLayout) {
                                      "output.report=" + Path("r.json")});
   const RunResult run = RunSpec(spec, {});
   const nlohmann::json& r = run.report;
-  const nlohmann::json& cut = r.at("details").at("cut");
-  const nlohmann::json& layout = r.at("details").at("layout");
+  const nlohmann::json& net = r.at("details").at("net");  // the level-set stage's details
+  const nlohmann::json& cut = net.at("cut");
+  const nlohmann::json& layout = net.at("layout");
   std::printf("%s: exit %d, layout %d faces (%d quads), %zu singularities, mismatched cut edges "
               "[%d, %d], δ_PQ,n max %.2e before, %.2e after\n",
               GetParam(), run.exit_code, layout.at("faces").get<int>(),
               layout.at("quads").get<int>(),
-              r.at("details").at("field").at("singularities").size(),
+              net.at("field").at("singularities").size(),
               cut.at("mismatched_cut_edges")[0].get<int>(),
               cut.at("mismatched_cut_edges")[1].get<int>(),
               r.at("before").at("pq_normalized_max").get<double>(),
