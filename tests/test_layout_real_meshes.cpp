@@ -72,6 +72,10 @@ TEST_P(RealMeshLayout, ConjugateLayoutExampleGivesAValidPlanarLayout) {
                                      "output.report=" + Path("r.json")});
   const RunResult run = RunSpec(spec, {});
   const nlohmann::json& r = run.report;
+  EXPECT_EQ(run.exit_code, 0);
+  ASSERT_TRUE(r.contains(nlohmann::json::json_pointer("/details/net/cut")) &&
+              r.contains(nlohmann::json::json_pointer("/after/pq_normalized_max")))
+      << "no layout figures in the report (exit " << run.exit_code << "): " << run.summary;
   const nlohmann::json& net = r.at("details").at("net");  // the level-set stage's details
   const nlohmann::json& cut = net.at("cut");
   const nlohmann::json& layout = net.at("layout");
@@ -84,7 +88,6 @@ TEST_P(RealMeshLayout, ConjugateLayoutExampleGivesAValidPlanarLayout) {
               cut.at("mismatched_cut_edges")[1].get<int>(),
               r.at("before").at("pq_normalized_max").get<double>(),
               r.at("after").at("pq_normalized_max").get<double>());
-  EXPECT_EQ(run.exit_code, 0);
   EXPECT_LE(r.at("after").at("pq_normalized_max").get<double>(), 1e-3);
   EXPECT_EQ(cut.at("mismatched_cut_edges")[0].get<int>(), 0);
   EXPECT_EQ(cut.at("mismatched_cut_edges")[1].get<int>(), 0);
