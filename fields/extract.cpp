@@ -324,15 +324,21 @@ void SplitReflexCorners(const std::vector<V3>& points, const std::vector<bool>& 
     for (int v : c) p.push_back(points[v]);
     return p;
   };
-  for (size_t f = 0; f < faces->size(); ++f) {
+  for (size_t f = 0; f < faces->size();) {  // f advances once it has no reflex corner left
     const std::vector<int> c = (*faces)[f];
     const size_t n = c.size();
-    if (n < 4) continue;
+    if (n < 4) {
+      ++f;
+      continue;
+    }
     const std::vector<double> angle = InteriorAngles(positions(c));
     size_t x = n;
     for (size_t i = 0; i < n; ++i)
       if (!on_boundary[c[i]] && angle[i] > limit && (x == n || angle[i] > angle[x])) x = i;
-    if (x == n) continue;
+    if (x == n) {
+      ++f;
+      continue;
+    }
     double best_score = -1.0;
     std::vector<int> best_a, best_b;
     for (size_t k = 2; k + 1 < n; ++k) {
@@ -362,11 +368,13 @@ void SplitReflexCorners(const std::vector<V3>& points, const std::vector<bool>& 
         best_b = b;
       }
     }
-    if (best_score < 0.0) continue;
-    (*faces)[f] = best_a;
+    if (best_score < 0.0) {
+      ++f;
+      continue;
+    }
+    (*faces)[f] = best_a;  // checked again: it may have another reflex corner
     faces->push_back(best_b);
     ++*split;
-    --f;  // the first part may have another reflex corner
   }
 }
 
