@@ -56,10 +56,10 @@ int main(int argc, char** argv) {
     const double faces = Get(r, "/before/faces");
     std::string quads = "100%", sing = "(libigl)", dist = "-";
     if (row.ours) {
-      quads = Percent(Get(r, "/net/layout/quad_fraction"));
-      sing = Fmt("%d/%d", int(Get(r, "/net/layout/singularities_matched")),
-                 int(Get(r, "/net/layout/singularities")));
-      dist = Percent(Get(r, "/net/layout/hausdorff_relative"));
+      quads = Percent(Get(r, "/details/net/layout/quad_fraction"));
+      sing = Fmt("%d/%d", int(Get(r, "/details/net/layout/singularities_matched")),
+                 int(Get(r, "/details/net/layout/singularities")));
+      dist = Percent(Get(r, "/details/net/layout/hausdorff_relative"));
     }
     t.Add({row.label, Fmt("%d", int(faces)), quads, sing, dist,
            Sci(Get(r, "/before/pq_normalized_mean")), Sci(Get(r, "/before/pq_normalized_max")),

@@ -7,6 +7,8 @@
 
 #include <glog/logging.h>
 
+#include "fields/conjugate.h"
+
 namespace archgeo {
 
 namespace {
@@ -104,7 +106,12 @@ bool RoundJumps(const CutGraph& cut, const std::vector<int>& chain_sign,
   CHECK(spacing > 0.0);
   CHECK(parity == 0 || parity == 1);
   const size_t nc = cut.chains.size();
-  auto half_singular = [&](int c) { return cut.chains[c].from_singularity && chain_sign[c] < 0; };
+  // Parity a chain's k must have (see the header): −1 any.
+  auto wanted = [&](int c) {
+    if (!cut.chains[c].from_singularity) return -1;
+    return chain_sign[c] < 0 ? parity : 0;
+  };
+  auto half_singular = [&](int c) { return wanted(c) >= 0; };
   // Forward elimination: pivots (chain, expression over the other chains).
   std::vector<std::pair<int, Linear>> pivots;
   std::vector<bool> is_pivot(nc, false);
@@ -142,7 +149,8 @@ bool RoundJumps(const CutGraph& cut, const std::vector<int>& chain_sign,
     if (is_pivot[c]) continue;
     const double x = alpha[c] / spacing;
     if (half_singular(static_cast<int>(c))) {
-      k[c] = parity == 0 ? 2.0 * std::round(0.5 * x) : 2.0 * std::floor(0.5 * x) + 1.0;
+      k[c] = wanted(static_cast<int>(c)) == 0 ? 2.0 * std::round(0.5 * x)
+                                               : 2.0 * std::floor(0.5 * x) + 1.0;
     } else {
       k[c] = std::round(x);
     }
@@ -151,10 +159,11 @@ bool RoundJumps(const CutGraph& cut, const std::vector<int>& chain_sign,
     double value = 0.0;
     for (const auto& [chain, x] : it->second) value += static_cast<double>(x) * k[chain];
     k[it->first] = value;
-    if (half_singular(it->first) && std::abs(std::fmod(std::abs(value), 2.0) - parity) > 0.5) {
+    if (half_singular(it->first) &&
+        std::abs(std::fmod(std::abs(value), 2.0) - wanted(it->first)) > 0.5) {
       ok = false;
       notes << "chain " << it->first << " (from a singularity) is fixed by the others to "
-            << value << " spacings, not of the requested parity; ";
+            << value << " spacings, not of the parity it needs; ";
     }
   }
   rounded->resize(nc);
@@ -233,6 +242,39 @@ FieldOrientation OrientField(const Mesh& mesh, const CutGraph& cut,
   for (EdgeIndex e : mesh.edges()) {
     if (mesh.is_border(e) || !cut.is_cut_edge[e.idx()]) continue;
     if (matching(e) != out.chain_sign[cut.edge_chain[e.idx()]]) ++out.mismatched_cut_edges;
+  }
+  return out;
+}
+
+PairOrientation OrientPair(const Mesh& mesh, const CutGraph& cut,
+                           const std::vector<EdgeTransport>& transports,
+                           const std::vector<int>& edge_to_transport,
+                           const std::vector<Eigen::Vector2d>& v,
+                           const std::vector<Eigen::Vector2d>& w) {
+  const size_t nf = mesh.number_of_faces();
+  CHECK_EQ(v.size(), nf);
+  CHECK_EQ(w.size(), nf);
+  auto defined = [](const Eigen::Vector2d& d) { return d.allFinite() && d.squaredNorm() > 0.0; };
+  auto rotate = [](const Eigen::Vector2d& x, double a) {
+    return Eigen::Vector2d(std::cos(a) * x.x() - std::sin(a) * x.y(),
+                           std::sin(a) * x.x() + std::cos(a) * x.y());
+  };
+  std::vector<Eigen::Vector2d> bisector(nf, Eigen::Vector2d::Zero());
+  std::vector<double> turn(nf, 0.0);  // δ: from line v to line w, counter-clockwise
+  for (size_t f = 0; f < nf; ++f) {
+    if (!defined(v[f]) || !defined(w[f])) continue;
+    const double b = BisectorAngle(v[f], w[f]);
+    bisector[f] = Eigen::Vector2d(std::cos(b), std::sin(b));
+    turn[f] = LineAngle(w[f]) - LineAngle(v[f]);
+    if (turn[f] < 0.0) turn[f] += M_PI;
+  }
+  const FieldOrientation b = OrientField(mesh, cut, transports, edge_to_transport, bisector);
+  PairOrientation out{b, b};
+  for (size_t f = 0; f < nf; ++f) {
+    if (bisector[f].isZero()) continue;
+    const Eigen::Vector2d oriented = static_cast<double>(b.face_sign[f]) * bisector[f];
+    out.v.face_sign[f] = v[f].dot(rotate(oriented, -0.5 * turn[f])) >= 0.0 ? 1 : -1;
+    out.w.face_sign[f] = w[f].dot(rotate(oriented, 0.5 * turn[f])) >= 0.0 ? 1 : -1;
   }
   return out;
 }

@@ -40,10 +40,17 @@ std::vector<JumpConstraint> JumpConstraints(const CutGraph& cut,
 // size"] so that the constraints hold exactly: each constraint's pivot chain
 // (coefficient ±1, preferably a chain not from a singularity) is computed
 // from the other chains, which are rounded to the nearest multiple of
-// `spacing` — chains from a singularity to the nearest even (parity 0) or odd
-// (parity 1) multiple, the others to the nearest multiple. `alpha`, `rounded`
+// `spacing` — chains from a singularity with s_C = −1 to the nearest even
+// (parity 0) or odd (parity 1) multiple, chains from a singularity with s_C =
+// +1 (a cut that runs on from a singular vertex, or joins two) to the nearest
+// even multiple, the others to the nearest multiple. Why: at a singular
+// vertex the relations around it give its value as (Σ ±k_C)/2 over its
+// chains, and an odd number of them have s_C = −1 (the matching around a
+// ±1/2 singularity is −1), so the value is an integer (on a level of both
+// functions: the quads-only configuration) for parity 0 and a half-integer
+// for parity 1; an odd k on an s_C = +1 chain would flip that. `alpha`, `rounded`
 // per chain, function units. Returns false (values still filled) when a
-// pivot had to be a singularity chain and came out with the other parity, or
+// pivot had to be a singularity chain and came out with another parity, or
 // a constraint could not be pivoted (reported in *message).
 bool RoundJumps(const CutGraph& cut, const std::vector<int>& chain_sign,
                 const std::vector<double>& alpha, double spacing, int parity,
@@ -65,6 +72,29 @@ FieldOrientation OrientField(const Mesh& mesh, const CutGraph& cut,
                              const std::vector<EdgeTransport>& transports,
                              const std::vector<int>& edge_to_transport,
                              const std::vector<Eigen::Vector2d>& direction);
+
+// Consistent signs for the two directions v, w of a conjugate pair field
+// (per face, frame coordinates; a face with a zero or NaN v or w is
+// undefined). The matching across every edge is taken from the bisector of
+// the lines of v and w (fields/conjugate.h BisectorAngle), whose rotation
+// defines the field's singularities (fields/singularities.h VertexIndices):
+// the bisector is oriented by OrientField, and v, w are oriented at −δ/2 and
+// +δ/2 from it (δ ∈ [0, π) the turn from line v to line w). Orienting v and
+// w separately by OrientField can disagree with the bisector's index at
+// vertices where a direction turns by about 90° between adjacent faces (near
+// singularities): a chain from a ±1/2 singularity then gets s_C = +1 for one
+// of the functions (no branch point, the quads around it fold) and cut edges
+// mismatch their chain. Here s_C and the mismatch counts are the bisector's,
+// the same for v and w; δ is single-valued, so the two rotate alike.
+// Preconditions (CHECKed): sizes match.
+struct PairOrientation {
+  FieldOrientation v, w;
+};
+PairOrientation OrientPair(const Mesh& mesh, const CutGraph& cut,
+                           const std::vector<EdgeTransport>& transports,
+                           const std::vector<int>& edge_to_transport,
+                           const std::vector<Eigen::Vector2d>& v,
+                           const std::vector<Eigen::Vector2d>& w);
 
 // Projects per-wedge values of one function, in spacing units (u = g/Δw),
 // onto the relations u[left] = k_C + s_C u[right] exactly, k_C = α_C/Δw

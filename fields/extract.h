@@ -60,7 +60,17 @@
 //     half that is collapsed (a corner keeps its place, else the midpoint);
 //     a boundary vertex then used by a
 //     single face with more than four vertices (not a boundary corner) is
-//     dissolved from it; then the polygon soup becomes a CGAL Surface_mesh
+//     dissolved from it; with merge_valence_two, an interior vertex on two
+//     faces only (valence 2) is removed and the two faces merged into one
+//     (two quads: a quad, whose corners at the valence-2 vertex's neighbours
+//     then have valence 3 — the both-odd configuration of a +1/2
+//     singularity); with cap_angle_deg, an interior triangle with a corner
+//     above it (three vertices nearly on a line, e.g. between two
+//     singularities closer than the spacing) is merged into the face across
+//     its longest side; with reflex_margin_deg ≥ 0, a face bent inward at an
+//     interior vertex by more than that is split along a diagonal from the
+//     corner (convex corners at both ends, parts of four vertices
+//     preferred); then the polygon soup becomes a CGAL Surface_mesh
 //     (PMP::polygon_soup_to_polygon_mesh; non-manifold vertices are
 //     duplicated by PMP::orient_polygon_soup and counted).
 //
@@ -103,6 +113,16 @@ struct ExtractOptions {
   // small triangle a level crossing near the boundary cuts off disappears and
   // its neighbours become quads. 0: off.
   double boundary_snap_fraction = 0.0;
+  // Interior vertices of valence 2 are removed by merging their two faces
+  // (step 6): no two corners of about 180° at one vertex.
+  bool merge_valence_two = false;
+  // A triangle with a corner above this (degrees: its vertices nearly on a
+  // line) is merged into the face across its longest side (step 6). 0: off.
+  double cap_angle_deg = 0.0;
+  // A face whose corner at an interior vertex exceeds 180° + this (degrees,
+  // in the plane of its Newell normal) is split along a diagonal from that
+  // corner (step 6). Negative: off.
+  double reflex_margin_deg = -1.0;
 };
 
 struct Extraction {
@@ -120,6 +140,9 @@ struct Extraction {
   int merged_vertices = 0;           // removed by step 6 (short edges)
   int snapped_vertices = 0;          // moved onto the boundary by step 6
   int dissolved_vertices = 0;        // boundary vertices left on one face only (step 6)
+  int merged_valence_two = 0;        // interior valence-2 vertices removed (step 6)
+  int merged_caps = 0;               // cap triangles merged into a neighbour (step 6)
+  int split_reflex_corners = 0;      // faces split at a reflex corner (step 6)
   int collapsed_boundary_edges = 0;  // boundary edges < boundary_snap_fraction / 2 (step 6)
   int dropped_small_faces = 0;       // fewer than 3 vertices (step 4)
   int dropped_non_disk_regions = 0;  // several loops with vertices (step 4)

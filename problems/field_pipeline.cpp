@@ -101,7 +101,7 @@ std::vector<Key> FieldKeys() {
 std::vector<TermUse> LevelSetTerms() {
   return {{"level_set_alignment", 0.1},
           {"level_set_normalised", 1},
-          {"level_set_conjugacy", 0},
+          {"level_set_conjugacy", 1},
           {"level_set_jump", 100},
           {"level_set_branch_point", 100}};
 }
@@ -127,6 +127,18 @@ std::vector<Key> LevelSetKeys() {
                     "fraction of the median edge is moved onto it (fewer cut-off boundary "
                     "triangles) and a boundary edge shorter than half of it is collapsed (no "
                     "sliver sides); 0 = off"),
+          BoolKey("extraction.merge_valence_two", true,
+                  "an interior layout vertex on two faces only (a +1/2 singularity on a level "
+                  "of both functions) is removed by merging its two faces (two quads give a "
+                  "quad); off: it stays, with two corners of about 180°"),
+          NumberKey("extraction.cap_angle", 160, 0, 180,
+                    "an interior layout triangle with a corner above this (degrees: its vertices "
+                    "nearly on a line, e.g. between two singularities closer than the spacing) "
+                    "is merged into the face across its longest side; 0 = off"),
+          NumberKey("extraction.reflex_margin", 2, -1, 180,
+                    "a layout face bent inward at an interior vertex by more than this (degrees "
+                    "beyond 180°) is split along a diagonal from that corner into two convex-cornered "
+                    "faces (the PQ step cannot make it planar without folding it further); -1 = off"),
           NumberKey("extraction.corner_angle", 30, 0, 180,
                     "boundary vertices where the boundary turns by more than this (degrees) are "
                     "kept as corners of the layout")};

@@ -4,9 +4,11 @@
 //
 // The field: a nested conjugate_field solve with this spec's field keys
 // (problems/field_pipeline.h). Its pair (v, w) per face, oriented
-// consistently on the surface cut open (fields/cut_jumps.h OrientField), is
+// consistently on the surface cut open (fields/cut_jumps.h OrientPair), is
 // the target of g (level sets along v) and h (along w); faces without a pair
-// (flat or exactly singular) get the Dirichlet energy instead.
+// (flat or exactly singular) get the Dirichlet energy instead. Both are
+// oriented from the bisector of the pair (fields/cut_jumps.h OrientPair), so
+// their matchings across the cuts agree with the singularities' indices.
 //
 // Cuts (fields/cuts.h): from every singularity to the boundary or an earlier
 // cut, plus cuts that make the surface simply connected. g and h are one
@@ -21,7 +23,8 @@
 //           levels) with the jumps (level_set_jump, level_set_branch_point);
 //  eq6      from there, level_set_normalised (eq. 6: only the direction of
 //           ∇g) with level_set_alignment at its (smaller) weight keeping the
-//           spacing, level_set_conjugacy (eq. 7, off by default) and the jumps;
+//           spacing, level_set_conjugacy (eq. 7: conjugacy of the level sets
+//           through M_f, weight 1) and the jumps;
 //  rounded  the jump constants rounded (fields/cut_jumps.h RoundJumps): chains
 //           from ±1/2 singularities to even (level_sets.rounding: even; quads
 //           around the singularity) or odd multiples of Δw (valence-4
@@ -115,8 +118,10 @@ void Init(HookContext& c) {
     }
     cell_area += geo.frames.area[f] * sine;
   }
-  st.ov = OrientField(mesh, st.cut, geo.transports, geo.edge_to_transport, v);
-  st.ow = OrientField(mesh, st.cut, geo.transports, geo.edge_to_transport, w);
+  const PairOrientation orientation =
+      OrientPair(mesh, st.cut, geo.transports, geo.edge_to_transport, v, w);
+  st.ov = orientation.v;
+  st.ow = orientation.w;
   st.v.resize(faces);
   st.w.resize(faces);
   for (size_t f = 0; f < faces; ++f) {
@@ -324,6 +329,9 @@ void Finish(HookContext& c) {
   options.merge_fraction = c.settings->Number("extraction.merge_fraction");
   options.corner_angle_deg = c.settings->Number("extraction.corner_angle");
   options.boundary_snap_fraction = c.settings->Number("extraction.boundary_snap");
+  options.merge_valence_two = c.settings->Bool("extraction.merge_valence_two");
+  options.cap_angle_deg = c.settings->Number("extraction.cap_angle");
+  options.reflex_margin_deg = c.settings->Number("extraction.reflex_margin");
   if (st.spacing_g > 0 && st.spacing_h > 0) {
     result->layout = ExtractQuadMesh(mesh, fn, options);
   } else {
@@ -411,6 +419,9 @@ void Finish(HookContext& c) {
         {"merged_vertices", x.merged_vertices},
         {"snapped_vertices", x.snapped_vertices},
         {"dissolved_vertices", x.dissolved_vertices},
+        {"merged_valence_two", x.merged_valence_two},
+        {"merged_caps", x.merged_caps},
+        {"split_reflex_corners", x.split_reflex_corners},
         {"collapsed_boundary_edges", x.collapsed_boundary_edges},
         {"dropped_small_faces", x.dropped_small_faces},
         {"dropped_non_disk_regions", x.dropped_non_disk_regions},
