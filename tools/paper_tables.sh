@@ -9,7 +9,8 @@ set -uo pipefail
 cd "$(dirname "$0")/.."
 build=${ARCHGEO_BUILD:-build}
 cmake --build "$build" -j "$(nproc)" --target archgeo pellis_fig7_torus pellis_fig11 pellis_fig19 \
-  pellis_fig20 shi_table1 zadravec_fig10 grids_table1 goal_examples >/dev/null || exit 2
+  pellis_fig20 shi_table1 zadravec_fig10 zadravec_conjugate_layout grids_table1 goal_examples \
+  >/dev/null || exit 2
 runs=(
   "pellis_fig7_torus"
   "pellis_fig11"
@@ -17,6 +18,7 @@ runs=(
   "pellis_fig20 --quick"
   "shi_table1 --quick"
   "zadravec_fig10 --quick"
+  "zadravec_conjugate_layout --quick"
   "grids_table1 --no-timing --method least_squares"
   "goal_examples"
 )
