@@ -221,9 +221,10 @@ void MergeValenceTwo(std::vector<std::vector<int>>* faces, int* merged, int* dro
       const std::set<int> two(fa.begin(), fa.end());
       if (two.size() != 2 || two != std::set<int>(fb.begin(), fb.end())) continue;
       // Each face as the path after v around it (v dropped).
-      auto after = [&](int f) {
+      // (A copy of v: C++17 lambdas cannot capture a structured binding.)
+      auto after = [&, centre = v](int f) {
         const std::vector<int>& c = (*faces)[f];
-        const size_t at = static_cast<size_t>(std::find(c.begin(), c.end(), v) - c.begin());
+        const size_t at = static_cast<size_t>(std::find(c.begin(), c.end(), centre) - c.begin());
         std::vector<int> path;
         for (size_t k = 1; k < c.size(); ++k) path.push_back(c[(at + k) % c.size()]);
         return path;
