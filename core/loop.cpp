@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/domain_solve.h"
 #include "core/solver_options.h"
 
 namespace archgeo {
@@ -222,20 +223,28 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
           solver.callbacks.push_back(&watch);
           solver.update_state_every_iteration = true;
         }
-        ceres::Solver::Summary summary;
-        if (problem->NumResiduals() > 0) ceres::Solve(solver, problem.get(), &summary);
+        DomainSolveSummary summary;
+        if (problem->NumResiduals() > 0) {
+          DomainOptions domains;
+          domains.size = int(s.Integer("solver.domain_size"));
+          domains.band_rings = int(s.Integer("solver.domain_band"));
+          domains.function_tolerance = s.Number("solver.domain_function_tolerance");
+          summary = DomainSolve(solver, domains, problem.get());
+        }
         model.StateChanged();
 
         result.rounds = round_number;
         result.variables = problem->NumParameters();
         result.residuals = problem->NumResiduals();
-        step.iterations = std::max(0, int(summary.iterations.size()) - 1);
+        result.domains = std::max(result.domains, summary.parts);
+        step.iterations = summary.iterations;
         step.cost = summary.final_cost;
         result.iterations += step.iterations;
-        result.seconds["ceres"] += std::max(0.0, summary.total_time_in_seconds);
-        result.seconds["linear_solver"] += std::max(0.0, summary.linear_solver_time_in_seconds);
-        result.seconds["jacobian"] += std::max(0.0, summary.jacobian_evaluation_time_in_seconds);
-        if (problem->NumResiduals() > 0 && !summary.IsSolutionUsable()) {
+        result.seconds["ceres"] += summary.seconds;
+        result.seconds["linear_solver"] += summary.linear_solver_seconds;
+        result.seconds["jacobian"] += summary.jacobian_seconds;
+        if (summary.parts > 0) result.seconds["partition"] += summary.partition_seconds;
+        if (!summary.usable) {
           step.usable = false;
           step.message = summary.message;
         }

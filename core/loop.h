@@ -102,6 +102,7 @@ struct LoopResult {
   std::string message;
   int variables = 0, residuals = 0;
   int rounds = 0, iterations = 0;
+  int domains = 0;  // parts of the largest domain-decomposed solve (0: global solves)
   std::map<std::string, double> objective;  // ½ Σ w r² per part and "total", final state
   std::map<std::string, double> seconds;    // "ceres", "linear_solver", "jacobian", "projection"
   std::map<std::string, bool> tolerances;   // per tolerance key: met at the end

@@ -247,6 +247,7 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const M
   rep["usable"] = solved.usable;
   rep["variables"] = solved.variables;
   rep["residuals"] = solved.residuals;
+  rep["domains"] = solved.domains;
   rep["iterations"] = {{"outer", solved.rounds}, {"inner", solved.iterations}};
   rep["objective"] = solved.objective;
   nlohmann::json tolerances = nlohmann::json::object();
@@ -365,9 +366,13 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const M
 
   char head[512];
   std::snprintf(head, sizeof head,
-                "%s: %d variables, %d residuals, %d rounds / %d Ceres iterations, %.2f s (solve "
+                "%s: %d variables, %d residuals%s, %d rounds / %d Ceres iterations, %.2f s (solve "
                 "%.2f s); stop: %s\n",
-                d.name.c_str(), solved.variables, solved.residuals, solved.rounds,
+                d.name.c_str(), solved.variables, solved.residuals,
+                solved.domains > 0
+                    ? (" (solved in " + std::to_string(solved.domains) + " domains)").c_str()
+                    : "",
+                solved.rounds,
                 solved.iterations, Since(start), solve_seconds, solved.stop.c_str());
   char objective[128];
   std::snprintf(objective, sizeof objective, "objective (canonical frame): %.6e\n",
