@@ -1,15 +1,26 @@
 // How the planar-quad solve scales with mesh size (STYLE.md, "Direct solves
 // grow ~n^1.5"): examples/planar_quads.yaml on generated non-planar roof grids
 // (`archgeo generate --noise 0.05`) of 100x100 (10k quads) and 316x316 (~100k
-// quads), and 1000x1000 (1M quads) only with --include-1m (minutes, ~19 GB).
+// quads), and 1000x1000 (1M quads) only with --include-1m (long; the smooth
+// defaults hold ~800 bytes per residual, ~30 GB at 1M: more than this
+// machine's 24 GB). Every size is solved twice, with one global sparse
+// Cholesky per step (solver.domain_size=0) and with the spec's defaults
+// (domain decomposition of large rounds, core/domain_solve.h), unless
+// --domains-only. Prints time to tolerance, iterations, peak memory, the time
+// of one linear solve and the fitted exponents of time and memory.
 // Each solve is an `archgeo solve` subprocess, so the peak memory is per run.
 //
 //   cmake --build <build> --target scaling archgeo   # runs the archgeo tool
-//   <build>/benchmarks/scaling [--include-1m] [--timeout SECONDS]
+//   <build>/benchmarks/scaling [--include-1m] [--domains-only] [--timeout SECONDS]
+//                              [--set KEY=VALUE]...
 //
 // Times are wall-clock on the machine that runs it. Grids are cached in the
 // scratch folder (see bench::Scratch()).
 #include "benchmarks/bench_util.h"
+
+#include <array>
+#include <cmath>
+#include <map>
 
 namespace {
 
@@ -28,20 +39,29 @@ std::string Grid(int n) {
   return path;
 }
 
+// Fitted exponent b of y = a x^b between two sizes.
+double Exponent(double x1, double y1, double x2, double y2) {
+  return std::log(y2 / y1) / std::log(x2 / x1);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  bench::InitLogging(argv[0]);
   std::vector<int> sizes = {100, 316};
-  double timeout = 300;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
+  double timeout = 600;
+  bool compare = true;
+  const std::vector<std::string> rest = bench::Init(argc, argv);  // takes the --set arguments
+  for (size_t i = 0; i < rest.size(); ++i) {
+    const std::string& arg = rest[i];
     if (arg == "--include-1m") {
       sizes.push_back(1000);
-    } else if (arg == "--timeout" && i + 1 < argc) {
-      timeout = std::stod(argv[++i]);
+    } else if (arg == "--domains-only") {
+      compare = false;
+    } else if (arg == "--timeout" && i + 1 < rest.size()) {
+      timeout = std::stod(rest[++i]);
     } else {
-      std::cerr << "usage: " << argv[0] << " [--include-1m] [--timeout SECONDS]\n";
+      std::cerr << "usage: " << argv[0]
+                << " [--include-1m] [--domains-only] [--timeout SECONDS] [--set KEY=VALUE]...\n";
       return 2;
     }
   }
@@ -51,36 +71,70 @@ int main(int argc, char** argv) {
                "timeout "
             << timeout << " s per run\n\n";
 
-  bench::Table t({"grid", "quads", "variables", "iter (Ceres/outer)", "s/iter", "linear share",
-                  "Ceres s", "total s", "peak MB", "δ_PQ,n max", "met"});
+  // Each size: one global sparse Cholesky per step (solver.domain_size=0) and
+  // the spec's default, which solves large rounds in domains (core/domain_solve.h).
+  struct Mode {
+    std::string name;
+    std::vector<std::string> sets;
+  };
+  std::vector<Mode> modes;
+  if (compare) modes.push_back({"global", {"solver.domain_size=0"}});
+  modes.push_back({"default", {}});
+  bench::Table t({"grid", "quads", "solve", "domains", "variables", "iter (Ceres/outer)",
+                  "s / linear solve", "Ceres s", "total s", "peak MB", "δ_PQ,n max",
+                  "max move % diag", "met"});
   std::string blas;  // as reported by the archgeo subprocess
+  // Per mode: (quads, total s, peak MB) of the runs that met the tolerance.
+  std::map<std::string, std::vector<std::array<double, 3>>> curve;
   for (int n : sizes) {
     const std::string mesh = Grid(n);
-    bench::Json r;
-    const bench::ProcessResult p =
-        bench::SolveCommand(spec, {"mesh=" + mesh}, &r, /*write_mesh=*/false, timeout);
-    const std::string grid = Fmt("%dx%d", n, n), quads = Fmt("%d", n * n);
-    if (p.timed_out || r.is_null()) {
-      t.Add({grid, quads, "-", "-", "-", "-", "-", Fmt("%.0f", p.seconds),
-             Fmt("%.0f", p.max_rss_mb), "-",
-             p.timed_out ? Fmt("timed out after %.0f s", p.seconds)
-                         : Fmt("failed: exit code %d", p.exit_code)});
-    } else {
-      const double iters = Get(r, "/iterations/inner"), ceres = Get(r, "/seconds/ceres");
-      t.Add({grid, quads, Fmt("%.0f", Get(r, "/variables")),
-             Fmt("%.0f / %.0f", iters, Get(r, "/iterations/outer")), Fmt("%.3f", ceres / iters),
-             Fmt("%.0f%%", 100 * Get(r, "/seconds/linear_solver") / ceres), Fmt("%.1f", ceres),
-             Fmt("%.1f", p.seconds), Fmt("%.0f", p.max_rss_mb),
-             Fmt("%.2e", Get(r, "/after/pq_normalized_max")), bench::Met(r)});
+    for (const Mode& mode : modes) {
+      bench::Json r;
+      std::vector<std::string> sets = {"mesh=" + mesh};
+      sets.insert(sets.end(), mode.sets.begin(), mode.sets.end());
+      const bench::ProcessResult p = bench::SolveCommand(spec, sets, &r, /*write_mesh=*/false, timeout);
+      const std::string grid = Fmt("%dx%d", n, n), quads = Fmt("%d", n * n);
+      if (p.timed_out || r.is_null()) {
+        t.Add({grid, quads, mode.name, "-", "-", "-", "-", "-", Fmt("%.0f", p.seconds),
+               Fmt("%.0f", p.max_rss_mb), "-", "-",
+               p.timed_out ? Fmt("timed out after %.0f s", p.seconds)
+                           : Fmt("failed: exit code %d", p.exit_code)});
+      } else {
+        const double iters = Get(r, "/iterations/inner"), ceres = Get(r, "/seconds/ceres");
+        t.Add({grid, quads, mode.name, Fmt("%.0f", Get(r, "/domains")),
+               Fmt("%.0f", Get(r, "/variables")),
+               Fmt("%.0f / %.0f", iters, Get(r, "/iterations/outer")),
+               Fmt("%.2f", Get(r, "/seconds/linear_solver") / iters), Fmt("%.1f", ceres),
+               Fmt("%.1f", p.seconds), Fmt("%.0f", p.max_rss_mb),
+               Fmt("%.2e", Get(r, "/after/pq_normalized_max")),
+               Fmt("%.3f", 100 * Get(r, "/after/displacement_max") / Get(r, "/before/bbox_diagonal")),
+               bench::Met(r)});
+        if (bench::Met(r) == "yes") curve[mode.name].push_back({double(n * n), p.seconds, p.max_rss_mb});
+      }
+      if (blas.empty() && !r.is_null()) blas = r.value("blas", "");
+      std::cout << "done " << grid << " " << mode.name << " (" << Fmt("%.1f", p.seconds) << " s)\n"
+                << std::flush;
     }
-    if (blas.empty() && !r.is_null()) blas = r.value("blas", "");
-    std::cout << "done " << grid << " (" << Fmt("%.1f", p.seconds) << " s)\n" << std::flush;
   }
   std::cout << "\nBLAS (archgeo's report): " << (blas.empty() ? "unknown" : blas) << "\n\n";
   t.Print();
+  std::cout << "\nfitted exponents (time ~ quads^b, memory ~ quads^c, between consecutive sizes):\n";
+  for (const auto& [mode, points] : curve) {
+    for (size_t k = 1; k < points.size(); ++k) {
+      const auto& a = points[k - 1];
+      const auto& b = points[k];
+      std::cout << Fmt("  %-8s", mode.c_str()) << Fmt("%.0f -> %.0f quads: ", a[0], b[0])
+                << Fmt("b = %.2f, ", Exponent(a[0], a[1], b[0], b[1]))
+                << Fmt("c = %.2f\n", Exponent(a[0], a[2], b[0], b[2]));
+    }
+  }
   std::cout
-      << "\ns/iter: Ceres seconds / Ceres iterations; linear share: linear-solver seconds /\n"
-         "Ceres seconds; Ceres s: time in ceres::Solve, all outer rounds; total s: the whole\n"
-         "`archgeo solve --quiet` subprocess (read, reference, solve, metrics, report);\n"
-         "peak MB: its maximum resident set (wait4 ru_maxrss).\n";
+      << "\nsolve: global = one sparse Cholesky of the whole problem per step\n"
+         "(solver.domain_size=0); default = the spec's settings, which solve a round of more\n"
+         "than 4 x solver.domain_size variables part by part (core/domain_solve.h).\n"
+         "s / linear solve: linear-solver seconds / Ceres iterations (forming J^T J, the\n"
+         "factorisation, the back-substitution); Ceres s: time in ceres::Solve, all rounds;\n"
+         "total s: the whole `archgeo solve --quiet` subprocess (read, reference, solve,\n"
+         "metrics, report), the time to tolerance; peak MB: its maximum resident set (wait4\n"
+         "ru_maxrss); max move: the largest vertex displacement, % of the bounding-box diagonal.\n";
 }
