@@ -133,10 +133,10 @@ std::vector<Key> SolverKeys() {
       flag("use_mixed_precision_solves", false, "single-precision factorisation + refinement"),
       integer("max_num_refinement_iterations", 0, 0, 1000, "iterative refinement steps"),
       flag("use_explicit_schur_complement", false, "iterative_schur: form the Schur complement"),
-      integer("domain_size", 25000, 0, 1000000000,
+      integer("domain_size", 0, 0, 1000000000,
               "domain decomposition (core/domain_solve.h): a round with more than 4 x this many "
               "variables is solved part by part, parts of about this many variables, then the "
-              "band between them; 0 = always one global solve"),
+              "band between them; 0 = always one global solve (planar_quads: 25000)"),
       integer("domain_band", 2, 0, 100,
               "domain decomposition: the band pass frees the parts' separator and this many "
               "rings of neighbours"),
