@@ -235,6 +235,7 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
         result.seconds["ceres"] += std::max(0.0, summary.total_time_in_seconds);
         result.seconds["linear_solver"] += std::max(0.0, summary.linear_solver_time_in_seconds);
         result.seconds["jacobian"] += std::max(0.0, summary.jacobian_evaluation_time_in_seconds);
+        result.seconds["residual"] += std::max(0.0, summary.residual_evaluation_time_in_seconds);
         if (problem->NumResiduals() > 0 && !summary.IsSolutionUsable()) {
           step.usable = false;
           step.message = summary.message;

@@ -103,7 +103,8 @@ struct LoopResult {
   int variables = 0, residuals = 0;
   int rounds = 0, iterations = 0;
   std::map<std::string, double> objective;  // ½ Σ w r² per part and "total", final state
-  std::map<std::string, double> seconds;    // "ceres", "linear_solver", "jacobian", "projection"
+  std::map<std::string, double> seconds;    // "ceres", "linear_solver", "jacobian",
+                                            // "residual", "projection"
   std::map<std::string, bool> tolerances;   // per tolerance key: met at the end
   std::vector<RoundLog> log;                // log[0]: the input (round 0)
   int output_round = 0;                     // the round whose state is the output
