@@ -11,7 +11,7 @@
 //   <build>/benchmarks/smooth_scale [--mesh FILE] [--timeout S] [--set KEY=VALUE ...]
 //
 // --mesh runs another mesh instead (no acceptance on E); --set is added to the
-// run (e.g. --set terms.smooth_dihedral_energy.weight=0 makes it fail). The
+// run (e.g. --set terms.smoothed_dihedral_energy.weight=0 makes it fail). The
 // subdivided mesh is cached in the scratch folder (bench::Scratch()).
 // Exit 1 if the acceptance fails.
 #include <cstdio>

@@ -136,7 +136,8 @@ ProblemDecl smooth_mesh() {
   d.paper = "[Pellis 2019, §3, §5.1, Fig. 12, 18, 20]";
   d.input = InputKind::kInteriorEdge;
   d.terms = {{"face_planarity", 1e6, {}, "non_triangles"},
-             {"dihedral_energy", 1},
+             {"smoothed_dihedral_energy", 1},
+             {"dihedral_energy", 0},
              {"boundary_proximity", 1},
              {"proximity", 1, {{"point_weight", 0.01}}},
              {"anchor", 0.3},
@@ -153,6 +154,9 @@ ProblemDecl smooth_mesh() {
   d.keys = {NumberKey("tolerance.energy_relative", 1e-4, 0, 1,
                       "stop when 3 rounds in a row have not lowered the lowest true E by this "
                       "fraction (0: all rounds); not with handles"),
+            NumberKey("tolerance.energy_change", 5e-3, 0, 1,
+                      "stop when a round changes the true E by less than this fraction of E "
+                      "(0: off); not with handles"),
             NumberKey("tolerance.displacement_relative", 0.005, 0, 1,
                       "bound on every vertex's distance from its input position, a fraction of "
                       "the bounding-box diagonal; 0 = none; not with handles"),
@@ -170,6 +174,8 @@ ProblemDecl smooth_mesh() {
       st.patience_key = "tolerance.energy_relative";
       st.patience_rounds = 3;
       st.guard_key = "tolerance.displacement_relative";
+      st.rest_change_measure = "E";
+      st.rest_change_key = "tolerance.energy_change";
     }
     return std::vector<Stage>{st};
   };
