@@ -10,16 +10,21 @@
 //
 // Terms (½ Σ w r², canonical frame, unit-free weights), in residual order:
 // face_planarity (faces with more than 3 sides keep a plane: a unit normal
-// and an offset per face, Fig. 18), dihedral_energy (the IRLS surrogate of E:
-// weights renewed every round from the current mesh), boundary_proximity,
+// and an offset per face, Fig. 18), smoothed_dihedral_energy (E with |ℓ*|
+// rounded to sqrt(ℓ*² + ε²), minimised directly: each Ceres iteration
+// reweights), dihedral_energy (the older IRLS surrogate of E, weights renewed
+// every round; weight 0 by default since issue 14), boundary_proximity,
 // proximity (+ point_weight) and anchor (the reference, re-projected each
 // round), handles, fairness (straight_triples: opposite neighbours at
 // even-valence vertices and boundary neighbours), displacement_guard and
 // step (R's w_reg ‖X − X_prev‖²).
 //
-// Rounds: until 3 rounds in a row have not lowered the lowest true E so far
-// by more than tolerance.energy_relative (or a round moves nothing); the
-// output is the round with the lowest true E. tolerance.displacement_relative
+// Rounds: until a round changes the true E by less than the fraction
+// tolerance.energy_change of E (the rounds re-project onto the reference and
+// re-centre the step term; once E has settled, further rounds gain ~0.1–0.3%
+// each), or 3 rounds in a row have not lowered the lowest true E so far by
+// more than tolerance.energy_relative, or a round moves nothing; the output
+// is the round with the lowest true E. tolerance.displacement_relative
 // bounds how far any vertex moves from its input position (a fraction of the
 // bounding-box diagonal): past half the bound a vertex is anchored (×10 per
 // round), past the bound it is put back inside (unless it belongs to a
