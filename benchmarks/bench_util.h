@@ -2,7 +2,7 @@
 // builds every .cpp here into its own program).
 //
 //   Solve(...)        one `archgeo solve` in process (ReadSpec + RunSpec), no outputs
-//   RunProcess(...)   a subprocess with wall-clock time, peak RSS and a timeout
+//   RunProcess(...)   a subprocess with wall-clock and CPU time, peak RSS and a timeout
 //   SolveCommand(...) `archgeo solve --quiet` as a subprocess, report read back
 //   Table             a left-aligned text table
 #pragma once
@@ -115,6 +115,8 @@ struct ProcessResult {
   int exit_code = -1;  // -1: killed by a signal (or the timeout)
   bool timed_out = false;
   double seconds = 0;     // wall clock, fork to reap
+  double cpu_seconds = 0; // user + system CPU time of the child (wait4 rusage): the
+                          // measure to compare on a shared machine
   double max_rss_mb = 0;  // peak resident set (wait4 ru_maxrss)
 };
 
@@ -149,6 +151,8 @@ inline ProcessResult RunProcess(const std::vector<std::string>& argv, double tim
   }
   r.seconds = Seconds(start);
   r.max_rss_mb = usage.ru_maxrss / 1024.0;  // kB on Linux
+  r.cpu_seconds = usage.ru_utime.tv_sec + usage.ru_stime.tv_sec +
+                  1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
   if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
   return r;
 }

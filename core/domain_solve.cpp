@@ -90,6 +90,7 @@ void Add(const ceres::Solver::Summary& s, DomainSolveSummary* out) {
   out->seconds += std::max(0.0, s.total_time_in_seconds);
   out->linear_solver_seconds += std::max(0.0, s.linear_solver_time_in_seconds);
   out->jacobian_seconds += std::max(0.0, s.jacobian_evaluation_time_in_seconds);
+  out->residual_seconds += std::max(0.0, s.residual_evaluation_time_in_seconds);
   out->final_cost = s.final_cost;
   if (!s.IsSolutionUsable()) {
     out->usable = false;

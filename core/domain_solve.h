@@ -37,7 +37,7 @@ namespace archgeo {
 struct DomainSolveSummary {
   int parts = 0;                // 0: one global solve (the problem was small)
   int iterations = 0;           // Ceres iterations of both passes
-  double seconds = 0, linear_solver_seconds = 0, jacobian_seconds = 0;
+  double seconds = 0, linear_solver_seconds = 0, jacobian_seconds = 0, residual_seconds = 0;
   double partition_seconds = 0;  // graph + METIS
   double final_cost = 0;        // ½ Σ w r² of the whole problem at the end
   bool usable = true;

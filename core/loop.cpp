@@ -243,6 +243,7 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
         result.seconds["ceres"] += summary.seconds;
         result.seconds["linear_solver"] += summary.linear_solver_seconds;
         result.seconds["jacobian"] += summary.jacobian_seconds;
+        result.seconds["residual"] += summary.residual_seconds;
         if (summary.parts > 0) result.seconds["partition"] += summary.partition_seconds;
         if (!summary.usable) {
           step.usable = false;

@@ -104,7 +104,8 @@ struct LoopResult {
   int rounds = 0, iterations = 0;
   int domains = 0;  // parts of the largest domain-decomposed solve (0: global solves)
   std::map<std::string, double> objective;  // ½ Σ w r² per part and "total", final state
-  std::map<std::string, double> seconds;    // "ceres", "linear_solver", "jacobian", "projection"
+  std::map<std::string, double> seconds;    // "ceres", "linear_solver", "jacobian",
+                                            // "residual", "projection"
   std::map<std::string, bool> tolerances;   // per tolerance key: met at the end
   std::vector<RoundLog> log;                // log[0]: the input (round 0)
   int output_round = 0;                     // the round whose state is the output

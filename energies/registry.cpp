@@ -37,6 +37,7 @@
   X(proximity)                 \
   X(saddle_sign)               \
   X(shear)                     \
+  X(smoothed_dihedral_energy)  \
   X(spring)                    \
   X(step)                      \
   X(tangent_plane)             \

@@ -161,7 +161,8 @@ ProblemDecl CustomProblem(const YAML::Node& root, const std::string& path,
                              "costs nothing"));
   bool smooth = false;
   for (const TermUse& u : d.terms) {
-    smooth = smooth || u.term == "dihedral_energy" || u.term == "total_absolute_curvature";
+    smooth = smooth || u.term == "dihedral_energy" || u.term == "smoothed_dihedral_energy" ||
+                      u.term == "total_absolute_curvature";
   }
   bool conical = false;
   for (const TermUse& u : d.terms) conical = conical || u.term == "conical";

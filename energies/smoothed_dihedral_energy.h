@@ -1,0 +1,199 @@
+// Edge-length × dihedral energy, smoothed at flat edges and minimised
+// directly (no reweighting between solves). One 4-vector residual per
+// interior edge e = vw = f ∩ f′, d = n_f − n_f′ (so ‖d‖ = ℓ*_e):
+//
+//   r = sqrt(ℓ_e / (L s)) · (d, sqrt(s² + ε²)),   s = sqrt(‖d‖² + ε²)
+//   ½‖r‖² = (ℓ_e / L) · sqrt(ℓ*²_e + ε²)                      (exact)
+//   ℓ_e = sqrt(‖v − w‖² + (ε_ℓ L)²)
+//
+//   [Pellis 2019, §3: E = Σ_e ℓ_e ℓ*_e, ℓ*_e = ‖n_f − n_f′‖ = 2|sin(α_e/2)|;
+//    §5.1: E as the target functional E_target of the regulariser R(X)]
+//
+// So Ceres (which minimises ½Σ‖r‖²) minimises E_ε / L with
+//   E_ε = Σ_e ℓ_e sqrt(ℓ*²_e + ε²),   E ≤ E_ε ≤ E + ε Σ_e ℓ_e,
+// the true E with |ℓ*| replaced by the smooth sqrt(ℓ*² + ε²) (a Huber-like
+// rounding of the kink of |ℓ*| at flat edges, radius ε). Its gradient is E's
+// wherever ℓ*_e ≫ ε; the extra ε Σ ℓ_e pulls every edge shorter with a
+// force ε (unit-free), against forces of order |α_e| that E exerts on an edge
+// bent by α_e (0.087 at 5°).
+//
+// Why this residual, not the IRLS one (energies/dihedral_energy.h): the IRLS
+// surrogate ½ ℓ²ℓ*²/ω freezes ω for a whole solve and has to be renewed in
+// rounds, and its rounds converge linearly (issue 14: 0.1–0.2% of E per round
+// at 54k faces). Here the objective Ceres sees is E_ε itself, so every Ceres
+// iteration (re)weights and a single solve converges to E_ε's minimum. The
+// split of ½‖r‖² into four squares is chosen so that Gauss–Newton's model
+// JᵀJ matches the Hessian of ℓ sqrt(‖d‖² + ε²) (as a function of d) exactly
+// at flat edges (ℓ/ε · I) and across d for bent edges (ℓ/‖d‖ orthogonally to
+// d); only along d does it add ℓ/(2‖d‖) where the Hessian is 0 (a convex
+// majorant, as IRLS's ℓ/‖d‖). The plain scalar sqrt(2ℓ sqrt(‖d‖² + ε²))
+// would give JᵀJ → 0 at flat edges.
+//
+// Face normals and polygons as in dihedral_energy.h: a triangle's normal is
+// RegularisedTriangleNormal of its vertices (ε_n = kDihedralNormalEpsilon
+// relative to L²); a planar polygon (more than three vertices) contributes a
+// unit-normal block (SphereManifold, kept on the face's plane by
+// face_planarity). Orientation: for the edge v→w, f = (v, w, a, …) is the face
+// on the left, f′ = (w, v, b, …) on the right; the residual's first three
+// entries flip sign with the traversal, ‖r‖ does not.
+//
+// Units / normalisation: L = 1/inv_length is a fixed length (1 in the
+// canonical frame of unit mean edge length), ε unit-free (an angle: ℓ* ≈ |α|
+// for small α). ε = kSmoothedDihedralEpsilon = 1e-3 by default (0.057°).
+//
+// Singular configurations, none of which gives NaN (the functors never return
+// false):
+//  - ℓ*_e = 0 (coplanar faces): s = ε, r = sqrt(ℓ/(Lε)) (0, √2 ε), smooth.
+//  - zero-length edge v = w: ℓ_e = ε_ℓ L = 1e-9 L, sqrt(ℓ_e) and its
+//    derivative finite.
+//  - degenerate triangle: regularised normal 0 (dihedral_energy.h), finite.
+//  - folded flat (n_f′ = −n_f): ‖d‖ = 2, smooth.
+//
+// Invariances: rigid motions x → R x + t (d → R d, ‖r‖ and the fourth entry
+// unchanged; polygon normal blocks n → R n); uniform scaling x → σx with
+// inv_length → inv_length/σ (r unchanged); swapping f and f′ (traversing the
+// edge as w→v) flips d and leaves ‖r‖.
+#ifndef ARCHGEO_ENERGIES_SMOOTHED_DIHEDRAL_ENERGY_H_
+#define ARCHGEO_ENERGIES_SMOOTHED_DIHEDRAL_ENERGY_H_
+
+#include <cmath>
+
+#include <Eigen/Core>
+
+#include "energies/dihedral_energy.h"  // RegularisedTriangleNormal, ε_n, ε_ℓ
+
+namespace ceres {
+class CostFunction;
+}  // namespace ceres
+
+namespace archgeo {
+
+// Smoothing radius ε of ℓ* (unit-free; see above).
+inline constexpr double kSmoothedDihedralEpsilon = 1e-3;
+
+// Common part: r = sqrt(ℓ/(L s)) (d, sqrt(s² + ε²)), d = n_left − n_right.
+template <typename T>
+void SmoothedDihedralResidual(const T* v_ptr, const T* w_ptr,
+                              const Eigen::Matrix<T, 3, 1>& n_left,
+                              const Eigen::Matrix<T, 3, 1>& n_right,
+                              double inv_length, double epsilon,
+                              T* residual) {
+  using Vec3 = Eigen::Matrix<T, 3, 1>;
+  const Eigen::Map<const Vec3> v(v_ptr);
+  const Eigen::Map<const Vec3> w(w_ptr);
+  const Vec3 e = (w - v) * T(inv_length);  // unit-free edge vector
+  using std::sqrt;
+  const T length = sqrt(e.squaredNorm() +
+                        T(kDihedralLengthEpsilon * kDihedralLengthEpsilon));
+  const Vec3 d = n_left - n_right;
+  const T eps2(epsilon * epsilon);
+  const T s2 = d.squaredNorm() + eps2;
+  const T s = sqrt(s2);
+  const T scale = sqrt(length / s);
+  residual[0] = scale * d[0];
+  residual[1] = scale * d[1];
+  residual[2] = scale * d[2];
+  residual[3] = scale * sqrt(s2 + eps2);
+}
+
+// Edge between two triangles: f = (v, w, a) on the left of v→w, f′ = (w, v, b)
+// on the right.
+struct SmoothedDihedralTriTri {
+  // inv_length: 1/L > 0; epsilon: ε > 0 (unit-free).
+  SmoothedDihedralTriTri(double inv_length, double epsilon)
+      : inv_length(inv_length), epsilon(epsilon) {}
+
+  // v, w: 3 doubles each, the edge's endpoints; a, b: 3 doubles each, the
+  // vertices opposite the edge in f and f′; residual: 4 doubles.
+  template <typename T>
+  bool operator()(const T* v_ptr, const T* w_ptr, const T* a_ptr,
+                  const T* b_ptr, T* residual) const {
+    using Vec3 = Eigen::Matrix<T, 3, 1>;
+    const Eigen::Map<const Vec3> v(v_ptr);
+    const Eigen::Map<const Vec3> w(w_ptr);
+    const Eigen::Map<const Vec3> a(a_ptr);
+    const Eigen::Map<const Vec3> b(b_ptr);
+    const T s(inv_length);
+    const Vec3 zero = Vec3::Zero();
+    const Vec3 wl = (w - v) * s, al = (a - v) * s, bl = (b - v) * s;
+    const Vec3 n_left =
+        RegularisedTriangleNormal<T>(zero, wl, al, kDihedralNormalEpsilon);
+    const Vec3 n_right =
+        RegularisedTriangleNormal<T>(wl, zero, bl, kDihedralNormalEpsilon);
+    SmoothedDihedralResidual(v_ptr, w_ptr, n_left, n_right, inv_length,
+                             epsilon, residual);
+    return true;
+  }
+
+  double inv_length;
+  double epsilon;
+};
+
+// Edge between a triangle f = (v, w, a) on the left of v→w and a planar
+// polygon f′ on the right with unit-normal block n_right. For a polygon on
+// the left and a triangle on the right, swap v and w.
+struct SmoothedDihedralTriPoly {
+  // As SmoothedDihedralTriTri.
+  SmoothedDihedralTriPoly(double inv_length, double epsilon)
+      : inv_length(inv_length), epsilon(epsilon) {}
+
+  // v, w, a: 3 doubles each; n_right: 3 doubles, the polygon's unit normal;
+  // residual: 4 doubles.
+  template <typename T>
+  bool operator()(const T* v_ptr, const T* w_ptr, const T* a_ptr,
+                  const T* n_right_ptr, T* residual) const {
+    using Vec3 = Eigen::Matrix<T, 3, 1>;
+    const Eigen::Map<const Vec3> v(v_ptr);
+    const Eigen::Map<const Vec3> w(w_ptr);
+    const Eigen::Map<const Vec3> a(a_ptr);
+    const Eigen::Map<const Vec3> n_right(n_right_ptr);
+    const T s(inv_length);
+    const Vec3 n_left = RegularisedTriangleNormal<T>(
+        Vec3::Zero(), (w - v) * s, (a - v) * s, kDihedralNormalEpsilon);
+    SmoothedDihedralResidual(v_ptr, w_ptr, n_left, Vec3(n_right), inv_length,
+                             epsilon, residual);
+    return true;
+  }
+
+  double inv_length;
+  double epsilon;
+};
+
+// Edge between two planar polygons with unit-normal blocks n_left (left of
+// v→w) and n_right; v and w enter only through ℓ_e.
+struct SmoothedDihedralPolyPoly {
+  // As SmoothedDihedralTriTri.
+  SmoothedDihedralPolyPoly(double inv_length, double epsilon)
+      : inv_length(inv_length), epsilon(epsilon) {}
+
+  // v, w, n_left, n_right: 3 doubles each; residual: 4 doubles.
+  template <typename T>
+  bool operator()(const T* v_ptr, const T* w_ptr, const T* n_left_ptr,
+                  const T* n_right_ptr, T* residual) const {
+    using Vec3 = Eigen::Matrix<T, 3, 1>;
+    const Eigen::Map<const Vec3> n_left(n_left_ptr);
+    const Eigen::Map<const Vec3> n_right(n_right_ptr);
+    SmoothedDihedralResidual(v_ptr, w_ptr, Vec3(n_left), Vec3(n_right),
+                             inv_length, epsilon, residual);
+    return true;
+  }
+
+  double inv_length;
+  double epsilon;
+};
+
+// Factories: a new AutoDiffCostFunction<Functor, 4, 3, 3, 3, 3> with the
+// blocks in the order of the functor's operator() (TriTri: v, w, a, b;
+// TriPoly: v, w, a, n_right; PolyPoly: v, w, n_left, n_right); the caller
+// takes ownership. Preconditions (CHECKed): inv_length and epsilon finite
+// and > 0.
+ceres::CostFunction* MakeSmoothedDihedralTriTri(
+    double inv_length, double epsilon = kSmoothedDihedralEpsilon);
+ceres::CostFunction* MakeSmoothedDihedralTriPoly(
+    double inv_length, double epsilon = kSmoothedDihedralEpsilon);
+ceres::CostFunction* MakeSmoothedDihedralPolyPoly(
+    double inv_length, double epsilon = kSmoothedDihedralEpsilon);
+
+}  // namespace archgeo
+
+#endif  // ARCHGEO_ENERGIES_SMOOTHED_DIHEDRAL_ENERGY_H_
