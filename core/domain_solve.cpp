@@ -124,6 +124,12 @@ DomainSolveSummary DomainSolve(const ceres::Solver::Options& global_options,
                                const DomainOptions& domains, ceres::Problem* problem) {
   const int band_rings = domains.band_rings;
   DomainSolveSummary out;
+  if (DomainParts(problem->NumParameters(), domains.size) == 0) {  // small (or off): no graph
+    ceres::Solver::Summary summary;
+    ceres::Solve(global_options, problem, &summary);
+    Add(summary, &out);
+    return out;
+  }
   const auto partition_start = Clock::now();
   const Incidence g = Collect(*problem);
   int variables = 0;
