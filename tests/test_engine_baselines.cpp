@@ -16,6 +16,8 @@
 // 0.007114199572022 (checked; 4e-4 apart). The other four are unchanged.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <string>
 #include <vector>
 
@@ -32,6 +34,9 @@ struct Baseline {
   const char* example;
   double objective;
   std::vector<std::string> then;  // settings that restore the example of then
+  // The same run's objective with other OpenBLAS kernels (OPENBLAS_CORETYPE),
+  // where rounding takes a long run elsewhere (README, Determinism).
+  std::vector<double> other_kernels = {};
 };
 
 class EngineBaselines : public ScratchDirTest, public ::testing::WithParamInterface<Baseline> {};
@@ -48,7 +53,11 @@ TEST_P(EngineBaselines, SameObjectiveAsBeforeTheValidityChecks) {
   const RunResult run = RunSpec(spec, {});
   ASSERT_EQ(run.exit_code, 0);
   const double total = run.report["objective"]["total"].get<double>();
-  EXPECT_NEAR(total, b.objective, 1e-6 * b.objective) << b.example;
+  bool near = std::abs(total - b.objective) <= 1e-6 * b.objective;
+  for (double other : b.other_kernels) near = near || std::abs(total - other) <= 1e-6 * other;
+  EXPECT_TRUE(near) << b.example << ": objective " << total << ", pinned " << b.objective
+                    << " (SkylakeX kernels) or one of " << b.other_kernels.size()
+                    << " other kernels' values";
 }
 
 
@@ -69,8 +78,10 @@ INSTANTIATE_TEST_SUITE_P(
                   "solver.linear_solver_type=sparse_normal_cholesky",
                   "solver.max_num_iterations=20"}},
         Baseline{"total_absolute_curvature", 49.37123332010, {"output.mesh="}},
+        // Haswell's and Sandybridge's kernels: 0.0080118939244, 0.0071194002733.
         Baseline{"principal_symmetric", 0.0071170901102163,
-                 {"output.mesh=", "output.principal_edges="}},
+                 {"output.mesh=", "output.principal_edges="},
+                 {0.0080118939243872, 0.0071194002733460}},
         Baseline{"hnet", 0.7763665407956,
                  {"output.mesh=", "output.patchwork=", "output.rulings=",
                   "terms.convexity.weight=0", "terms.min_edge_length.weight=0",
