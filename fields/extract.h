@@ -67,7 +67,11 @@
 //     singularity); with cap_angle_deg, an interior triangle with a corner
 //     above it (three vertices nearly on a line, e.g. between two
 //     singularities closer than the spacing) is merged into the face across
-//     its longest side; with reflex_margin_deg ≥ 0, a face bent inward at an
+//     its longest side; with slit_angle_deg, a corner whose two sides leave
+//     within that angle of each other (two level lines side by side from a
+//     singular vertex: a near-slit) leaves its face, the longer side split at
+//     the shorter side's end in the face across; with reflex_margin_deg ≥ 0,
+//     a face bent inward at an
 //     interior vertex by more than that is split along a diagonal from the
 //     corner (convex corners at both ends, parts of four vertices
 //     preferred); then the polygon soup becomes a CGAL Surface_mesh
@@ -119,6 +123,10 @@ struct ExtractOptions {
   // A triangle with a corner above this (degrees: its vertices nearly on a
   // line) is merged into the face across its longest side (step 6). 0: off.
   double cap_angle_deg = 0.0;
+  // A corner whose two sides leave within this angle (degrees) of each other
+  // is removed from its face, the longer side split at the shorter side's
+  // end in the face across (step 6). 0: off.
+  double slit_angle_deg = 0.0;
   // A face whose corner at an interior vertex exceeds 180° + this (degrees,
   // in the plane of its Newell normal) is split along a diagonal from that
   // corner (step 6). Negative: off.
@@ -142,6 +150,7 @@ struct Extraction {
   int dissolved_vertices = 0;        // boundary vertices left on one face only (step 6)
   int merged_valence_two = 0;        // interior valence-2 vertices removed (step 6)
   int merged_caps = 0;               // cap triangles merged into a neighbour (step 6)
+  int removed_slits = 0;             // near-slit corners removed (step 6)
   int split_reflex_corners = 0;      // faces split at a reflex corner (step 6)
   int collapsed_boundary_edges = 0;  // boundary edges < boundary_snap_fraction / 2 (step 6)
   int dropped_small_faces = 0;       // fewer than 3 vertices (step 4)

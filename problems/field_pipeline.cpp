@@ -135,6 +135,11 @@ std::vector<Key> LevelSetKeys() {
                     "an interior layout triangle with a corner above this (degrees: its vertices "
                     "nearly on a line, e.g. between two singularities closer than the spacing) "
                     "is merged into the face across its longest side; 0 = off"),
+          NumberKey("extraction.slit_angle", 3, 0, 90,
+                    "a layout corner whose two sides leave within this angle (degrees: two level "
+                    "lines side by side from a singular vertex) leaves its face, the longer side "
+                    "split at the shorter side's end in the face across (no hairline face to fold "
+                    "over); 0 = off"),
           NumberKey("extraction.reflex_margin", 2, -1, 180,
                     "a layout face bent inward at an interior vertex by more than this (degrees "
                     "beyond 180°) is split along a diagonal from that corner into two convex-cornered "

@@ -331,6 +331,7 @@ void Finish(HookContext& c) {
   options.boundary_snap_fraction = c.settings->Number("extraction.boundary_snap");
   options.merge_valence_two = c.settings->Bool("extraction.merge_valence_two");
   options.cap_angle_deg = c.settings->Number("extraction.cap_angle");
+  options.slit_angle_deg = c.settings->Number("extraction.slit_angle");
   options.reflex_margin_deg = c.settings->Number("extraction.reflex_margin");
   if (st.spacing_g > 0 && st.spacing_h > 0) {
     result->layout = ExtractQuadMesh(mesh, fn, options);
@@ -421,6 +422,7 @@ void Finish(HookContext& c) {
         {"dissolved_vertices", x.dissolved_vertices},
         {"merged_valence_two", x.merged_valence_two},
         {"merged_caps", x.merged_caps},
+        {"removed_slits", x.removed_slits},
         {"split_reflex_corners", x.split_reflex_corners},
         {"collapsed_boundary_edges", x.collapsed_boundary_edges},
         {"dropped_small_faces", x.dropped_small_faces},

@@ -8,6 +8,14 @@
 //    still only quads inside, one face fewer, and every face convex (no
 //    corner above 180° in its plane, so the reflex split has nothing to do);
 //  - cap_angle and reflex_margin leave this regular layout unchanged.
+// And on the polygon soup of fields/layout_cleanup.h, the near-slit seen on
+// Concerthall's layout (two level lines leaving a singular vertex 0.3° apart;
+// coordinates from that layout, in its tangent plane):
+//  - RemoveNearSlits moves the two vertices beside the long side into the
+//    face across it: a triangle and a heptagon, both turning as before;
+//  - without it, SplitReflexCorners must not cut the hairline face along a
+//    diagonal outside it (the part folded onto the other, which the PQ step
+//    pushed through its neighbours: 5 intersecting face pairs).
 #include <cmath>
 #include <complex>
 #include <functional>
@@ -20,6 +28,7 @@
 
 #include "fields/cuts.h"
 #include "fields/extract.h"
+#include "fields/layout_cleanup.h"
 #include "fields/triangle_surfaces.h"
 
 namespace archgeo {
@@ -120,6 +129,51 @@ TEST(LayoutCleanup, CapsAndReflexSplitsLeaveARegularLayoutAlone) {
   EXPECT_EQ(after.merged_caps, 0);
   EXPECT_EQ(after.split_reflex_corners, 0);
   EXPECT_EQ(after.face_degrees, before.face_degrees);
+}
+
+// The near-slit: face 0 runs 3 → 4 → 2 → 1 → 0 with 1 and 2 (nearly) on the
+// side 0–3 of face 1 (0 → 5 → 6 → 7 → 3).
+std::vector<V3> SlitPoints() {
+  return {V3(-0.646, -0.147, 0), V3(-0.473, -0.146, 0), V3(-0.301, -0.145, 0),
+          V3(1.099, -0.131, 0),  V3(0.441, 0.006, 0),   V3(-1.508, -0.161, 0),
+          V3(-0.855, -0.681, 0), V3(1.333, -0.533, 0)};
+}
+std::vector<std::vector<int>> SlitFaces() { return {{3, 4, 2, 1, 0}, {0, 5, 6, 7, 3}}; }
+
+// Twice the signed area of face f in the plane z = 0 (> 0: counter-clockwise).
+double SignedArea(const std::vector<V3>& p, const std::vector<int>& f) {
+  double a = 0;
+  for (size_t i = 0; i < f.size(); ++i) {
+    const V3& u = p[f[i]];
+    const V3& w = p[f[(i + 1) % f.size()]];
+    a += u.x() * w.y() - w.x() * u.y();
+  }
+  return a;
+}
+
+TEST(LayoutCleanup, ANearSlitMovesItsVerticesIntoTheFaceAcross) {
+  const std::vector<V3> p = SlitPoints();
+  std::vector<std::vector<int>> faces = SlitFaces();
+  int removed = 0, dropped = 0;
+  RemoveNearSlits(p, 3.0, &faces, &removed, &dropped);
+  EXPECT_EQ(removed, 2);
+  EXPECT_EQ(dropped, 0);
+  ASSERT_EQ(faces.size(), 2u);
+  EXPECT_EQ(faces[0], (std::vector<int>{3, 4, 2}));
+  EXPECT_EQ(faces[1], (std::vector<int>{0, 5, 6, 7, 3, 2, 1}));
+  for (const auto& f : faces) EXPECT_GT(SignedArea(p, f), 0.0);
+
+  std::vector<std::vector<int>> untouched = SlitFaces();
+  RemoveNearSlits(p, 0.1, &untouched, &removed, &dropped);  // its corners are 0.3° and more
+  EXPECT_EQ(untouched, SlitFaces());
+}
+
+TEST(LayoutCleanup, AReflexSplitNeverCutsAlongADiagonalOutsideTheFace) {
+  const std::vector<V3> p = SlitPoints();
+  std::vector<std::vector<int>> faces = SlitFaces();
+  int split = 0;
+  SplitReflexCorners(p, std::vector<bool>(p.size(), false), 2.0, &faces, &split);
+  for (const auto& f : faces) EXPECT_GT(SignedArea(p, f), 0.0) << "a part folded over";
 }
 
 }  // namespace
