@@ -77,7 +77,7 @@ const TermSpec& convexity() {
     t.paper = "[panel validity; Zadravec 2010, §6, Fig. 13]";
     t.elements = "non_triangles";
     t.element_choices = {"faces", "quads", "polygons"};
-    t.options = {NumberKey("margin_degrees", 2.0, 0.0, 45.0,
+    t.options = {NumberKey("margin_degrees", 1.0, 0.0, 45.0,
                            "corners are kept at least this far from straight and from a spike "
                            "(interior angle in [m, 180° − m]); corners the input already has "
                            "outside it may get worse by about m, no more")};
