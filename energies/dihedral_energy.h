@@ -30,7 +30,9 @@
 // equations next to fairness and proximity terms). The builder reports the
 // true E = Σ ℓ_e ℓ*_e separately; this term only drives the minimisation.
 //
-// Face normals. A triangle's normal is computed from its three vertices,
+// Face normals (the hinge functors of energies/dihedral_hinge.h, shared with
+// smoothed_dihedral_energy). A triangle's normal is computed from its three
+// vertices,
 //   n = c / sqrt(‖c‖² + (ε_n L²)²),   c = cross product of two edge vectors,
 // (regularised normalisation, ε_n = kDihedralNormalEpsilon). A planar polygon
 // (more than three vertices) contributes a unit-normal parameter block n_f
