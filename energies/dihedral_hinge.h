@@ -33,10 +33,6 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross()
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
-
 namespace archgeo {
 
 // Regularisation of triangle normals, relative to L².
@@ -135,6 +131,15 @@ using HingePolyPoly = DihedralHinge<Residual, true, true>;
 // message) finite and > 0.
 void CheckHingeConstants(const char* name, double inv_length,
                          const char* parameter, double value);
+
+}  // namespace archgeo
+
+// --- the builder of the hinge terms (dihedral_hinge.cpp) --------------------
+namespace ceres {
+class CostFunction;
+}  // namespace ceres
+
+namespace archgeo {
 
 class TermContext;
 struct TermSpec;
