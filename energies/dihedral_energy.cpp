@@ -8,17 +8,10 @@
 namespace archgeo {
 namespace {
 
-void CheckConstants(const char* name, double inv_length, double omega) {
-  CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << name << ": inv_length must be finite and > 0, got " << inv_length;
-  CHECK(std::isfinite(omega) && omega > 0.0)
-      << name << ": omega must be finite and > 0, got " << omega;
-}
-
 template <typename Functor>
 ceres::CostFunction* MakeDihedral(const char* name, double inv_length,
                                   double omega, Functor** functor) {
-  CheckConstants(name, inv_length, omega);
+  CheckHingeConstants(name, inv_length, "omega", omega);
   auto* f = new Functor(inv_length, omega);
   if (functor != nullptr) *functor = f;
   return new ceres::AutoDiffCostFunction<Functor, 3, 3, 3, 3, 3>(f);
@@ -66,10 +59,6 @@ ceres::CostFunction* MakeDihedralPolyPoly(double inv_length, double omega,
 
 namespace archgeo {
 namespace terms {
-void InitFacePlaneNormal(TermContext& c, int face, const int* vs, int count);
-}  // namespace terms
-
-namespace terms {
 namespace {
 
 using Vec = std::array<double, 3>;
@@ -95,68 +84,34 @@ Vec EnergyNormal(TermContext& c, const ElementSet& faces, int f) {
   return length > 0 ? Vec{n[0] / length, n[1] / length, n[2] / length} : Vec{0, 0, 0};
 }
 
-void InitPolygonNormals(TermContext& c) {
-  const ElementSet& faces = c.Elements("faces");
-  for (size_t i = 0; i < c.elements->size(); ++i) {
-    for (int f : {c.elements->face[i], c.elements->other_face[i]}) {
-      if (faces.Count(f) > 3) terms::InitFacePlaneNormal(c, f, faces.Vertices(f), faces.Count(f));
-    }
-  }
-}
+// The IRLS residual's hinge functors, ω as their parameter.
+constexpr HingeFactories kDihedralFactories = {
+    [](double inv_length, double omega) { return MakeDihedralTriTri(inv_length, omega); },
+    [](double inv_length, double omega) { return MakeDihedralTriPoly(inv_length, omega); },
+    [](double inv_length, double omega) { return MakeDihedralPolyPoly(inv_length, omega); }};
 
 // Edge v→w with left face (v, w, a, …) and right face (w, v, b, …); the IRLS
 // weight ω from the current edge length and normals (a round's constant).
 void AddDihedral(TermContext& c, size_t i) {
   const ElementSet& e = *c.elements;
-  const int* vs = e.Vertices(i);
-  const int v = vs[0], w = vs[1], a = vs[2], b = vs[3];
+  const int v = e.Vertices(i)[0], w = e.Vertices(i)[1];
   const int left = e.face[i], right = e.other_face[i];
   const ElementSet& faces = c.Elements("faces");
   const Vec nl = EnergyNormal(c, faces, left), nr = EnergyNormal(c, faces, right);
   const double length = Norm(Sub(c.Position(w), c.Position(v)));
   const double omega =
       DihedralIrlsWeight(length, Norm({nl[0] - nr[0], nl[1] - nr[1], nl[2] - nr[2]}), 1.0);
-  const bool poly_l = e.Has(i, kLeftPolygon), poly_r = e.Has(i, kRightPolygon);
-  if (!poly_l && !poly_r) {
-    c.Add(MakeDihedralTriTri(1.0, omega),
-          {c.Position(v), c.Position(w), c.Position(a), c.Position(b)});
-  } else if (!poly_l && poly_r) {
-    c.Add(MakeDihedralTriPoly(1.0, omega),
-          {c.Position(v), c.Position(w), c.Position(a), c.Block("face_plane_normal", right)});
-  } else if (poly_l && !poly_r) {
-    // The triangle (w, v, b) is on the left of w→v.
-    c.Add(MakeDihedralTriPoly(1.0, omega),
-          {c.Position(w), c.Position(v), c.Position(b), c.Block("face_plane_normal", left)});
-  } else {
-    c.Add(MakeDihedralPolyPoly(1.0, omega), {c.Position(v), c.Position(w),
-                                             c.Block("face_plane_normal", left),
-                                             c.Block("face_plane_normal", right)});
-  }
-}
-
-// Unit normals of the polygons an edge term used.
-void SphereNormals(TermContext& c) {
-  const ElementSet& faces = c.Elements("faces");
-  for (size_t f = 0; f < faces.size(); ++f) {
-    if (faces.Count(f) > 3) c.SetUnit(c.Block("face_plane_normal", int(f)));
-  }
+  AddHinge(c, i, kDihedralFactories, omega);
 }
 
 }  // namespace
 
 const TermSpec& dihedral_energy() {
   static const TermSpec spec = [] {
-    TermSpec t;
+    TermSpec t = HingeTermSpec();
     t.name = "dihedral_energy";
     t.summary = "visual smoothness: edge length × dihedral angle (IRLS form of E = Σ ℓ ℓ*)";
-    t.paper = "[Pellis 2019, §3, §5.1]";
-    t.elements = "interior_edges";
-    t.declares = {{"face_plane_normal", Site::kFace, 3, FrameMap::kDirection, true,
-                   Carry::kReinitialise, false, false,
-                   "unit normal of a face's plane (face_planarity, dihedral_energy)"}};
-    t.init = &InitPolygonNormals;
     t.add = &AddDihedral;
-    t.finish = &SphereNormals;
     return t;
   }();
   return spec;

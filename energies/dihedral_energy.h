@@ -30,7 +30,9 @@
 // equations next to fairness and proximity terms). The builder reports the
 // true E = Σ ℓ_e ℓ*_e separately; this term only drives the minimisation.
 //
-// Face normals. A triangle's normal is computed from its three vertices,
+// Face normals (the hinge functors of energies/dihedral_hinge.h, shared with
+// smoothed_dihedral_energy). A triangle's normal is computed from its three
+// vertices,
 //   n = c / sqrt(‖c‖² + (ε_n L²)²),   c = cross product of two edge vectors,
 // (regularised normalisation, ε_n = kDihedralNormalEpsilon). A planar polygon
 // (more than three vertices) contributes a unit-normal parameter block n_f
@@ -77,7 +79,8 @@
 #include <cmath>
 
 #include <Eigen/Core>
-#include <Eigen/Geometry>  // cross()
+
+#include "energies/dihedral_hinge.h"  // the functors, ε_n, ε_ℓ
 
 namespace ceres {
 class CostFunction;
@@ -87,10 +90,6 @@ namespace archgeo {
 
 // IRLS floor of ω_e (unit-free; see above).
 inline constexpr double kDihedralIrlsEpsilon = 1e-3;
-// Regularisation of triangle normals, relative to L².
-inline constexpr double kDihedralNormalEpsilon = 1e-6;
-// Regularisation of the edge length, relative to L.
-inline constexpr double kDihedralLengthEpsilon = 1e-9;
 
 // The IRLS weight ω_e = edge_length · inv_length · dual_edge_length + epsilon
 // of one edge, from the previous round's edge length ℓ⁰_e (units of length,
@@ -102,126 +101,27 @@ double DihedralIrlsWeight(double edge_length, double dual_edge_length,
                           double inv_length,
                           double epsilon = kDihedralIrlsEpsilon);
 
-// Regularised unit normal of the triangle (p0, p1, p2), counter-clockwise
-// seen from the side the normal points to:
-//   n = c / sqrt(‖c‖² + eps²),   c = (p1 − p0) × (p2 − p0).
-// eps has the units of c (length²). Shared with total_absolute_curvature.
-template <typename T>
-Eigen::Matrix<T, 3, 1> RegularisedTriangleNormal(
-    const Eigen::Matrix<T, 3, 1>& p0, const Eigen::Matrix<T, 3, 1>& p1,
-    const Eigen::Matrix<T, 3, 1>& p2, double eps) {
-  const Eigen::Matrix<T, 3, 1> c = (p1 - p0).cross(p2 - p0);
-  using std::sqrt;
-  return c / sqrt(c.squaredNorm() + T(eps * eps));
-}
-
-// Common part: r = (ℓ_e/L)(n_f − n_f′)/sqrt(ω).
-template <typename T>
-void DihedralResidual(const T* v_ptr, const T* w_ptr,
-                      const Eigen::Matrix<T, 3, 1>& n_left,
-                      const Eigen::Matrix<T, 3, 1>& n_right, double inv_length,
-                      double omega, T* residual_ptr) {
-  using Vec3 = Eigen::Matrix<T, 3, 1>;
-  const Eigen::Map<const Vec3> v(v_ptr);
-  const Eigen::Map<const Vec3> w(w_ptr);
-  const Vec3 e = (w - v) * T(inv_length);  // unit-free edge vector
-  using std::sqrt;
-  const T length = sqrt(e.squaredNorm() +
-                        T(kDihedralLengthEpsilon * kDihedralLengthEpsilon));
-  Eigen::Map<Vec3> residual(residual_ptr);
-  residual = (length / std::sqrt(omega)) * (n_left - n_right);
-}
-
-// Edge between two triangles: f = (v, w, a) on the left of v→w, f′ = (w, v, b)
-// on the right.
-struct DihedralTriTri {
-  // inv_length: 1/L > 0; omega: ω_e > 0 (DihedralIrlsWeight). The builder may
-  // change `omega` between solves (IRLS rounds), never during one.
-  DihedralTriTri(double inv_length, double omega)
-      : inv_length(inv_length), omega(omega) {}
-
-  // v, w: 3 doubles each, the edge's endpoints; a, b: 3 doubles each, the
-  // vertices opposite the edge in f and f′; residual: 3 doubles.
-  template <typename T>
-  bool operator()(const T* v_ptr, const T* w_ptr, const T* a_ptr,
-                  const T* b_ptr, T* residual) const {
-    using Vec3 = Eigen::Matrix<T, 3, 1>;
-    const Eigen::Map<const Vec3> v(v_ptr);
-    const Eigen::Map<const Vec3> w(w_ptr);
-    const Eigen::Map<const Vec3> a(a_ptr);
-    const Eigen::Map<const Vec3> b(b_ptr);
-    // Normals on unit-free coordinates (x − v)/L, so ε_n is relative to L².
-    const T s(inv_length);
-    const Vec3 zero = Vec3::Zero();
-    const Vec3 wl = (w - v) * s, al = (a - v) * s, bl = (b - v) * s;
-    const Vec3 n_left =
-        RegularisedTriangleNormal<T>(zero, wl, al, kDihedralNormalEpsilon);
-    const Vec3 n_right =
-        RegularisedTriangleNormal<T>(wl, zero, bl, kDihedralNormalEpsilon);
-    DihedralResidual(v_ptr, w_ptr, n_left, n_right, inv_length, omega,
-                     residual);
-    return true;
-  }
-
-  double inv_length;
+// The residual r = (ℓ_e/L)(n_f − n_f′)/sqrt(ω), 3 doubles, of the hinge
+// functors (dihedral_hinge.h) from ℓ_e/L and the normals n_f, n_f′.
+struct DihedralResidual {
+  // ω_e > 0 (DihedralIrlsWeight). The builder may change `omega` between
+  // solves (IRLS rounds), never during one.
   double omega;
+
+  template <typename T>
+  void Evaluate(const T& length, const Eigen::Matrix<T, 3, 1>& n_left,
+                const Eigen::Matrix<T, 3, 1>& n_right, T* residual_ptr) const {
+    Eigen::Map<Eigen::Matrix<T, 3, 1>> residual(residual_ptr);
+    residual = (length / std::sqrt(omega)) * (n_left - n_right);
+  }
 };
 
-// Edge between a triangle f = (v, w, a) on the left of v→w and a planar
-// polygon f′ on the right with unit-normal block n_right (same side as the
-// triangle's normal). For a polygon on the left and a triangle on the right,
-// swap v and w (the triangle (w, v, a) is then on the left of w→v).
-struct DihedralTriPoly {
-  // As DihedralTriTri.
-  DihedralTriPoly(double inv_length, double omega)
-      : inv_length(inv_length), omega(omega) {}
-
-  // v, w: 3 doubles each, the edge's endpoints; a: 3 doubles, the triangle's
-  // third vertex; n_right: 3 doubles, the polygon's unit normal (not
-  // normalised here: the SphereManifold keeps it unit); residual: 3 doubles.
-  template <typename T>
-  bool operator()(const T* v_ptr, const T* w_ptr, const T* a_ptr,
-                  const T* n_right_ptr, T* residual) const {
-    using Vec3 = Eigen::Matrix<T, 3, 1>;
-    const Eigen::Map<const Vec3> v(v_ptr);
-    const Eigen::Map<const Vec3> w(w_ptr);
-    const Eigen::Map<const Vec3> a(a_ptr);
-    const Eigen::Map<const Vec3> n_right(n_right_ptr);
-    const T s(inv_length);
-    const Vec3 n_left = RegularisedTriangleNormal<T>(
-        Vec3::Zero(), (w - v) * s, (a - v) * s, kDihedralNormalEpsilon);
-    DihedralResidual(v_ptr, w_ptr, n_left, Vec3(n_right), inv_length, omega,
-                     residual);
-    return true;
-  }
-
-  double inv_length;
-  double omega;
-};
-
-// Edge between two planar polygons: f on the left of v→w with unit normal
-// block n_left, f′ on the right with n_right. v and w enter only through ℓ_e.
-struct DihedralPolyPoly {
-  // As DihedralTriTri.
-  DihedralPolyPoly(double inv_length, double omega)
-      : inv_length(inv_length), omega(omega) {}
-
-  // v, w: 3 doubles each, the edge's endpoints; n_left, n_right: 3 doubles
-  // each, the polygons' unit normals; residual: 3 doubles.
-  template <typename T>
-  bool operator()(const T* v_ptr, const T* w_ptr, const T* n_left_ptr,
-                  const T* n_right_ptr, T* residual) const {
-    using Vec3 = Eigen::Matrix<T, 3, 1>;
-    const Eigen::Map<const Vec3> n_left(n_left_ptr);
-    const Eigen::Map<const Vec3> n_right(n_right_ptr);
-    DihedralResidual(v_ptr, w_ptr, Vec3(n_left), Vec3(n_right), inv_length,
-                     omega, residual);
-    return true;
-  }
-
-  double inv_length;
-  double omega;
-};
+// Edge between two triangles (v, w, a, b), a triangle and a polygon
+// (v, w, a, n_right) and two polygons (v, w, n_left, n_right):
+// dihedral_hinge.h.
+using DihedralTriTri = HingeTriTri<DihedralResidual>;
+using DihedralTriPoly = HingeTriPoly<DihedralResidual>;
+using DihedralPolyPoly = HingePolyPoly<DihedralResidual>;
 
 // Factories. Each returns a new AutoDiffCostFunction<Functor, 3, 3, 3, 3, 3>
 // with the blocks in the order of the functor's operator() (TriTri: v, w, a,

@@ -29,7 +29,8 @@
 // majorant, as IRLS's ℓ/‖d‖). The plain scalar sqrt(2ℓ sqrt(‖d‖² + ε²))
 // would give JᵀJ → 0 at flat edges.
 //
-// Face normals and polygons as in dihedral_energy.h: a triangle's normal is
+// Face normals and polygons as in dihedral_energy.h (the hinge functors of
+// dihedral_hinge.h, shared): a triangle's normal is
 // RegularisedTriangleNormal of its vertices (ε_n = kDihedralNormalEpsilon
 // relative to L²); a planar polygon (more than three vertices) contributes a
 // unit-normal block (SphereManifold, kept on the face's plane by
@@ -60,7 +61,7 @@
 
 #include <Eigen/Core>
 
-#include "energies/dihedral_energy.h"  // RegularisedTriangleNormal, ε_n, ε_ℓ
+#include "energies/dihedral_hinge.h"  // the functors, ε_n, ε_ℓ
 
 namespace ceres {
 class CostFunction;
@@ -71,116 +72,33 @@ namespace archgeo {
 // Smoothing radius ε of ℓ* (unit-free; see above).
 inline constexpr double kSmoothedDihedralEpsilon = 1e-3;
 
-// Common part: r = sqrt(ℓ/(L s)) (d, sqrt(s² + ε²)), d = n_left − n_right.
-template <typename T>
-void SmoothedDihedralResidual(const T* v_ptr, const T* w_ptr,
-                              const Eigen::Matrix<T, 3, 1>& n_left,
-                              const Eigen::Matrix<T, 3, 1>& n_right,
-                              double inv_length, double epsilon,
-                              T* residual) {
-  using Vec3 = Eigen::Matrix<T, 3, 1>;
-  const Eigen::Map<const Vec3> v(v_ptr);
-  const Eigen::Map<const Vec3> w(w_ptr);
-  const Vec3 e = (w - v) * T(inv_length);  // unit-free edge vector
-  using std::sqrt;
-  const T length = sqrt(e.squaredNorm() +
-                        T(kDihedralLengthEpsilon * kDihedralLengthEpsilon));
-  const Vec3 d = n_left - n_right;
-  const T eps2(epsilon * epsilon);
-  const T s2 = d.squaredNorm() + eps2;
-  const T s = sqrt(s2);
-  const T scale = sqrt(length / s);
-  residual[0] = scale * d[0];
-  residual[1] = scale * d[1];
-  residual[2] = scale * d[2];
-  residual[3] = scale * sqrt(s2 + eps2);
-}
+// The residual r = sqrt(ℓ/(L s)) (d, sqrt(s² + ε²)), d = n_f − n_f′, 4 doubles,
+// of the hinge functors (dihedral_hinge.h) from ℓ_e/L and the normals.
+struct SmoothedDihedralResidual {
+  double epsilon;  // ε > 0 (unit-free)
 
-// Edge between two triangles: f = (v, w, a) on the left of v→w, f′ = (w, v, b)
-// on the right.
-struct SmoothedDihedralTriTri {
-  // inv_length: 1/L > 0; epsilon: ε > 0 (unit-free).
-  SmoothedDihedralTriTri(double inv_length, double epsilon)
-      : inv_length(inv_length), epsilon(epsilon) {}
-
-  // v, w: 3 doubles each, the edge's endpoints; a, b: 3 doubles each, the
-  // vertices opposite the edge in f and f′; residual: 4 doubles.
   template <typename T>
-  bool operator()(const T* v_ptr, const T* w_ptr, const T* a_ptr,
-                  const T* b_ptr, T* residual) const {
-    using Vec3 = Eigen::Matrix<T, 3, 1>;
-    const Eigen::Map<const Vec3> v(v_ptr);
-    const Eigen::Map<const Vec3> w(w_ptr);
-    const Eigen::Map<const Vec3> a(a_ptr);
-    const Eigen::Map<const Vec3> b(b_ptr);
-    const T s(inv_length);
-    const Vec3 zero = Vec3::Zero();
-    const Vec3 wl = (w - v) * s, al = (a - v) * s, bl = (b - v) * s;
-    const Vec3 n_left =
-        RegularisedTriangleNormal<T>(zero, wl, al, kDihedralNormalEpsilon);
-    const Vec3 n_right =
-        RegularisedTriangleNormal<T>(wl, zero, bl, kDihedralNormalEpsilon);
-    SmoothedDihedralResidual(v_ptr, w_ptr, n_left, n_right, inv_length,
-                             epsilon, residual);
-    return true;
+  void Evaluate(const T& length, const Eigen::Matrix<T, 3, 1>& n_left,
+                const Eigen::Matrix<T, 3, 1>& n_right, T* residual) const {
+    using std::sqrt;
+    const Eigen::Matrix<T, 3, 1> d = n_left - n_right;
+    const T eps2(epsilon * epsilon);
+    const T s2 = d.squaredNorm() + eps2;
+    const T s = sqrt(s2);
+    const T scale = sqrt(length / s);
+    residual[0] = scale * d[0];
+    residual[1] = scale * d[1];
+    residual[2] = scale * d[2];
+    residual[3] = scale * sqrt(s2 + eps2);
   }
-
-  double inv_length;
-  double epsilon;
 };
 
-// Edge between a triangle f = (v, w, a) on the left of v→w and a planar
-// polygon f′ on the right with unit-normal block n_right. For a polygon on
-// the left and a triangle on the right, swap v and w.
-struct SmoothedDihedralTriPoly {
-  // As SmoothedDihedralTriTri.
-  SmoothedDihedralTriPoly(double inv_length, double epsilon)
-      : inv_length(inv_length), epsilon(epsilon) {}
-
-  // v, w, a: 3 doubles each; n_right: 3 doubles, the polygon's unit normal;
-  // residual: 4 doubles.
-  template <typename T>
-  bool operator()(const T* v_ptr, const T* w_ptr, const T* a_ptr,
-                  const T* n_right_ptr, T* residual) const {
-    using Vec3 = Eigen::Matrix<T, 3, 1>;
-    const Eigen::Map<const Vec3> v(v_ptr);
-    const Eigen::Map<const Vec3> w(w_ptr);
-    const Eigen::Map<const Vec3> a(a_ptr);
-    const Eigen::Map<const Vec3> n_right(n_right_ptr);
-    const T s(inv_length);
-    const Vec3 n_left = RegularisedTriangleNormal<T>(
-        Vec3::Zero(), (w - v) * s, (a - v) * s, kDihedralNormalEpsilon);
-    SmoothedDihedralResidual(v_ptr, w_ptr, n_left, Vec3(n_right), inv_length,
-                             epsilon, residual);
-    return true;
-  }
-
-  double inv_length;
-  double epsilon;
-};
-
-// Edge between two planar polygons with unit-normal blocks n_left (left of
-// v→w) and n_right; v and w enter only through ℓ_e.
-struct SmoothedDihedralPolyPoly {
-  // As SmoothedDihedralTriTri.
-  SmoothedDihedralPolyPoly(double inv_length, double epsilon)
-      : inv_length(inv_length), epsilon(epsilon) {}
-
-  // v, w, n_left, n_right: 3 doubles each; residual: 4 doubles.
-  template <typename T>
-  bool operator()(const T* v_ptr, const T* w_ptr, const T* n_left_ptr,
-                  const T* n_right_ptr, T* residual) const {
-    using Vec3 = Eigen::Matrix<T, 3, 1>;
-    const Eigen::Map<const Vec3> n_left(n_left_ptr);
-    const Eigen::Map<const Vec3> n_right(n_right_ptr);
-    SmoothedDihedralResidual(v_ptr, w_ptr, Vec3(n_left), Vec3(n_right),
-                             inv_length, epsilon, residual);
-    return true;
-  }
-
-  double inv_length;
-  double epsilon;
-};
+// Edge between two triangles (v, w, a, b), a triangle and a polygon
+// (v, w, a, n_right) and two polygons (v, w, n_left, n_right):
+// dihedral_hinge.h.
+using SmoothedDihedralTriTri = HingeTriTri<SmoothedDihedralResidual>;
+using SmoothedDihedralTriPoly = HingeTriPoly<SmoothedDihedralResidual>;
+using SmoothedDihedralPolyPoly = HingePolyPoly<SmoothedDihedralResidual>;
 
 // Factories: a new AutoDiffCostFunction<Functor, 4, 3, 3, 3, 3> with the
 // blocks in the order of the functor's operator() (TriTri: v, w, a, b;

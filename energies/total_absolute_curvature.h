@@ -78,7 +78,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross()
 
-#include "energies/dihedral_energy.h"  // RegularisedTriangleNormal
+#include "energies/dihedral_hinge.h"  // RegularisedTriangleNormal
 
 namespace ceres {
 class CostFunction;

@@ -1,7 +1,9 @@
 // Shared helpers for the energy tests (test_energies, test_anet_energies,
-// test_smoothness_energies): evaluate a Ceres cost function on plain blocks,
-// compare autodiff with numeric differences (GradientChecker), check that
-// degenerate inputs stay finite, random rigid motions.
+// test_smoothness_energies, test_smoothed_dihedral_energy): evaluate a Ceres
+// cost function on plain blocks, compare autodiff with numeric differences
+// (GradientChecker), check that degenerate inputs stay finite, random rigid
+// motions, and the hinges (two triangles at an edge) of the dihedral
+// energies.
 #pragma once
 
 #include <cmath>
@@ -19,6 +21,7 @@ namespace archgeo::energy_checks {
 
 using Vec3 = Eigen::Vector3d;
 using Blocks = std::vector<std::vector<double>>;
+using Manifolds = std::vector<const ceres::Manifold*>;  // one per block, null: Euclidean
 
 // GradientChecker: relative precision of autodiff vs numeric Jacobians.
 inline constexpr double kRelativePrecision = 1e-6;
@@ -85,7 +88,7 @@ inline void ExpectFiniteEverywhere(const ceres::CostFunction& cost, const Blocks
 
 // Autodiff against numeric differences (typed null manifolds when none).
 inline void ExpectGradientsMatch(const ceres::CostFunction& cost, const Blocks& blocks,
-                                 const std::vector<const ceres::Manifold*>* manifolds = nullptr,
+                                 const Manifolds* manifolds = nullptr,
                                  double relative_precision = kRelativePrecision) {
   ceres::NumericDiffOptions options;
   options.ridders_relative_initial_step_size = kRiddersRelativeInitialStep;
@@ -93,6 +96,60 @@ inline void ExpectGradientsMatch(const ceres::CostFunction& cost, const Blocks& 
   ceres::GradientChecker::ProbeResults results;
   const auto params = Pointers(blocks);
   EXPECT_TRUE(checker.Probe(params.data(), relative_precision, &results)) << results.error_log;
+}
+
+inline double SquaredNorm(const std::vector<double>& r) {
+  double s = 0.0;
+  for (double v : r) s += v * v;
+  return s;
+}
+
+inline Vec3 UnitNormal(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
+  return (p1 - p0).cross(p2 - p0).normalized();
+}
+
+// Two triangles f = (v, w, a) (left of v→w) and f′ = (w, v, b)
+// (energies/dihedral_hinge.h).
+struct Hinge {
+  Vec3 v, w, a, b;
+};
+
+inline Hinge Moved(const Hinge& h, const Eigen::Matrix3d& rot, const Vec3& shift, double scale) {
+  return {scale * (rot * h.v) + shift, scale * (rot * h.w) + shift, scale * (rot * h.a) + shift,
+          scale * (rot * h.b) + shift};
+}
+
+// A well-shaped hinge, randomly bent (bend = 0: flat; 1: moderately bent)
+// and placed.
+inline Hinge RandomHinge(std::mt19937& rng, double bend = 1.0) {
+  std::uniform_real_distribution<double> u(-0.4, 0.4);
+  const Hinge flat = {Vec3(0, 0, 0), Vec3(1, 0, 0),
+                      Vec3(0.5 + u(rng), 0.9 + 0.3 * u(rng), bend * u(rng)),
+                      Vec3(0.5 + u(rng), -0.9 + 0.3 * u(rng), bend * u(rng))};
+  std::uniform_real_distribution<double> scale(0.5, 2.0);
+  return Moved(flat, RandomRotation(rng), RandomVec(rng, 5.0), scale(rng));
+}
+
+// Hinge with dihedral angle alpha at an edge of length `length` along x: f in
+// the xy-plane (normal +z), f′ rotated about the x-axis by alpha.
+inline Hinge KnownHinge(double alpha, double length) {
+  const Vec3 b_flat(0.4 * length, -0.8 * length, 0.0);
+  return {Vec3(0, 0, 0), Vec3(length, 0, 0), Vec3(0.3 * length, 0.7 * length, 0),
+          Eigen::AngleAxisd(alpha, Vec3::UnitX()) * b_flat};
+}
+
+// The blocks of the hinge functors (v, w, a, b), (v, w, a, n_right),
+// (v, w, n_left, n_right), the polygons' normals the exact normals of the
+// hinge's faces.
+inline Blocks TriTriBlocks(const Hinge& h) {
+  return {ToBlock(h.v), ToBlock(h.w), ToBlock(h.a), ToBlock(h.b)};
+}
+inline Blocks TriPolyBlocks(const Hinge& h) {
+  return {ToBlock(h.v), ToBlock(h.w), ToBlock(h.a), ToBlock(UnitNormal(h.w, h.v, h.b))};
+}
+inline Blocks PolyPolyBlocks(const Hinge& h) {
+  return {ToBlock(h.v), ToBlock(h.w), ToBlock(UnitNormal(h.v, h.w, h.a)),
+          ToBlock(UnitNormal(h.w, h.v, h.b))};
 }
 
 }  // namespace archgeo::energy_checks

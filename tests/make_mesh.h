@@ -1,11 +1,16 @@
-// Test helper: a Surface_mesh from points and faces (indices into points);
-// every face must be added (EXPECTed).
+// Test helpers on meshes: a Surface_mesh from points and faces (indices into
+// points; every face must be added, EXPECTed), an open quad cylinder, a
+// vertex's position as an Eigen vector, the vertex nearest a point, and the
+// angle of a point continued from another's (branched functions z^p on plane
+// meshes).
 #pragma once
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "mesh/surface_mesh.h"
 
@@ -41,6 +46,31 @@ inline Mesh QuadCylinder(double radius, double height, int around, int rows) {
     }
   }
   return MakeMesh(points, faces);
+}
+
+// The position of vertex v.
+inline Eigen::Vector3d Pos(const Mesh& m, VertexIndex v) {
+  return Eigen::Vector3d(m.point(v).x(), m.point(v).y(), m.point(v).z());
+}
+
+// The vertex of m nearest to p (the first of equally near ones; null for a
+// mesh without vertices).
+inline VertexIndex Nearest(const Mesh& m, const Eigen::Vector3d& p) {
+  VertexIndex best;
+  double d = INFINITY;
+  for (VertexIndex v : m.vertices()) {
+    if ((Pos(m, v) - p).norm() < d) d = (Pos(m, v) - p).norm(), best = v;
+  }
+  return best;
+}
+
+// arg(p) in the xy-plane continued from arg(c) (within π).
+inline double ArgNear(const Eigen::Vector3d& p, const Eigen::Vector3d& c) {
+  double a = std::atan2(p.y(), p.x());
+  const double ac = std::atan2(c.y(), c.x());
+  while (a - ac > M_PI) a -= 2 * M_PI;
+  while (ac - a > M_PI) a += 2 * M_PI;
+  return a;
 }
 
 }  // namespace archgeo

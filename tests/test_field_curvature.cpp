@@ -20,6 +20,7 @@
 #include "fields/face_frames.h"
 #include "fields/singularities.h"
 #include "fields/triangle_surfaces.h"
+#include "tests/make_mesh.h"
 
 namespace archgeo {
 namespace {
@@ -29,10 +30,6 @@ using V3 = Eigen::Vector3d;
 
 constexpr double kTolerance = 1e-10;
 constexpr double kDeg = M_PI / 180.0;
-
-V3 Pos(const Mesh& m, VertexIndex v) {
-  return V3(m.point(v).x(), m.point(v).y(), m.point(v).z());
-}
 
 // Angle in degrees between two lines (directions modulo sign).
 double LineDeg(const V3& a, const V3& b) {

@@ -18,13 +18,12 @@
 #include "fields/face_frames.h"
 #include "fields/triangle_surfaces.h"
 #include "mesh/io.h"
+#include "tests/make_mesh.h"
 
 namespace archgeo {
 namespace {
 
 using V3 = Eigen::Vector3d;
-
-V3 Pos(const Mesh& m, VertexIndex v) { return V3(m.point(v).x(), m.point(v).y(), m.point(v).z()); }
 
 int CutEdges(const CutGraph& c) {
   int n = 0;
@@ -39,15 +38,6 @@ Mesh PlanePatch(int nu, int nv, double x0, double x1, double y0, double y1, doub
   return TriangulatedGrid(nu, nv, [=](double u, double v) -> Vec3 {
     return {x0 + (x1 - x0) * u, y0 + (y1 - y0) * v, 0.0};
   }, opt);
-}
-
-VertexIndex Nearest(const Mesh& m, const V3& p) {
-  VertexIndex best;
-  double d = INFINITY;
-  for (VertexIndex v : m.vertices()) {
-    if ((Pos(m, v) - p).norm() < d) d = (Pos(m, v) - p).norm(), best = v;
-  }
-  return best;
 }
 
 TEST(CutGraph, SingularityOnADiskIsJoinedToTheNearestBoundary) {

@@ -26,13 +26,12 @@
 #include "fields/extract.h"
 #include "fields/face_frames.h"
 #include "fields/triangle_surfaces.h"
+#include "tests/make_mesh.h"
 
 namespace archgeo {
 namespace {
 
 using V3 = Eigen::Vector3d;
-
-V3 Pos(const Mesh& m, VertexIndex v) { return V3(m.point(v).x(), m.point(v).y(), m.point(v).z()); }
 
 Mesh Plane(int nu, int nv, double x0, double x1, double y0, double y1, double jitter) {
   TriangleGridOptions opt;
@@ -166,15 +165,6 @@ std::vector<double> WedgeValues(const Mesh& mesh, const CutGraph& cut,
     }
   }
   return out;
-}
-
-// arg(p) continued from arg(c) (within π).
-double ArgNear(const V3& p, const V3& c) {
-  double a = std::atan2(p.y(), p.x());
-  const double ac = std::atan2(c.y(), c.x());
-  while (a - ac > M_PI) a -= 2 * M_PI;
-  while (ac - a > M_PI) a += 2 * M_PI;
-  return a;
 }
 
 TEST(Extract, CylinderWithTheAngleAcrossASeam) {

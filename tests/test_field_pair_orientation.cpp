@@ -25,28 +25,18 @@
 #include "fields/face_frames.h"
 #include "fields/singularities.h"
 #include "fields/triangle_surfaces.h"
+#include "tests/make_mesh.h"
 
 namespace archgeo {
 namespace {
 
 using V3 = Eigen::Vector3d;
 
-V3 Pos(const Mesh& m, VertexIndex v) { return V3(m.point(v).x(), m.point(v).y(), m.point(v).z()); }
-
 // Grid (nu x nv cells) on [x0, x1] x [y0, y1] in the plane z = 0.
 Mesh PlanePatch(int nu, int nv, double x0, double x1, double y0, double y1) {
   return TriangulatedGrid(nu, nv, [=](double u, double v) -> Vec3 {
     return {x0 + (x1 - x0) * u, y0 + (y1 - y0) * v, 0.0};
   });
-}
-
-VertexIndex Nearest(const Mesh& m, const V3& p) {
-  VertexIndex best;
-  double d = INFINITY;
-  for (VertexIndex v : m.vertices()) {
-    if ((Pos(m, v) - p).norm() < d) d = (Pos(m, v) - p).norm(), best = v;
-  }
-  return best;
 }
 
 TEST(OrientPair, VAndWFollowTheBisectorsIndexWhereTheyTurnFast) {

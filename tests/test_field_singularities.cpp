@@ -21,16 +21,13 @@
 #include "fields/face_frames.h"
 #include "fields/singularities.h"
 #include "fields/triangle_surfaces.h"
+#include "tests/make_mesh.h"
 
 namespace archgeo {
 namespace {
 
 using Vec2 = Eigen::Vector2d;
 using V3 = Eigen::Vector3d;
-
-V3 Pos(const Mesh& m, VertexIndex v) {
-  return V3(m.point(v).x(), m.point(v).y(), m.point(v).z());
-}
 
 struct Field {
   FaceFrames frames;

@@ -30,22 +30,12 @@
 #include "fields/extract.h"
 #include "fields/layout_cleanup.h"
 #include "fields/triangle_surfaces.h"
+#include "tests/make_mesh.h"
 
 namespace archgeo {
 namespace {
 
 using V3 = Eigen::Vector3d;
-
-V3 Pos(const Mesh& m, VertexIndex v) { return V3(m.point(v).x(), m.point(v).y(), m.point(v).z()); }
-
-// arg(p) continued from arg(c) (within π).
-double ArgNear(const V3& p, const V3& c) {
-  double a = std::atan2(p.y(), p.x());
-  const double ac = std::atan2(c.y(), c.x());
-  while (a - ac > M_PI) a -= 2 * M_PI;
-  while (ac - a > M_PI) a += 2 * M_PI;
-  return a;
-}
 
 // Layout of g + i h = z^(1/2) / spacing on [−0.6, 0.9] x [−1, 1] (the origin
 // a grid vertex), even rounding (α = 0 for both functions).

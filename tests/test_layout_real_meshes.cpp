@@ -32,13 +32,12 @@
 #include "problems/run.h"
 #include "problems/spec.h"
 #include "scratch_dir.h"
+#include "make_mesh.h"
 
 namespace archgeo {
 namespace {
 
 using V3 = Eigen::Vector3d;
-
-V3 Pos(const Mesh& m, VertexIndex v) { return V3(m.point(v).x(), m.point(v).y(), m.point(v).z()); }
 
 // Interior angles (degrees, 0–360) of face f in the plane of its Newell
 // normal, counter-clockwise about it.

@@ -42,54 +42,6 @@ constexpr double kSecondDifferenceTolerance = 1e-3;
 constexpr double kRiddersInitialStep = 1e-6;
 
 using namespace energy_checks;
-using Manifolds = std::vector<const ceres::Manifold*>;
-
-// Two triangles f = (v, w, a) (left of v→w) and f′ = (w, v, b).
-struct Hinge {
-  Vec3 v, w, a, b;
-};
-
-Hinge Moved(const Hinge& h, const Eigen::Matrix3d& rot, const Vec3& shift, double scale) {
-  return {scale * (rot * h.v) + shift, scale * (rot * h.w) + shift, scale * (rot * h.a) + shift,
-          scale * (rot * h.b) + shift};
-}
-
-// A well-shaped hinge, randomly bent (bend = 0: flat) and placed.
-Hinge RandomHinge(std::mt19937& rng, double bend) {
-  std::uniform_real_distribution<double> u(-0.4, 0.4);
-  const Hinge flat = {Vec3(0, 0, 0), Vec3(1, 0, 0),
-                      Vec3(0.5 + u(rng), 0.9 + 0.3 * u(rng), bend * u(rng)),
-                      Vec3(0.5 + u(rng), -0.9 + 0.3 * u(rng), bend * u(rng))};
-  std::uniform_real_distribution<double> scale(0.5, 2.0);
-  return Moved(flat, RandomRotation(rng), RandomVec(rng, 5.0), scale(rng));
-}
-
-// Dihedral angle alpha at an edge of length `length` along x: f in the
-// xy-plane (normal +z), f′ rotated about the x-axis by alpha.
-Hinge KnownHinge(double alpha, double length) {
-  const Vec3 b_flat(0.4 * length, -0.8 * length, 0.0);
-  return {Vec3(0, 0, 0), Vec3(length, 0, 0), Vec3(0.3 * length, 0.7 * length, 0),
-          Eigen::AngleAxisd(alpha, Vec3::UnitX()) * b_flat};
-}
-
-Vec3 UnitNormal(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
-  return (p1 - p0).cross(p2 - p0).normalized();
-}
-
-Blocks TriTriBlocks(const Hinge& h) { return {ToBlock(h.v), ToBlock(h.w), ToBlock(h.a), ToBlock(h.b)}; }
-Blocks TriPolyBlocks(const Hinge& h) {
-  return {ToBlock(h.v), ToBlock(h.w), ToBlock(h.a), ToBlock(UnitNormal(h.w, h.v, h.b))};
-}
-Blocks PolyPolyBlocks(const Hinge& h) {
-  return {ToBlock(h.v), ToBlock(h.w), ToBlock(UnitNormal(h.v, h.w, h.a)),
-          ToBlock(UnitNormal(h.w, h.v, h.b))};
-}
-
-double HalfSquaredNorm(const std::vector<double>& r) {
-  double s = 0;
-  for (double x : r) s += x * x;
-  return 0.5 * s;
-}
 
 std::vector<double> TriTri(const Hinge& h, double inv_length, double epsilon) {
   std::unique_ptr<ceres::CostFunction> cost(MakeSmoothedDihedralTriTri(inv_length, epsilon));
@@ -173,7 +125,7 @@ TEST(SmoothedDihedralEnergy, SingularConfigurationsAreFinite) {
   }
   // Coplanar faces: ½‖r‖² = (ℓ/L) ε, the floor of the smoothing.
   const double eps = kSmoothedDihedralEpsilon;
-  EXPECT_NEAR(HalfSquaredNorm(TriTri(cases[0], 1.0, eps)), eps, kRegularisedTolerance);
+  EXPECT_NEAR(0.5 * SquaredNorm(TriTri(cases[0], 1.0, eps)), eps, kRegularisedTolerance);
 }
 
 TEST(SmoothedDihedralEnergy, KnownDihedralAngle) {
@@ -188,9 +140,9 @@ TEST(SmoothedDihedralEnergy, KnownDihedralAngle) {
           const double tolerance = kRegularisedTolerance * std::max(1.0, expected);
           std::unique_ptr<ceres::CostFunction> tp(MakeSmoothedDihedralTriPoly(inv_length, eps));
           std::unique_ptr<ceres::CostFunction> pp(MakeSmoothedDihedralPolyPoly(inv_length, eps));
-          EXPECT_NEAR(HalfSquaredNorm(TriTri(h, inv_length, eps)), expected, tolerance);
-          EXPECT_NEAR(HalfSquaredNorm(Evaluate(*tp, TriPolyBlocks(h))), expected, tolerance);
-          EXPECT_NEAR(HalfSquaredNorm(Evaluate(*pp, PolyPolyBlocks(h))), expected, tolerance);
+          EXPECT_NEAR(0.5 * SquaredNorm(TriTri(h, inv_length, eps)), expected, tolerance);
+          EXPECT_NEAR(0.5 * SquaredNorm(Evaluate(*tp, TriPolyBlocks(h))), expected, tolerance);
+          EXPECT_NEAR(0.5 * SquaredNorm(Evaluate(*pp, PolyPolyBlocks(h))), expected, tolerance);
           // Bounds of the smoothing: ℓℓ* ≤ ½‖r‖² ≤ ℓ(ℓ* + ε) (units of L).
           EXPECT_GE(expected, length * inv_length * std::abs(dual));
           EXPECT_LE(expected, length * inv_length * (std::abs(dual) + eps));
@@ -217,7 +169,7 @@ TEST(SmoothedDihedralEnergy, GaussNewtonModelIsExactAtAFlatHinge) {
     auto energy = [&](double t) {
       Hinge moved = h;
       moved.b += t * Vec3::UnitZ();
-      return HalfSquaredNorm(Evaluate(*cost, TriTriBlocks(moved)));
+      return 0.5 * SquaredNorm(Evaluate(*cost, TriTriBlocks(moved)));
     };
     const double second = (energy(step) - 2 * energy(0) + energy(-step)) / (step * step);
     EXPECT_GT(jtj, 1.0);  // ℓ/ε · (dℓ*/dt)²: of order 10³

@@ -43,68 +43,13 @@ constexpr double kRegularisedTolerance = 1e-9;
 constexpr double kGapTolerance = 2e-6;
 
 using namespace energy_checks;
-using Manifolds = std::vector<const ceres::Manifold*>;
 
 Vec3 RandomUnit(std::mt19937& rng) {
   std::normal_distribution<double> g;
   return Vec3(g(rng), g(rng), g(rng)).normalized();
 }
 
-double SquaredNorm(const std::vector<double>& r) {
-  double s = 0.0;
-  for (double v : r) s += v * v;
-  return s;
-}
-
-Vec3 UnitNormal(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
-  return (p1 - p0).cross(p2 - p0).normalized();
-}
-
 // ============================================================ dihedral_energy
-
-// Two triangles f = (v, w, a) (left of v→w) and f′ = (w, v, b).
-struct Hinge {
-  Vec3 v, w, a, b;
-};
-
-Hinge Moved(const Hinge& h, const Eigen::Matrix3d& rot, const Vec3& shift,
-            double scale) {
-  return {scale * (rot * h.v) + shift, scale * (rot * h.w) + shift,
-          scale * (rot * h.a) + shift, scale * (rot * h.b) + shift};
-}
-
-// A well-shaped, moderately bent hinge, randomly placed.
-Hinge RandomHinge(std::mt19937& rng) {
-  std::uniform_real_distribution<double> u(-0.4, 0.4);
-  const Hinge flat = {Vec3(0, 0, 0), Vec3(1, 0, 0),
-                      Vec3(0.5 + u(rng), 0.9 + 0.3 * u(rng), u(rng)),
-                      Vec3(0.5 + u(rng), -0.9 + 0.3 * u(rng), u(rng))};
-  std::uniform_real_distribution<double> scale(0.5, 2.0);
-  return Moved(flat, RandomRotation(rng), RandomVec(rng, 5.0), scale(rng));
-}
-
-// Hinge with dihedral angle alpha at an edge of length `length` along x: f in
-// the xy-plane (normal +z), f′ rotated about the x-axis by alpha.
-Hinge KnownHinge(double alpha, double length) {
-  const Vec3 b_flat(0.4 * length, -0.8 * length, 0.0);
-  return {Vec3(0, 0, 0), Vec3(length, 0, 0),
-          Vec3(0.3 * length, 0.7 * length, 0),
-          Eigen::AngleAxisd(alpha, Vec3::UnitX()) * b_flat};
-}
-
-Blocks TriTriBlocks(const Hinge& h) {
-  return {ToBlock(h.v), ToBlock(h.w), ToBlock(h.a), ToBlock(h.b)};
-}
-
-// The polygon variants with the exact normals of the hinge's faces.
-Blocks TriPolyBlocks(const Hinge& h) {
-  return {ToBlock(h.v), ToBlock(h.w), ToBlock(h.a),
-          ToBlock(UnitNormal(h.w, h.v, h.b))};
-}
-Blocks PolyPolyBlocks(const Hinge& h) {
-  return {ToBlock(h.v), ToBlock(h.w), ToBlock(UnitNormal(h.v, h.w, h.a)),
-          ToBlock(UnitNormal(h.w, h.v, h.b))};
-}
 
 Vec3 TriTriResidual(const Hinge& h, double inv_length, double omega) {
   std::unique_ptr<ceres::CostFunction> cost(
