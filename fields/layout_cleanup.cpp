@@ -185,7 +185,9 @@ void MergeCaps(const std::vector<V3>& points, double cap_angle_deg,
 void RemoveNearSlits(const std::vector<V3>& points, double angle_deg,
                      std::vector<std::vector<int>>* faces, int* removed, int* dropped) {
   const double limit = angle_deg * M_PI / 180.0;
-  for (bool changed = true; changed;) {
+  // Each removal takes a vertex out of one face; at most one per point.
+  const int most = static_cast<int>(points.size());
+  for (bool changed = true; changed && *removed < most;) {
     changed = false;
     for (size_t f = 0; f < faces->size() && !changed; ++f) {
       const std::vector<int> c = (*faces)[f];
