@@ -71,10 +71,10 @@
 //     within that angle of each other (two level lines side by side from a
 //     singular vertex: a near-slit) leaves its face, the longer side split at
 //     the shorter side's end in the face across; with reflex_margin_deg ≥ 0,
-//     a face bent inward at an
-//     interior vertex by more than that is split along a diagonal from the
-//     corner (convex corners at both ends, parts of four vertices
-//     preferred); then the polygon soup becomes a CGAL Surface_mesh
+//     a face bent inward at an interior vertex by more than that is split
+//     along a diagonal from the corner (both parts turning as the face does,
+//     convex corners at both ends, parts of four vertices preferred;
+//     fields/layout_cleanup.h); then the polygon soup becomes a CGAL Surface_mesh
 //     (PMP::polygon_soup_to_polygon_mesh; non-manifold vertices are
 //     duplicated by PMP::orient_polygon_soup and counted).
 //
