@@ -39,6 +39,20 @@ std::vector<double> InteriorAngles(const std::vector<V3>& p) {
   return angles;
 }
 
+// Undirected edge (smaller index first) -> the faces that have it, in order.
+using EdgeFaceMap = std::map<std::pair<int, int>, std::vector<int>>;
+EdgeFaceMap EdgeFaces(const std::vector<std::vector<int>>& faces) {
+  EdgeFaceMap edge_faces;
+  for (size_t f = 0; f < faces.size(); ++f) {
+    const std::vector<int>& c = faces[f];
+    for (size_t i = 0; i < c.size(); ++i) {
+      const int a = c[i], b = c[(i + 1) % c.size()];
+      edge_faces[{std::min(a, b), std::max(a, b)}].push_back(static_cast<int>(f));
+    }
+  }
+  return edge_faces;
+}
+
 }  // namespace
 
 void CleanCycle(std::vector<int>* cycle) {
@@ -92,16 +106,11 @@ void SimpleCycles(std::vector<int> cycle, std::vector<std::vector<int>>* out, in
 void MergeValenceTwo(std::vector<std::vector<int>>* faces, int* merged, int* dropped) {
   for (bool changed = true; changed;) {
     changed = false;
-    std::map<std::pair<int, int>, std::vector<int>> edge_faces;
+    EdgeFaceMap edge_faces = EdgeFaces(*faces);
     std::map<int, std::set<int>> neighbours;
-    for (size_t f = 0; f < faces->size(); ++f) {
-      const std::vector<int>& c = (*faces)[f];
-      for (size_t i = 0; i < c.size(); ++i) {
-        const int a = c[i], b = c[(i + 1) % c.size()];
-        edge_faces[{std::min(a, b), std::max(a, b)}].push_back(static_cast<int>(f));
-        neighbours[a].insert(b);
-        neighbours[b].insert(a);
-      }
+    for (const auto& [edge, around] : edge_faces) {
+      neighbours[edge.first].insert(edge.second);
+      neighbours[edge.second].insert(edge.first);
     }
     for (const auto& [v, around] : neighbours) {
       if (around.size() != 2) continue;
@@ -145,14 +154,7 @@ void MergeCaps(const std::vector<V3>& points, double cap_angle_deg,
   const double limit = cap_angle_deg * M_PI / 180.0;
   for (bool changed = true; changed;) {
     changed = false;
-    std::map<std::pair<int, int>, std::vector<int>> edge_faces;
-    for (size_t f = 0; f < faces->size(); ++f) {
-      const std::vector<int>& c = (*faces)[f];
-      for (size_t i = 0; i < c.size(); ++i) {
-        const int a = c[i], b = c[(i + 1) % c.size()];
-        edge_faces[{std::min(a, b), std::max(a, b)}].push_back(static_cast<int>(f));
-      }
-    }
+    EdgeFaceMap edge_faces = EdgeFaces(*faces);
     for (size_t f = 0; f < faces->size() && !changed; ++f) {
       const std::vector<int>& t = (*faces)[f];
       if (t.size() != 3) continue;
@@ -189,6 +191,7 @@ void RemoveNearSlits(const std::vector<V3>& points, double angle_deg,
   const int most = static_cast<int>(points.size());
   for (bool changed = true; changed && *removed < most;) {
     changed = false;
+    const EdgeFaceMap edge_faces = EdgeFaces(*faces);
     for (size_t f = 0; f < faces->size() && !changed; ++f) {
       const std::vector<int> c = (*faces)[f];
       const size_t n = c.size();
@@ -202,11 +205,11 @@ void RemoveNearSlits(const std::vector<V3>& points, double angle_deg,
         const int from = p == next ? p : x, to = p == next ? x : p;
         int g = -1;
         size_t at = 0;
-        for (size_t h = 0; h < faces->size() && g < 0; ++h) {
+        for (int h : edge_faces.at({std::min(from, to), std::max(from, to)})) {
           const std::vector<int>& d = (*faces)[h];
-          for (size_t k = 0; k < d.size(); ++k)
-            if (h != f && d[k] == from && d[(k + 1) % d.size()] == to) {
-              g = static_cast<int>(h);
+          for (size_t k = 0; k < d.size() && g < 0; ++k)
+            if (h != static_cast<int>(f) && d[k] == from && d[(k + 1) % d.size()] == to) {
+              g = h;
               at = k + 1;
             }
         }
