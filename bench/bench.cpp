@@ -153,7 +153,7 @@ std::string Csv(const json& rows) {
   std::string out = "mesh";
   for (const std::string& k : keys) out += "," + k;
   out += ",repeats,exit_code,wall_median_s,wall_min_s,wall_max_s,evaluation_s,linear_solver_s,"
-         "ceres_s,iterations,peak_memory_mb,tolerance_met,objective";
+         "solver_s,iterations,peak_memory_mb,tolerance_met,objective";
   for (const std::string& m : measures) out += "," + m;
   out += ",message\n";
   for (const json& r : rows) {
@@ -162,7 +162,7 @@ std::string Csv(const json& rows) {
     out += "," + std::to_string(r["repeats"].get<int>()) + "," +
            std::to_string(r["exit_code"].get<int>());
     for (const char* k : {"wall_median_s", "wall_min_s", "wall_max_s", "evaluation_s",
-                          "linear_solver_s", "ceres_s"}) {
+                          "linear_solver_s", "solver_s"}) {
       out += "," + (r[k].is_null() ? std::string() : Number(r[k].get<double>(), "%.6g"));
     }
     out += "," + (r["iterations"].is_null() ? std::string() : std::to_string(r["iterations"].get<int>()));
@@ -339,7 +339,7 @@ json RunOnce(const std::string& self, const std::string& spec, const std::string
     try {
       const json r = json::parse(ReadText(report));
       const json& seconds = r.at("seconds");
-      record["ceres_s"] = seconds.value("ceres", 0.0);
+      record["solver_s"] = seconds.value("solver", 0.0);
       record["evaluation_s"] = seconds.value("jacobian", 0.0);
       record["linear_solver_s"] = seconds.value("linear_solver", 0.0);
       record["iterations"] = r.at("iterations").value("inner", 0);
@@ -385,8 +385,8 @@ json MergeRecords(const std::vector<json>& records) {
       }
       wall.push_back(r["wall_s"].get<double>());
       memory = std::max(memory, r["peak_memory_mb"].get<double>());
-      if (r.contains("ceres_s")) {
-        ceres.push_back(r["ceres_s"].get<double>());
+      if (r.contains("solver_s")) {
+        ceres.push_back(r["solver_s"].get<double>());
         eval.push_back(r["evaluation_s"].get<double>());
         linear.push_back(r["linear_solver_s"].get<double>());
       }
@@ -395,7 +395,7 @@ json MergeRecords(const std::vector<json>& records) {
     row["wall_min_s"] = *std::min_element(wall.begin(), wall.end());
     row["wall_max_s"] = *std::max_element(wall.begin(), wall.end());
     row["peak_memory_mb"] = memory;
-    row["ceres_s"] = ceres.empty() ? json() : json(Median(ceres));
+    row["solver_s"] = ceres.empty() ? json() : json(Median(ceres));
     row["evaluation_s"] = eval.empty() ? json() : json(Median(eval));
     row["linear_solver_s"] = linear.empty() ? json() : json(Median(linear));
     // The quality figures are the same in every repeat (deterministic runs).

@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
     const int p1 = int(out.at("measures").at("self_intersecting_pyramids").get<double>());
     const double disp = bench::Get(r, "/after/displacement_max_relative");
     const int iterations = r.at("iterations").at("inner").get<int>();
-    const double ceres = bench::Get(r, "/seconds/ceres");
+    const double ceres = bench::Get(r, "/seconds/solver");
     const bench::Json& t = r.at("settings").at("terms");
     ours.Add({c.label, c.stands_for, bench::Fmt("%d", int(bench::Get(r, "/before/vertices"))),
               bench::Fmt("%d", int(bench::Get(r, "/before/faces"))),

@@ -1,17 +1,16 @@
 // How the planar-quad solve scales with mesh size (STYLE.md, "Direct solves
 // grow ~n^1.5"): examples/planar_quads.yaml on generated non-planar roof grids
 // (`archgeo generate --noise 0.05`) of 100x100 (10k quads) and 316x316 (~100k
-// quads), and 1000x1000 (1M quads) only with --include-1m (long; the smooth
-// defaults hold ~800 bytes per residual, ~30 GB at 1M: more than this
-// machine's 24 GB). Every size is solved twice, with one global sparse
-// Cholesky per step (solver.domain_size=0) and with the spec's defaults
-// (domain decomposition of large rounds, core/domain_solve.h), unless
-// --domains-only. Prints time to tolerance, iterations, peak memory, the time
+// quads), and 1000x1000 (1M quads) only with --include-1m (long: about 15
+// minutes and 15 GB with the defaults). Every size is solved twice, by Ceres with one sparse Cholesky per step (solver.pcg_above=0) and
+// with the spec's defaults (Levenberg-Marquardt with conjugate gradients on
+// the assembled normal equations for large rounds, core/lean_solve.h), unless
+// --defaults-only. Prints time to tolerance, iterations, peak memory, the time
 // of one linear solve and the fitted exponents of time and memory.
 // Each solve is an `archgeo solve` subprocess, so the peak memory is per run.
 //
 //   cmake --build <build> --target scaling archgeo   # runs the archgeo tool
-//   <build>/benchmarks/scaling [--include-1m] [--domains-only] [--timeout SECONDS]
+//   <build>/benchmarks/scaling [--include-1m] [--defaults-only] [--timeout SECONDS]
 //                              [--set KEY=VALUE]...
 //
 // Times are wall-clock on the machine that runs it. Grids are cached in the
@@ -55,13 +54,13 @@ int main(int argc, char** argv) {
     const std::string& arg = rest[i];
     if (arg == "--include-1m") {
       sizes.push_back(1000);
-    } else if (arg == "--domains-only") {
+    } else if (arg == "--defaults-only") {
       compare = false;
     } else if (arg == "--timeout" && i + 1 < rest.size()) {
       timeout = std::stod(rest[++i]);
     } else {
       std::cerr << "usage: " << argv[0]
-                << " [--include-1m] [--domains-only] [--timeout SECONDS] [--set KEY=VALUE]...\n";
+                << " [--include-1m] [--defaults-only] [--timeout SECONDS] [--set KEY=VALUE]...\n";
       return 2;
     }
   }
@@ -71,17 +70,17 @@ int main(int argc, char** argv) {
                "timeout "
             << timeout << " s per run\n\n";
 
-  // Each size: one global sparse Cholesky per step (solver.domain_size=0) and
-  // the spec's default, which solves large rounds in domains (core/domain_solve.h).
+  // Each size: Ceres with one sparse Cholesky per step (solver.pcg_above=0)
+  // and the spec's default, which solves large rounds by PCG (core/lean_solve.h).
   struct Mode {
     std::string name;
     std::vector<std::string> sets;
   };
   std::vector<Mode> modes;
-  if (compare) modes.push_back({"global", {"solver.domain_size=0"}});
+  if (compare) modes.push_back({"cholesky", {"solver.pcg_above=0"}});
   modes.push_back({"default", {}});
-  bench::Table t({"grid", "quads", "solve", "domains", "variables", "iter (Ceres/outer)",
-                  "s / linear solve", "Ceres s", "total s", "peak MB", "δ_PQ,n max",
+  bench::Table t({"grid", "quads", "solve", "PCG rounds", "variables", "iter (inner/outer)",
+                  "s / linear solve", "solver s", "total s", "peak MB", "δ_PQ,n max",
                   "max move % diag", "met"});
   std::string blas;  // as reported by the archgeo subprocess
   // Per mode: (quads, total s, peak MB) of the runs that met the tolerance.
@@ -100,8 +99,8 @@ int main(int argc, char** argv) {
                p.timed_out ? Fmt("timed out after %.0f s", p.seconds)
                            : Fmt("failed: exit code %d", p.exit_code)});
       } else {
-        const double iters = Get(r, "/iterations/inner"), ceres = Get(r, "/seconds/ceres");
-        t.Add({grid, quads, mode.name, Fmt("%.0f", Get(r, "/domains")),
+        const double iters = Get(r, "/iterations/inner"), ceres = Get(r, "/seconds/solver");
+        t.Add({grid, quads, mode.name, Fmt("%.0f", Get(r, "/pcg/rounds")),
                Fmt("%.0f", Get(r, "/variables")),
                Fmt("%.0f / %.0f", iters, Get(r, "/iterations/outer")),
                Fmt("%.2f", Get(r, "/seconds/linear_solver") / iters), Fmt("%.1f", ceres),
@@ -129,11 +128,13 @@ int main(int argc, char** argv) {
     }
   }
   std::cout
-      << "\nsolve: global = one sparse Cholesky of the whole problem per step\n"
-         "(solver.domain_size=0); default = the spec's settings, which solve a round of more\n"
-         "than 4 x solver.domain_size variables part by part (core/domain_solve.h).\n"
-         "s / linear solve: linear-solver seconds / Ceres iterations (forming J^T J, the\n"
-         "factorisation, the back-substitution); Ceres s: time in ceres::Solve, all rounds;\n"
+      << "\nsolve: cholesky = Ceres, one sparse Cholesky of the whole problem per step\n"
+         "(solver.pcg_above=0); default = the spec's settings, which solve a round of more\n"
+         "than solver.pcg_above variables by Levenberg-Marquardt with block-Jacobi conjugate\n"
+         "gradients on the assembled normal equations (core/lean_solve.h).\n"
+         "s / linear solve: linear-solver seconds / iterations (Ceres: forming J^T J, the\n"
+         "factorisation, the back-substitution; PCG: the CG steps); solver s: time in the\n"
+         "solver (ceres::Solve or LeanSolve), all rounds;\n"
          "total s: the whole `archgeo solve --quiet` subprocess (read, reference, solve,\n"
          "metrics, report), the time to tolerance; peak MB: its maximum resident set (wait4\n"
          "ru_maxrss); max move: the largest vertex displacement, % of the bounding-box diagonal.\n";

@@ -103,7 +103,7 @@ int main(int argc, char** argv) {
   }
   per_round.Print();
 
-  const double ceres = Get(r, "/seconds/ceres"), linear = Get(r, "/seconds/linear_solver"),
+  const double ceres = Get(r, "/seconds/solver"), linear = Get(r, "/seconds/linear_solver"),
                jacobian = Get(r, "/seconds/jacobian"), residual = Get(r, "/seconds/residual"),
                projection = Get(r, "/seconds/projection"), solve = Get(r, "/seconds/solve"),
                total = Get(r, "/seconds/total");

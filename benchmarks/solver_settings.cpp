@@ -35,7 +35,7 @@ struct Setting {
 constexpr int kRounds = 3;
 
 std::vector<std::string> Row(const std::string& label, const bench::Json& r) {
-  const double iters = Get(r, "/iterations/inner"), ceres = Get(r, "/seconds/ceres"),
+  const double iters = Get(r, "/iterations/inner"), ceres = Get(r, "/seconds/solver"),
                linear = Get(r, "/seconds/linear_solver");
   if (r.value("exit_code", 0) != 0) return {label, "no usable solution: " + r.value("message", "")};
   return {label,

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/domain_solve.h"
+#include "core/lean_solve.h"
 #include "core/solver_options.h"
 
 namespace archgeo {
@@ -223,28 +223,27 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
           solver.callbacks.push_back(&watch);
           solver.update_state_every_iteration = true;
         }
-        DomainSolveSummary summary;
+        SolveSummary summary;
         if (problem->NumResiduals() > 0) {
-          DomainOptions domains;
-          domains.size = int(s.Integer("solver.domain_size"));
-          domains.band_rings = int(s.Integer("solver.domain_band"));
-          domains.function_tolerance = s.Number("solver.domain_function_tolerance");
-          summary = DomainSolve(solver, domains, problem.get());
+          summary = SolveRound(solver, int(s.Integer("solver.pcg_above")),
+                               s.Number("solver.pcg_function_tolerance"), problem.get());
         }
         model.StateChanged();
 
         result.rounds = round_number;
         result.variables = problem->NumParameters();
         result.residuals = problem->NumResiduals();
-        result.domains = std::max(result.domains, summary.parts);
+        if (summary.pcg) {
+          ++result.pcg_rounds;
+          result.cg_iterations += summary.cg_iterations;
+        }
         step.iterations = summary.iterations;
         step.cost = summary.final_cost;
         result.iterations += step.iterations;
-        result.seconds["ceres"] += summary.seconds;
+        result.seconds["solver"] += summary.seconds;  // ceres::Solve or LeanSolve
         result.seconds["linear_solver"] += summary.linear_solver_seconds;
         result.seconds["jacobian"] += summary.jacobian_seconds;
         result.seconds["residual"] += summary.residual_seconds;
-        if (summary.parts > 0) result.seconds["partition"] += summary.partition_seconds;
         if (!summary.usable) {
           step.usable = false;
           step.message = summary.message;

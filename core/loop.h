@@ -102,9 +102,10 @@ struct LoopResult {
   std::string message;
   int variables = 0, residuals = 0;
   int rounds = 0, iterations = 0;
-  int domains = 0;  // parts of the largest domain-decomposed solve (0: global solves)
+  int pcg_rounds = 0;     // rounds solved by LeanSolve (solver.pcg_above)
+  int cg_iterations = 0;  // their conjugate-gradient steps
   std::map<std::string, double> objective;  // ½ Σ w r² per part and "total", final state
-  std::map<std::string, double> seconds;    // "ceres", "linear_solver", "jacobian",
+  std::map<std::string, double> seconds;    // "solver" (Ceres or PCG), "linear_solver", "jacobian",
                                             // "residual", "projection"
   std::map<std::string, bool> tolerances;   // per tolerance key: met at the end
   std::vector<RoundLog> log;                // log[0]: the input (round 0)

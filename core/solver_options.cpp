@@ -107,7 +107,7 @@ std::vector<Key> SolverKeys() {
       choice("line_search_type", "wolfe",
              Names<ceres::LineSearchType>(&ceres::LineSearchTypeToString, ceres::WOLFE),
              "line search of the line-search minimizer"),
-      integer("max_num_iterations", 50, 0, 1000000, "Ceres iterations per round at most"),
+      integer("max_num_iterations", 50, 0, 1000000, "solver iterations per round at most (Ceres or PCG)"),
       number("max_solver_time_in_seconds", 1e9, 0, 1e9, "wall time per round at most"),
       integer("num_threads", 2, 1, 256, "threads for Jacobian evaluation and linear algebra"),
       number("function_tolerance", 1e-10, 0, 1, "stop when |Δcost|/cost falls below this"),
@@ -133,16 +133,15 @@ std::vector<Key> SolverKeys() {
       flag("use_mixed_precision_solves", false, "single-precision factorisation + refinement"),
       integer("max_num_refinement_iterations", 0, 0, 1000, "iterative refinement steps"),
       flag("use_explicit_schur_complement", false, "iterative_schur: form the Schur complement"),
-      integer("domain_size", 0, 0, 1000000000,
-              "domain decomposition (core/domain_solve.h): a round with more than 4 x this many "
-              "variables is solved part by part, parts of about this many variables, then the "
-              "band between them; 0 = always one global solve (planar_quads: 25000)"),
-      integer("domain_band", 2, 0, 100,
-              "domain decomposition: the band pass frees the parts' separator and this many "
-              "rings of neighbours"),
-      number("domain_function_tolerance", 1e-4, 0, 1,
-             "domain decomposition: a pass stops when the relative cost change falls below this (or "
-             "function_tolerance, if larger); the next pass or round goes on from there"),
+      integer("pcg_above", 0, 0, 1000000000,
+              "a round with more than this many variables is solved by archgeo's own "
+              "Levenberg-Marquardt: normal equations assembled once per iteration, each step by "
+              "block-Jacobi conjugate gradients to a relative residual eta, at most "
+              "max_linear_solver_iterations (core/lean_solve.h); 0 = never, always Ceres "
+              "(planar_quads: 100000)"),
+      number("pcg_function_tolerance", 1e-4, 0, 1,
+             "with pcg_above: such a solve stops when the relative cost change falls below this "
+             "(or function_tolerance, if larger); the next round goes on from there"),
   };
 }
 

@@ -89,27 +89,33 @@ std::vector<Eigen::Matrix3d> VertexShapeTensors(const Mesh& mesh, const JetOptio
 
   using Fitting = CGAL::Monge_via_jet_fitting<Kernel, Kernel, CGAL::Eigen_svd>;
   std::vector<Eigen::Matrix3d> tensors(mesh.number_of_vertices(), Eigen::Matrix3d::Zero());
-  std::vector<int> mark(mesh.number_of_vertices(), -1);
-  std::vector<Point> points;
-  for (VertexIndex v : mesh.vertices()) {
-    if (mesh.is_isolated(v)) continue;
-    const std::vector<VertexIndex> hood =
-        Neighbourhood(mesh, v, options.rings, min_points, &mark, static_cast<int>(v.idx()));
-    // Lower the degree for tiny components rather than fail.
-    int degree = options.degree;
-    while (degree > 2 && static_cast<int>(hood.size()) < NumCoefficients(degree)) --degree;
-    if (static_cast<int>(hood.size()) < NumCoefficients(degree)) continue;  // stays 0
-    points.clear();
-    for (VertexIndex u : hood) points.push_back(mesh.point(u));
-    Fitting fitting;
-    Fitting::Monge_form monge = fitting(points.begin(), points.end(), degree, 2);
-    const Eigen::Vector3d n = VertexNormal(mesh, v);
-    monge.comply_wrt_given_normal(Vector(n.x(), n.y(), n.z()));
-    const Vector d1 = monge.maximal_principal_direction();
-    const Vector d2 = monge.minimal_principal_direction();
-    const Eigen::Vector3d a(d1.x(), d1.y(), d1.z()), b(d2.x(), d2.y(), d2.z());
-    tensors[v.idx()] = monge.principal_curvatures(0) * a * a.transpose() +
-                       monge.principal_curvatures(1) * b * b.transpose();
+  const int count = static_cast<int>(mesh.number_of_vertices());
+  // Every vertex's fit is independent (each thread has its own marks).
+#pragma omp parallel
+  {
+    std::vector<int> mark(mesh.number_of_vertices(), -1);
+    std::vector<Point> points;
+#pragma omp for schedule(dynamic, 512)
+    for (int i = 0; i < count; ++i) {
+      const VertexIndex v(static_cast<VertexIndex::size_type>(i));
+      if (mesh.is_isolated(v)) continue;
+      const std::vector<VertexIndex> hood = Neighbourhood(mesh, v, options.rings, min_points, &mark, i);
+      // Lower the degree for tiny components rather than fail.
+      int degree = options.degree;
+      while (degree > 2 && static_cast<int>(hood.size()) < NumCoefficients(degree)) --degree;
+      if (static_cast<int>(hood.size()) < NumCoefficients(degree)) continue;  // stays 0
+      points.clear();
+      for (VertexIndex u : hood) points.push_back(mesh.point(u));
+      Fitting fitting;
+      Fitting::Monge_form monge = fitting(points.begin(), points.end(), degree, 2);
+      const Eigen::Vector3d n = VertexNormal(mesh, v);
+      monge.comply_wrt_given_normal(Vector(n.x(), n.y(), n.z()));
+      const Vector d1 = monge.maximal_principal_direction();
+      const Vector d2 = monge.minimal_principal_direction();
+      const Eigen::Vector3d a(d1.x(), d1.y(), d1.z()), b(d2.x(), d2.y(), d2.z());
+      tensors[i] = monge.principal_curvatures(0) * a * a.transpose() +
+                   monge.principal_curvatures(1) * b * b.transpose();
+    }
   }
   return tensors;
 }

@@ -53,10 +53,10 @@ ProblemDecl planar_quads() {
              {"dihedral_energy", 0.5},
              {"convexity", 1000, {}, "", true},
              {"min_edge_length", 1000, {}, "", true}};
-  // Rounds of more than 100k variables (~15k quads) in domains of 25k
-  // (core/domain_solve.h): on 100k quads 158 s and 2.7 GB against 319 s and
-  // 3.9 GB with one global Cholesky, displacement within 3% (README, Speed).
-  d.defaults = {{"solver.domain_size", 25000LL}};
+  // Rounds of more than 100k variables (~15k quads) by Levenberg–Marquardt
+  // with block-Jacobi conjugate gradients on the assembled normal equations
+  // (core/lean_solve.h); README, Speed, has the measurements.
+  d.defaults = {{"solver.pcg_above", 100000LL}};
   d.keys = {
       NumberKey("tolerance.pq_normalized_max", 1e-3, 0, 1,
                 "stop as soon as every quad has δ_PQ,n at most this; 0 = fixed weights, "

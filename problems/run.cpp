@@ -247,7 +247,7 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const M
   rep["usable"] = solved.usable;
   rep["variables"] = solved.variables;
   rep["residuals"] = solved.residuals;
-  rep["domains"] = solved.domains;
+  rep["pcg"] = {{"rounds", solved.pcg_rounds}, {"cg_iterations", solved.cg_iterations}};
   rep["iterations"] = {{"outer", solved.rounds}, {"inner", solved.iterations}};
   rep["objective"] = solved.objective;
   nlohmann::json tolerances = nlohmann::json::object();
@@ -366,14 +366,15 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const M
 
   char head[512];
   std::snprintf(head, sizeof head,
-                "%s: %d variables, %d residuals%s, %d rounds / %d Ceres iterations, %.2f s (solve "
+                "%s: %d variables, %d residuals, %d rounds / %d iterations%s, %.2f s (solve "
                 "%.2f s); stop: %s\n",
-                d.name.c_str(), solved.variables, solved.residuals,
-                solved.domains > 0
-                    ? (" (solved in " + std::to_string(solved.domains) + " domains)").c_str()
+                d.name.c_str(), solved.variables, solved.residuals, solved.rounds,
+                solved.iterations,
+                solved.pcg_rounds > 0
+                    ? (" (" + std::to_string(solved.pcg_rounds) + " rounds by PCG, " +
+                       std::to_string(solved.cg_iterations) + " CG steps)").c_str()
                     : "",
-                solved.rounds,
-                solved.iterations, Since(start), solve_seconds, solved.stop.c_str());
+                Since(start), solve_seconds, solved.stop.c_str());
   char objective[128];
   std::snprintf(objective, sizeof objective, "objective (canonical frame): %.6e\n",
                 solved.objective.count("total") ? solved.objective.at("total") : 0.0);

@@ -6,7 +6,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config
-  libceres-dev libsuitesparse-dev libmetis-dev libeigen3-dev libgoogle-glog-dev libgflags-dev
+  libceres-dev libsuitesparse-dev libeigen3-dev libgoogle-glog-dev libgflags-dev
   libcgal-dev libgmp-dev libmpfr-dev libtbb-dev
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev googletest libbenchmark-dev

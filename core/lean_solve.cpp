@@ -1,0 +1,474 @@
+#include "core/lean_solve.h"
+
+#include "core/normal_equations.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <ceres/cost_function.h>
+#include <ceres/loss_function.h>
+#include <ceres/manifold.h>
+
+namespace archgeo {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double Since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+using MapMatrix = Eigen::Map<RowMatrix>;
+using Vector = Eigen::VectorXd;
+
+// y += M x (or Mᵀ x) for a row-major rows × cols block; 3 × 3 unrolled.
+template <bool kTranspose>
+inline void AddProduct(const double* M, int rows, int cols, const double* x, double* y) {
+  if (rows == 3 && cols == 3) {
+    using M3 = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
+    Eigen::Map<const M3> m(M);
+    if (kTranspose) {
+      Eigen::Map<Eigen::Vector3d>(y).noalias() += m.transpose() * Eigen::Map<const Eigen::Vector3d>(x);
+    } else {
+      Eigen::Map<Eigen::Vector3d>(y).noalias() += m * Eigen::Map<const Eigen::Vector3d>(x);
+    }
+    return;
+  }
+  for (int r = 0; r < rows; ++r) {
+    for (int c = 0; c < cols; ++c) {
+      if (kTranspose) {
+        y[c] += M[r * cols + c] * x[r];
+      } else {
+        y[r] += M[r * cols + c] * x[c];
+      }
+    }
+  }
+}
+
+// Ceres' loss corrector (Triggs et al. 1999, "Bundle adjustment — a modern
+// synthesis", §4.3): scales r and J so that ½‖r̃‖² matches ρ to second order.
+struct Corrector {
+  double residual_scaling = 1, alpha_sq_norm = 0, sqrt_rho1 = 1;
+  Corrector(double sq_norm, const double rho[3]) {
+    sqrt_rho1 = std::sqrt(rho[1]);
+    if (sq_norm == 0.0 || rho[2] <= 0.0) {
+      residual_scaling = sqrt_rho1;
+      return;
+    }
+    const double D = 1.0 + 2.0 * sq_norm * rho[2] / rho[1];
+    const double alpha = 1.0 - std::sqrt(D);
+    residual_scaling = sqrt_rho1 / (1 - alpha);
+    alpha_sq_norm = alpha / sq_norm;
+  }
+};
+
+// The linearisation's scratch and its sums: H (slots), g and Σ ρ.
+struct Work {
+  std::vector<double> residual, ambient, tangent, hessian;
+  std::vector<double*> jacobians, tangents;
+  Vector gradient;
+  double total = 0;
+};
+
+class Lean {
+ public:
+  explicit Lean(ceres::Problem& problem) : s_(ReadNormalPattern(problem)) {
+    size_t rows = 0, scratch = 0, parameters = 0;
+    for (const PatternResidual& r : s_.residuals) {
+      rows = std::max<size_t>(rows, r.rows);
+      parameters = std::max<size_t>(parameters, r.end - r.first);
+      size_t need = 0;
+      for (int a = r.first; a < r.end; ++a) {
+        if (s_.block[a] >= 0) need += size_t(r.rows) * ambient(a);
+      }
+      scratch = std::max(scratch, need);
+    }
+    residual_.resize(rows);
+    work_.residual.resize(rows);
+    work_.ambient.resize(scratch);
+    work_.tangent.resize(scratch);
+    work_.hessian.resize(s_.slots);
+    work_.jacobians.resize(parameters);
+    work_.tangents.resize(parameters);
+  }
+
+  // The free blocks' values, concatenated (to undo a rejected step).
+  std::vector<double> Save() const {
+    std::vector<double> x;
+    for (const PatternBlock& b : s_.blocks) x.insert(x.end(), b.values, b.values + b.ambient);
+    return x;
+  }
+  void Restore(const std::vector<double>& x) const {
+    size_t at = 0;
+    for (const PatternBlock& b : s_.blocks) {
+      std::copy(x.begin() + long(at), x.begin() + long(at + b.ambient), b.values);
+      at += b.ambient;
+    }
+  }
+  // x ⊞ δ in place (manifold Plus per block).
+  bool Step(const Vector& delta) {
+    std::vector<double> moved;
+    for (const PatternBlock& b : s_.blocks) {
+      const double* d = delta.data() + b.offset;
+      if (!b.manifold) {
+        for (int k = 0; k < b.ambient; ++k) b.values[k] += d[k];
+        continue;
+      }
+      moved.resize(b.ambient);
+      if (!b.manifold->Plus(b.values, d, moved.data())) return false;
+      std::copy(moved.begin(), moved.end(), b.values);
+    }
+    return true;
+  }
+
+  // ½ Σ ρ(‖r‖²) at the current values; false if a block fails to evaluate.
+  bool Cost(double* cost) {
+    double total = 0;
+    for (const PatternResidual& r : s_.residuals) {
+      if (!r.cost->Evaluate(s_.values.data() + r.first, residual_.data(), nullptr)) return false;
+      const double sq = Eigen::Map<const Vector>(residual_.data(), r.rows).squaredNorm();
+      total += Loss(r, sq);
+    }
+    *cost = 0.5 * total;
+    return std::isfinite(*cost);
+  }
+
+  // The cost, the gradient g = J^T r and H = J^T J (slots) at the current
+  // values. (Serial: accumulating into H is bound by memory traffic, and a
+  // second thread with its own copy of H gained nothing on 32k quads.)
+  bool Linearise(double* cost, Vector* gradient) {
+    for (PatternBlock& b : s_.blocks) {
+      if (!b.manifold) continue;
+      b.plus_jacobian.resize(size_t(b.ambient) * b.tangent);
+      if (!b.manifold->PlusJacobian(b.values, b.plus_jacobian.data())) return false;
+    }
+    std::fill(work_.hessian.begin(), work_.hessian.end(), 0.0);
+    work_.gradient.setZero(s_.tangent);
+    work_.total = 0;
+    for (const PatternResidual& r : s_.residuals) {
+      if (!Accumulate(r, &work_)) return false;
+    }
+    *gradient = work_.gradient;
+    *cost = 0.5 * work_.total;
+    return std::isfinite(*cost) && gradient->allFinite();
+  }
+
+  // y = (H + diag(damping)) x, block row by block row (in parallel).
+  void Multiply(const Vector& damping, const Vector& x, Vector* y) const {
+    y->noalias() = damping.cwiseProduct(x);
+    const int n = int(s_.blocks.size());
+#pragma omp parallel for schedule(static, 256)
+    for (int i = 0; i < n; ++i) {
+      const PatternBlock& bi = s_.blocks[i];
+      double* yi = y->data() + bi.offset;
+      AddProduct<false>(work_.hessian.data() + s_.diagonal[i], bi.tangent, bi.tangent,
+                        x.data() + bi.offset, yi);
+      for (int k = s_.row_start[i]; k < s_.row_start[i + 1]; ++k) {
+        const PatternBlock& bj = s_.blocks[s_.column[k]];
+        AddProduct<false>(work_.hessian.data() + s_.slot[k], bi.tangent, bj.tangent,
+                          x.data() + bj.offset, yi);
+      }
+      for (int k = s_.lower_start[i]; k < s_.lower_start[i + 1]; ++k) {
+        const PatternBlock& bj = s_.blocks[s_.lower_column[k]];
+        AddProduct<true>(work_.hessian.data() + s_.lower_slot[k], bj.tangent, bi.tangent,
+                         x.data() + bj.offset, yi);
+      }
+    }
+  }
+
+  // The diagonal of H.
+  Vector Diagonal() const {
+    Vector d(s_.tangent);
+    for (size_t i = 0; i < s_.blocks.size(); ++i) {
+      const PatternBlock& b = s_.blocks[i];
+      d.segment(b.offset, b.tangent) = Slot(s_.diagonal[i], b.tangent, b.tangent).diagonal();
+    }
+    return d;
+  }
+
+  // Solves (H + diag(damping)) δ = −g by block-Jacobi PCG to ‖residual‖ ≤
+  // eta ‖g‖ or `max_iterations` steps; returns the steps taken.
+  int Solve(const Vector& damping, const Vector& gradient, double eta, int max_iterations,
+            Vector* delta) const {
+    // PatternBlock-Jacobi preconditioner: every block's (H_ii + D_i)⁻¹ (the identity
+    // where that is not positive definite).
+    const int blocks = int(s_.blocks.size());
+    std::vector<double> inverse(s_.diagonal_slots);
+#pragma omp parallel for schedule(static, 256)
+    for (int i = 0; i < blocks; ++i) {
+      const PatternBlock& b = s_.blocks[i];
+      Eigen::MatrixXd Hii = Slot(s_.diagonal[i], b.tangent, b.tangent);
+      Hii.diagonal() += damping.segment(b.offset, b.tangent);
+      Eigen::LLT<Eigen::MatrixXd> llt(Hii);
+      Eigen::MatrixXd inv = Eigen::MatrixXd::Identity(b.tangent, b.tangent);
+      if (llt.info() == Eigen::Success) inv = llt.solve(inv);
+      Eigen::Map<RowMatrix>(inverse.data() + s_.diagonal[i], b.tangent, b.tangent) = inv;
+    }
+    auto precondition = [&](const Vector& r, Vector* z) {
+#pragma omp parallel for schedule(static, 256)
+      for (int i = 0; i < blocks; ++i) {
+        const PatternBlock& b = s_.blocks[i];
+        z->segment(b.offset, b.tangent).setZero();
+        AddProduct<false>(inverse.data() + s_.diagonal[i], b.tangent, b.tangent,
+                          r.data() + b.offset, z->data() + b.offset);
+      }
+    };
+    const int n = s_.tangent;
+    delta->setZero(n);
+    Vector r = -gradient, z(n), p(n), q(n);
+    const double stop = eta * r.norm();
+    precondition(r, &z);
+    p = z;
+    double rz = r.dot(z);
+    int k = 0;
+    while (k < max_iterations && r.norm() > stop) {
+      Multiply(damping, p, &q);
+      const double pq = p.dot(q);
+      if (!(pq > 0.0)) break;
+      const double alpha = rz / pq;
+      *delta += alpha * p;
+      r -= alpha * q;
+      ++k;
+      precondition(r, &z);
+      const double rz_next = r.dot(z);
+      p = z + (rz_next / rz) * p;
+      rz = rz_next;
+    }
+    return k;
+  }
+
+  // ½ δᵀ H δ + gᵀ δ (the model's change).
+  double ModelChange(const Vector& gradient, const Vector& delta) const {
+    Vector Hd(s_.tangent);
+    Multiply(Vector::Zero(s_.tangent), delta, &Hd);
+    return gradient.dot(delta) + 0.5 * delta.dot(Hd);
+  }
+
+  double ParameterNorm() const {
+    double sq = 0;
+    for (const PatternBlock& b : s_.blocks) {
+      sq += Eigen::Map<const Vector>(b.values, b.ambient).squaredNorm();
+    }
+    return std::sqrt(sq);
+  }
+
+ private:
+  int ambient(int parameter) const {
+    return s_.blocks[s_.block[parameter]].ambient;
+  }
+  // One residual block into the sums: ρ, its corrected tangent Jacobians,
+  // g += J̃ᵀ r̃ and every J̃_aᵀ J̃_b into its slot.
+  bool Accumulate(const PatternResidual& r, Work* k) const {
+    const int m = r.end - r.first;
+    double** jacobians = k->jacobians.data();
+    double** tangents = k->tangents.data();
+    size_t used = 0;
+    for (int a = 0; a < m; ++a) {
+      jacobians[a] = tangents[a] = nullptr;
+      if (s_.block[r.first + a] < 0) continue;
+      jacobians[a] = k->ambient.data() + used;
+      tangents[a] = k->tangent.data() + used;
+      used += size_t(r.rows) * ambient(r.first + a);
+    }
+    if (!r.cost->Evaluate(s_.values.data() + r.first, k->residual.data(), jacobians)) return false;
+    Eigen::Map<Vector> res(k->residual.data(), r.rows);
+    const double sq = res.squaredNorm();
+    double rho[3] = {sq, 1.0, 0.0};
+    if (r.loss) r.loss->Evaluate(sq, rho);
+    k->total += rho[0];
+    const Corrector corrector(sq, rho);
+    // Tangent Jacobians, corrected: J̃ = √ρ' (J − α/‖r‖² r rᵀ J).
+    for (int a = 0; a < m; ++a) {
+      const int i = s_.block[r.first + a];
+      if (i < 0) continue;
+      const PatternBlock& b = s_.blocks[i];
+      if (b.manifold) {
+        MapMatrix(tangents[a], r.rows, b.tangent).noalias() =
+            MapMatrix(jacobians[a], r.rows, b.ambient) *
+            Eigen::Map<const RowMatrix>(b.plus_jacobian.data(), b.ambient, b.tangent);
+      } else {
+        tangents[a] = jacobians[a];  // tangent = ambient: in place
+      }
+      MapMatrix T(tangents[a], r.rows, b.tangent);
+      if (corrector.alpha_sq_norm != 0.0) {
+        T -= corrector.alpha_sq_norm * res * (res.transpose() * T);
+      }
+      T *= corrector.sqrt_rho1;
+    }
+    res *= corrector.residual_scaling;
+    double* H = k->hessian.data();
+    int pair = r.pairs;
+    for (int a = 0; a < m; ++a) {
+      const int i = s_.block[r.first + a];
+      if (i < 0) continue;
+      const PatternBlock& bi = s_.blocks[i];
+      MapMatrix Ti(tangents[a], r.rows, bi.tangent);
+      k->gradient.segment(bi.offset, bi.tangent).noalias() += Ti.transpose() * res;
+      MapMatrix(H + s_.diagonal[i], bi.tangent, bi.tangent).noalias() += Ti.transpose() * Ti;
+      for (int c = a + 1; c < m; ++c) {
+        const int j = s_.block[r.first + c];
+        if (j < 0 || j == i) continue;
+        const PatternBlock& bj = s_.blocks[j];
+        MapMatrix Tj(tangents[c], r.rows, bj.tangent);
+        if (i < j) {
+          MapMatrix(H + s_.pair_slot[pair], bi.tangent, bj.tangent).noalias() += Ti.transpose() * Tj;
+        } else {
+          MapMatrix(H + s_.pair_slot[pair], bj.tangent, bi.tangent).noalias() += Tj.transpose() * Ti;
+        }
+        ++pair;
+      }
+    }
+    return true;
+  }
+
+  double Loss(const PatternResidual& r, double sq) const {
+    if (!r.loss) return sq;
+    double rho[3];
+    r.loss->Evaluate(sq, rho);
+    return rho[0];
+  }
+  Eigen::Map<const RowMatrix> Slot(int offset, int rows, int cols) const {
+    return Eigen::Map<const RowMatrix>(work_.hessian.data() + offset, rows, cols);
+  }
+
+  NormalPattern s_;
+  std::vector<double> residual_;
+  Work work_;
+};
+
+}  // namespace
+
+SolveSummary LeanSolve(const ceres::Solver::Options& options, ceres::Problem* problem) {
+  const auto start = Clock::now();
+  SolveSummary out;
+  out.pcg = true;
+  Lean lean(*problem);
+  double cost = 0;
+  Vector gradient;
+  auto t = Clock::now();
+  if (!lean.Linearise(&cost, &gradient)) {
+    out.usable = false;
+    out.message = "a residual block failed to evaluate at the start";
+    return out;
+  }
+  out.jacobian_seconds += Since(t);
+  out.initial_cost = out.final_cost = cost;
+  double radius = options.initial_trust_region_radius, decrease_factor = 2.0;
+  Vector delta;
+  auto report = [&](int iteration, double step_norm, bool success, double change) {
+    ceres::IterationSummary it;
+    it.iteration = iteration;
+    it.cost = cost;
+    it.cost_change = change;
+    it.gradient_max_norm = gradient.lpNorm<Eigen::Infinity>();
+    it.gradient_norm = gradient.norm();
+    it.step_norm = step_norm;
+    it.step_is_valid = it.step_is_successful = success;
+    it.trust_region_radius = radius;
+    it.cumulative_time_in_seconds = Since(start);
+    for (ceres::IterationCallback* callback : options.callbacks) {
+      const ceres::CallbackReturnType r = (*callback)(it);
+      if (r == ceres::SOLVER_TERMINATE_SUCCESSFULLY) {
+        out.terminated_by_callback = true;
+        return true;
+      }
+      if (r == ceres::SOLVER_ABORT) {
+        out.usable = false;
+        out.message = "a callback aborted the solve";
+        return true;
+      }
+    }
+    return false;
+  };
+  if (report(0, 0.0, true, 0.0)) {
+    out.seconds = Since(start);
+    return out;
+  }
+  if (gradient.lpNorm<Eigen::Infinity>() <= options.gradient_tolerance) {
+    out.seconds = Since(start);
+    return out;
+  }
+  for (int iteration = 1; iteration <= options.max_num_iterations; ++iteration) {
+    if (Since(start) >= options.max_solver_time_in_seconds) break;
+    out.iterations = iteration;
+    t = Clock::now();
+    const Vector diagonal = lean.Diagonal().cwiseMax(options.min_lm_diagonal).cwiseMin(
+        options.max_lm_diagonal);
+    const Vector damping = diagonal / radius;
+    out.cg_iterations += lean.Solve(damping, gradient, options.eta,
+                                    options.max_linear_solver_iterations, &delta);
+    const double model_change = lean.ModelChange(gradient, delta);
+    out.linear_solver_seconds += Since(t);
+    const std::vector<double> before = lean.Save();
+    const double x_norm = lean.ParameterNorm();
+    double new_cost = 0;
+    t = Clock::now();
+    const bool valid = model_change < 0.0 && lean.Step(delta) && lean.Cost(&new_cost);
+    out.residual_seconds += Since(t);
+    const double rho = valid ? (cost - new_cost) / -model_change : -1.0;
+    if (valid && rho > options.min_relative_decrease) {
+      const double change = cost - new_cost;
+      cost = new_cost;
+      radius = std::min(options.max_trust_region_radius,
+                        radius / std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * rho - 1.0, 3)));
+      decrease_factor = 2.0;
+      t = Clock::now();
+      if (!lean.Linearise(&cost, &gradient)) {
+        out.usable = false;
+        out.message = "a residual block failed to evaluate";
+        break;
+      }
+      out.jacobian_seconds += Since(t);
+      if (report(iteration, delta.norm(), true, change)) break;
+      if (change <= options.function_tolerance * (cost + change)) break;
+      if (gradient.lpNorm<Eigen::Infinity>() <= options.gradient_tolerance) break;
+      if (delta.norm() <= options.parameter_tolerance * (x_norm + options.parameter_tolerance))
+        break;
+    } else {
+      lean.Restore(before);
+      radius /= decrease_factor;
+      decrease_factor *= 2.0;
+      if (report(iteration, delta.norm(), false, 0.0)) break;
+      if (radius < options.min_trust_region_radius) break;
+      if (delta.norm() <= options.parameter_tolerance * (x_norm + options.parameter_tolerance))
+        break;
+    }
+  }
+  out.final_cost = cost;
+  out.seconds = Since(start);
+  return out;
+}
+
+SolveSummary SolveRound(const ceres::Solver::Options& options, int pcg_above,
+                        double pcg_function_tolerance, ceres::Problem* problem) {
+  int free = 0;
+  if (pcg_above > 0) {
+    std::vector<double*> blocks;
+    problem->GetParameterBlocks(&blocks);
+    for (double* b : blocks) {
+      if (!problem->IsParameterBlockConstant(b)) free += problem->ParameterBlockTangentSize(b);
+    }
+  }
+  if (pcg_above > 0 && free > pcg_above) {
+    ceres::Solver::Options lean = options;
+    lean.function_tolerance = std::max(options.function_tolerance, pcg_function_tolerance);
+    return LeanSolve(lean, problem);
+  }
+  ceres::Solver::Summary summary;
+  ceres::Solve(options, problem, &summary);
+  SolveSummary out;
+  out.iterations = std::max(0, int(summary.iterations.size()) - 1);
+  out.seconds = std::max(0.0, summary.total_time_in_seconds);
+  out.linear_solver_seconds = std::max(0.0, summary.linear_solver_time_in_seconds);
+  out.jacobian_seconds = std::max(0.0, summary.jacobian_evaluation_time_in_seconds);
+  out.residual_seconds = std::max(0.0, summary.residual_evaluation_time_in_seconds);
+  out.initial_cost = summary.initial_cost;
+  out.final_cost = summary.final_cost;
+  out.usable = summary.IsSolutionUsable();
+  if (!out.usable) out.message = summary.message;
+  out.terminated_by_callback = summary.termination_type == ceres::USER_SUCCESS;
+  return out;
+}
+
+}  // namespace archgeo

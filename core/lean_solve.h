@@ -1,0 +1,58 @@
+// archgeo — Levenberg–Marquardt on hand-assembled normal equations with a
+// preconditioned conjugate-gradient step, for problems too large for one
+// sparse Cholesky factorisation.
+//
+// Why (README, "Speed", measured on the planar_quads problem of a 10k-quad
+// roof, 60,603 variables): one CHOLMOD factorisation of J^T J + μD takes
+// 0.50–0.58 s whatever the ordering (AMD, METIS, nested dissection; 4.5–6.6
+// GFlop, the factor has 10–12M entries), and it grows ~n^1.5. Conjugate
+// gradients on the same matrix with a block-Jacobi preconditioner reach 99.6%
+// of the step's model decrease in 16–32 iterations (0.02–0.05 s), and each
+// iteration costs ~n. Ceres' own CGNR works on J rather than J^T J and was no
+// faster than the direct solve; its per-solve assembly and allocation, not the
+// factorisation, took most of the time. So this solver:
+//   - reads the problem through Ceres' public API (cost functions, losses,
+//     manifolds): the energies stay the autodiff functors of energies/;
+//   - fixes the block pattern of J^T J once, and each iteration accumulates
+//     every residual block's J_a^T J_b into its slot (no J is stored);
+//   - solves (J^T J + μ diag(J^T J)) δ = −J^T r by block-Jacobi PCG to a
+//     relative residual `eta` (Ceres' option), at most
+//     max_linear_solver_iterations steps (an inexact Newton step);
+//   - steps and adapts μ as Ceres' Levenberg–Marquardt strategy does, with its
+//     tolerances (function, gradient, parameter), iteration and time limits,
+//     and iteration callbacks (so a per-iteration tolerance ends the solve).
+// Losses are applied with Ceres' corrector (Triggs et al.): the same cost.
+#pragma once
+
+#include <string>
+
+#include <ceres/problem.h>
+#include <ceres/solver.h>
+
+namespace archgeo {
+
+struct SolveSummary {
+  bool pcg = false;    // solved by LeanSolve (else by ceres::Solve)
+  int iterations = 0;  // accepted and rejected steps, as Ceres counts them
+  int cg_iterations = 0;
+  double seconds = 0, linear_solver_seconds = 0, jacobian_seconds = 0, residual_seconds = 0;
+  double initial_cost = 0, final_cost = 0;  // ½ Σ ρ(‖r‖²)
+  bool usable = true;
+  std::string message;
+  bool terminated_by_callback = false;
+};
+
+// Minimises `problem` from the values in its parameter blocks (which hold the
+// result on return). Reads from `options`: max_num_iterations,
+// max_solver_time_in_seconds, function/gradient/parameter_tolerance,
+// min_relative_decrease, initial/max/min_trust_region_radius,
+// min/max_lm_diagonal, eta, max_linear_solver_iterations, callbacks.
+SolveSummary LeanSolve(const ceres::Solver::Options& options, ceres::Problem* problem);
+
+// One round's solve: LeanSolve with function_tolerance raised to at least
+// `pcg_function_tolerance` when pcg_above > 0 and the problem has more than
+// pcg_above free variables (solver.pcg_above), else ceres::Solve.
+SolveSummary SolveRound(const ceres::Solver::Options& options, int pcg_above,
+                        double pcg_function_tolerance, ceres::Problem* problem);
+
+}  // namespace archgeo

@@ -1,0 +1,119 @@
+#include "core/normal_equations.h"
+
+#include <algorithm>
+#include <unordered_map>
+
+namespace archgeo {
+
+NormalPattern ReadNormalPattern(ceres::Problem& problem) {
+  NormalPattern s;
+  std::unordered_map<const double*, int> index;
+  std::vector<ceres::ResidualBlockId> ids;
+  problem.GetResidualBlocks(&ids);
+  std::vector<double*> read;
+  for (ceres::ResidualBlockId id : ids) {
+    problem.GetParameterBlocksForResidualBlock(id, &read);
+    PatternResidual r;
+    r.cost = problem.GetCostFunctionForResidualBlock(id);
+    r.loss = problem.GetLossFunctionForResidualBlock(id);
+    r.rows = r.cost->num_residuals();
+    r.first = int(s.values.size());
+    for (double* b : read) {
+      s.values.push_back(b);
+      auto [it, added] = index.emplace(b, -1);  // -1: constant
+      if (added && !problem.IsParameterBlockConstant(b)) {
+        it->second = int(s.blocks.size());
+        PatternBlock block;
+        block.values = b;
+        block.ambient = problem.ParameterBlockSize(b);
+        block.tangent = problem.ParameterBlockTangentSize(b);
+        block.manifold = problem.GetManifold(b);
+        block.offset = s.tangent;
+        s.tangent += block.tangent;
+        s.blocks.push_back(std::move(block));
+      }
+      s.block.push_back(it->second);
+    }
+    r.end = int(s.values.size());
+    s.residuals.push_back(r);
+  }
+  // Slots: the diagonal, then block row by block row its upper pairs (so a
+  // row's slots lie together for the product).
+  const int n = int(s.blocks.size());
+  s.diagonal.resize(n);
+  for (int b = 0; b < n; ++b) {
+    s.diagonal[b] = s.slots;
+    s.slots += s.blocks[b].tangent * s.blocks[b].tangent;
+  }
+  s.diagonal_slots = s.slots;
+  // Free pairs per residual (the order Linearise walks them), and which
+  // residuals read each block.
+  std::vector<int> incident_start(n + 1, 0);
+  int pair_count = 0;
+  for (PatternResidual& r : s.residuals) {
+    r.pairs = pair_count;
+    for (int a = r.first; a < r.end; ++a) {
+      if (s.block[a] >= 0) ++incident_start[s.block[a] + 1];
+      for (int b = a + 1; b < r.end; ++b) {
+        pair_count += s.block[a] >= 0 && s.block[b] >= 0 && s.block[a] != s.block[b];
+      }
+    }
+  }
+  for (int b = 0; b < n; ++b) incident_start[b + 1] += incident_start[b];
+  std::vector<int> incident(incident_start[n]);
+  std::vector<int> fill(incident_start.begin(), incident_start.end() - 1);
+  for (size_t r = 0; r < s.residuals.size(); ++r) {
+    for (int a = s.residuals[r].first; a < s.residuals[r].end; ++a) {
+      if (s.block[a] >= 0) incident[fill[s.block[a]]++] = int(r);
+    }
+  }
+  s.pair_slot.assign(pair_count, -1);
+  s.row_start.assign(1, 0);
+  std::vector<int> mark(n, -1), position(n, 0);
+  for (int i = 0; i < n; ++i) {
+    for (int k = incident_start[i]; k < incident_start[i + 1]; ++k) {
+      const PatternResidual& r = s.residuals[incident[k]];
+      int pair = r.pairs;
+      for (int a = r.first; a < r.end; ++a) {
+        for (int b = a + 1; b < r.end; ++b) {
+          const int p = s.block[a], q = s.block[b];
+          if (p < 0 || q < 0 || p == q) continue;
+          const int at = pair++;
+          if (std::min(p, q) != i) continue;
+          const int j = std::max(p, q);
+          if (mark[j] != i) {
+            mark[j] = i;
+            position[j] = s.slots;
+            s.column.push_back(j);
+            s.slot.push_back(s.slots);
+            s.slots += s.blocks[i].tangent * s.blocks[j].tangent;
+          }
+          s.pair_slot[at] = position[j];
+        }
+      }
+    }
+    s.row_start.push_back(int(s.column.size()));
+  }
+  std::vector<std::pair<int, int>> pairs;  // (row, column), row < column
+  std::vector<int> pair_offset;
+  for (int i = 0; i < n; ++i) {
+    for (int k = s.row_start[i]; k < s.row_start[i + 1]; ++k) {
+      pairs.push_back({i, s.column[k]});
+      pair_offset.push_back(s.slot[k]);
+    }
+  }
+  s.lower_start.assign(n + 1, 0);
+  for (const auto& [row, col] : pairs) ++s.lower_start[col + 1];
+  for (int b = 0; b < n; ++b) s.lower_start[b + 1] += s.lower_start[b];
+  s.lower_column.resize(pairs.size());
+  s.lower_slot.resize(pairs.size());
+  fill.assign(s.lower_start.begin(), s.lower_start.end() - 1);
+  for (size_t p = 0; p < pairs.size(); ++p) {
+    const int at = fill[pairs[p].second]++;
+    s.lower_column[at] = pairs[p].first;
+    s.lower_slot[at] = pair_offset[p];
+  }
+  return s;
+}
+
+}  // namespace archgeo

@@ -1,0 +1,49 @@
+// archgeo — the block pattern of a Ceres problem's normal equations J^T J,
+// as core/lean_solve.h assembles them: the free parameter blocks (with their
+// manifolds), the residual blocks (cost, loss, the blocks they read), and one
+// dense tangent × tangent slot per diagonal block and per pair of free blocks
+// that a residual reads together (upper triangle; a row's slots lie together).
+#pragma once
+
+#include <vector>
+
+#include <ceres/problem.h>
+
+namespace archgeo {
+
+struct PatternBlock {
+  double* values = nullptr;
+  int ambient = 0, tangent = 0;
+  int offset = 0;  // into the tangent vector
+  const ceres::Manifold* manifold = nullptr;  // nullptr: Euclidean
+  std::vector<double> plus_jacobian;           // ambient × tangent, row-major
+};
+
+struct PatternResidual {
+  const ceres::CostFunction* cost = nullptr;
+  const ceres::LossFunction* loss = nullptr;
+  int rows = 0;
+  int first = 0, end = 0;  // its parameter blocks in NormalPattern::values / ::block
+  int pairs = 0;           // its slots in NormalPattern::pair_slot (free pairs a < b)
+};
+
+// The problem as the PCG solver reads it, and the block pattern of J^T J.
+struct NormalPattern {
+  std::vector<PatternBlock> blocks;      // free blocks
+  std::vector<PatternResidual> residuals;
+  std::vector<double*> values;    // per residual, every parameter block
+  std::vector<int> block;         // per residual parameter: free block or -1
+  std::vector<int> pair_slot;     // per residual, per free pair (a < b): slot offset
+  std::vector<int> diagonal;      // per block: its diagonal slot offset
+  // Off-diagonal slots per block row, for the product: the upper ones
+  // (stored as row × column) and the lower ones (stored transposed).
+  std::vector<int> row_start, column, slot;
+  std::vector<int> lower_start, lower_column, lower_slot;
+  int tangent = 0, slots = 0;
+  int diagonal_slots = 0;  // the diagonal slots come first: [0, diagonal_slots)
+};
+
+// Reads `problem` (its constant blocks stay out of the pattern).
+NormalPattern ReadNormalPattern(ceres::Problem& problem);
+
+}  // namespace archgeo

@@ -1,0 +1,227 @@
+// LeanSolve (core/lean_solve.h): Levenberg–Marquardt with block-Jacobi PCG on
+// the assembled normal equations reaches Ceres' optimum on a linear and on a
+// non-linear problem with a manifold and a robust loss, keeps constant blocks,
+// obeys callbacks, and planar_quads solved with it meets its tolerance with
+// the displacement of Ceres' direct solve.
+#include <gtest/gtest.h>
+
+#include <ceres/ceres.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <vector>
+
+#include "core/lean_solve.h"
+#include "mesh/generators.h"
+#include "mesh/metrics.h"
+#include "mesh/similarity.h"
+#include "problems/solve.h"
+
+namespace archgeo {
+namespace {
+
+// r = w (x − y), or w (x − target).
+struct Difference {
+  template <typename T>
+  bool operator()(const T* x, const T* y, T* r) const {
+    r[0] = T(w) * (x[0] - y[0]);
+    return true;
+  }
+  double w;
+};
+struct Data {
+  template <typename T>
+  bool operator()(const T* x, T* r) const {
+    r[0] = T(w) * (x[0] - target);
+    return true;
+  }
+  double w, target;
+};
+
+// A membrane on an n × n grid: data terms pull each value to a rough target,
+// differences tie neighbours (a 2-D graph like a mesh's normal equations).
+struct Membrane {
+  int n;
+  std::vector<double> x;
+  ceres::Problem problem;
+  explicit Membrane(int size) : n(size), x(size * size, 0.0) {
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; j < n; ++j) {
+        const double target = std::sin(0.7 * i) * std::cos(1.3 * j) + ((i * 7 + j * 3) % 5) * 0.1;
+        problem.AddResidualBlock(new ceres::AutoDiffCostFunction<Data, 1, 1>(new Data{0.5, target}),
+                                 nullptr, &x[i * n + j]);
+        if (i + 1 < n) {
+          problem.AddResidualBlock(
+              new ceres::AutoDiffCostFunction<Difference, 1, 1, 1>(new Difference{1.0}), nullptr,
+              &x[i * n + j], &x[(i + 1) * n + j]);
+        }
+        if (j + 1 < n) {
+          problem.AddResidualBlock(
+              new ceres::AutoDiffCostFunction<Difference, 1, 1, 1>(new Difference{1.0}), nullptr,
+              &x[i * n + j], &x[i * n + j + 1]);
+        }
+      }
+    }
+  }
+};
+
+// Signed distance of point p to the plane n·x = d, with n on the unit sphere.
+struct PlaneDistance {
+  template <typename T>
+  bool operator()(const T* n, const T* d, T* r) const {
+    r[0] = n[0] * T(p[0]) + n[1] * T(p[1]) + n[2] * T(p[2]) - d[0];
+    return true;
+  }
+  double p[3];
+};
+
+// Points near the plane z = 0.3 + 0.2 x − 0.1 y, two of them far off (the
+// robust loss discounts them), fitted from a tilted start.
+struct PlaneFit {
+  double normal[3] = {0.3, -0.2, 0.93};
+  double offset = 0;
+  ceres::Problem problem;
+  PlaneFit() {
+    for (int i = 0; i < 12; ++i) {
+      for (int j = 0; j < 12; ++j) {
+        const double x = i * 0.1, y = j * 0.1;
+        double z = 0.3 + 0.2 * x - 0.1 * y + 0.01 * std::sin(3.0 * i + 5.0 * j);
+        if ((i == 3 && j == 4) || (i == 9 && j == 1)) z += 2.0;
+        auto* cost = new ceres::AutoDiffCostFunction<PlaneDistance, 1, 3, 1>(
+            new PlaneDistance{{x, y, z}});
+        problem.AddResidualBlock(
+            cost, new ceres::ScaledLoss(new ceres::CauchyLoss(0.05), 3.0, ceres::TAKE_OWNERSHIP),
+            normal, &offset);
+      }
+    }
+    const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+    for (double& c : normal) c /= length;
+    problem.SetManifold(normal, new ceres::SphereManifold<3>());
+  }
+};
+
+ceres::Solver::Options Tight() {
+  ceres::Solver::Options o;
+  o.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+  o.function_tolerance = 1e-15;
+  o.gradient_tolerance = 1e-15;
+  o.parameter_tolerance = 1e-15;
+  o.max_num_iterations = 200;
+  o.eta = 1e-10;
+  o.max_linear_solver_iterations = 2000;
+  return o;
+}
+
+TEST(LeanSolve, ReachesCeresOptimumOnALinearProblem) {
+  Membrane ceres_side(30), lean_side(30);
+  ceres::Solver::Summary reference;
+  ceres::Solve(Tight(), &ceres_side.problem, &reference);
+  const SolveSummary lean = LeanSolve(Tight(), &lean_side.problem);
+  ASSERT_TRUE(lean.usable) << lean.message;
+  EXPECT_TRUE(lean.pcg);
+  EXPECT_GT(lean.cg_iterations, 0);
+  EXPECT_LT(lean.final_cost, 0.8 * lean.initial_cost);  // 35.8 -> 27.5
+  EXPECT_NEAR(lean.final_cost, reference.final_cost, 1e-9 * reference.final_cost);
+  double worst = 0;
+  for (size_t k = 0; k < lean_side.x.size(); ++k)
+    worst = std::max(worst, std::abs(lean_side.x[k] - ceres_side.x[k]));
+  EXPECT_LT(worst, 1e-6);
+}
+
+TEST(LeanSolve, ReachesCeresOptimumWithAManifoldAndARobustLoss) {
+  PlaneFit ceres_side, lean_side;
+  ceres::Solver::Summary reference;
+  ceres::Solve(Tight(), &ceres_side.problem, &reference);
+  ASSERT_TRUE(reference.IsSolutionUsable());
+  const SolveSummary lean = LeanSolve(Tight(), &lean_side.problem);
+  ASSERT_TRUE(lean.usable) << lean.message;
+  EXPECT_NEAR(lean.final_cost, reference.final_cost, 1e-8 * reference.initial_cost);
+  EXPECT_NEAR(lean.initial_cost, reference.initial_cost, 1e-12 * reference.initial_cost);
+  // The normal stays on the sphere and matches Ceres' (up to sign: both start
+  // on the same side).
+  const double* n = lean_side.normal;
+  EXPECT_NEAR(n[0] * n[0] + n[1] * n[1] + n[2] * n[2], 1.0, 1e-12);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(n[k], ceres_side.normal[k], 1e-6) << k;
+  EXPECT_NEAR(lean_side.offset, ceres_side.offset, 1e-6);
+  // The robust loss kept the outliers out: the plane's slope is 0.2 / −0.1.
+  EXPECT_NEAR(-n[0] / n[2], 0.2, 0.01);
+  EXPECT_NEAR(-n[1] / n[2], -0.1, 0.01);
+}
+
+TEST(LeanSolve, ConstantBlocksStayConstant) {
+  Membrane m(20);
+  m.x[0] = 5;
+  m.problem.SetParameterBlockConstant(&m.x[0]);
+  const SolveSummary s = LeanSolve(Tight(), &m.problem);
+  ASSERT_TRUE(s.usable);
+  EXPECT_EQ(m.x[0], 5);
+  EXPECT_GT(m.x[1], 0.5);  // its neighbour is pulled towards it
+}
+
+// Ends the solve after `after` iterations.
+struct StopAfter : ceres::IterationCallback {
+  int after, seen = 0;
+  explicit StopAfter(int a) : after(a) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    ++seen;
+    return s.iteration >= after ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
+  }
+};
+
+TEST(LeanSolve, ACallbackEndsTheSolve) {
+  PlaneFit fit;
+  StopAfter stop(1);
+  ceres::Solver::Options o = Tight();
+  o.callbacks.push_back(&stop);
+  const SolveSummary s = LeanSolve(o, &fit.problem);
+  EXPECT_TRUE(s.terminated_by_callback);
+  EXPECT_EQ(s.iterations, 1);
+  EXPECT_EQ(stop.seen, 2);  // iteration 0 and 1
+}
+
+TEST(LeanSolve, SolveRoundUsesPcgOnlyAboveTheThreshold) {
+  Membrane a(10), b(10), c(10);
+  EXPECT_FALSE(SolveRound(Tight(), 0, 1e-4, &a.problem).pcg);
+  EXPECT_FALSE(SolveRound(Tight(), 100, 1e-4, &b.problem).pcg);  // 100 variables: not above
+  EXPECT_TRUE(SolveRound(Tight(), 99, 1e-4, &c.problem).pcg);
+}
+
+double MaxDisplacement(const Mesh& a, const Mesh& b) {
+  double worst = 0;
+  for (auto v : a.vertices()) {
+    worst = std::max(worst, std::sqrt(CGAL::squared_distance(a.point(v), b.point(v))));
+  }
+  return worst;
+}
+
+TEST(LeanSolve, PlanarQuadsWithPcgMatchesTheDirectSolve) {
+  Mesh input = QuadGrid(40, 40, RoofSurface, 0.05, 3);
+  ToCanonical(CanonicalFrame(input), input);
+  auto run = [&](const std::string& yaml) {
+    Mesh mesh = input;
+    const ProblemSpec spec = ParseSpec("problem: planar_quads\n" + yaml);
+    return Solve(spec, mesh, &input, {});
+  };
+  const auto direct = run("solver: {pcg_above: 0}\n");
+  const auto pcg = run("solver: {pcg_above: 1000}\n");
+  ASSERT_TRUE(direct->loop.usable);
+  ASSERT_TRUE(pcg->loop.usable);
+  EXPECT_EQ(direct->loop.pcg_rounds, 0);
+  EXPECT_EQ(pcg->loop.pcg_rounds, pcg->loop.rounds);
+  EXPECT_GT(pcg->loop.cg_iterations, pcg->loop.iterations);
+  const double tolerance = 1e-3;
+  EXPECT_TRUE(pcg->loop.tolerances.at("tolerance.pq_normalized_max"));
+  const Metrics m = ComputeMetrics(pcg->output, nullptr, nullptr);
+  EXPECT_LE(m.pq_normalized_max, tolerance);
+  const double moved_direct = MaxDisplacement(direct->output, input);
+  const double moved_pcg = MaxDisplacement(pcg->output, input);
+  std::printf("max displacement: direct %.5f, pcg %.5f (rounds %d / %d, iterations %d / %d, CG %d)\n",
+              moved_direct, moved_pcg, direct->loop.rounds, pcg->loop.rounds,
+              direct->loop.iterations, pcg->loop.iterations, pcg->loop.cg_iterations);
+  EXPECT_LE(moved_pcg, 1.1 * moved_direct);
+  EXPECT_GE(moved_pcg, 0.9 * moved_direct);
+}
+
+}  // namespace
+}  // namespace archgeo
