@@ -84,7 +84,6 @@ class Lean {
       }
       scratch = std::max(scratch, need);
     }
-    residual_.resize(rows);
     work_.residual.resize(rows);
     work_.ambient.resize(scratch);
     work_.tangent.resize(scratch);
@@ -126,8 +125,9 @@ class Lean {
   bool Cost(double* cost) {
     double total = 0;
     for (const PatternResidual& r : s_.residuals) {
-      if (!r.cost->Evaluate(s_.values.data() + r.first, residual_.data(), nullptr)) return false;
-      const double sq = Eigen::Map<const Vector>(residual_.data(), r.rows).squaredNorm();
+      double* residual = work_.residual.data();
+      if (!r.cost->Evaluate(s_.values.data() + r.first, residual, nullptr)) return false;
+      const double sq = Eigen::Map<const Vector>(residual, r.rows).squaredNorm();
       total += Loss(r, sq);
     }
     *cost = 0.5 * total;
@@ -333,7 +333,6 @@ class Lean {
   }
 
   NormalPattern s_;
-  std::vector<double> residual_;
   Work work_;
 };
 
