@@ -46,6 +46,22 @@ inline void AddProduct(const double* M, int rows, int cols, const double* x, dou
   }
 }
 
+// C += Aᵀ B for row-major A (rows × a) and B (rows × b), C a × b: the tiny
+// products of one residual's Jacobians (Eigen's dynamic-size product costs
+// more in dispatch than in arithmetic here).
+inline void AddTransposeProduct(const double* A, const double* B, int rows, int a, int b,
+                                double* C) {
+  for (int r = 0; r < rows; ++r) {
+    const double* Ar = A + r * a;
+    const double* Br = B + r * b;
+    for (int i = 0; i < a; ++i) {
+      const double v = Ar[i];
+      double* Ci = C + i * b;
+      for (int j = 0; j < b; ++j) Ci[j] += v * Br[j];
+    }
+  }
+}
+
 // Ceres' loss corrector (Triggs et al. 1999, "Bundle adjustment — a modern
 // synthesis", §4.3): scales r and J so that ½‖r̃‖² matches ρ to second order.
 struct Corrector {
@@ -154,25 +170,23 @@ class Lean {
     return std::isfinite(*cost) && gradient->allFinite();
   }
 
-  // y = (H + diag(damping)) x, block row by block row (in parallel).
+  // y = (H + diag(damping)) x. One pass over the stored upper triangle, in
+  // slot order: each off-diagonal slot H_ij adds H_ij x_j to y_i and
+  // H_ijᵀ x_i to y_j, so H streams from memory once (the product is bound
+  // by that traffic, not by arithmetic).
   void Multiply(const Vector& damping, const Vector& x, Vector* y) const {
     y->noalias() = damping.cwiseProduct(x);
     const int n = int(s_.blocks.size());
-#pragma omp parallel for schedule(static, 256)
+    const double* H = work_.hessian.data();
     for (int i = 0; i < n; ++i) {
       const PatternBlock& bi = s_.blocks[i];
       double* yi = y->data() + bi.offset;
-      AddProduct<false>(work_.hessian.data() + s_.diagonal[i], bi.tangent, bi.tangent,
-                        x.data() + bi.offset, yi);
+      const double* xi = x.data() + bi.offset;
+      AddProduct<false>(H + s_.diagonal[i], bi.tangent, bi.tangent, xi, yi);
       for (int k = s_.row_start[i]; k < s_.row_start[i + 1]; ++k) {
         const PatternBlock& bj = s_.blocks[s_.column[k]];
-        AddProduct<false>(work_.hessian.data() + s_.slot[k], bi.tangent, bj.tangent,
-                          x.data() + bj.offset, yi);
-      }
-      for (int k = s_.lower_start[i]; k < s_.lower_start[i + 1]; ++k) {
-        const PatternBlock& bj = s_.blocks[s_.lower_column[k]];
-        AddProduct<true>(work_.hessian.data() + s_.lower_slot[k], bj.tangent, bi.tangent,
-                         x.data() + bj.offset, yi);
+        AddProduct<false>(H + s_.slot[k], bi.tangent, bj.tangent, x.data() + bj.offset, yi);
+        AddProduct<true>(H + s_.slot[k], bi.tangent, bj.tangent, xi, y->data() + bj.offset);
       }
     }
   }
@@ -303,18 +317,20 @@ class Lean {
       const int i = s_.block[r.first + a];
       if (i < 0) continue;
       const PatternBlock& bi = s_.blocks[i];
-      MapMatrix Ti(tangents[a], r.rows, bi.tangent);
-      k->gradient.segment(bi.offset, bi.tangent).noalias() += Ti.transpose() * res;
-      MapMatrix(H + s_.diagonal[i], bi.tangent, bi.tangent).noalias() += Ti.transpose() * Ti;
+      AddTransposeProduct(tangents[a], res.data(), r.rows, bi.tangent, 1,
+                          k->gradient.data() + bi.offset);
+      AddTransposeProduct(tangents[a], tangents[a], r.rows, bi.tangent, bi.tangent,
+                          H + s_.diagonal[i]);
       for (int c = a + 1; c < m; ++c) {
         const int j = s_.block[r.first + c];
         if (j < 0 || j == i) continue;
         const PatternBlock& bj = s_.blocks[j];
-        MapMatrix Tj(tangents[c], r.rows, bj.tangent);
         if (i < j) {
-          MapMatrix(H + s_.pair_slot[pair], bi.tangent, bj.tangent).noalias() += Ti.transpose() * Tj;
+          AddTransposeProduct(tangents[a], tangents[c], r.rows, bi.tangent, bj.tangent,
+                              H + s_.pair_slot[pair]);
         } else {
-          MapMatrix(H + s_.pair_slot[pair], bj.tangent, bi.tangent).noalias() += Tj.transpose() * Ti;
+          AddTransposeProduct(tangents[c], tangents[a], r.rows, bj.tangent, bi.tangent,
+                              H + s_.pair_slot[pair]);
         }
         ++pair;
       }

@@ -94,25 +94,6 @@ NormalPattern ReadNormalPattern(ceres::Problem& problem) {
     }
     s.row_start.push_back(int(s.column.size()));
   }
-  std::vector<std::pair<int, int>> pairs;  // (row, column), row < column
-  std::vector<int> pair_offset;
-  for (int i = 0; i < n; ++i) {
-    for (int k = s.row_start[i]; k < s.row_start[i + 1]; ++k) {
-      pairs.push_back({i, s.column[k]});
-      pair_offset.push_back(s.slot[k]);
-    }
-  }
-  s.lower_start.assign(n + 1, 0);
-  for (const auto& [row, col] : pairs) ++s.lower_start[col + 1];
-  for (int b = 0; b < n; ++b) s.lower_start[b + 1] += s.lower_start[b];
-  s.lower_column.resize(pairs.size());
-  s.lower_slot.resize(pairs.size());
-  fill.assign(s.lower_start.begin(), s.lower_start.end() - 1);
-  for (size_t p = 0; p < pairs.size(); ++p) {
-    const int at = fill[pairs[p].second]++;
-    s.lower_column[at] = pairs[p].first;
-    s.lower_slot[at] = pair_offset[p];
-  }
   return s;
 }
 

@@ -35,10 +35,9 @@ struct NormalPattern {
   std::vector<int> block;         // per residual parameter: free block or -1
   std::vector<int> pair_slot;     // per residual, per free pair (a < b): slot offset
   std::vector<int> diagonal;      // per block: its diagonal slot offset
-  // Off-diagonal slots per block row, for the product: the upper ones
-  // (stored as row × column) and the lower ones (stored transposed).
+  // The off-diagonal slots of each block row i: H_ij for j > i, stored
+  // row × column, in slot order.
   std::vector<int> row_start, column, slot;
-  std::vector<int> lower_start, lower_column, lower_slot;
   int tangent = 0, slots = 0;
   int diagonal_slots = 0;  // the diagonal slots come first: [0, diagonal_slots)
 };
