@@ -224,7 +224,8 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
           solver.update_state_every_iteration = true;
         }
         SolveSummary summary;
-        if (problem->NumResiduals() > 0) {
+        const int residuals = problem->NumResiduals();  // O(residual blocks) in Ceres
+        if (residuals > 0) {
           summary = SolveRound(solver, int(s.Integer("solver.pcg_above")),
                                s.Number("solver.pcg_function_tolerance"), problem.get());
         }
@@ -232,7 +233,7 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
 
         result.rounds = round_number;
         result.variables = problem->NumParameters();
-        result.residuals = problem->NumResiduals();
+        result.residuals = residuals;
         if (summary.pcg) {
           ++result.pcg_rounds;
           result.cg_iterations += summary.cg_iterations;

@@ -7,9 +7,12 @@ namespace archgeo {
 
 NormalPattern ReadNormalPattern(ceres::Problem& problem) {
   NormalPattern s;
-  std::unordered_map<const double*, int> index;
   std::vector<ceres::ResidualBlockId> ids;
   problem.GetResidualBlocks(&ids);
+  std::unordered_map<const double*, int> index(2 * size_t(problem.NumParameterBlocks()));
+  s.residuals.reserve(ids.size());
+  s.values.reserve(4 * ids.size());
+  s.block.reserve(4 * ids.size());
   std::vector<double*> read;
   for (ceres::ResidualBlockId id : ids) {
     problem.GetParameterBlocksForResidualBlock(id, &read);

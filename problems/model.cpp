@@ -90,6 +90,7 @@ class MeshModel::View : public TermContext {
     blocks_ = blocks;
     loss_ = loss;
     loss_scale_ = loss_scale;
+    shared_loss_ = nullptr;
   }
 
   int NumVertices() const override { return int(model_.store_.mesh().number_of_vertices()); }
@@ -152,10 +153,15 @@ class MeshModel::View : public TermContext {
     const char* zeroed = std::getenv("ARCHGEO_ZERO_TERM");
     if (zeroed && name_ == zeroed) cost = new ZeroedCost(cost);
 #endif
+    // One weighted loss per run of residuals of equal weight (the problem
+    // owns it once, however many residuals share it).
     const double w = weight >= 0 ? weight : this->weight;
-    ceres::LossFunction* loss =
-        new ceres::ScaledLoss(Robust(loss_, loss_scale_), w, ceres::TAKE_OWNERSHIP);
-    (*blocks_)[part ? part : name_].push_back(problem_->AddResidualBlock(cost, loss, blocks));
+    if (!shared_loss_ || w != shared_weight_) {
+      shared_loss_ = new ceres::ScaledLoss(Robust(loss_, loss_scale_), w, ceres::TAKE_OWNERSHIP);
+      shared_weight_ = w;
+    }
+    (*blocks_)[part ? part : name_].push_back(
+        problem_->AddResidualBlock(cost, shared_loss_, blocks));
   }
 
   void SetUnit(double* block) override { SetManifold(block, new ceres::SphereManifold<3>()); }
@@ -185,6 +191,8 @@ class MeshModel::View : public TermContext {
   TermBlocks* blocks_ = nullptr;
   std::string loss_ = "none";
   double loss_scale_ = 1;
+  ceres::LossFunction* shared_loss_ = nullptr;  // owned by problem_
+  double shared_weight_ = 0;
 };
 
 std::vector<const TermSpec*> TermsOf(const ProblemDecl& declaration) {
