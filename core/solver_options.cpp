@@ -227,6 +227,11 @@ void ConfigureThreading() {
   }
 }
 
+FullTeams::FullTeams() : previous_(omp_get_dynamic()) {
+  if (!std::getenv("OMP_DYNAMIC")) omp_set_dynamic(0);
+}
+FullTeams::~FullTeams() { omp_set_dynamic(previous_); }
+
 std::string BlasLibrary() {
   // Looked up at run time: the BLAS is a dependency of CHOLMOD, not of ours.
   void* symbol = dlsym(RTLD_DEFAULT, "dgemm_");

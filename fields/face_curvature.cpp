@@ -10,6 +10,7 @@
 #include <Eigen/QR>
 #include <glog/logging.h>
 
+#include "core/solver_options.h"
 #include "fields/conjugate.h"
 
 namespace archgeo {
@@ -114,6 +115,7 @@ std::vector<Eigen::Matrix3d> VertexShapeTensors(const Mesh& mesh, const JetOptio
   std::vector<Eigen::Matrix3d> tensors(mesh.number_of_vertices(), Eigen::Matrix3d::Zero());
   const int count = static_cast<int>(mesh.number_of_vertices());
   // Every vertex's fit is independent (each thread has its own marks).
+  const FullTeams teams;
 #pragma omp parallel
   {
     std::vector<int> mark(mesh.number_of_vertices(), -1);
