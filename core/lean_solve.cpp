@@ -90,7 +90,8 @@ struct Work {
 
 class Lean {
  public:
-  explicit Lean(ceres::Problem& problem) : s_(ReadNormalPattern(problem)) {
+  Lean(ceres::Problem& problem, NormalPattern& pattern) : s_(pattern) {
+    ReadNormalPattern(problem, &s_);
     size_t rows = 0, scratch = 0, parameters = 0;
     for (const PatternResidual& r : s_.residuals) {
       rows = std::max<size_t>(rows, r.rows);
@@ -367,18 +368,20 @@ class Lean {
     return Eigen::Map<const RowMatrix>(work_.hessian.data() + offset, rows, cols);
   }
 
-  NormalPattern s_;
+  NormalPattern& s_;
   Work work_, second_;
 };
 
 }  // namespace
 
-SolveSummary LeanSolve(const ceres::Solver::Options& options, ceres::Problem* problem) {
+SolveSummary LeanSolve(const ceres::Solver::Options& options, ceres::Problem* problem,
+                       NormalPattern* pattern) {
   const FullTeams teams;  // no CHOLMOD here
   const auto start = Clock::now();
   SolveSummary out;
   out.pcg = true;
-  Lean lean(*problem);
+  NormalPattern own;
+  Lean lean(*problem, pattern ? *pattern : own);
   double cost = 0;
   Vector gradient;
   auto t = Clock::now();
@@ -476,7 +479,8 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, ceres::Problem* pr
 }
 
 SolveSummary SolveRound(const ceres::Solver::Options& options, int pcg_above,
-                        double pcg_function_tolerance, ceres::Problem* problem) {
+                        double pcg_function_tolerance, ceres::Problem* problem,
+                        NormalPattern* pattern) {
   int free = 0;
   if (pcg_above > 0) {
     std::vector<double*> blocks;
@@ -488,7 +492,7 @@ SolveSummary SolveRound(const ceres::Solver::Options& options, int pcg_above,
   if (pcg_above > 0 && free > pcg_above) {
     ceres::Solver::Options lean = options;
     lean.function_tolerance = std::max(options.function_tolerance, pcg_function_tolerance);
-    return LeanSolve(lean, problem);
+    return LeanSolve(lean, problem, pattern);
   }
   ceres::Solver::Summary summary;
   ceres::Solve(options, problem, &summary);

@@ -12,7 +12,8 @@
 // slower than its direct solve (32k quads: 93 s against 40 s). So this solver:
 //   - reads the problem through Ceres' public API (cost functions, losses,
 //     manifolds): the energies stay the autodiff functors of energies/;
-//   - fixes the block pattern of J^T J once, and each iteration accumulates
+//   - fixes the block pattern of J^T J once (and keeps it for the next
+//     round while the structure stays), and each iteration accumulates
 //     every residual block's J_a^T J_b into its slot (no J is stored);
 //   - solves (J^T J + μ diag(J^T J)) δ = −J^T r by block-Jacobi PCG to a
 //     relative residual `eta` (Ceres' option), at most
@@ -30,6 +31,8 @@
 
 namespace archgeo {
 
+struct NormalPattern;
+
 struct SolveSummary {
   bool pcg = false;    // solved by LeanSolve (else by ceres::Solve)
   int iterations = 0;  // accepted and rejected steps, as Ceres counts them
@@ -46,12 +49,16 @@ struct SolveSummary {
 // max_solver_time_in_seconds, function/gradient/parameter_tolerance,
 // min_relative_decrease, initial/max/min_trust_region_radius,
 // min/max_lm_diagonal, eta, max_linear_solver_iterations, callbacks.
-SolveSummary LeanSolve(const ceres::Solver::Options& options, ceres::Problem* problem);
+// `pattern`, if given, keeps the pattern of J^T J from one call to the next
+// and is reused while the problem's structure stays (core/normal_equations.h).
+SolveSummary LeanSolve(const ceres::Solver::Options& options, ceres::Problem* problem,
+                       NormalPattern* pattern = nullptr);
 
 // One round's solve: LeanSolve with function_tolerance raised to at least
 // `pcg_function_tolerance` when pcg_above > 0 and the problem has more than
 // pcg_above free variables (solver.pcg_above), else ceres::Solve.
 SolveSummary SolveRound(const ceres::Solver::Options& options, int pcg_above,
-                        double pcg_function_tolerance, ceres::Problem* problem);
+                        double pcg_function_tolerance, ceres::Problem* problem,
+                        NormalPattern* pattern = nullptr);
 
 }  // namespace archgeo

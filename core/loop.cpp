@@ -9,6 +9,7 @@
 #include <cstdio>
 
 #include "core/lean_solve.h"
+#include "core/normal_equations.h"
 #include "core/solver_options.h"
 
 namespace archgeo {
@@ -117,6 +118,7 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
   int last_valid_round = 0;
   std::unique_ptr<ceres::Problem> problem;
   TermBlocks blocks;
+  NormalPattern pattern;  // PCG rounds' pattern of J^T J, reused while it fits
   int round_number = 0;
   for (const Stage& stage : stages) {
     std::vector<Tolerance> active;
@@ -227,7 +229,8 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
         const int residuals = problem->NumResiduals();  // O(residual blocks) in Ceres
         if (residuals > 0) {
           summary = SolveRound(solver, int(s.Integer("solver.pcg_above")),
-                               s.Number("solver.pcg_function_tolerance"), problem.get());
+                               s.Number("solver.pcg_function_tolerance"), problem.get(),
+                               &pattern);
         }
         model.StateChanged();
 

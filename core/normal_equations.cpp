@@ -5,10 +5,51 @@
 
 namespace archgeo {
 
-NormalPattern ReadNormalPattern(ceres::Problem& problem) {
-  NormalPattern s;
+namespace {
+
+// Renews `s`'s costs, losses and manifolds from `problem` if the structure
+// is `s`'s; false (and `s` partly renewed) if not.
+bool Renew(ceres::Problem& problem, const std::vector<ceres::ResidualBlockId>& ids,
+           NormalPattern& s) {
+  if (ids.size() != s.residuals.size() ||
+      size_t(problem.NumParameterBlocks()) != s.blocks.size() + s.constant.size()) {
+    return false;
+  }
+  std::vector<double*> read;
+  for (size_t k = 0; k < ids.size(); ++k) {
+    PatternResidual& r = s.residuals[k];
+    problem.GetParameterBlocksForResidualBlock(ids[k], &read);
+    if (int(read.size()) != r.end - r.first ||
+        !std::equal(read.begin(), read.end(), s.values.begin() + r.first)) {
+      return false;
+    }
+    r.cost = problem.GetCostFunctionForResidualBlock(ids[k]);
+    r.loss = problem.GetLossFunctionForResidualBlock(ids[k]);
+    r.rows = r.cost->num_residuals();
+  }
+  // Every block below is read by a residual above, so the problem has it.
+  for (PatternBlock& b : s.blocks) {
+    if (problem.IsParameterBlockConstant(b.values) ||
+        problem.ParameterBlockSize(b.values) != b.ambient ||
+        problem.ParameterBlockTangentSize(b.values) != b.tangent) {
+      return false;
+    }
+    b.manifold = problem.GetManifold(b.values);
+  }
+  for (const double* c : s.constant) {
+    if (!problem.IsParameterBlockConstant(const_cast<double*>(c))) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool ReadNormalPattern(ceres::Problem& problem, NormalPattern* pattern) {
   std::vector<ceres::ResidualBlockId> ids;
   problem.GetResidualBlocks(&ids);
+  if (!pattern->residuals.empty() && Renew(problem, ids, *pattern)) return true;
+  *pattern = NormalPattern();
+  NormalPattern& s = *pattern;
   std::unordered_map<const double*, int> index(2 * size_t(problem.NumParameterBlocks()));
   s.residuals.reserve(ids.size());
   s.values.reserve(4 * ids.size());
@@ -24,6 +65,7 @@ NormalPattern ReadNormalPattern(ceres::Problem& problem) {
     for (double* b : read) {
       s.values.push_back(b);
       auto [it, added] = index.emplace(b, -1);  // -1: constant
+      if (added && problem.IsParameterBlockConstant(b)) s.constant.push_back(b);
       if (added && !problem.IsParameterBlockConstant(b)) {
         it->second = int(s.blocks.size());
         PatternBlock block;
@@ -97,7 +139,7 @@ NormalPattern ReadNormalPattern(ceres::Problem& problem) {
     }
     s.row_start.push_back(int(s.column.size()));
   }
-  return s;
+  return false;
 }
 
 }  // namespace archgeo

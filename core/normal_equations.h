@@ -40,9 +40,15 @@ struct NormalPattern {
   std::vector<int> row_start, column, slot;
   int tangent = 0, slots = 0;
   int diagonal_slots = 0;  // the diagonal slots come first: [0, diagonal_slots)
+  std::vector<const double*> constant;  // the constant blocks the residuals read
 };
 
-// Reads `problem` (its constant blocks stay out of the pattern).
-NormalPattern ReadNormalPattern(ceres::Problem& problem);
+// Reads `problem` into `pattern` (its constant blocks stay out of the
+// pattern). When `pattern` holds the pattern of a problem of the same
+// structure — the same residual blocks in the same order, reading the same
+// parameter blocks, free and constant alike, of the same sizes — only its
+// cost functions, losses and manifolds are read anew; the loop rebuilds its
+// problem every round with that structure. Returns whether it was reused.
+bool ReadNormalPattern(ceres::Problem& problem, NormalPattern* pattern);
 
 }  // namespace archgeo

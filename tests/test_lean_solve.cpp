@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/lean_solve.h"
+#include "core/normal_equations.h"
 #include "mesh/generators.h"
 #include "mesh/metrics.h"
 #include "mesh/similarity.h"
@@ -45,7 +46,10 @@ struct Membrane {
   int n;
   std::vector<double> x;
   ceres::Problem problem;
-  explicit Membrane(int size) : n(size), x(size * size, 0.0) {
+  explicit Membrane(int size) : n(size), x(size * size, 0.0) { AddTo(problem); }
+  // The membrane's residual blocks over `x`, into `p` (in the same order).
+  void AddTo(ceres::Problem& p) {
+    auto& problem = p;
     for (int i = 0; i < n; ++i) {
       for (int j = 0; j < n; ++j) {
         const double target = std::sin(0.7 * i) * std::cos(1.3 * j) + ((i * 7 + j * 3) % 5) * 0.1;
@@ -178,6 +182,36 @@ TEST(LeanSolve, ACallbackEndsTheSolve) {
   EXPECT_TRUE(s.terminated_by_callback);
   EXPECT_EQ(s.iterations, 1);
   EXPECT_EQ(stop.seen, 2);  // iteration 0 and 1
+}
+
+// The loop rebuilds its problem every round: the pattern of J^T J is kept
+// while the structure stays, with the new problem's costs, and the solve
+// from it is the solve from a fresh pattern.
+TEST(LeanSolve, ThePatternIsReusedWhileTheStructureStays) {
+  Membrane fresh(12), kept(12);
+  NormalPattern pattern;
+  EXPECT_FALSE(ReadNormalPattern(kept.problem, &pattern));
+  const NormalPattern first = pattern;
+  ceres::Problem again;
+  kept.AddTo(again);
+  EXPECT_TRUE(ReadNormalPattern(again, &pattern));
+  EXPECT_EQ(pattern.slots, first.slots);
+  EXPECT_EQ(pattern.pair_slot, first.pair_slot);
+  std::vector<ceres::ResidualBlockId> ids;
+  again.GetResidualBlocks(&ids);
+  EXPECT_EQ(pattern.residuals.back().cost, again.GetCostFunctionForResidualBlock(ids.back()));
+  EXPECT_NE(pattern.residuals.back().cost, first.residuals.back().cost);
+
+  ASSERT_TRUE(LeanSolve(Tight(), &again, &pattern).usable);
+  ASSERT_TRUE(LeanSolve(Tight(), &fresh.problem).usable);
+  EXPECT_EQ(kept.x, fresh.x);
+
+  ceres::Problem changed;  // one block held constant: another structure
+  kept.AddTo(changed);
+  changed.SetParameterBlockConstant(&kept.x[5]);
+  EXPECT_FALSE(ReadNormalPattern(changed, &pattern));
+  EXPECT_EQ(pattern.blocks.size() + 1, first.blocks.size());
+  EXPECT_EQ(pattern.constant.size(), 1u);
 }
 
 TEST(LeanSolve, SolveRoundUsesPcgOnlyAboveTheThreshold) {
