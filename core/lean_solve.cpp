@@ -8,6 +8,8 @@
 #include <cmath>
 #include <vector>
 
+#include <omp.h>
+
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <ceres/cost_function.h>
@@ -63,6 +65,10 @@ inline void AddTransposeProduct(const double* A, const double* B, int rows, int 
   }
 }
 
+// Threads for the two fixed halves of the linearisation and the product
+// (omp_set_num_threads(1) runs both halves on one).
+int HalfThreads() { return std::min(2, omp_get_max_threads()); }
+
 // Ceres' loss corrector (Triggs et al. 1999, "Bundle adjustment — a modern
 // synthesis", §4.3): scales r and J so that ½‖r̃‖² matches ρ to second order.
 struct Corrector {
@@ -110,6 +116,11 @@ class Lean {
       w->tangents.resize(parameters);
       w->hessian.resize(s_.slots);
     }
+    // The product's halves: the first block row past half the off-diagonal slots.
+    const int n = int(s_.blocks.size());
+    split_ = int(std::lower_bound(s_.row_start.begin(), s_.row_start.end(), s_.row_start[n] / 2) -
+                 s_.row_start.begin());
+    split_ = std::min(split_, n);
   }
 
   // The free blocks' values, concatenated (to undo a rejected step).
@@ -166,7 +177,7 @@ class Lean {
     // two threads where there are, and the same sums on one.
     const size_t half = s_.residuals.size() / 2;
     bool good[2] = {true, true};
-#pragma omp parallel for num_threads(2) schedule(static, 1)
+#pragma omp parallel for num_threads(HalfThreads()) schedule(static, 1)
     for (int t = 0; t < 2; ++t) {
       Work& w = t == 0 ? work_ : second_;
       std::fill(w.hessian.begin(), w.hessian.end(), 0.0);
@@ -193,22 +204,35 @@ class Lean {
   // y = (H + diag(damping)) x. One pass over the stored upper triangle, in
   // slot order: each off-diagonal slot H_ij adds H_ij x_j to y_i and
   // H_ijᵀ x_i to y_j, so H streams from memory once (the product is bound
-  // by that traffic, not by arithmetic).
+  // by that traffic, not by arithmetic). Two fixed halves of the block rows
+  // (by slots), each into its own y, then summed: two threads where there
+  // are, and the same sums on one.
   void Multiply(const Vector& damping, const Vector& x, Vector* y) const {
-    y->noalias() = damping.cwiseProduct(x);
     const int n = int(s_.blocks.size());
     const double* H = work_.hessian.data();
-    for (int i = 0; i < n; ++i) {
-      const PatternBlock& bi = s_.blocks[i];
-      double* yi = y->data() + bi.offset;
-      const double* xi = x.data() + bi.offset;
-      AddProduct<false>(H + s_.diagonal[i], bi.tangent, bi.tangent, xi, yi);
-      for (int k = s_.row_start[i]; k < s_.row_start[i + 1]; ++k) {
-        const PatternBlock& bj = s_.blocks[s_.column[k]];
-        AddProduct<false>(H + s_.slot[k], bi.tangent, bj.tangent, x.data() + bj.offset, yi);
-        AddProduct<true>(H + s_.slot[k], bi.tangent, bj.tangent, xi, y->data() + bj.offset);
+    spare_.resize(s_.tangent);
+#pragma omp parallel for num_threads(HalfThreads()) schedule(static, 1)
+    for (int t = 0; t < 2; ++t) {
+      double* out = t == 0 ? y->data() : spare_.data();
+      if (t == 0) {
+        y->noalias() = damping.cwiseProduct(x);
+      } else {
+        spare_.setZero();
+      }
+      const int end = t == 0 ? split_ : n;
+      for (int i = t == 0 ? 0 : split_; i < end; ++i) {
+        const PatternBlock& bi = s_.blocks[i];
+        double* yi = out + bi.offset;
+        const double* xi = x.data() + bi.offset;
+        AddProduct<false>(H + s_.diagonal[i], bi.tangent, bi.tangent, xi, yi);
+        for (int k = s_.row_start[i]; k < s_.row_start[i + 1]; ++k) {
+          const PatternBlock& bj = s_.blocks[s_.column[k]];
+          AddProduct<false>(H + s_.slot[k], bi.tangent, bj.tangent, x.data() + bj.offset, yi);
+          AddProduct<true>(H + s_.slot[k], bi.tangent, bj.tangent, xi, out + bj.offset);
+        }
       }
     }
+    *y += spare_;
   }
 
   // The diagonal of H.
@@ -370,6 +394,8 @@ class Lean {
 
   NormalPattern& s_;
   Work work_, second_;
+  int split_ = 0;
+  mutable Vector spare_;  // the product's second half
 };
 
 }  // namespace

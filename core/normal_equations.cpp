@@ -65,8 +65,9 @@ bool ReadNormalPattern(ceres::Problem& problem, NormalPattern* pattern) {
     for (double* b : read) {
       s.values.push_back(b);
       auto [it, added] = index.emplace(b, -1);  // -1: constant
-      if (added && problem.IsParameterBlockConstant(b)) s.constant.push_back(b);
-      if (added && !problem.IsParameterBlockConstant(b)) {
+      if (added && problem.IsParameterBlockConstant(b)) {
+        s.constant.push_back(b);
+      } else if (added) {
         it->second = int(s.blocks.size());
         PatternBlock block;
         block.values = b;

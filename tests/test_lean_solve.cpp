@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <ceres/ceres.h>
+#include <omp.h>
 
 #include <cmath>
 #include <cstdio>
@@ -212,6 +213,23 @@ TEST(LeanSolve, ThePatternIsReusedWhileTheStructureStays) {
   EXPECT_FALSE(ReadNormalPattern(changed, &pattern));
   EXPECT_EQ(pattern.blocks.size() + 1, first.blocks.size());
   EXPECT_EQ(pattern.constant.size(), 1u);
+}
+
+// The linearisation and the product sum two fixed halves: one thread gives
+// the same bits as two.
+TEST(LeanSolve, OneThreadGivesTheBitsOfTwo) {
+  PlaneFit two, one;
+  Membrane two_m(15), one_m(15);
+  ASSERT_TRUE(LeanSolve(Tight(), &two.problem).usable);
+  ASSERT_TRUE(LeanSolve(Tight(), &two_m.problem).usable);
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  ASSERT_TRUE(LeanSolve(Tight(), &one.problem).usable);
+  ASSERT_TRUE(LeanSolve(Tight(), &one_m.problem).usable);
+  omp_set_num_threads(threads);
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(one.normal[k], two.normal[k]);
+  EXPECT_EQ(one.offset, two.offset);
+  EXPECT_EQ(one_m.x, two_m.x);
 }
 
 TEST(LeanSolve, SolveRoundUsesPcgOnlyAboveTheThreshold) {
