@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include <omp.h>
@@ -15,6 +16,7 @@
 #include <ceres/cost_function.h>
 #include <ceres/loss_function.h>
 #include <ceres/manifold.h>
+#include <ceres/problem.h>
 
 namespace archgeo {
 namespace {
@@ -96,8 +98,8 @@ struct Work {
 
 class Lean {
  public:
-  Lean(ceres::Problem& problem, NormalPattern& pattern) : s_(pattern) {
-    ReadNormalPattern(problem, &s_);
+  Lean(const Residuals& residuals, NormalPattern& pattern) : s_(pattern) {
+    ReadNormalPattern(residuals, &s_);
     size_t rows = 0, scratch = 0, parameters = 0;
     for (const PatternResidual& r : s_.residuals) {
       rows = std::max<size_t>(rows, r.rows);
@@ -400,14 +402,14 @@ class Lean {
 
 }  // namespace
 
-SolveSummary LeanSolve(const ceres::Solver::Options& options, ceres::Problem* problem,
+SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& residuals,
                        NormalPattern* pattern) {
   const FullTeams teams;  // no CHOLMOD here
   const auto start = Clock::now();
   SolveSummary out;
   out.pcg = true;
   NormalPattern own;
-  Lean lean(*problem, pattern ? *pattern : own);
+  Lean lean(residuals, pattern ? *pattern : own);
   double cost = 0;
   Vector gradient;
   auto t = Clock::now();
@@ -505,23 +507,16 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, ceres::Problem* pr
 }
 
 SolveSummary SolveRound(const ceres::Solver::Options& options, int pcg_above,
-                        double pcg_function_tolerance, ceres::Problem* problem,
+                        double pcg_function_tolerance, const Residuals& residuals,
                         NormalPattern* pattern) {
-  int free = 0;
-  if (pcg_above > 0) {
-    std::vector<double*> blocks;
-    problem->GetParameterBlocks(&blocks);
-    for (double* b : blocks) {
-      if (!problem->IsParameterBlockConstant(b)) free += problem->ParameterBlockTangentSize(b);
-    }
-  }
-  if (pcg_above > 0 && free > pcg_above) {
+  if (pcg_above > 0 && residuals.FreeTangentSize() > pcg_above) {
     ceres::Solver::Options lean = options;
     lean.function_tolerance = std::max(options.function_tolerance, pcg_function_tolerance);
-    return LeanSolve(lean, problem, pattern);
+    return LeanSolve(lean, residuals, pattern);
   }
+  const std::unique_ptr<ceres::Problem> problem = residuals.MakeProblem();
   ceres::Solver::Summary summary;
-  ceres::Solve(options, problem, &summary);
+  ceres::Solve(options, problem.get(), &summary);
   SolveSummary out;
   out.iterations = std::max(0, int(summary.iterations.size()) - 1);
   out.seconds = std::max(0.0, summary.total_time_in_seconds);

@@ -10,8 +10,9 @@
 // of the step's model decrease in 16–32 iterations (0.02–0.05 s), and each
 // iteration costs ~n. Ceres' own CGNR works on J rather than J^T J and was
 // slower than its direct solve (32k quads: 93 s against 40 s). So this solver:
-//   - reads the problem through Ceres' public API (cost functions, losses,
-//     manifolds): the energies stay the autodiff functors of energies/;
+//   - reads the round's residuals (core/residuals.h: Ceres cost functions,
+//     losses, manifolds) without a ceres::Problem: the energies stay the
+//     autodiff functors of energies/;
 //   - fixes the block pattern of J^T J once (and keeps it for the next
 //     round while the structure stays), and each iteration accumulates
 //     every residual block's J_a^T J_b into its slot (no J is stored);
@@ -26,8 +27,9 @@
 
 #include <string>
 
-#include <ceres/problem.h>
 #include <ceres/solver.h>
+
+#include "core/residuals.h"
 
 namespace archgeo {
 
@@ -44,21 +46,22 @@ struct SolveSummary {
   bool terminated_by_callback = false;
 };
 
-// Minimises `problem` from the values in its parameter blocks (which hold the
-// result on return). Reads from `options`: max_num_iterations,
+// Minimises the sum of `residuals` from the values in their parameter blocks
+// (which hold the result on return). Reads from `options`: max_num_iterations,
 // max_solver_time_in_seconds, function/gradient/parameter_tolerance,
 // min_relative_decrease, initial/max/min_trust_region_radius,
 // min/max_lm_diagonal, eta, max_linear_solver_iterations, callbacks.
 // `pattern`, if given, keeps the pattern of J^T J from one call to the next
 // and is reused while the problem's structure stays (core/normal_equations.h).
-SolveSummary LeanSolve(const ceres::Solver::Options& options, ceres::Problem* problem,
+SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& residuals,
                        NormalPattern* pattern = nullptr);
 
 // One round's solve: LeanSolve with function_tolerance raised to at least
 // `pcg_function_tolerance` when pcg_above > 0 and the problem has more than
-// pcg_above free variables (solver.pcg_above), else ceres::Solve.
+// pcg_above free variables (solver.pcg_above), else ceres::Solve on
+// residuals.MakeProblem().
 SolveSummary SolveRound(const ceres::Solver::Options& options, int pcg_above,
-                        double pcg_function_tolerance, ceres::Problem* problem,
+                        double pcg_function_tolerance, const Residuals& residuals,
                         NormalPattern* pattern = nullptr);
 
 }  // namespace archgeo

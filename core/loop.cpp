@@ -65,20 +65,21 @@ class IterationWatch : public ceres::IterationCallback {
   std::vector<std::pair<std::string, double>> watched_;
 };
 
-// ½ Σ w r² per objective part and in total, at the current state (block by
-// block: one Problem::Evaluate per part rebuilt Ceres' program every time).
-std::map<std::string, double> Objective(ceres::Problem& problem, const TermBlocks& blocks) {
+// ½ Σ w r² per objective part and in total, at the current state.
+std::map<std::string, double> Objective(const Residuals& residuals) {
+  std::vector<double> parts(residuals.parts().size(), 0.0);
+  std::vector<bool> used(parts.size(), false);
+  for (size_t i = 0; i < residuals.residuals().size(); ++i) {
+    const int part = residuals.residuals()[i].part;
+    parts[size_t(part)] += residuals.Cost(int(i));
+    used[size_t(part)] = true;
+  }
   std::map<std::string, double> objective;
   double total = 0;
-  for (const auto& [name, ids] : blocks) {
-    double part = 0;
-    for (ceres::ResidualBlockId id : ids) {
-      double cost = 0;
-      problem.EvaluateResidualBlock(id, true, &cost, nullptr, nullptr);
-      part += cost;
-    }
-    objective[name] = part;
-    total += part;
+  for (size_t k = 0; k < parts.size(); ++k) {
+    if (!used[k]) continue;
+    objective[residuals.parts()[k]] = parts[k];
+    total += parts[k];
   }
   objective["total"] = total;
   return objective;
@@ -120,8 +121,7 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
   // The last state that passed the validity checks (round 0: the input).
   std::vector<double> last_valid = model.SaveState();
   int last_valid_round = 0;
-  std::unique_ptr<ceres::Problem> problem;
-  TermBlocks blocks;
+  std::unique_ptr<Residuals> residuals;  // the last round's
   NormalPattern pattern;  // PCG rounds' pattern of J^T J, reused while it fits
   int round_number = 0;
   for (const Stage& stage : stages) {
@@ -209,10 +209,9 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
           const double w = s.Number("terms." + name + ".weight") * (continued ? scale : 1.0);
           if (w > 0) terms.push_back({t, w, continued ? band : -1.0});
         }
-        ceres::Problem::Options problem_options;
-        problem_options.enable_fast_removal = false;
-        problem = std::make_unique<ceres::Problem>(problem_options);
-        blocks = model.Build(terms, k, *problem);
+        residuals.reset();
+        residuals = std::make_unique<Residuals>();
+        model.Build(terms, k, *residuals);
         before = model.SaveState();
 
         ceres::Solver::Options solver = base;
@@ -230,17 +229,15 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
           solver.update_state_every_iteration = true;
         }
         SolveSummary summary;
-        const int residuals = problem->NumResiduals();  // O(residual blocks) in Ceres
-        if (residuals > 0) {
+        if (residuals->NumResiduals() > 0) {
           summary = SolveRound(solver, int(s.Integer("solver.pcg_above")),
-                               s.Number("solver.pcg_function_tolerance"), problem.get(),
-                               &pattern);
+                               s.Number("solver.pcg_function_tolerance"), *residuals, &pattern);
         }
         model.StateChanged();
 
         result.rounds = round_number;
-        result.variables = problem->NumParameters();
-        result.residuals = residuals;
+        result.variables = residuals->NumParameters();
+        result.residuals = residuals->NumResiduals();
         if (summary.pcg) {
           ++result.pcg_rounds;
           result.cg_iterations += summary.cg_iterations;
@@ -374,7 +371,7 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
       result.tolerances[t.key] = bound <= 0 || model.Measure(t.measure) <= bound;
     }
   }
-  if (problem) result.objective = Objective(*problem, blocks);
+  if (residuals) result.objective = Objective(*residuals);
   return result;
 }
 

@@ -22,10 +22,10 @@
 #include <string>
 #include <vector>
 
-#include <ceres/problem.h>
 #include <nlohmann/json.hpp>
 
 #include "core/problem.h"
+#include "core/residuals.h"
 #include "core/settings.h"
 #include "core/term.h"
 
@@ -41,9 +41,6 @@ struct ActiveTerm {
   double band = -1;  // tolerance band (< 0: none)
 };
 
-// Residual blocks per objective part (term name or part name).
-using TermBlocks = std::map<std::string, std::vector<ceres::ResidualBlockId>>;
-
 class Model {
  public:
   virtual ~Model() = default;
@@ -52,11 +49,10 @@ class Model {
   // if `project`, the projection onto the reference.
   virtual void BeginRound(bool project) = 0;
   // Adds the residuals of `terms` (in order; consecutive terms on the same
-  // element set are added element by element) to `problem`; makes fixed
-  // vertices constant and unit blocks spherical. Returns the residual ids per
-  // objective part.
-  virtual TermBlocks Build(const std::vector<ActiveTerm>& terms, int round,
-                           ceres::Problem& problem) = 0;
+  // element set are added element by element) to `residuals`, each under its
+  // objective part (term name or part name); makes fixed vertices constant
+  // and unit blocks spherical.
+  virtual void Build(const std::vector<ActiveTerm>& terms, int round, Residuals& residuals) = 0;
   // After a round: grows the guard weight (block "guard_weight", read by the
   // displacement_guard term) of the vertices beyond half the bound
   // (`bound_relative` × the bounding-box diagonal) and clamps vertices beyond

@@ -1,86 +1,86 @@
 #include "core/normal_equations.h"
 
 #include <algorithm>
-#include <unordered_map>
+
+#include <ceres/cost_function.h>
+#include <ceres/manifold.h>
 
 namespace archgeo {
 
 namespace {
 
-// Renews `s`'s costs, losses and manifolds from `problem` if the structure
-// is `s`'s; false (and `s` partly renewed) if not.
-bool Renew(ceres::Problem& problem, const std::vector<ceres::ResidualBlockId>& ids,
-           NormalPattern& s) {
-  if (ids.size() != s.residuals.size() ||
-      size_t(problem.NumParameterBlocks()) != s.blocks.size() + s.constant.size()) {
+int TangentSize(const Residuals::Block& b) {
+  return b.manifold ? b.manifold->TangentSize() : b.size;
+}
+
+// Renews `s`'s costs, losses and manifolds from `in` if the structure is
+// `s`'s; false (and `s` partly renewed) if not.
+bool Renew(const Residuals& in, NormalPattern& s) {
+  const std::vector<Residuals::Residual>& residuals = in.residuals();
+  if (residuals.size() != s.residuals.size() ||
+      in.blocks().size() != s.blocks.size() + s.constant.size() ||
+      in.block_of().size() != s.values.size() || !std::equal(s.values.begin(), s.values.end(), in.values())) {
     return false;
   }
-  std::vector<double*> read;
-  for (size_t k = 0; k < ids.size(); ++k) {
+  for (size_t k = 0; k < residuals.size(); ++k) {
     PatternResidual& r = s.residuals[k];
-    problem.GetParameterBlocksForResidualBlock(ids[k], &read);
-    if (int(read.size()) != r.end - r.first ||
-        !std::equal(read.begin(), read.end(), s.values.begin() + r.first)) {
-      return false;
-    }
-    r.cost = problem.GetCostFunctionForResidualBlock(ids[k]);
-    r.loss = problem.GetLossFunctionForResidualBlock(ids[k]);
+    if (residuals[k].first != r.first || residuals[k].end != r.end) return false;
+    r.cost = residuals[k].cost;
+    r.loss = residuals[k].loss;
     r.rows = r.cost->num_residuals();
   }
-  // Every block below is read by a residual above, so the problem has it.
-  for (PatternBlock& b : s.blocks) {
-    if (problem.IsParameterBlockConstant(b.values) ||
-        problem.ParameterBlockSize(b.values) != b.ambient ||
-        problem.ParameterBlockTangentSize(b.values) != b.tangent) {
-      return false;
+  // The free blocks in order, and the constant ones, as before.
+  size_t free = 0, constant = 0;
+  for (const Residuals::Block& b : in.blocks()) {
+    if (b.constant) {
+      if (constant == s.constant.size() || s.constant[constant++] != b.values) return false;
+      continue;
     }
-    b.manifold = problem.GetManifold(b.values);
-  }
-  for (const double* c : s.constant) {
-    if (!problem.IsParameterBlockConstant(const_cast<double*>(c))) return false;
+    if (free == s.blocks.size()) return false;
+    PatternBlock& p = s.blocks[free++];
+    if (p.values != b.values || p.ambient != b.size || p.tangent != TangentSize(b)) return false;
+    p.manifold = b.manifold;
   }
   return true;
 }
 
 }  // namespace
 
-bool ReadNormalPattern(ceres::Problem& problem, NormalPattern* pattern) {
-  std::vector<ceres::ResidualBlockId> ids;
-  problem.GetResidualBlocks(&ids);
-  if (!pattern->residuals.empty() && Renew(problem, ids, *pattern)) return true;
+bool ReadNormalPattern(const Residuals& in, NormalPattern* pattern) {
+  if (!pattern->residuals.empty() && Renew(in, *pattern)) return true;
   *pattern = NormalPattern();
   NormalPattern& s = *pattern;
-  std::unordered_map<const double*, int> index(2 * size_t(problem.NumParameterBlocks()));
-  s.residuals.reserve(ids.size());
-  s.values.reserve(4 * ids.size());
-  s.block.reserve(4 * ids.size());
-  std::vector<double*> read;
-  for (ceres::ResidualBlockId id : ids) {
-    problem.GetParameterBlocksForResidualBlock(id, &read);
-    PatternResidual r;
-    r.cost = problem.GetCostFunctionForResidualBlock(id);
-    r.loss = problem.GetLossFunctionForResidualBlock(id);
-    r.rows = r.cost->num_residuals();
-    r.first = int(s.values.size());
-    for (double* b : read) {
-      s.values.push_back(b);
-      auto [it, added] = index.emplace(b, -1);  // -1: constant
-      if (added && problem.IsParameterBlockConstant(b)) {
-        s.constant.push_back(b);
-      } else if (added) {
-        it->second = int(s.blocks.size());
-        PatternBlock block;
-        block.values = b;
-        block.ambient = problem.ParameterBlockSize(b);
-        block.tangent = problem.ParameterBlockTangentSize(b);
-        block.manifold = problem.GetManifold(b);
-        block.offset = s.tangent;
-        s.tangent += block.tangent;
-        s.blocks.push_back(std::move(block));
-      }
-      s.block.push_back(it->second);
+  // Free blocks in order of first use (as Residuals keeps them); -1: constant.
+  std::vector<int> free_index(in.blocks().size(), -1);
+  for (size_t k = 0; k < in.blocks().size(); ++k) {
+    const Residuals::Block& b = in.blocks()[k];
+    if (b.constant) {
+      s.constant.push_back(b.values);
+      continue;
     }
-    r.end = int(s.values.size());
+    free_index[k] = int(s.blocks.size());
+    PatternBlock block;
+    block.values = b.values;
+    block.ambient = b.size;
+    block.tangent = TangentSize(b);
+    block.manifold = b.manifold;
+    block.offset = s.tangent;
+    s.tangent += block.tangent;
+    s.blocks.push_back(std::move(block));
+  }
+  const std::vector<Residuals::Residual>& residuals = in.residuals();
+  const size_t parameters = residuals.empty() ? 0 : size_t(residuals.back().end);
+  s.values.assign(in.values(), in.values() + parameters);
+  s.block.resize(parameters);
+  for (size_t a = 0; a < parameters; ++a) s.block[a] = free_index[in.block_of()[a]];
+  s.residuals.reserve(residuals.size());
+  for (const Residuals::Residual& from : residuals) {
+    PatternResidual r;
+    r.cost = from.cost;
+    r.loss = from.loss;
+    r.rows = r.cost->num_residuals();
+    r.first = from.first;
+    r.end = from.end;
     s.residuals.push_back(r);
   }
   // Slots: the diagonal, then block row by block row its upper pairs (so a

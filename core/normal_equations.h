@@ -1,4 +1,4 @@
-// archgeo — the block pattern of a Ceres problem's normal equations J^T J,
+// archgeo — the block pattern of a round's normal equations J^T J,
 // as core/lean_solve.h assembles them: the free parameter blocks (with their
 // manifolds), the residual blocks (cost, loss, the blocks they read), and one
 // dense tangent × tangent slot per diagonal block and per pair of free blocks
@@ -7,7 +7,7 @@
 
 #include <vector>
 
-#include <ceres/problem.h>
+#include "core/residuals.h"
 
 namespace archgeo {
 
@@ -43,12 +43,12 @@ struct NormalPattern {
   std::vector<const double*> constant;  // the constant blocks the residuals read
 };
 
-// Reads `problem` into `pattern` (its constant blocks stay out of the
-// pattern). When `pattern` holds the pattern of a problem of the same
+// Reads `residuals` into `pattern` (constant blocks stay out of the
+// pattern). When `pattern` holds the pattern of residuals of the same
 // structure — the same residual blocks in the same order, reading the same
 // parameter blocks, free and constant alike, of the same sizes — only its
-// cost functions, losses and manifolds are read anew; the loop rebuilds its
-// problem every round with that structure. Returns whether it was reused.
-bool ReadNormalPattern(ceres::Problem& problem, NormalPattern* pattern);
+// cost functions, losses and manifolds are read anew; the loop builds its
+// residuals every round with that structure. Returns whether it was reused.
+bool ReadNormalPattern(const Residuals& residuals, NormalPattern* pattern);
 
 }  // namespace archgeo

@@ -3,7 +3,6 @@
 #include <ceres/cost_function.h>
 #include <ceres/loss_function.h>
 #include <ceres/manifold.h>
-#include <ceres/problem.h>
 #include <ceres/sphere_manifold.h>
 #include <glog/logging.h>
 
@@ -84,10 +83,9 @@ class MeshModel::View : public TermContext {
   View(MeshModel& model, const TermSpec& spec)
       : model_(model), name_(spec.name) {}
 
-  void Prepare(ceres::Problem* problem, TermBlocks* blocks, const std::string& loss,
-               double loss_scale) {
-    problem_ = problem;
-    blocks_ = blocks;
+  void Prepare(Residuals* residuals, const std::string& loss, double loss_scale) {
+    residuals_ = residuals;
+    part_ = -1;
     loss_ = loss;
     loss_scale_ = loss_scale;
     shared_loss_ = nullptr;
@@ -139,7 +137,7 @@ class MeshModel::View : public TermContext {
 
   void Add(ceres::CostFunction* cost, const std::vector<double*>& blocks, const char* part,
            double weight) override {
-    CHECK(problem_) << name_ << ": Add outside Build";
+    CHECK(residuals_) << name_ << ": Add outside Build";
     bool variable = false;
     for (double* b : blocks) variable = variable || !model_.IsConstant(b);
     if (!variable) {
@@ -157,11 +155,13 @@ class MeshModel::View : public TermContext {
     // owns it once, however many residuals share it).
     const double w = weight >= 0 ? weight : this->weight;
     if (!shared_loss_ || w != shared_weight_) {
-      shared_loss_ = new ceres::ScaledLoss(Robust(loss_, loss_scale_), w, ceres::TAKE_OWNERSHIP);
+      shared_loss_ = residuals_->Own(
+          new ceres::ScaledLoss(Robust(loss_, loss_scale_), w, ceres::TAKE_OWNERSHIP));
       shared_weight_ = w;
     }
-    (*blocks_)[part ? part : name_].push_back(
-        problem_->AddResidualBlock(cost, shared_loss_, blocks));
+    const char* key = part ? part : name_.c_str();
+    if (part_ < 0 || residuals_->parts()[size_t(part_)] != key) part_ = residuals_->Part(key);
+    residuals_->Add(cost, shared_loss_, blocks.data(), int(blocks.size()), part_);
   }
 
   void SetUnit(double* block) override { SetManifold(block, new ceres::SphereManifold<3>()); }
@@ -176,22 +176,18 @@ class MeshModel::View : public TermContext {
       return;
     }
 #endif
-    if (problem_->HasParameterBlock(block) && !problem_->GetManifold(block)) {
-      problem_->SetManifold(block, manifold);
-    } else {
-      delete manifold;
-    }
+    residuals_->SetManifold(block, manifold);
   }
 
  private:
   MeshModel& model_;
   std::string name_;
   std::map<std::string, std::vector<Curve>> curves_;  // per option, read once per solve
-  ceres::Problem* problem_ = nullptr;
-  TermBlocks* blocks_ = nullptr;
+  Residuals* residuals_ = nullptr;
+  int part_ = -1;  // the part of the last Add (-1: none yet)
   std::string loss_ = "none";
   double loss_scale_ = 1;
-  ceres::LossFunction* shared_loss_ = nullptr;  // owned by problem_
+  const ceres::LossFunction* shared_loss_ = nullptr;  // owned by residuals_
   double shared_weight_ = 0;
 };
 
@@ -352,9 +348,7 @@ const ElementSet& MeshModel::Selected(const TermSpec& spec) {
   return selected_.emplace(name, all.Subset(keep)).first->second;
 }
 
-TermBlocks MeshModel::Build(const std::vector<ActiveTerm>& terms, int round,
-                            ceres::Problem& problem) {
-  TermBlocks blocks;
+void MeshModel::Build(const std::vector<ActiveTerm>& terms, int round, Residuals& residuals) {
   const Settings& s = *hooks_.settings;
   constant_blocks_ = constant_elements_;
   for (const std::string& name : store_.Names()) {
@@ -377,7 +371,7 @@ TermBlocks MeshModel::Build(const std::vector<ActiveTerm>& terms, int round,
     view.band = a.spec->supports_band ? a.band : -1.0;
     view.round = round;
     const std::string prefix = "terms." + std::string(a.spec->name) + ".";
-    view.Prepare(&problem, &blocks, s.String(prefix + "loss"), s.Number(prefix + "loss_scale"));
+    view.Prepare(&residuals, s.String(prefix + "loss"), s.Number(prefix + "loss_scale"));
     if (a.spec->begin) a.spec->begin(view);
   }
   // Consecutive terms of one group on the same elements are added element by
@@ -403,18 +397,16 @@ TermBlocks MeshModel::Build(const std::vector<ActiveTerm>& terms, int round,
   for (const ActiveTerm& a : terms) {
     View& view = *views_.at(a.spec->name);
     if (a.spec->finish) a.spec->finish(view);
-    view.Prepare(nullptr, nullptr, "none", 1);
+    view.Prepare(nullptr, "none", 1);
   }
   Mesh& mesh = store_.mesh();
   for (VertexIndex v : mesh.vertices()) {
     double* x = PositionBlock(mesh, v);
-    if (hooks_.fixed[v.idx()] && problem.HasParameterBlock(x)) problem.SetParameterBlockConstant(x);
+    if (hooks_.fixed[v.idx()] && residuals.Has(x)) residuals.SetConstant(x);
   }
   for (const double* b : constant_blocks_) {
-    double* block = const_cast<double*>(b);
-    if (problem.HasParameterBlock(block)) problem.SetParameterBlockConstant(block);
+    if (residuals.Has(b)) residuals.SetConstant(b);
   }
-  return blocks;
 }
 
 int MeshModel::Guard(double bound_relative) {

@@ -89,8 +89,7 @@ class MeshModel : public Model {
   ~MeshModel() override;
 
   void BeginRound(bool project) override;
-  TermBlocks Build(const std::vector<ActiveTerm>& terms, int round,
-                   ceres::Problem& problem) override;
+  void Build(const std::vector<ActiveTerm>& terms, int round, Residuals& residuals) override;
   int Guard(double bound_relative) override;
   double Measure(const std::string& name) override;
   void StateChanged() override;

@@ -47,7 +47,7 @@ class ScriptedModel : public Model {
   }
   Script& script() { return hooks_.State<Script>("script"); }
   void BeginRound(bool) override {}
-  TermBlocks Build(const std::vector<ActiveTerm>&, int, ceres::Problem&) override { return {}; }
+  void Build(const std::vector<ActiveTerm>&, int, Residuals&) override {}
   int Guard(double) override { return 0; }
   double Measure(const std::string& name) override {
     EXPECT_EQ(name, "m");

@@ -41,30 +41,33 @@ struct Data {
   double w, target;
 };
 
+// Adds `cost` over `blocks` to `residuals`.
+void Add(Residuals& residuals, ceres::CostFunction* cost, const ceres::LossFunction* loss,
+         std::vector<double*> blocks) {
+  residuals.Add(cost, loss, blocks.data(), int(blocks.size()));
+}
+
 // A membrane on an n × n grid: data terms pull each value to a rough target,
 // differences tie neighbours (a 2-D graph like a mesh's normal equations).
 struct Membrane {
   int n;
   std::vector<double> x;
-  ceres::Problem problem;
-  explicit Membrane(int size) : n(size), x(size * size, 0.0) { AddTo(problem); }
-  // The membrane's residual blocks over `x`, into `p` (in the same order).
-  void AddTo(ceres::Problem& p) {
-    auto& problem = p;
+  Residuals residuals;
+  explicit Membrane(int size) : n(size), x(size * size, 0.0) { AddTo(residuals); }
+  // The membrane's residual blocks over `x`, into `r` (in the same order).
+  void AddTo(Residuals& r) {
     for (int i = 0; i < n; ++i) {
       for (int j = 0; j < n; ++j) {
         const double target = std::sin(0.7 * i) * std::cos(1.3 * j) + ((i * 7 + j * 3) % 5) * 0.1;
-        problem.AddResidualBlock(new ceres::AutoDiffCostFunction<Data, 1, 1>(new Data{0.5, target}),
-                                 nullptr, &x[i * n + j]);
+        Add(r, new ceres::AutoDiffCostFunction<Data, 1, 1>(new Data{0.5, target}), nullptr,
+            {&x[i * n + j]});
         if (i + 1 < n) {
-          problem.AddResidualBlock(
-              new ceres::AutoDiffCostFunction<Difference, 1, 1, 1>(new Difference{1.0}), nullptr,
-              &x[i * n + j], &x[(i + 1) * n + j]);
+          Add(r, new ceres::AutoDiffCostFunction<Difference, 1, 1, 1>(new Difference{1.0}),
+              nullptr, {&x[i * n + j], &x[(i + 1) * n + j]});
         }
         if (j + 1 < n) {
-          problem.AddResidualBlock(
-              new ceres::AutoDiffCostFunction<Difference, 1, 1, 1>(new Difference{1.0}), nullptr,
-              &x[i * n + j], &x[i * n + j + 1]);
+          Add(r, new ceres::AutoDiffCostFunction<Difference, 1, 1, 1>(new Difference{1.0}),
+              nullptr, {&x[i * n + j], &x[i * n + j + 1]});
         }
       }
     }
@@ -86,7 +89,7 @@ struct PlaneDistance {
 struct PlaneFit {
   double normal[3] = {0.3, -0.2, 0.93};
   double offset = 0;
-  ceres::Problem problem;
+  Residuals residuals;
   PlaneFit() {
     for (int i = 0; i < 12; ++i) {
       for (int j = 0; j < 12; ++j) {
@@ -95,14 +98,15 @@ struct PlaneFit {
         if ((i == 3 && j == 4) || (i == 9 && j == 1)) z += 2.0;
         auto* cost = new ceres::AutoDiffCostFunction<PlaneDistance, 1, 3, 1>(
             new PlaneDistance{{x, y, z}});
-        problem.AddResidualBlock(
-            cost, new ceres::ScaledLoss(new ceres::CauchyLoss(0.05), 3.0, ceres::TAKE_OWNERSHIP),
-            normal, &offset);
+        Add(residuals, cost,
+            residuals.Own(
+                new ceres::ScaledLoss(new ceres::CauchyLoss(0.05), 3.0, ceres::TAKE_OWNERSHIP)),
+            {normal, &offset});
       }
     }
     const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
     for (double& c : normal) c /= length;
-    problem.SetManifold(normal, new ceres::SphereManifold<3>());
+    residuals.SetManifold(normal, new ceres::SphereManifold<3>());
   }
 };
 
@@ -118,11 +122,41 @@ ceres::Solver::Options Tight() {
   return o;
 }
 
+// The residuals hand Ceres the same problem: its size, its manifolds and
+// constant blocks, and per residual the cost Ceres evaluates.
+TEST(LeanSolve, ResidualsGiveCeresTheSameProblem) {
+  PlaneFit fit;
+  fit.residuals.SetConstant(&fit.offset);
+  double unread = 0;
+  fit.residuals.SetManifold(&unread, new ceres::SphereManifold<3>());  // no residual reads it
+  EXPECT_FALSE(fit.residuals.Has(&unread));
+  const std::unique_ptr<ceres::Problem> problem = fit.residuals.MakeProblem();
+  EXPECT_EQ(problem->NumResiduals(), fit.residuals.NumResiduals());
+  EXPECT_EQ(problem->NumParameters(), fit.residuals.NumParameters());
+  EXPECT_EQ(fit.residuals.NumParameters(), 4);
+  EXPECT_EQ(fit.residuals.FreeTangentSize(), 2);  // the normal on the sphere; the offset fixed
+  EXPECT_EQ(problem->ParameterBlockTangentSize(fit.normal), 2);
+  EXPECT_TRUE(problem->IsParameterBlockConstant(&fit.offset));
+  std::vector<ceres::ResidualBlockId> ids;
+  problem->GetResidualBlocks(&ids);
+  ASSERT_EQ(ids.size(), fit.residuals.residuals().size());
+  double total = 0, ceres_total = 0;
+  for (size_t i = 0; i < ids.size(); ++i) {
+    double cost = 0;
+    ASSERT_TRUE(problem->EvaluateResidualBlock(ids[i], true, &cost, nullptr, nullptr));
+    EXPECT_NEAR(fit.residuals.Cost(int(i)), cost, 1e-15 * std::max(1.0, cost)) << i;
+    total += fit.residuals.Cost(int(i));
+  }
+  problem->Evaluate(ceres::Problem::EvaluateOptions(), &ceres_total, nullptr, nullptr, nullptr);
+  EXPECT_NEAR(total, ceres_total, 1e-12 * ceres_total);
+  EXPECT_GT(total, 0.1);  // the outliers (Cauchy-discounted) and the tilted start
+}
+
 TEST(LeanSolve, ReachesCeresOptimumOnALinearProblem) {
   Membrane ceres_side(30), lean_side(30);
   ceres::Solver::Summary reference;
-  ceres::Solve(Tight(), &ceres_side.problem, &reference);
-  const SolveSummary lean = LeanSolve(Tight(), &lean_side.problem);
+  ceres::Solve(Tight(), ceres_side.residuals.MakeProblem().get(), &reference);
+  const SolveSummary lean = LeanSolve(Tight(), lean_side.residuals);
   ASSERT_TRUE(lean.usable) << lean.message;
   EXPECT_TRUE(lean.pcg);
   EXPECT_GT(lean.cg_iterations, 0);
@@ -137,9 +171,9 @@ TEST(LeanSolve, ReachesCeresOptimumOnALinearProblem) {
 TEST(LeanSolve, ReachesCeresOptimumWithAManifoldAndARobustLoss) {
   PlaneFit ceres_side, lean_side;
   ceres::Solver::Summary reference;
-  ceres::Solve(Tight(), &ceres_side.problem, &reference);
+  ceres::Solve(Tight(), ceres_side.residuals.MakeProblem().get(), &reference);
   ASSERT_TRUE(reference.IsSolutionUsable());
-  const SolveSummary lean = LeanSolve(Tight(), &lean_side.problem);
+  const SolveSummary lean = LeanSolve(Tight(), lean_side.residuals);
   ASSERT_TRUE(lean.usable) << lean.message;
   EXPECT_NEAR(lean.final_cost, reference.final_cost, 1e-8 * reference.initial_cost);
   EXPECT_NEAR(lean.initial_cost, reference.initial_cost, 1e-12 * reference.initial_cost);
@@ -157,8 +191,8 @@ TEST(LeanSolve, ReachesCeresOptimumWithAManifoldAndARobustLoss) {
 TEST(LeanSolve, ConstantBlocksStayConstant) {
   Membrane m(20);
   m.x[0] = 5;
-  m.problem.SetParameterBlockConstant(&m.x[0]);
-  const SolveSummary s = LeanSolve(Tight(), &m.problem);
+  m.residuals.SetConstant(&m.x[0]);
+  const SolveSummary s = LeanSolve(Tight(), m.residuals);
   ASSERT_TRUE(s.usable);
   EXPECT_EQ(m.x[0], 5);
   EXPECT_GT(m.x[1], 0.5);  // its neighbour is pulled towards it
@@ -179,37 +213,35 @@ TEST(LeanSolve, ACallbackEndsTheSolve) {
   StopAfter stop(1);
   ceres::Solver::Options o = Tight();
   o.callbacks.push_back(&stop);
-  const SolveSummary s = LeanSolve(o, &fit.problem);
+  const SolveSummary s = LeanSolve(o, fit.residuals);
   EXPECT_TRUE(s.terminated_by_callback);
   EXPECT_EQ(s.iterations, 1);
   EXPECT_EQ(stop.seen, 2);  // iteration 0 and 1
 }
 
-// The loop rebuilds its problem every round: the pattern of J^T J is kept
-// while the structure stays, with the new problem's costs, and the solve
-// from it is the solve from a fresh pattern.
+// The loop builds its residuals every round: the pattern of J^T J is kept
+// while the structure stays, with the new round's costs, and the solve from
+// it is the solve from a fresh pattern.
 TEST(LeanSolve, ThePatternIsReusedWhileTheStructureStays) {
   Membrane fresh(12), kept(12);
   NormalPattern pattern;
-  EXPECT_FALSE(ReadNormalPattern(kept.problem, &pattern));
+  EXPECT_FALSE(ReadNormalPattern(kept.residuals, &pattern));
   const NormalPattern first = pattern;
-  ceres::Problem again;
+  Residuals again;
   kept.AddTo(again);
   EXPECT_TRUE(ReadNormalPattern(again, &pattern));
   EXPECT_EQ(pattern.slots, first.slots);
   EXPECT_EQ(pattern.pair_slot, first.pair_slot);
-  std::vector<ceres::ResidualBlockId> ids;
-  again.GetResidualBlocks(&ids);
-  EXPECT_EQ(pattern.residuals.back().cost, again.GetCostFunctionForResidualBlock(ids.back()));
+  EXPECT_EQ(pattern.residuals.back().cost, again.residuals().back().cost);
   EXPECT_NE(pattern.residuals.back().cost, first.residuals.back().cost);
 
-  ASSERT_TRUE(LeanSolve(Tight(), &again, &pattern).usable);
-  ASSERT_TRUE(LeanSolve(Tight(), &fresh.problem).usable);
+  ASSERT_TRUE(LeanSolve(Tight(), again, &pattern).usable);
+  ASSERT_TRUE(LeanSolve(Tight(), fresh.residuals).usable);
   EXPECT_EQ(kept.x, fresh.x);
 
-  ceres::Problem changed;  // one block held constant: another structure
+  Residuals changed;  // one block held constant: another structure
   kept.AddTo(changed);
-  changed.SetParameterBlockConstant(&kept.x[5]);
+  changed.SetConstant(&kept.x[5]);
   EXPECT_FALSE(ReadNormalPattern(changed, &pattern));
   EXPECT_EQ(pattern.blocks.size() + 1, first.blocks.size());
   EXPECT_EQ(pattern.constant.size(), 1u);
@@ -220,12 +252,12 @@ TEST(LeanSolve, ThePatternIsReusedWhileTheStructureStays) {
 TEST(LeanSolve, OneThreadGivesTheBitsOfTwo) {
   PlaneFit two, one;
   Membrane two_m(15), one_m(15);
-  ASSERT_TRUE(LeanSolve(Tight(), &two.problem).usable);
-  ASSERT_TRUE(LeanSolve(Tight(), &two_m.problem).usable);
+  ASSERT_TRUE(LeanSolve(Tight(), two.residuals).usable);
+  ASSERT_TRUE(LeanSolve(Tight(), two_m.residuals).usable);
   const int threads = omp_get_max_threads();
   omp_set_num_threads(1);
-  ASSERT_TRUE(LeanSolve(Tight(), &one.problem).usable);
-  ASSERT_TRUE(LeanSolve(Tight(), &one_m.problem).usable);
+  ASSERT_TRUE(LeanSolve(Tight(), one.residuals).usable);
+  ASSERT_TRUE(LeanSolve(Tight(), one_m.residuals).usable);
   omp_set_num_threads(threads);
   for (int k = 0; k < 3; ++k) EXPECT_EQ(one.normal[k], two.normal[k]);
   EXPECT_EQ(one.offset, two.offset);
@@ -234,9 +266,9 @@ TEST(LeanSolve, OneThreadGivesTheBitsOfTwo) {
 
 TEST(LeanSolve, SolveRoundUsesPcgOnlyAboveTheThreshold) {
   Membrane a(10), b(10), c(10);
-  EXPECT_FALSE(SolveRound(Tight(), 0, 1e-4, &a.problem).pcg);
-  EXPECT_FALSE(SolveRound(Tight(), 100, 1e-4, &b.problem).pcg);  // 100 variables: not above
-  EXPECT_TRUE(SolveRound(Tight(), 99, 1e-4, &c.problem).pcg);
+  EXPECT_FALSE(SolveRound(Tight(), 0, 1e-4, a.residuals).pcg);
+  EXPECT_FALSE(SolveRound(Tight(), 100, 1e-4, b.residuals).pcg);  // 100 variables: not above
+  EXPECT_TRUE(SolveRound(Tight(), 99, 1e-4, c.residuals).pcg);
 }
 
 double MaxDisplacement(const Mesh& a, const Mesh& b) {

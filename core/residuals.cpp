@@ -1,0 +1,121 @@
+#include "core/residuals.h"
+
+#include <cmath>
+#include <limits>
+
+#include <ceres/cost_function.h>
+#include <ceres/loss_function.h>
+#include <ceres/manifold.h>
+#include <ceres/problem.h>
+#include <glog/logging.h>
+
+namespace archgeo {
+
+Residuals::Residuals() : parts_{""} {}
+
+Residuals::~Residuals() {
+  for (Residual& r : residuals_) delete r.cost;
+}
+
+const ceres::LossFunction* Residuals::Own(ceres::LossFunction* loss) {
+  if (loss) losses_.emplace_back(loss);
+  return loss;
+}
+
+int Residuals::Part(const std::string& name) {
+  for (size_t k = 0; k < parts_.size(); ++k) {
+    if (parts_[k] == name) return int(k);
+  }
+  parts_.push_back(name);
+  return int(parts_.size()) - 1;
+}
+
+void Residuals::Add(ceres::CostFunction* cost, const ceres::LossFunction* loss,
+                    double* const* blocks, int count, int part) {
+  const std::vector<int32_t>& sizes = cost->parameter_block_sizes();
+  CHECK_EQ(int(sizes.size()), count) << "a cost function over " << sizes.size()
+                                     << " blocks added with " << count;
+  Residual r;
+  r.cost = cost;
+  r.loss = loss;
+  r.part = part;
+  r.first = int(values_.size());
+  for (int a = 0; a < count; ++a) {
+    for (int b = 0; b < a; ++b) CHECK(blocks[a] != blocks[b]) << "a block read twice by one residual";
+    const auto [it, added] = index_.emplace(blocks[a], int(blocks_.size()));
+    if (added) {
+      blocks_.push_back({blocks[a], sizes[a], nullptr, false});
+    } else {
+      CHECK_EQ(blocks_[it->second].size, sizes[a]) << "a block read with two sizes";
+    }
+    values_.push_back(blocks[a]);
+    block_of_.push_back(it->second);
+  }
+  r.end = int(values_.size());
+  residuals_.push_back(r);
+  rows_ += cost->num_residuals();
+}
+
+void Residuals::SetManifold(double* block, ceres::Manifold* manifold) {
+  std::unique_ptr<ceres::Manifold> owned(manifold);
+  const auto it = index_.find(block);
+  if (it == index_.end() || blocks_[it->second].manifold) return;
+  CHECK_EQ(manifold->AmbientSize(), blocks_[it->second].size) << "a manifold of another size";
+  blocks_[it->second].manifold = manifold;
+  manifolds_.push_back(std::move(owned));
+}
+
+void Residuals::SetConstant(const double* block) {
+  const auto it = index_.find(block);
+  CHECK(it != index_.end()) << "SetConstant: no residual reads the block";
+  blocks_[it->second].constant = true;
+}
+
+int Residuals::NumParameters() const {
+  int n = 0;
+  for (const Block& b : blocks_) n += b.size;
+  return n;
+}
+
+int Residuals::FreeTangentSize() const {
+  int n = 0;
+  for (const Block& b : blocks_) {
+    if (!b.constant) n += b.manifold ? b.manifold->TangentSize() : b.size;
+  }
+  return n;
+}
+
+double Residuals::Cost(int i) const {
+  const Residual& r = residuals_[size_t(i)];
+  std::vector<double> residual(size_t(r.cost->num_residuals()));
+  if (!r.cost->Evaluate(values_.data() + r.first, residual.data(), nullptr)) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  double sq = 0;
+  for (double v : residual) sq += v * v;
+  if (!r.loss) return 0.5 * sq;
+  double rho[3];
+  r.loss->Evaluate(sq, rho);
+  return 0.5 * rho[0];
+}
+
+std::unique_ptr<ceres::Problem> Residuals::MakeProblem() const {
+  ceres::Problem::Options options;
+  options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  options.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  options.enable_fast_removal = false;
+  auto problem = std::make_unique<ceres::Problem>(options);
+  std::vector<double*> read;
+  for (const Residual& r : residuals_) {
+    read.assign(values_.begin() + r.first, values_.begin() + r.end);
+    problem->AddResidualBlock(r.cost, const_cast<ceres::LossFunction*>(r.loss), read);
+  }
+  for (const Block& b : blocks_) {
+    if (b.manifold) problem->SetManifold(b.values, const_cast<ceres::Manifold*>(b.manifold));
+    if (b.constant) problem->SetParameterBlockConstant(b.values);
+  }
+  return problem;
+}
+
+}  // namespace archgeo

@@ -1,0 +1,92 @@
+// archgeo — one round's residual blocks as the problem layer adds them: the
+// cost functions, the weighted losses they share, the parameter blocks they
+// read (in order of first use, with their manifolds and constant flags), and
+// the objective part each residual counts under.
+//
+// Both solvers read it. LeanSolve (core/lean_solve.h) reads it directly, so a
+// large round never builds a ceres::Problem (at 100k quads, building and
+// freeing one every round took 11 of 46 s); a small round hands Ceres the
+// equivalent problem (MakeProblem), which borrows everything from here.
+// It owns every cost, loss and manifold added to it.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace ceres {
+class CostFunction;
+class LossFunction;
+class Manifold;
+class Problem;
+}  // namespace ceres
+
+namespace archgeo {
+
+class Residuals {
+ public:
+  struct Block {
+    double* values = nullptr;
+    int size = 0;
+    const ceres::Manifold* manifold = nullptr;  // nullptr: Euclidean
+    bool constant = false;
+  };
+  struct Residual {
+    ceres::CostFunction* cost = nullptr;
+    const ceres::LossFunction* loss = nullptr;  // nullptr: ½‖r‖²
+    int first = 0, end = 0;  // its parameter blocks in values() / block_of()
+    int part = 0;
+  };
+
+  Residuals();
+  ~Residuals();
+  Residuals(const Residuals&) = delete;
+  Residuals& operator=(const Residuals&) = delete;
+
+  // Takes ownership of `loss` (nullptr stays nullptr) and returns it, for
+  // any number of residuals to share.
+  const ceres::LossFunction* Own(ceres::LossFunction* loss);
+  // The index of the objective part `name` (added on first use).
+  int Part(const std::string& name);
+  // Adds the residual block `cost` (owned from here on) over `count` blocks,
+  // counted under `part`. CHECKs what Ceres would: distinct blocks, each of
+  // the size the cost declares and the size it had before.
+  void Add(ceres::CostFunction* cost, const ceres::LossFunction* loss, double* const* blocks,
+           int count, int part = 0);
+  bool Has(const double* block) const { return index_.count(block) > 0; }
+  // Sets the manifold (owned from here on) of a block a residual reads that
+  // has none yet; deletes `manifold` otherwise.
+  void SetManifold(double* block, ceres::Manifold* manifold);
+  void SetConstant(const double* block);  // CHECKs that a residual reads it
+
+  const std::vector<Residual>& residuals() const { return residuals_; }
+  const std::vector<Block>& blocks() const { return blocks_; }
+  double* const* values() const { return values_.data(); }  // per residual parameter
+  const std::vector<int>& block_of() const { return block_of_; }  // per residual parameter
+  const std::vector<std::string>& parts() const { return parts_; }
+  int NumResiduals() const { return rows_; }  // scalar residuals
+  int NumParameters() const;                  // every block's size, constant ones too
+  int FreeTangentSize() const;                // the variables the solve moves
+
+  // ½ ρ(‖r‖²) of residual `i` at the current values (NaN if it fails to
+  // evaluate).
+  double Cost(int i) const;
+  // The same problem for ceres::Solve: the residuals in this order, then the
+  // manifolds and constant blocks. It borrows costs, losses and manifolds;
+  // this list must outlive it.
+  std::unique_ptr<ceres::Problem> MakeProblem() const;
+
+ private:
+  std::vector<Residual> residuals_;
+  std::vector<Block> blocks_;
+  std::vector<double*> values_;
+  std::vector<int> block_of_;
+  std::unordered_map<const double*, int> index_;
+  std::vector<std::string> parts_;
+  std::vector<std::unique_ptr<ceres::LossFunction>> losses_;
+  std::vector<std::unique_ptr<ceres::Manifold>> manifolds_;
+  int rows_ = 0;
+};
+
+}  // namespace archgeo
