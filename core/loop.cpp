@@ -121,7 +121,8 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
   // The last state that passed the validity checks (round 0: the input).
   std::vector<double> last_valid = model.SaveState();
   int last_valid_round = 0;
-  std::unique_ptr<Residuals> residuals;  // the last round's
+  Residuals residuals;  // the last round's
+  bool built = false;
   NormalPattern pattern;  // PCG rounds' pattern of J^T J, reused while it fits
   int round_number = 0;
   for (const Stage& stage : stages) {
@@ -209,9 +210,9 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
           const double w = s.Number("terms." + name + ".weight") * (continued ? scale : 1.0);
           if (w > 0) terms.push_back({t, w, continued ? band : -1.0});
         }
-        residuals.reset();
-        residuals = std::make_unique<Residuals>();
-        model.Build(terms, k, *residuals);
+        residuals.Clear();
+        model.Build(terms, k, residuals);
+        built = true;
         before = model.SaveState();
 
         ceres::Solver::Options solver = base;
@@ -229,15 +230,15 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
           solver.update_state_every_iteration = true;
         }
         SolveSummary summary;
-        if (residuals->NumResiduals() > 0) {
+        if (residuals.NumResiduals() > 0) {
           summary = SolveRound(solver, int(s.Integer("solver.pcg_above")),
-                               s.Number("solver.pcg_function_tolerance"), *residuals, &pattern);
+                               s.Number("solver.pcg_function_tolerance"), residuals, &pattern);
         }
         model.StateChanged();
 
         result.rounds = round_number;
-        result.variables = residuals->NumParameters();
-        result.residuals = residuals->NumResiduals();
+        result.variables = residuals.NumParameters();
+        result.residuals = residuals.NumResiduals();
         if (summary.pcg) {
           ++result.pcg_rounds;
           result.cg_iterations += summary.cg_iterations;
@@ -371,7 +372,7 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
       result.tolerances[t.key] = bound <= 0 || model.Measure(t.measure) <= bound;
     }
   }
-  if (residuals) result.objective = Objective(*residuals);
+  if (built) result.objective = Objective(residuals);
   return result;
 }
 

@@ -13,8 +13,47 @@ namespace archgeo {
 
 Residuals::Residuals() : parts_{""} {}
 
-Residuals::~Residuals() {
+Residuals::~Residuals() { Clear(); }
+
+void Residuals::Clear() {
   for (Residual& r : residuals_) delete r.cost;
+  residuals_.clear();
+  blocks_.clear();
+  values_.clear();
+  block_of_.clear();
+  index_.clear();
+  ranges_.clear();
+  parts_.assign(1, "");
+  losses_.clear();
+  manifolds_.clear();
+  rows_ = 0;
+}
+
+void Residuals::AddressRange(const double* base, int count, int width) {
+  CHECK(base && count >= 0 && width > 0);
+  ranges_.push_back({base, size_t(count), width, std::vector<int>(size_t(count), -1)});
+}
+
+int* Residuals::RangeSlot(const double* block, int size) {
+  for (Range& r : ranges_) {
+    if (block < r.base || block >= r.base + r.count * size_t(r.width)) continue;
+    const size_t offset = size_t(block - r.base);
+    if (r.width != size || offset % size_t(r.width) != 0) return nullptr;
+    return &r.id[offset / size_t(r.width)];
+  }
+  return nullptr;
+}
+
+int Residuals::Find(const double* block) const {
+  for (const Range& r : ranges_) {
+    if (block < r.base || block >= r.base + r.count * size_t(r.width)) continue;
+    const size_t offset = size_t(block - r.base);
+    if (offset % size_t(r.width) == 0 && r.id[offset / size_t(r.width)] >= 0) {
+      return r.id[offset / size_t(r.width)];
+    }
+  }
+  const auto it = index_.find(block);
+  return it == index_.end() ? -1 : it->second;
 }
 
 const ceres::LossFunction* Residuals::Own(ceres::LossFunction* loss) {
@@ -42,14 +81,20 @@ void Residuals::Add(ceres::CostFunction* cost, const ceres::LossFunction* loss,
   r.first = int(values_.size());
   for (int a = 0; a < count; ++a) {
     for (int b = 0; b < a; ++b) CHECK(blocks[a] != blocks[b]) << "a block read twice by one residual";
-    const auto [it, added] = index_.emplace(blocks[a], int(blocks_.size()));
-    if (added) {
-      blocks_.push_back({blocks[a], sizes[a], nullptr, false});
-    } else {
-      CHECK_EQ(blocks_[it->second].size, sizes[a]) << "a block read with two sizes";
+    int* slot = RangeSlot(blocks[a], sizes[a]);
+    int id = slot ? *slot : -1;
+    if (!slot) {
+      const auto [it, added] = index_.emplace(blocks[a], int(blocks_.size()));
+      id = added ? -1 : it->second;
     }
+    if (id < 0) {
+      id = int(blocks_.size());
+      if (slot) *slot = id;
+      blocks_.push_back({blocks[a], sizes[a], nullptr, false});
+    }
+    CHECK_EQ(blocks_[size_t(id)].size, sizes[a]) << "a block read with two sizes";
     values_.push_back(blocks[a]);
-    block_of_.push_back(it->second);
+    block_of_.push_back(id);
   }
   r.end = int(values_.size());
   residuals_.push_back(r);
@@ -58,17 +103,17 @@ void Residuals::Add(ceres::CostFunction* cost, const ceres::LossFunction* loss,
 
 void Residuals::SetManifold(double* block, ceres::Manifold* manifold) {
   std::unique_ptr<ceres::Manifold> owned(manifold);
-  const auto it = index_.find(block);
-  if (it == index_.end() || blocks_[it->second].manifold) return;
-  CHECK_EQ(manifold->AmbientSize(), blocks_[it->second].size) << "a manifold of another size";
-  blocks_[it->second].manifold = manifold;
+  const int id = Find(block);
+  if (id < 0 || blocks_[size_t(id)].manifold) return;
+  CHECK_EQ(manifold->AmbientSize(), blocks_[size_t(id)].size) << "a manifold of another size";
+  blocks_[size_t(id)].manifold = manifold;
   manifolds_.push_back(std::move(owned));
 }
 
 void Residuals::SetConstant(const double* block) {
-  const auto it = index_.find(block);
-  CHECK(it != index_.end()) << "SetConstant: no residual reads the block";
-  blocks_[it->second].constant = true;
+  const int id = Find(block);
+  CHECK(id >= 0) << "SetConstant: no residual reads the block";
+  blocks_[size_t(id)].constant = true;
 }
 
 int Residuals::NumParameters() const {

@@ -356,6 +356,18 @@ void MeshModel::Build(const std::vector<ActiveTerm>& terms, int round, Residuals
     const int n = store_.Count(name);
     for (int i = 0; i < n; ++i) constant_blocks_.insert(store_.At(name, i));
   }
+  // Positions and element blocks are found by address (a speed hint).
+  Mesh& mesh = store_.mesh();
+  if (mesh.number_of_vertices() > 0) {
+    residuals.AddressRange(PositionBlock(mesh, VertexIndex(0)), int(mesh.number_of_vertices()), 3);
+  }
+  for (const std::string& name : store_.Names()) {
+    const int n = store_.Count(name), width = store_.Decl(name).width;
+    const double* base = n > 0 ? store_.At(name, 0) : nullptr;
+    if (base && store_.At(name, n - 1) == base + size_t(n - 1) * width) {
+      residuals.AddressRange(base, n, width);
+    }
+  }
   for (const ActiveTerm& a : terms) {
     // The blocks a term reads are checked when it is active: a problem may
     // declare them in its init hook (global blocks), and a term no stage
@@ -399,7 +411,6 @@ void MeshModel::Build(const std::vector<ActiveTerm>& terms, int round, Residuals
     if (a.spec->finish) a.spec->finish(view);
     view.Prepare(nullptr, "none", 1);
   }
-  Mesh& mesh = store_.mesh();
   for (VertexIndex v : mesh.vertices()) {
     double* x = PositionBlock(mesh, v);
     if (hooks_.fixed[v.idx()] && residuals.Has(x)) residuals.SetConstant(x);
