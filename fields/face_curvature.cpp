@@ -5,12 +5,13 @@
 
 // Jet fitting needs an SVD traits class; naming CGAL::Eigen_svd explicitly
 // avoids depending on CGAL_EIGEN3_ENABLED (CGAL::Eigen3_support) for the
-// default template argument. (Pivoted QR instead was ~2 s faster on 32k
-// quads and gave the same conjugacy figures, but it changed Concerthall's
-// conjugate layout enough to miss its tolerance: the layout pipeline
-// amplifies rounding-level changes of the curvature.)
+// default template argument. JetOptions::qr swaps in pivoted QR.
+#include <CGAL/Eigen_matrix.h>
 #include <CGAL/Eigen_svd.h>
+#include <CGAL/Eigen_vector.h>
 #include <CGAL/Monge_via_jet_fitting.h>
+#include <Eigen/Eigenvalues>
+#include <Eigen/QR>
 #include <glog/logging.h>
 
 #include "core/solver_options.h"
@@ -20,6 +21,25 @@ namespace archgeo {
 namespace {
 
 constexpr int kMaxRings = 8;
+
+// A jet fit's least squares (CGAL's SvdTraits concept) by pivoted
+// Householder QR (JetOptions::qr). The returned condition number (which
+// archgeo never reads) is exact: from the eigenvalues of RᵀR.
+struct QrLeastSquares {
+  using FT = double;
+  using Vector = CGAL::Eigen_vector<FT>;
+  using Matrix = CGAL::Eigen_matrix<FT>;
+  static FT solve(const Matrix& M, Vector& B) {
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(M.eigen_object());
+    B.eigen_object() = qr.solve(Eigen::VectorXd(B.eigen_object()));
+    const long n = qr.matrixR().cols();
+    const Eigen::MatrixXd R = qr.matrixR().topLeftCorner(n, n).triangularView<Eigen::Upper>();
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(R.transpose() * R,
+                                                               Eigen::EigenvaluesOnly);
+    const Eigen::VectorXd& l = eigen.eigenvalues();  // ascending
+    return std::sqrt(l[n - 1] / l[0]);
+  }
+};
 
 Eigen::Vector3d P(const Mesh& mesh, VertexIndex v) {
   const Point& p = mesh.point(v);
@@ -82,7 +102,10 @@ FaceCurvature CurvatureOfMatrix(const Eigen::Matrix2d& M_in, double flat_curvatu
   return c;
 }
 
-std::vector<Eigen::Matrix3d> VertexShapeTensors(const Mesh& mesh, const JetOptions& options) {
+namespace {
+
+template <class LeastSquares>
+std::vector<Eigen::Matrix3d> ShapeTensors(const Mesh& mesh, const JetOptions& options) {
   CHECK(!mesh.has_garbage());
   CHECK(options.degree >= 2 && options.degree <= 4) << "jet degree must be 2..4";
   CHECK(options.rings >= 1 && options.rings <= kMaxRings) << "jet rings must be 1.." << kMaxRings;
@@ -91,7 +114,7 @@ std::vector<Eigen::Matrix3d> VertexShapeTensors(const Mesh& mesh, const JetOptio
   CHECK(min_points >= needed) << "jet min_points " << min_points << " < " << needed
                               << " coefficients of a degree-" << options.degree << " jet";
 
-  using Fitting = CGAL::Monge_via_jet_fitting<Kernel, Kernel, CGAL::Eigen_svd>;
+  using Fitting = CGAL::Monge_via_jet_fitting<Kernel, Kernel, LeastSquares>;
   std::vector<Eigen::Matrix3d> tensors(mesh.number_of_vertices(), Eigen::Matrix3d::Zero());
   const int count = static_cast<int>(mesh.number_of_vertices());
   // Every vertex's fit is independent (each thread has its own marks).
@@ -112,7 +135,7 @@ std::vector<Eigen::Matrix3d> VertexShapeTensors(const Mesh& mesh, const JetOptio
       points.clear();
       for (VertexIndex u : hood) points.push_back(mesh.point(u));
       Fitting fitting;
-      Fitting::Monge_form monge = fitting(points.begin(), points.end(), degree, 2);
+      typename Fitting::Monge_form monge = fitting(points.begin(), points.end(), degree, 2);
       const Eigen::Vector3d n = VertexNormal(mesh, v);
       monge.comply_wrt_given_normal(Vector(n.x(), n.y(), n.z()));
       const Vector d1 = monge.maximal_principal_direction();
@@ -123,6 +146,13 @@ std::vector<Eigen::Matrix3d> VertexShapeTensors(const Mesh& mesh, const JetOptio
     }
   }
   return tensors;
+}
+
+}  // namespace
+
+std::vector<Eigen::Matrix3d> VertexShapeTensors(const Mesh& mesh, const JetOptions& options) {
+  return options.qr ? ShapeTensors<QrLeastSquares>(mesh, options)
+                    : ShapeTensors<CGAL::Eigen_svd>(mesh, options);
 }
 
 Eigen::Matrix2d FaceMatrix(const Mesh& mesh, const FaceFrames& frames, FaceIndex f,

@@ -64,11 +64,18 @@ double BboxDiagonal(const Mesh& mesh) {
   return mesh.number_of_vertices() > 0 ? (hi - lo).norm() : 0.0;
 }
 
+// The measures' fits: by QR (JetOptions::qr), the same figures.
+JetOptions FastJets() {
+  JetOptions o;
+  o.qr = true;
+  return o;
+}
+
 }  // namespace
 
 NetCurvatureFigures MeasureNetCurvature(const Mesh& net) {
   NetCurvatureFigures out;
-  const std::vector<Eigen::Matrix3d> S = VertexShapeTensors(net);
+  const std::vector<Eigen::Matrix3d> S = VertexShapeTensors(net, FastJets());
   const double flat = kFlat / std::max(BboxDiagonal(net), 1e-300);
   double conjugacy_sum = 0, angle_sum = 0;
   for (FaceIndex f : net.faces()) {
@@ -117,7 +124,7 @@ NetCurvatureFigures MeasureNetCurvature(const Mesh& net) {
 PrincipalLabelFigures MeasurePrincipalLabels(const Mesh& mesh,
                                              const std::vector<std::pair<int, int>>& labels) {
   PrincipalLabelFigures out;
-  const std::vector<Eigen::Matrix3d> S = VertexShapeTensors(mesh);
+  const std::vector<Eigen::Matrix3d> S = VertexShapeTensors(mesh, FastJets());
   const double flat = kFlat / std::max(BboxDiagonal(mesh), 1e-300);
   double sum = 0;
   for (const auto& [i, j] : labels) {
