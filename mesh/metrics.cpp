@@ -136,7 +136,6 @@ double OneSided(const Mesh& from, const Mesh& to) {
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
   Tree tree(faces(to).first, faces(to).second, to);
   tree.build();
-  tree.accelerate_distance_queries();  // built here, not lazily by a thread
   const long n = long(samples.size());
   double worst = 0;
   const FullTeams teams;
