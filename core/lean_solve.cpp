@@ -67,9 +67,15 @@ inline void AddTransposeProduct(const double* A, const double* B, int rows, int 
   }
 }
 
-// Threads for the two fixed halves of the linearisation and the product
-// (omp_set_num_threads(1) runs both halves on one).
-int HalfThreads() { return std::min(2, omp_get_max_threads()); }
+// Runs body(t, first, end) for the two fixed halves of [0, n), t = 0 on
+// [0, split) and t = 1 on [split, n): on two threads where there are, and
+// the same sums on one (omp_set_num_threads(1) runs both halves there).
+template <class Body>
+void ForHalves(size_t split, size_t n, const Body& body) {
+  const int threads = std::min(2, omp_get_max_threads());
+#pragma omp parallel for num_threads(threads) schedule(static, 1)
+  for (int t = 0; t < 2; ++t) body(t, t == 0 ? 0 : split, t == 0 ? split : n);
+}
 
 // Ceres' loss corrector (Triggs et al. 1999, "Bundle adjustment — a modern
 // synthesis", §4.3): scales r and J so that ½‖r̃‖² matches ρ to second order.
@@ -177,19 +183,14 @@ class Lean {
     }
     // Two halves of the residuals, each into its own H and g, then summed:
     // two threads where there are, and the same sums on one.
-    const size_t half = s_.residuals.size() / 2;
     bool good[2] = {true, true};
-#pragma omp parallel for num_threads(HalfThreads()) schedule(static, 1)
-    for (int t = 0; t < 2; ++t) {
+    ForHalves(s_.residuals.size() / 2, s_.residuals.size(), [&](int t, size_t first, size_t end) {
       Work& w = t == 0 ? work_ : second_;
       std::fill(w.hessian.begin(), w.hessian.end(), 0.0);
       w.gradient.setZero(s_.tangent);
       w.total = 0;
-      const size_t end = t == 0 ? half : s_.residuals.size();
-      for (size_t i = t == 0 ? 0 : half; i < end && good[t]; ++i) {
-        good[t] = Accumulate(s_.residuals[i], &w);
-      }
-    }
+      for (size_t i = first; i < end && good[t]; ++i) good[t] = Accumulate(s_.residuals[i], &w);
+    });
     if (!good[0] || !good[1]) return false;
     double* H = work_.hessian.data();
     const double* H2 = second_.hessian.data();
@@ -213,16 +214,14 @@ class Lean {
     const int n = int(s_.blocks.size());
     const double* H = work_.hessian.data();
     spare_.resize(s_.tangent);
-#pragma omp parallel for num_threads(HalfThreads()) schedule(static, 1)
-    for (int t = 0; t < 2; ++t) {
+    ForHalves(size_t(split_), size_t(n), [&](int t, size_t first, size_t end) {
       double* out = t == 0 ? y->data() : spare_.data();
       if (t == 0) {
         y->noalias() = damping.cwiseProduct(x);
       } else {
         spare_.setZero();
       }
-      const int end = t == 0 ? split_ : n;
-      for (int i = t == 0 ? 0 : split_; i < end; ++i) {
+      for (size_t i = first; i < end; ++i) {
         const PatternBlock& bi = s_.blocks[i];
         double* yi = out + bi.offset;
         const double* xi = x.data() + bi.offset;
@@ -233,7 +232,7 @@ class Lean {
           AddProduct<true>(H + s_.slot[k], bi.tangent, bj.tangent, xi, out + bj.offset);
         }
       }
-    }
+    });
     *y += spare_;
   }
 
