@@ -104,15 +104,17 @@ struct Work {
 
 class Lean {
  public:
-  Lean(const Residuals& residuals, NormalPattern& pattern) : s_(pattern) {
+  Lean(const Residuals& residuals, NormalPattern& pattern) : in_(residuals), s_(pattern) {
     ReadNormalPattern(residuals, &s_);
     size_t rows = 0, scratch = 0, parameters = 0;
-    for (const PatternResidual& r : s_.residuals) {
-      rows = std::max<size_t>(rows, r.rows);
+    for (size_t i = 0; i < s_.residuals.size(); ++i) {
+      const PatternResidual& r = s_.residuals[i];
+      const int m = Rows(i);
+      rows = std::max<size_t>(rows, m);
       parameters = std::max<size_t>(parameters, r.end - r.first);
       size_t need = 0;
       for (int a = r.first; a < r.end; ++a) {
-        if (s_.block[a] >= 0) need += size_t(r.rows) * ambient(a);
+        if (s_.block[a] >= 0) need += size_t(m) * ambient(a);
       }
       scratch = std::max(scratch, need);
     }
@@ -163,10 +165,11 @@ class Lean {
   // ½ Σ ρ(‖r‖²) at the current values; false if a block fails to evaluate.
   bool Cost(double* cost) {
     double total = 0;
-    for (const PatternResidual& r : s_.residuals) {
+    for (size_t i = 0; i < s_.residuals.size(); ++i) {
+      const Residuals::Residual& r = in_.residuals()[i];
       double* residual = work_.residual.data();
       if (!r.cost->Evaluate(s_.values.data() + r.first, residual, nullptr)) return false;
-      const double sq = Eigen::Map<const Vector>(residual, r.rows).squaredNorm();
+      const double sq = Eigen::Map<const Vector>(residual, Rows(i)).squaredNorm();
       total += Loss(r, sq);
     }
     *cost = 0.5 * total;
@@ -189,7 +192,7 @@ class Lean {
       std::fill(w.hessian.begin(), w.hessian.end(), 0.0);
       w.gradient.setZero(s_.tangent);
       w.total = 0;
-      for (size_t i = first; i < end && good[t]; ++i) good[t] = Accumulate(s_.residuals[i], &w);
+      for (size_t i = first; i < end && good[t]; ++i) good[t] = Accumulate(i, &w);
     });
     if (!good[0] || !good[1]) return false;
     double* H = work_.hessian.data();
@@ -318,7 +321,11 @@ class Lean {
   }
   // One residual block into the sums: ρ, its corrected tangent Jacobians,
   // g += J̃ᵀ r̃ and every J̃_aᵀ J̃_b into its slot.
-  bool Accumulate(const PatternResidual& r, Work* k) const {
+  bool Accumulate(size_t index, Work* k) const {
+    const PatternResidual& r = s_.residuals[index];
+    const ceres::CostFunction* cost = in_.residuals()[index].cost;
+    const ceres::LossFunction* loss = in_.residuals()[index].loss;
+    const int rows = cost->num_residuals();
     const int m = r.end - r.first;
     double** jacobians = k->jacobians.data();
     double** tangents = k->tangents.data();
@@ -328,13 +335,13 @@ class Lean {
       if (s_.block[r.first + a] < 0) continue;
       jacobians[a] = k->ambient.data() + used;
       tangents[a] = k->tangent.data() + used;
-      used += size_t(r.rows) * ambient(r.first + a);
+      used += size_t(rows) * ambient(r.first + a);
     }
-    if (!r.cost->Evaluate(s_.values.data() + r.first, k->residual.data(), jacobians)) return false;
-    Eigen::Map<Vector> res(k->residual.data(), r.rows);
+    if (!cost->Evaluate(s_.values.data() + r.first, k->residual.data(), jacobians)) return false;
+    Eigen::Map<Vector> res(k->residual.data(), rows);
     const double sq = res.squaredNorm();
     double rho[3] = {sq, 1.0, 0.0};
-    if (r.loss) r.loss->Evaluate(sq, rho);
+    if (loss) loss->Evaluate(sq, rho);
     k->total += rho[0];
     const Corrector corrector(sq, rho);
     // Tangent Jacobians, corrected: J̃ = √ρ' (J − α/‖r‖² r rᵀ J).
@@ -343,13 +350,13 @@ class Lean {
       if (i < 0) continue;
       const PatternBlock& b = s_.blocks[i];
       if (b.manifold) {
-        MapMatrix(tangents[a], r.rows, b.tangent).noalias() =
-            MapMatrix(jacobians[a], r.rows, b.ambient) *
+        MapMatrix(tangents[a], rows, b.tangent).noalias() =
+            MapMatrix(jacobians[a], rows, b.ambient) *
             Eigen::Map<const RowMatrix>(b.plus_jacobian.data(), b.ambient, b.tangent);
       } else {
         tangents[a] = jacobians[a];  // tangent = ambient: in place
       }
-      MapMatrix T(tangents[a], r.rows, b.tangent);
+      MapMatrix T(tangents[a], rows, b.tangent);
       if (corrector.alpha_sq_norm != 0.0) {
         T -= corrector.alpha_sq_norm * res * (res.transpose() * T);
       }
@@ -362,19 +369,19 @@ class Lean {
       const int i = s_.block[r.first + a];
       if (i < 0) continue;
       const PatternBlock& bi = s_.blocks[i];
-      AddTransposeProduct(tangents[a], res.data(), r.rows, bi.tangent, 1,
+      AddTransposeProduct(tangents[a], res.data(), rows, bi.tangent, 1,
                           k->gradient.data() + bi.offset);
-      AddTransposeProduct(tangents[a], tangents[a], r.rows, bi.tangent, bi.tangent,
+      AddTransposeProduct(tangents[a], tangents[a], rows, bi.tangent, bi.tangent,
                           H + s_.diagonal[i]);
       for (int c = a + 1; c < m; ++c) {
         const int j = s_.block[r.first + c];
         if (j < 0 || j == i) continue;
         const PatternBlock& bj = s_.blocks[j];
         if (i < j) {
-          AddTransposeProduct(tangents[a], tangents[c], r.rows, bi.tangent, bj.tangent,
+          AddTransposeProduct(tangents[a], tangents[c], rows, bi.tangent, bj.tangent,
                               H + s_.pair_slot[pair]);
         } else {
-          AddTransposeProduct(tangents[c], tangents[a], r.rows, bj.tangent, bi.tangent,
+          AddTransposeProduct(tangents[c], tangents[a], rows, bj.tangent, bi.tangent,
                               H + s_.pair_slot[pair]);
         }
         ++pair;
@@ -383,7 +390,8 @@ class Lean {
     return true;
   }
 
-  double Loss(const PatternResidual& r, double sq) const {
+  int Rows(size_t i) const { return in_.residuals()[i].cost->num_residuals(); }
+  double Loss(const Residuals::Residual& r, double sq) const {
     if (!r.loss) return sq;
     double rho[3];
     r.loss->Evaluate(sq, rho);
@@ -393,6 +401,7 @@ class Lean {
     return Eigen::Map<const RowMatrix>(work_.hessian.data() + offset, rows, cols);
   }
 
+  const Residuals& in_;
   NormalPattern& s_;
   Work work_, second_;
   int split_ = 0;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include <ceres/cost_function.h>
 #include <ceres/manifold.h>
 
 namespace archgeo {
@@ -13,8 +12,8 @@ int TangentSize(const Residuals::Block& b) {
   return b.manifold ? b.manifold->TangentSize() : b.size;
 }
 
-// Renews `s`'s costs, losses and manifolds from `in` if the structure is
-// `s`'s; false (and `s` partly renewed) if not.
+// Renews `s`'s manifolds from `in` if the structure is `s`'s; false (and
+// `s` partly renewed) if not.
 bool Renew(const Residuals& in, NormalPattern& s) {
   const std::vector<Residuals::Residual>& residuals = in.residuals();
   if (residuals.size() != s.residuals.size() ||
@@ -23,11 +22,8 @@ bool Renew(const Residuals& in, NormalPattern& s) {
     return false;
   }
   for (size_t k = 0; k < residuals.size(); ++k) {
-    PatternResidual& r = s.residuals[k];
+    const PatternResidual& r = s.residuals[k];
     if (residuals[k].first != r.first || residuals[k].end != r.end) return false;
-    r.cost = residuals[k].cost;
-    r.loss = residuals[k].loss;
-    r.rows = r.cost->num_residuals();
   }
   // The free blocks in order, and the constant ones, as before.
   size_t free = 0, constant = 0;
@@ -76,9 +72,6 @@ bool ReadNormalPattern(const Residuals& in, NormalPattern* pattern) {
   s.residuals.reserve(residuals.size());
   for (const Residuals::Residual& from : residuals) {
     PatternResidual r;
-    r.cost = from.cost;
-    r.loss = from.loss;
-    r.rows = r.cost->num_residuals();
     r.first = from.first;
     r.end = from.end;
     s.residuals.push_back(r);

@@ -19,15 +19,13 @@ struct PatternBlock {
   std::vector<double> plus_jacobian;           // ambient × tangent, row-major
 };
 
-struct PatternResidual {
-  const ceres::CostFunction* cost = nullptr;
-  const ceres::LossFunction* loss = nullptr;
-  int rows = 0;
+struct PatternResidual {  // its cost and loss: the Residuals' entry of the same index
   int first = 0, end = 0;  // its parameter blocks in NormalPattern::values / ::block
   int pairs = 0;           // its slots in NormalPattern::pair_slot (free pairs a < b)
 };
 
-// The problem as the PCG solver reads it, and the block pattern of J^T J.
+// The structure of a round's residuals as the PCG solver reads it (their
+// costs and losses stay in the Residuals), and the block pattern of J^T J.
 struct NormalPattern {
   std::vector<PatternBlock> blocks;      // free blocks
   std::vector<PatternResidual> residuals;
@@ -46,9 +44,9 @@ struct NormalPattern {
 // Reads `residuals` into `pattern` (constant blocks stay out of the
 // pattern). When `pattern` holds the pattern of residuals of the same
 // structure — the same residual blocks in the same order, reading the same
-// parameter blocks, free and constant alike, of the same sizes — only its
-// cost functions, losses and manifolds are read anew; the loop builds its
-// residuals every round with that structure. Returns whether it was reused.
+// parameter blocks, free and constant alike, of the same sizes — only the
+// manifolds are read anew; the loop builds its residuals every round with
+// that structure. Returns whether it was reused.
 bool ReadNormalPattern(const Residuals& residuals, NormalPattern* pattern);
 
 }  // namespace archgeo

@@ -232,8 +232,6 @@ TEST(LeanSolve, ThePatternIsReusedWhileTheStructureStays) {
   EXPECT_TRUE(ReadNormalPattern(again, &pattern));
   EXPECT_EQ(pattern.slots, first.slots);
   EXPECT_EQ(pattern.pair_slot, first.pair_slot);
-  EXPECT_EQ(pattern.residuals.back().cost, again.residuals().back().cost);
-  EXPECT_NE(pattern.residuals.back().cost, first.residuals.back().cost);
 
   ASSERT_TRUE(LeanSolve(Tight(), again, &pattern).usable);
   ASSERT_TRUE(LeanSolve(Tight(), fresh.residuals).usable);
