@@ -34,23 +34,33 @@ void Residuals::AddressRange(const double* base, int count, int width) {
   ranges_.push_back({base, size_t(count), width, std::vector<int>(size_t(count), -1)});
 }
 
+namespace {
+
+constexpr size_t kNone = size_t(-1);
+
+// The index of `block` among the blocks of `range`, or kNone if it is not
+// one of them.
+template <class Range>
+size_t IndexIn(const Range& range, const double* block) {
+  if (block < range.base || block >= range.base + range.count * size_t(range.width)) return kNone;
+  const size_t offset = size_t(block - range.base);
+  return offset % size_t(range.width) == 0 ? offset / size_t(range.width) : kNone;
+}
+
+}  // namespace
+
 int* Residuals::RangeSlot(const double* block, int size) {
   for (Range& r : ranges_) {
-    if (block < r.base || block >= r.base + r.count * size_t(r.width)) continue;
-    const size_t offset = size_t(block - r.base);
-    if (r.width != size || offset % size_t(r.width) != 0) return nullptr;
-    return &r.id[offset / size_t(r.width)];
+    const size_t k = IndexIn(r, block);
+    if (k != kNone && r.width == size) return &r.id[k];
   }
   return nullptr;
 }
 
 int Residuals::Find(const double* block) const {
   for (const Range& r : ranges_) {
-    if (block < r.base || block >= r.base + r.count * size_t(r.width)) continue;
-    const size_t offset = size_t(block - r.base);
-    if (offset % size_t(r.width) == 0 && r.id[offset / size_t(r.width)] >= 0) {
-      return r.id[offset / size_t(r.width)];
-    }
+    const size_t k = IndexIn(r, block);
+    if (k != kNone && r.id[k] >= 0) return r.id[k];
   }
   const auto it = index_.find(block);
   return it == index_.end() ? -1 : it->second;
