@@ -56,6 +56,15 @@ inline void AddProduct(const double* M, int rows, int cols, const double* x, dou
 // more in dispatch than in arithmetic here).
 inline void AddTransposeProduct(const double* A, const double* B, int rows, int a, int b,
                                 double* C) {
+  if (a == 3 && b == 3) {  // the common vertex × vertex block: C read and written once
+    using V3 = Eigen::Matrix<double, 1, 3>;
+    Eigen::Matrix3d sum = Eigen::Map<const V3>(A).transpose() * Eigen::Map<const V3>(B);
+    for (int r = 1; r < rows; ++r) {
+      sum.noalias() += Eigen::Map<const V3>(A + 3 * r).transpose() * Eigen::Map<const V3>(B + 3 * r);
+    }
+    Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(C) += sum;
+    return;
+  }
   for (int r = 0; r < rows; ++r) {
     const double* Ar = A + r * a;
     const double* Br = B + r * b;
@@ -96,7 +105,8 @@ struct Corrector {
 
 // The linearisation's scratch and its sums: H (slots), g and Σ ρ.
 struct Work {
-  std::vector<double> residual, ambient, tangent, hessian;
+  std::vector<double> residual, ambient, tangent;
+  std::vector<double>* hessian = nullptr;  // the pattern's, kept between rounds
   std::vector<double*> jacobians, tangents;
   Vector gradient;
   double total = 0;
@@ -118,13 +128,15 @@ class Lean {
       }
       scratch = std::max(scratch, need);
     }
-    for (Work* w : {&work_, &second_}) {
+    for (int t = 0; t < 2; ++t) {
+      Work* w = t == 0 ? &work_ : &second_;
+      w->hessian = &s_.hessian[t];
       w->residual.resize(rows);
       w->ambient.resize(scratch);
       w->tangent.resize(scratch);
       w->jacobians.resize(parameters);
       w->tangents.resize(parameters);
-      w->hessian.resize(s_.slots);
+      w->hessian->resize(s_.slots);
     }
     // The product's halves: the first block row past half the off-diagonal slots.
     const int n = int(s_.blocks.size());
@@ -189,14 +201,14 @@ class Lean {
     bool good[2] = {true, true};
     ForHalves(s_.residuals.size() / 2, s_.residuals.size(), [&](int t, size_t first, size_t end) {
       Work& w = t == 0 ? work_ : second_;
-      std::fill(w.hessian.begin(), w.hessian.end(), 0.0);
+      std::fill(w.hessian->begin(), w.hessian->end(), 0.0);
       w.gradient.setZero(s_.tangent);
       w.total = 0;
       for (size_t i = first; i < end && good[t]; ++i) good[t] = Accumulate(i, &w);
     });
     if (!good[0] || !good[1]) return false;
-    double* H = work_.hessian.data();
-    const double* H2 = second_.hessian.data();
+    double* H = work_.hessian->data();
+    const double* H2 = second_.hessian->data();
     const long slots = long(s_.slots);
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < slots; ++i) H[i] += H2[i];
@@ -215,7 +227,7 @@ class Lean {
   // are, and the same sums on one.
   void Multiply(const Vector& damping, const Vector& x, Vector* y) const {
     const int n = int(s_.blocks.size());
-    const double* H = work_.hessian.data();
+    const double* H = work_.hessian->data();
     spare_.resize(s_.tangent);
     ForHalves(size_t(split_), size_t(n), [&](int t, size_t first, size_t end) {
       double* out = t == 0 ? y->data() : spare_.data();
@@ -343,6 +355,7 @@ class Lean {
     double rho[3] = {sq, 1.0, 0.0};
     if (loss) loss->Evaluate(sq, rho);
     k->total += rho[0];
+    if (sq == 0.0 && AllZero(jacobians, m, rows, r.first)) return true;  // e.g. an idle barrier
     const Corrector corrector(sq, rho);
     // Tangent Jacobians, corrected: J̃ = √ρ' (J − α/‖r‖² r rᵀ J).
     for (int a = 0; a < m; ++a) {
@@ -363,7 +376,7 @@ class Lean {
       T *= corrector.sqrt_rho1;
     }
     res *= corrector.residual_scaling;
-    double* H = k->hessian.data();
+    double* H = k->hessian->data();
     int pair = r.pairs;
     for (int a = 0; a < m; ++a) {
       const int i = s_.block[r.first + a];
@@ -390,6 +403,18 @@ class Lean {
     return true;
   }
 
+  // Whether every Jacobian of a residual reading the parameters from `first`
+  // is zero: it adds nothing to g or H.
+  bool AllZero(double* const* jacobians, int m, int rows, int first) const {
+    for (int a = 0; a < m; ++a) {
+      if (!jacobians[a]) continue;
+      const double* J = jacobians[a];
+      for (int e = 0, n = rows * ambient(first + a); e < n; ++e) {
+        if (J[e] != 0.0) return false;
+      }
+    }
+    return true;
+  }
   int Rows(size_t i) const { return in_.residuals()[i].cost->num_residuals(); }
   double Loss(const Residuals::Residual& r, double sq) const {
     if (!r.loss) return sq;
@@ -398,7 +423,7 @@ class Lean {
     return rho[0];
   }
   Eigen::Map<const RowMatrix> Slot(int offset, int rows, int cols) const {
-    return Eigen::Map<const RowMatrix>(work_.hessian.data() + offset, rows, cols);
+    return Eigen::Map<const RowMatrix>(work_.hessian->data() + offset, rows, cols);
   }
 
   const Residuals& in_;

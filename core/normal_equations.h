@@ -39,6 +39,10 @@ struct NormalPattern {
   int tangent = 0, slots = 0;
   int diagonal_slots = 0;  // the diagonal slots come first: [0, diagonal_slots)
   std::vector<const double*> constant;  // the constant blocks the residuals read
+  // The solver's two partial sums of H (one per half of the residuals):
+  // kept with the pattern, so that a round of the same structure reuses the
+  // pages instead of faulting in 2 × 8·slots fresh bytes.
+  std::vector<double> hessian[2];
 };
 
 // Reads `residuals` into `pattern` (constant blocks stay out of the
