@@ -180,7 +180,7 @@ class Lean {
     for (size_t i = 0; i < s_.residuals.size(); ++i) {
       const Residuals::Residual& r = in_.residuals()[i];
       double* residual = work_.residual.data();
-      if (!r.cost->Evaluate(s_.values.data() + r.first, residual, nullptr)) return false;
+      if (!r.Evaluate(s_.values.data() + r.first, residual, nullptr)) return false;
       const double sq = Eigen::Map<const Vector>(residual, Rows(i)).squaredNorm();
       total += Loss(r, sq);
     }
@@ -335,9 +335,9 @@ class Lean {
   // g += J̃ᵀ r̃ and every J̃_aᵀ J̃_b into its slot.
   bool Accumulate(size_t index, Work* k) const {
     const PatternResidual& r = s_.residuals[index];
-    const ceres::CostFunction* cost = in_.residuals()[index].cost;
-    const ceres::LossFunction* loss = in_.residuals()[index].loss;
-    const int rows = cost->num_residuals();
+    const Residuals::Residual& in = in_.residuals()[index];
+    const ceres::LossFunction* loss = in.loss;
+    const int rows = in.rows();
     const int m = r.end - r.first;
     double** jacobians = k->jacobians.data();
     double** tangents = k->tangents.data();
@@ -349,7 +349,7 @@ class Lean {
       tangents[a] = k->tangent.data() + used;
       used += size_t(rows) * ambient(r.first + a);
     }
-    if (!cost->Evaluate(s_.values.data() + r.first, k->residual.data(), jacobians)) return false;
+    if (!in.Evaluate(s_.values.data() + r.first, k->residual.data(), jacobians)) return false;
     Eigen::Map<Vector> res(k->residual.data(), rows);
     const double sq = res.squaredNorm();
     double rho[3] = {sq, 1.0, 0.0};
@@ -415,7 +415,7 @@ class Lean {
     }
     return true;
   }
-  int Rows(size_t i) const { return in_.residuals()[i].cost->num_residuals(); }
+  int Rows(size_t i) const { return in_.residuals()[i].rows(); }
   double Loss(const Residuals::Residual& r, double sq) const {
     if (!r.loss) return sq;
     double rho[3];

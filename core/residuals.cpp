@@ -26,6 +26,8 @@ void Residuals::Clear() {
   parts_.assign(1, "");
   losses_.clear();
   manifolds_.clear();
+  views_.clear();
+  batches_.clear();
   rows_ = 0;
 }
 
@@ -81,13 +83,32 @@ int Residuals::Part(const std::string& name) {
 
 void Residuals::Add(ceres::CostFunction* cost, const ceres::LossFunction* loss,
                     double* const* blocks, int count, int part) {
-  const std::vector<int32_t>& sizes = cost->parameter_block_sizes();
-  CHECK_EQ(int(sizes.size()), count) << "a cost function over " << sizes.size()
-                                     << " blocks added with " << count;
   Residual r;
   r.cost = cost;
   r.loss = loss;
   r.part = part;
+  Append(r, cost->parameter_block_sizes(), blocks, count);
+}
+
+Batch* Residuals::Own(std::unique_ptr<Batch> batch) {
+  batches_.push_back(std::move(batch));
+  return batches_.back().get();
+}
+
+void Residuals::Add(const Batch* batch, int element, const ceres::LossFunction* loss,
+                    double* const* blocks, int count, int part) {
+  Residual r;
+  r.batch = batch;
+  r.element = element;
+  r.loss = loss;
+  r.part = part;
+  Append(r, batch->parameter_block_sizes(), blocks, count);
+}
+
+void Residuals::Append(Residual r, const std::vector<int32_t>& sizes, double* const* blocks,
+                       int count) {
+  CHECK_EQ(int(sizes.size()), count) << "a cost function over " << sizes.size()
+                                     << " blocks added with " << count;
   r.first = int(values_.size());
   for (int a = 0; a < count; ++a) {
     for (int b = 0; b < a; ++b) CHECK(blocks[a] != blocks[b]) << "a block read twice by one residual";
@@ -108,7 +129,7 @@ void Residuals::Add(ceres::CostFunction* cost, const ceres::LossFunction* loss,
   }
   r.end = int(values_.size());
   residuals_.push_back(r);
-  rows_ += cost->num_residuals();
+  rows_ += r.rows();
 }
 
 void Residuals::SetManifold(double* block, ceres::Manifold* manifold) {
@@ -142,8 +163,8 @@ int Residuals::FreeTangentSize() const {
 
 double Residuals::Cost(int i) const {
   const Residual& r = residuals_[size_t(i)];
-  std::vector<double> residual(size_t(r.cost->num_residuals()));
-  if (!r.cost->Evaluate(values_.data() + r.first, residual.data(), nullptr)) {
+  std::vector<double> residual(size_t(r.rows()));
+  if (!r.Evaluate(values_.data() + r.first, residual.data(), nullptr)) {
     return std::numeric_limits<double>::quiet_NaN();
   }
   double sq = 0;
@@ -164,7 +185,12 @@ std::unique_ptr<ceres::Problem> Residuals::MakeProblem() const {
   std::vector<double*> read;
   for (const Residual& r : residuals_) {
     read.assign(values_.begin() + r.first, values_.begin() + r.end);
-    problem->AddResidualBlock(r.cost, const_cast<ceres::LossFunction*>(r.loss), read);
+    ceres::CostFunction* cost = r.cost;
+    if (!cost) {
+      views_.push_back(std::make_unique<BatchElement>(*r.batch, r.element));
+      cost = views_.back().get();
+    }
+    problem->AddResidualBlock(cost, const_cast<ceres::LossFunction*>(r.loss), read);
   }
   for (const Block& b : blocks_) {
     if (b.manifold) problem->SetManifold(b.values, const_cast<ceres::Manifold*>(b.manifold));

@@ -15,8 +15,11 @@
 #include <unordered_map>
 #include <vector>
 
+#include <ceres/cost_function.h>
+
+#include "core/batch.h"
+
 namespace ceres {
-class CostFunction;
 class LossFunction;
 class Manifold;
 class Problem;
@@ -33,10 +36,18 @@ class Residuals {
     bool constant = false;
   };
   struct Residual {
-    ceres::CostFunction* cost = nullptr;
+    ceres::CostFunction* cost = nullptr;  // or, when null, element `element` of `batch`
+    const Batch* batch = nullptr;
+    int element = 0;
     const ceres::LossFunction* loss = nullptr;  // nullptr: ½‖r‖²
     int first = 0, end = 0;  // its parameter blocks in values() / block_of()
     int part = 0;
+
+    int rows() const { return cost ? cost->num_residuals() : batch->num_residuals(); }
+    bool Evaluate(double const* const* values, double* residuals, double** jacobians) const {
+      return cost ? cost->Evaluate(values, residuals, jacobians)
+                  : batch->Evaluate(element, values, residuals, jacobians);
+    }
   };
 
   Residuals();
@@ -61,6 +72,11 @@ class Residuals {
   // the size the cost declares and the size it had before.
   void Add(ceres::CostFunction* cost, const ceres::LossFunction* loss, double* const* blocks,
            int count, int part = 0);
+  // Takes ownership of `batch` (until Clear) and returns it.
+  Batch* Own(std::unique_ptr<Batch> batch);
+  // Adds element `element` of an owned batch as a residual block, as above.
+  void Add(const Batch* batch, int element, const ceres::LossFunction* loss,
+           double* const* blocks, int count, int part = 0);
   bool Has(const double* block) const { return Find(block) >= 0; }
   // Sets the manifold (owned from here on) of a block a residual reads that
   // has none yet; deletes `manifold` otherwise.
@@ -80,8 +96,9 @@ class Residuals {
   // evaluate).
   double Cost(int i) const;
   // The same problem for ceres::Solve: the residuals in this order, then the
-  // manifolds and constant blocks. It borrows costs, losses and manifolds;
-  // this list must outlive it.
+  // manifolds and constant blocks. It borrows costs, losses and manifolds
+  // (and views of batch elements kept here until Clear); this list must
+  // outlive it.
   std::unique_ptr<ceres::Problem> MakeProblem() const;
 
  private:
@@ -94,6 +111,8 @@ class Residuals {
   // The block index of `block` (-1: none); its slot in a range, if in one.
   int Find(const double* block) const;
   int* RangeSlot(const double* block, int size);
+  // Appends the residual `r` over `blocks` of `sizes`.
+  void Append(Residual r, const std::vector<int32_t>& sizes, double* const* blocks, int count);
 
   std::vector<Range> ranges_;
   std::vector<Residual> residuals_;
@@ -104,6 +123,8 @@ class Residuals {
   std::vector<std::string> parts_;
   std::vector<std::unique_ptr<ceres::LossFunction>> losses_;
   std::vector<std::unique_ptr<ceres::Manifold>> manifolds_;
+  std::vector<std::unique_ptr<Batch>> batches_;
+  mutable std::vector<std::unique_ptr<ceres::CostFunction>> views_;  // MakeProblem's
   int rows_ = 0;
 };
 

@@ -16,9 +16,12 @@
 #pragma once
 
 #include <any>
+#include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "core/batch.h"
 #include "core/elements.h"
 #include "core/settings.h"
 
@@ -154,11 +157,45 @@ class TermContext {
   // is dropped: it cannot change.
   virtual void Add(ceres::CostFunction* cost, const std::vector<double*>& blocks,
                    const char* part = nullptr, double weight = -1) = 0;
+  // The same as Add(new Cost(new Functor(functor)), blocks, part, weight)
+  // (within a ToleranceBand of `band` when band ≥ 0), for Cost a
+  // ceres::AutoDiffCostFunction type, without a cost object per element: the
+  // term's elements of one Cost type and band share one evaluator this round
+  // (core/batch.h).
+  template <class Cost>
+  void AddAutoDiff(const typename BatchOf<Cost>::functor& functor,
+                   const std::array<double*, BatchOf<Cost>::kBlocks>& blocks, double band = -1,
+                   const char* part = nullptr, double weight = -1) {
+    using Kind = typename BatchOf<Cost>::type;
+    Kind* batch = nullptr;
+    for (const Kept& k : batches_) {
+      if (k.key == Kind::Key() && k.band == band) batch = static_cast<Kind*>(k.batch);
+    }
+    if (!batch) {
+      batch = static_cast<Kind*>(Keep(std::make_unique<Kind>(band)));
+      batches_.push_back({Kind::Key(), band, batch});
+    }
+    AddElement(*batch, batch->Push(functor), blocks.data(), int(blocks.size()), part, weight);
+  }
   // Optimises the 3-block on the unit sphere.
   virtual void SetUnit(double* block) = 0;
   // Optimises `block` on `manifold` (taking ownership), unless it already has
   // one (then `manifold` is deleted); e.g. a vertex bound to a curve.
   virtual void SetManifold(double* block, ceres::Manifold* manifold) = 0;
+
+ protected:
+  // Takes ownership of a batch for this round's residuals and returns it.
+  virtual Batch* Keep(std::unique_ptr<Batch> batch) = 0;
+  // Add for element `element` of a kept batch.
+  virtual void AddElement(const Batch& batch, int element, double* const* blocks, int count,
+                          const char* part, double weight) = 0;
+  // This round's batches (forget them when the round's residuals go).
+  struct Kept {
+    const void* key;
+    double band;
+    Batch* batch;
+  };
+  std::vector<Kept> batches_;
 };
 
 }  // namespace archgeo

@@ -3,6 +3,7 @@
 #include <glog/logging.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace archgeo {
 
@@ -14,17 +15,21 @@ ToleranceBand::ToleranceBand(ceres::CostFunction* inner, double band)
   *mutable_parameter_block_sizes() = inner->parameter_block_sizes();
 }
 
-bool ToleranceBand::Evaluate(double const* const* parameters, double* residuals,
-                             double** jacobians) const {
-  if (!inner_->Evaluate(parameters, residuals, jacobians)) return false;
-  const double r = residuals[0];
-  residuals[0] = r - std::clamp(r, -band_, band_);
-  if (jacobians && std::abs(r) <= band_) {
-    const auto& sizes = parameter_block_sizes();
+void ApplyToleranceBand(double band, const std::vector<int32_t>& sizes, double* residual,
+                        double** jacobians) {
+  const double r = residual[0];
+  residual[0] = r - std::clamp(r, -band, band);
+  if (jacobians && std::abs(r) <= band) {
     for (size_t i = 0; i < sizes.size(); ++i) {
       if (jacobians[i]) std::fill(jacobians[i], jacobians[i] + sizes[i], 0.0);
     }
   }
+}
+
+bool ToleranceBand::Evaluate(double const* const* parameters, double* residuals,
+                             double** jacobians) const {
+  if (!inner_->Evaluate(parameters, residuals, jacobians)) return false;
+  ApplyToleranceBand(band_, parameter_block_sizes(), residuals, jacobians);
   return true;
 }
 

@@ -13,9 +13,16 @@
 
 #include <ceres/cost_function.h>
 
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace archgeo {
+
+// The band applied in place to an evaluated scalar residual and its
+// Jacobians (blocks of `sizes`; null Jacobians are skipped).
+void ApplyToleranceBand(double band, const std::vector<int32_t>& sizes, double* residual,
+                        double** jacobians);
 
 class ToleranceBand : public ceres::CostFunction {
  public:

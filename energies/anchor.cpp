@@ -7,15 +7,18 @@
 
 namespace archgeo {
 
-ceres::CostFunction* MakeAnchor(const double target[3], double inv_length) {
+Anchor CheckedAnchor(const double target[3], double inv_length) {
   CHECK(target != nullptr);
   CHECK(std::isfinite(target[0]) && std::isfinite(target[1]) &&
         std::isfinite(target[2]))
       << "MakeAnchor: non-finite target";
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
       << "MakeAnchor: inv_length must be finite and > 0, got " << inv_length;
-  return new ceres::AutoDiffCostFunction<Anchor, 3, 3>(
-      new Anchor(target, inv_length));
+  return Anchor(target, inv_length);
+}
+
+ceres::CostFunction* MakeAnchor(const double target[3], double inv_length) {
+  return new AnchorCost(new Anchor(CheckedAnchor(target, inv_length)));
 }
 
 }  // namespace archgeo
@@ -28,7 +31,7 @@ namespace {
 
 void AddAnchor(TermContext& c, size_t i) {
   const int v = c.elements->Vertices(i)[0];
-  c.Add(MakeAnchor(c.Original(v), 1.0), {c.Position(v)});
+  c.AddAutoDiff<AnchorCost>(CheckedAnchor(c.Original(v), 1.0), {c.Position(v)});
 }
 
 }  // namespace

@@ -22,10 +22,7 @@
 #define ARCHGEO_ENERGIES_ANCHOR_H_
 
 #include <Eigen/Core>
-
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include <ceres/autodiff_cost_function.h>
 
 namespace archgeo {
 
@@ -51,6 +48,10 @@ struct Anchor {
 // Returns a new AutoDiffCostFunction<Anchor, 3, 3> (block v); the caller takes
 // ownership. Preconditions (CHECKed): target finite, inv_length finite and > 0.
 ceres::CostFunction* MakeAnchor(const double target[3], double inv_length);
+// The functor MakeAnchor wraps, after the same checks, and its cost type:
+// for TermContext::AddAutoDiff (proximity's point part adds it too).
+Anchor CheckedAnchor(const double target[3], double inv_length);
+using AnchorCost = ceres::AutoDiffCostFunction<Anchor, 3, 3>;
 
 }  // namespace archgeo
 

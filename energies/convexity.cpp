@@ -17,13 +17,23 @@ double CornerTurnSine(const double a[3], const double b[3], const double c[3],
          (std::sqrt(u.squaredNorm() + 1e-18) * std::sqrt(v.squaredNorm() + 1e-18));
 }
 
-ceres::CostFunction* MakeConvexity(const double normal[3], double threshold) {
+namespace {
+
+using ConvexityCost = ceres::AutoDiffCostFunction<Convexity, 1, 3, 3, 3>;
+
+Convexity CheckedConvexity(const double normal[3], double threshold) {
   CHECK(normal != nullptr);
   const double n2 = normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2];
   CHECK(std::isfinite(n2) && std::abs(n2 - 1.0) < 2e-6) << "MakeConvexity: normal not unit";
   CHECK(std::isfinite(threshold) && threshold >= -1.0 && threshold <= 1.0)
       << "MakeConvexity: threshold must be in [-1, 1], got " << threshold;
-  return new ceres::AutoDiffCostFunction<Convexity, 1, 3, 3, 3>(new Convexity(normal, threshold));
+  return Convexity(normal, threshold);
+}
+
+}  // namespace
+
+ceres::CostFunction* MakeConvexity(const double normal[3], double threshold) {
+  return new ConvexityCost(new Convexity(CheckedConvexity(normal, threshold)));
 }
 
 }  // namespace archgeo
@@ -63,7 +73,8 @@ void AddConvexity(TermContext& c, size_t i) {
     // A corner the input already has outside the margin (e.g. a straight
     // corner where two quads were joined) may get worse by the margin, no more.
     const double threshold = input >= margin ? margin : std::max(-1.0, input - margin);
-    c.Add(MakeConvexity(now.data(), threshold), {c.Position(a), c.Position(b), c.Position(d)});
+    c.AddAutoDiff<ConvexityCost>(CheckedConvexity(now.data(), threshold),
+                                 {c.Position(a), c.Position(b), c.Position(d)});
   }
 }
 

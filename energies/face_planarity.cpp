@@ -7,8 +7,11 @@
 
 namespace archgeo {
 
-ceres::CostFunction* MakeFacePlanarity(const double center[3],
-                                       double inv_length) {
+namespace {
+
+using FacePlanarityCost = ceres::AutoDiffCostFunction<FacePlanarity, 1, 3, 1, 3>;
+
+FacePlanarity CheckedFacePlanarity(const double center[3], double inv_length) {
   CHECK(center != nullptr);
   CHECK(std::isfinite(center[0]) && std::isfinite(center[1]) &&
         std::isfinite(center[2]))
@@ -16,8 +19,14 @@ ceres::CostFunction* MakeFacePlanarity(const double center[3],
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
       << "MakeFacePlanarity: inv_length must be finite and > 0, got "
       << inv_length;
-  return new ceres::AutoDiffCostFunction<FacePlanarity, 1, 3, 1, 3>(
-      new FacePlanarity(center, inv_length));
+  return FacePlanarity(center, inv_length);
+}
+
+}  // namespace
+
+ceres::CostFunction* MakeFacePlanarity(const double center[3],
+                                       double inv_length) {
+  return new FacePlanarityCost(new FacePlanarity(CheckedFacePlanarity(center, inv_length)));
 }
 
 }  // namespace archgeo
@@ -94,11 +103,8 @@ void AddFacePlanarity(TermContext& c, size_t i) {
   }
   d[0] = offset;
   const double inv_length = diagonal > 0 ? double(k) / diagonal : 1.0;
-  for (int j = 0; j < k; ++j) {
-    ceres::CostFunction* cost = MakeFacePlanarity(center.data(), inv_length);
-    if (c.band >= 0) cost = new ToleranceBand(cost, c.band);
-    c.Add(cost, {n, d, c.Position(vs[j])});
-  }
+  const FacePlanarity functor = CheckedFacePlanarity(center.data(), inv_length);
+  for (int j = 0; j < k; ++j) c.AddAutoDiff<FacePlanarityCost>(functor, {n, d, c.Position(vs[j])}, c.band);
   c.SetUnit(n);
 }
 

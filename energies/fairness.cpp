@@ -7,28 +7,39 @@
 
 namespace archgeo {
 
-ceres::CostFunction* MakeFairness(const double target[3], double inv_length) {
+namespace {
+
+using FairnessCost = ceres::AutoDiffCostFunction<Fairness, 3, 3, 3, 3>;
+using FairnessThirdCost = ceres::AutoDiffCostFunction<FairnessThird, 3, 3, 3, 3, 3>;
+
+void CheckFairness(const char* name, const double target[3], double inv_length) {
   CHECK(target != nullptr);
   CHECK(std::isfinite(target[0]) && std::isfinite(target[1]) &&
         std::isfinite(target[2]))
-      << "MakeFairness: non-finite target";
+      << name << ": non-finite target";
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakeFairness: inv_length must be finite and > 0, got " << inv_length;
-  return new ceres::AutoDiffCostFunction<Fairness, 3, 3, 3, 3>(
-      new Fairness(target, inv_length));
+      << name << ": inv_length must be finite and > 0, got " << inv_length;
+}
+
+Fairness CheckedFairness(const double target[3], double inv_length) {
+  CheckFairness("MakeFairness", target, inv_length);
+  return Fairness(target, inv_length);
+}
+
+FairnessThird CheckedFairnessThird(const double target[3], double inv_length) {
+  CheckFairness("MakeFairnessThird", target, inv_length);
+  return FairnessThird(target, inv_length);
+}
+
+}  // namespace
+
+ceres::CostFunction* MakeFairness(const double target[3], double inv_length) {
+  return new FairnessCost(new Fairness(CheckedFairness(target, inv_length)));
 }
 
 ceres::CostFunction* MakeFairnessThird(const double target[3],
                                        double inv_length) {
-  CHECK(target != nullptr);
-  CHECK(std::isfinite(target[0]) && std::isfinite(target[1]) &&
-        std::isfinite(target[2]))
-      << "MakeFairnessThird: non-finite target";
-  CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakeFairnessThird: inv_length must be finite and > 0, got "
-      << inv_length;
-  return new ceres::AutoDiffCostFunction<FairnessThird, 3, 3, 3, 3, 3>(
-      new FairnessThird(target, inv_length));
+  return new FairnessThirdCost(new FairnessThird(CheckedFairnessThird(target, inv_length)));
 }
 
 }  // namespace archgeo
@@ -61,10 +72,12 @@ void AddFairness(TermContext& c, size_t i) {
     for (int a = 0; a < 3; ++a) target[a] = dn * n[a];
   }
   if (k == 3) {
-    c.Add(MakeFairness(target, 1.0), {c.Position(t[0]), c.Position(t[1]), c.Position(t[2])});
+    c.AddAutoDiff<FairnessCost>(CheckedFairness(target, 1.0),
+                                {c.Position(t[0]), c.Position(t[1]), c.Position(t[2])});
   } else {
-    c.Add(MakeFairnessThird(target, 1.0),
-          {c.Position(t[0]), c.Position(t[1]), c.Position(t[2]), c.Position(t[3])});
+    c.AddAutoDiff<FairnessThirdCost>(
+        CheckedFairnessThird(target, 1.0),
+        {c.Position(t[0]), c.Position(t[1]), c.Position(t[2]), c.Position(t[3])});
   }
 }
 

@@ -8,10 +8,20 @@
 
 namespace archgeo {
 
-ceres::CostFunction* MakeMinEdgeLength(double min_length) {
+namespace {
+
+using MinEdgeLengthCost = ceres::AutoDiffCostFunction<MinEdgeLength, 1, 3, 3>;
+
+MinEdgeLength CheckedMinEdgeLength(double min_length) {
   CHECK(std::isfinite(min_length) && min_length > 0.0)
       << "MakeMinEdgeLength: min_length must be finite and > 0, got " << min_length;
-  return new ceres::AutoDiffCostFunction<MinEdgeLength, 1, 3, 3>(new MinEdgeLength(min_length));
+  return MinEdgeLength(min_length);
+}
+
+}  // namespace
+
+ceres::CostFunction* MakeMinEdgeLength(double min_length) {
+  return new MinEdgeLengthCost(new MinEdgeLength(CheckedMinEdgeLength(min_length)));
 }
 
 }  // namespace archgeo
@@ -37,7 +47,7 @@ void AddMinEdgeLength(TermContext& c, size_t i) {
     if (!(length > 0)) continue;  // an edge the input already collapsed
     // The canonical frame's unit is the input's mean edge length.
     const double min_length = std::min(fraction, 0.5 * length);
-    c.Add(MakeMinEdgeLength(min_length), {c.Position(a), c.Position(b)});
+    c.AddAutoDiff<MinEdgeLengthCost>(CheckedMinEdgeLength(min_length), {c.Position(a), c.Position(b)});
   }
 }
 

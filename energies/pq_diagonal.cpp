@@ -7,11 +7,20 @@
 
 namespace archgeo {
 
-ceres::CostFunction* MakePqDiagonal(double inv_length) {
+namespace {
+
+using PqDiagonalCost = ceres::AutoDiffCostFunction<PqDiagonal, 1, 3, 3, 3, 3>;
+
+PqDiagonal CheckedPqDiagonal(double inv_length) {
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
       << "MakePqDiagonal: inv_length must be finite and > 0, got " << inv_length;
-  return new ceres::AutoDiffCostFunction<PqDiagonal, 1, 3, 3, 3, 3>(
-      new PqDiagonal(inv_length));
+  return PqDiagonal(inv_length);
+}
+
+}  // namespace
+
+ceres::CostFunction* MakePqDiagonal(double inv_length) {
+  return new PqDiagonalCost(new PqDiagonal(CheckedPqDiagonal(inv_length)));
 }
 
 }  // namespace archgeo
@@ -20,7 +29,6 @@ ceres::CostFunction* MakePqDiagonal(double inv_length) {
 #include <Eigen/Core>
 
 #include "core/term.h"
-#include "core/tolerance_band.h"
 
 namespace archgeo::terms {
 namespace {
@@ -31,9 +39,9 @@ void AddPqDiagonal(TermContext& c, size_t i) {
   using V = Eigen::Map<const Eigen::Vector3d>;
   const double d0 = (V(c.Original(q[2])) - V(c.Original(q[0]))).norm();
   const double d1 = (V(c.Original(q[3])) - V(c.Original(q[1]))).norm();
-  ceres::CostFunction* cost = MakePqDiagonal(2.0 / (d0 + d1));
-  if (c.band >= 0) cost = new ToleranceBand(cost, c.band);
-  c.Add(cost, {c.Position(q[0]), c.Position(q[1]), c.Position(q[2]), c.Position(q[3])});
+  c.AddAutoDiff<PqDiagonalCost>(CheckedPqDiagonal(2.0 / (d0 + d1)),
+                                {c.Position(q[0]), c.Position(q[1]), c.Position(q[2]), c.Position(q[3])},
+                                c.band);
 }
 
 }  // namespace

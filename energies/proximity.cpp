@@ -7,8 +7,11 @@
 
 namespace archgeo {
 
-ceres::CostFunction* MakeProximity(const double point[3],
-                                   const double normal[3], double inv_length) {
+namespace {
+
+using ProximityCost = ceres::AutoDiffCostFunction<Proximity, 1, 3>;
+
+Proximity CheckedProximity(const double point[3], const double normal[3], double inv_length) {
   CHECK(point != nullptr && normal != nullptr);
   for (int i = 0; i < 3; ++i) {
     CHECK(std::isfinite(point[i]) && std::isfinite(normal[i]))
@@ -16,8 +19,14 @@ ceres::CostFunction* MakeProximity(const double point[3],
   }
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
       << "MakeProximity: inv_length must be finite and > 0, got " << inv_length;
-  return new ceres::AutoDiffCostFunction<Proximity, 1, 3>(
-      new Proximity(point, normal, inv_length));
+  return Proximity(point, normal, inv_length);
+}
+
+}  // namespace
+
+ceres::CostFunction* MakeProximity(const double point[3],
+                                   const double normal[3], double inv_length) {
+  return new ProximityCost(new Proximity(CheckedProximity(point, normal, inv_length)));
 }
 
 }  // namespace archgeo
@@ -35,11 +44,13 @@ namespace {
 void AddProximity(TermContext& c, size_t i) {
   const int v = c.elements->Vertices(i)[0];
   if (!c.OnBoundaryCurve(v)) {
-    c.Add(MakeProximity(c.ProjectedPoint(v), c.ProjectedDirection(v), 1.0), {c.Position(v)});
+    c.AddAutoDiff<ProximityCost>(CheckedProximity(c.ProjectedPoint(v), c.ProjectedDirection(v), 1.0),
+                                 {c.Position(v)});
   }
   const double point_weight = c.Number("point_weight");
   if (point_weight > 0) {
-    c.Add(MakeAnchor(c.ProjectedPoint(v), 1.0), {c.Position(v)}, "proximity_point", point_weight);
+    c.AddAutoDiff<AnchorCost>(CheckedAnchor(c.ProjectedPoint(v), 1.0), {c.Position(v)}, -1,
+                              "proximity_point", point_weight);
   }
 }
 

@@ -89,6 +89,7 @@ class MeshModel::View : public TermContext {
     loss_ = loss;
     loss_scale_ = loss_scale;
     shared_loss_ = nullptr;
+    batches_.clear();
   }
 
   int NumVertices() const override { return int(model_.store_.mesh().number_of_vertices()); }
@@ -138,9 +139,7 @@ class MeshModel::View : public TermContext {
   void Add(ceres::CostFunction* cost, const std::vector<double*>& blocks, const char* part,
            double weight) override {
     CHECK(residuals_) << name_ << ": Add outside Build";
-    bool variable = false;
-    for (double* b : blocks) variable = variable || !model_.IsConstant(b);
-    if (!variable) {
+    if (!Variable(blocks.data(), int(blocks.size()))) {
       delete cost;
       return;
     }
@@ -151,17 +150,27 @@ class MeshModel::View : public TermContext {
     const char* zeroed = std::getenv("ARCHGEO_ZERO_TERM");
     if (zeroed && name_ == zeroed) cost = new ZeroedCost(cost);
 #endif
-    // One weighted loss per run of residuals of equal weight (the problem
-    // owns it once, however many residuals share it).
-    const double w = weight >= 0 ? weight : this->weight;
-    if (!shared_loss_ || w != shared_weight_) {
-      shared_loss_ = residuals_->Own(
-          new ceres::ScaledLoss(Robust(loss_, loss_scale_), w, ceres::TAKE_OWNERSHIP));
-      shared_weight_ = w;
+    const ceres::LossFunction* loss = Loss(weight);
+    residuals_->Add(cost, loss, blocks.data(), int(blocks.size()), Part(part));
+  }
+
+  Batch* Keep(std::unique_ptr<Batch> batch) override {
+    CHECK(residuals_) << name_ << ": Add outside Build";
+    return residuals_->Own(std::move(batch));
+  }
+
+  void AddElement(const Batch& batch, int element, double* const* blocks, int count,
+                  const char* part, double weight) override {
+    if (!Variable(blocks, count)) return;
+#ifdef ARCHGEO_MUTATION_TESTING
+    const char* zeroed = std::getenv("ARCHGEO_ZERO_TERM");
+    if (zeroed && name_ == zeroed) {
+      residuals_->Add(new ZeroedCost(new BatchElement(batch, element)), Loss(weight), blocks, count,
+                      Part(part));
+      return;
     }
-    const char* key = part ? part : name_.c_str();
-    if (part_ < 0 || residuals_->parts()[size_t(part_)] != key) part_ = residuals_->Part(key);
-    residuals_->Add(cost, shared_loss_, blocks.data(), int(blocks.size()), part_);
+#endif
+    residuals_->Add(&batch, element, Loss(weight), blocks, count, Part(part));
   }
 
   void SetUnit(double* block) override { SetManifold(block, new ceres::SphereManifold<3>()); }
@@ -180,6 +189,31 @@ class MeshModel::View : public TermContext {
   }
 
  private:
+  // Whether a residual over `blocks` can change (a residual whose every block
+  // is constant is dropped).
+  bool Variable(double* const* blocks, int count) const {
+    for (int a = 0; a < count; ++a) {
+      if (!model_.IsConstant(blocks[a])) return true;
+    }
+    return false;
+  }
+  // One weighted loss per run of residuals of equal weight (the problem
+  // owns it once, however many residuals share it).
+  const ceres::LossFunction* Loss(double weight) {
+    const double w = weight >= 0 ? weight : this->weight;
+    if (!shared_loss_ || w != shared_weight_) {
+      shared_loss_ = residuals_->Own(
+          new ceres::ScaledLoss(Robust(loss_, loss_scale_), w, ceres::TAKE_OWNERSHIP));
+      shared_weight_ = w;
+    }
+    return shared_loss_;
+  }
+  int Part(const char* part) {
+    const char* key = part ? part : name_.c_str();
+    if (part_ < 0 || residuals_->parts()[size_t(part_)] != key) part_ = residuals_->Part(key);
+    return part_;
+  }
+
   MeshModel& model_;
   std::string name_;
   std::map<std::string, std::vector<Curve>> curves_;  // per option, read once per solve
