@@ -9,12 +9,15 @@ namespace archgeo {
 namespace {
 
 template <typename Functor>
+using DihedralCost = ceres::AutoDiffCostFunction<Functor, 3, 3, 3, 3, 3>;
+
+template <typename Functor>
 ceres::CostFunction* MakeDihedral(const char* name, double inv_length,
                                   double omega, Functor** functor) {
   CheckHingeConstants(name, inv_length, "omega", omega);
   auto* f = new Functor(inv_length, omega);
   if (functor != nullptr) *functor = f;
-  return new ceres::AutoDiffCostFunction<Functor, 3, 3, 3, 3, 3>(f);
+  return new DihedralCost<Functor>(f);
 }
 
 }  // namespace
@@ -85,10 +88,15 @@ Vec EnergyNormal(TermContext& c, const ElementSet& faces, int f) {
 }
 
 // The IRLS residual's hinge functors, ω as their parameter.
-constexpr HingeFactories kDihedralFactories = {
-    [](double inv_length, double omega) { return MakeDihedralTriTri(inv_length, omega); },
-    [](double inv_length, double omega) { return MakeDihedralTriPoly(inv_length, omega); },
-    [](double inv_length, double omega) { return MakeDihedralPolyPoly(inv_length, omega); }};
+template <typename Functor>
+void AddDihedralHinge(TermContext& c, double inv_length, double omega,
+                      const std::array<double*, 4>& blocks) {
+  CheckHingeConstants("dihedral_energy", inv_length, "omega", omega);
+  c.AddAutoDiff<DihedralCost<Functor>>(Functor(inv_length, omega), blocks);
+}
+constexpr HingeAdders kDihedralAdders = {&AddDihedralHinge<DihedralTriTri>,
+                                         &AddDihedralHinge<DihedralTriPoly>,
+                                         &AddDihedralHinge<DihedralPolyPoly>};
 
 // Edge v→w with left face (v, w, a, …) and right face (w, v, b, …); the IRLS
 // weight ω from the current edge length and normals (a round's constant).
@@ -101,7 +109,7 @@ void AddDihedral(TermContext& c, size_t i) {
   const double length = Norm(Sub(c.Position(w), c.Position(v)));
   const double omega =
       DihedralIrlsWeight(length, Norm({nl[0] - nr[0], nl[1] - nr[1], nl[2] - nr[2]}), 1.0);
-  AddHinge(c, i, kDihedralFactories, omega);
+  AddHinge(c, i, kDihedralAdders, omega);
 }
 
 }  // namespace

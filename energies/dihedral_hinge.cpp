@@ -45,26 +45,25 @@ void SphereNormals(TermContext& c) {
 }  // namespace
 
 // Edge v→w with left face (v, w, a, …) and right face (w, v, b, …).
-void AddHinge(TermContext& c, size_t i, const HingeFactories& make, double parameter) {
+void AddHinge(TermContext& c, size_t i, const HingeAdders& add, double parameter) {
   const ElementSet& e = *c.elements;
   const int* vs = e.Vertices(i);
   const int v = vs[0], w = vs[1], a = vs[2], b = vs[3];
   const int left = e.face[i], right = e.other_face[i];
   const bool poly_l = e.Has(i, kLeftPolygon), poly_r = e.Has(i, kRightPolygon);
   if (!poly_l && !poly_r) {
-    c.Add(make.tri_tri(1.0, parameter),
-          {c.Position(v), c.Position(w), c.Position(a), c.Position(b)});
+    add.tri_tri(c, 1.0, parameter, {c.Position(v), c.Position(w), c.Position(a), c.Position(b)});
   } else if (!poly_l && poly_r) {
-    c.Add(make.tri_poly(1.0, parameter),
-          {c.Position(v), c.Position(w), c.Position(a), c.Block("face_plane_normal", right)});
+    add.tri_poly(c, 1.0, parameter,
+                 {c.Position(v), c.Position(w), c.Position(a), c.Block("face_plane_normal", right)});
   } else if (poly_l && !poly_r) {
     // The triangle (w, v, b) is on the left of w→v.
-    c.Add(make.tri_poly(1.0, parameter),
-          {c.Position(w), c.Position(v), c.Position(b), c.Block("face_plane_normal", left)});
+    add.tri_poly(c, 1.0, parameter,
+                 {c.Position(w), c.Position(v), c.Position(b), c.Block("face_plane_normal", left)});
   } else {
-    c.Add(make.poly_poly(1.0, parameter),
-          {c.Position(v), c.Position(w), c.Block("face_plane_normal", left),
-           c.Block("face_plane_normal", right)});
+    add.poly_poly(c, 1.0, parameter,
+                  {c.Position(v), c.Position(w), c.Block("face_plane_normal", left),
+                   c.Block("face_plane_normal", right)});
   }
 }
 

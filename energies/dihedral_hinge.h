@@ -27,6 +27,7 @@
 #ifndef ARCHGEO_ENERGIES_DIHEDRAL_HINGE_H_
 #define ARCHGEO_ENERGIES_DIHEDRAL_HINGE_H_
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 
@@ -146,22 +147,23 @@ struct TermSpec;
 
 namespace terms {
 
-// The factories of one residual's three hinge functors (dihedral_energy.h,
-// smoothed_dihedral_energy.h): (inv_length, parameter) → a new cost function
-// on the blocks (v, w, a, b), (v, w, a, n_right), (v, w, n_left, n_right).
-struct HingeFactories {
-  using Make = ceres::CostFunction* (*)(double inv_length, double parameter);
-  Make tri_tri;
-  Make tri_poly;
-  Make poly_poly;
+// The adders of one residual's three hinge functors (dihedral_energy.h,
+// smoothed_dihedral_energy.h): each adds, through the context, the residual
+// of its functor with (inv_length, parameter) over the blocks (v, w, a, b),
+// (v, w, a, n_right) or (v, w, n_left, n_right).
+struct HingeAdders {
+  using Add = void (*)(TermContext& c, double inv_length, double parameter,
+                       const std::array<double*, 4>& blocks);
+  Add tri_tri;
+  Add tri_poly;
+  Add poly_poly;
 };
 
 // The builder of a hinge term: adds the residual of interior edge
 // `element` (vertices v, w, a, b with left face (v, w, a, …) and right face
 // (w, v, b, …), core/elements.h) in the canonical frame (inv_length 1), made
-// by the factory matching its two faces with `parameter`.
-void AddHinge(TermContext& c, std::size_t element, const HingeFactories& make,
-              double parameter);
+// by the adder matching its two faces with `parameter`.
+void AddHinge(TermContext& c, std::size_t element, const HingeAdders& add, double parameter);
 
 // A hinge term's declaration without name, summary and adder: its elements
 // (interior_edges), paper, and the polygons' face_plane_normal blocks (shared

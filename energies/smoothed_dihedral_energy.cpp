@@ -6,9 +6,12 @@ namespace archgeo {
 namespace {
 
 template <typename Functor>
+using SmoothedCost = ceres::AutoDiffCostFunction<Functor, 4, 3, 3, 3, 3>;
+
+template <typename Functor>
 ceres::CostFunction* MakeSmoothed(const char* name, double inv_length, double epsilon) {
   CheckHingeConstants(name, inv_length, "epsilon", epsilon);
-  return new ceres::AutoDiffCostFunction<Functor, 4, 3, 3, 3, 3>(new Functor(inv_length, epsilon));
+  return new SmoothedCost<Functor>(new Functor(inv_length, epsilon));
 }
 
 }  // namespace
@@ -37,12 +40,19 @@ namespace terms {
 namespace {
 
 // The smoothed residual's hinge functors, ε as their parameter.
-constexpr HingeFactories kSmoothedDihedralFactories = {
-    &MakeSmoothedDihedralTriTri, &MakeSmoothedDihedralTriPoly, &MakeSmoothedDihedralPolyPoly};
+template <typename Functor>
+void AddSmoothedHinge(TermContext& c, double inv_length, double epsilon,
+                      const std::array<double*, 4>& blocks) {
+  CheckHingeConstants("smoothed_dihedral_energy", inv_length, "epsilon", epsilon);
+  c.AddAutoDiff<SmoothedCost<Functor>>(Functor(inv_length, epsilon), blocks);
+}
+constexpr HingeAdders kSmoothedDihedralAdders = {&AddSmoothedHinge<SmoothedDihedralTriTri>,
+                                                 &AddSmoothedHinge<SmoothedDihedralTriPoly>,
+                                                 &AddSmoothedHinge<SmoothedDihedralPolyPoly>};
 
 // Edge v→w with left face (v, w, a, …) and right face (w, v, b, …).
 void AddSmoothedDihedral(TermContext& c, size_t i) {
-  AddHinge(c, i, kSmoothedDihedralFactories, c.Number("epsilon"));
+  AddHinge(c, i, kSmoothedDihedralAdders, c.Number("epsilon"));
 }
 
 }  // namespace
