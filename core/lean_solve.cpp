@@ -180,7 +180,7 @@ class Lean {
     for (size_t i = 0; i < s_.residuals.size(); ++i) {
       const Residuals::Residual& r = in_.residuals()[i];
       double* residual = work_.residual.data();
-      if (!r.Evaluate(s_.values.data() + r.first, residual, nullptr)) return false;
+      if (!r.Evaluate(in_.values() + r.first, residual, nullptr)) return false;
       const double sq = Eigen::Map<const Vector>(residual, Rows(i)).squaredNorm();
       total += Loss(r, sq);
     }
@@ -349,7 +349,7 @@ class Lean {
       tangents[a] = k->tangent.data() + used;
       used += size_t(rows) * ambient(r.first + a);
     }
-    if (!in.Evaluate(s_.values.data() + r.first, k->residual.data(), jacobians)) return false;
+    if (!in.Evaluate(in_.values() + r.first, k->residual.data(), jacobians)) return false;
     Eigen::Map<Vector> res(k->residual.data(), rows);
     const double sq = res.squaredNorm();
     double rho[3] = {sq, 1.0, 0.0};

@@ -18,24 +18,31 @@ bool Renew(const Residuals& in, NormalPattern& s) {
   const std::vector<Residuals::Residual>& residuals = in.residuals();
   if (residuals.size() != s.residuals.size() ||
       in.blocks().size() != s.blocks.size() + s.constant.size() ||
-      in.block_of().size() != s.values.size() || !std::equal(s.values.begin(), s.values.end(), in.values())) {
+      in.block_of().size() != s.block.size()) {
     return false;
   }
   for (size_t k = 0; k < residuals.size(); ++k) {
     const PatternResidual& r = s.residuals[k];
     if (residuals[k].first != r.first || residuals[k].end != r.end) return false;
   }
-  // The free blocks in order, and the constant ones, as before.
+  // The free blocks in order, and the constant ones, as before...
+  std::vector<int> free_index(in.blocks().size(), -1);
   size_t free = 0, constant = 0;
-  for (const Residuals::Block& b : in.blocks()) {
+  for (size_t k = 0; k < in.blocks().size(); ++k) {
+    const Residuals::Block& b = in.blocks()[k];
     if (b.constant) {
       if (constant == s.constant.size() || s.constant[constant++] != b.values) return false;
       continue;
     }
     if (free == s.blocks.size()) return false;
-    PatternBlock& p = s.blocks[free++];
+    PatternBlock& p = s.blocks[free];
     if (p.values != b.values || p.ambient != b.size || p.tangent != TangentSize(b)) return false;
     p.manifold = b.manifold;
+    free_index[k] = int(free++);
+  }
+  // ...and every residual reading the same blocks.
+  for (size_t a = 0; a < s.block.size(); ++a) {
+    if (s.block[a] != free_index[size_t(in.block_of()[a])]) return false;
   }
   return true;
 }
@@ -66,7 +73,6 @@ bool ReadNormalPattern(const Residuals& in, NormalPattern* pattern) {
   }
   const std::vector<Residuals::Residual>& residuals = in.residuals();
   const size_t parameters = residuals.empty() ? 0 : size_t(residuals.back().end);
-  s.values.assign(in.values(), in.values() + parameters);
   s.block.resize(parameters);
   for (size_t a = 0; a < parameters; ++a) s.block[a] = free_index[in.block_of()[a]];
   s.residuals.reserve(residuals.size());

@@ -20,7 +20,7 @@ struct PatternBlock {
 };
 
 struct PatternResidual {  // its cost and loss: the Residuals' entry of the same index
-  int first = 0, end = 0;  // its parameter blocks in NormalPattern::values / ::block
+  int first = 0, end = 0;  // its parameter blocks in Residuals::values() / NormalPattern::block
   int pairs = 0;           // its slots in NormalPattern::pair_slot (free pairs a < b)
 };
 
@@ -29,8 +29,7 @@ struct PatternResidual {  // its cost and loss: the Residuals' entry of the same
 struct NormalPattern {
   std::vector<PatternBlock> blocks;      // free blocks
   std::vector<PatternResidual> residuals;
-  std::vector<double*> values;    // per residual, every parameter block
-  std::vector<int> block;         // per residual parameter: free block or -1
+  std::vector<int> block;         // per residual parameter (Residuals::values()): free block or -1
   std::vector<int> pair_slot;     // per residual, per free pair (a < b): slot offset
   std::vector<int> diagonal;      // per block: its diagonal slot offset
   // The off-diagonal slots of each block row i: H_ij for j > i, stored

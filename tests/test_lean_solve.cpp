@@ -243,6 +243,22 @@ TEST(LeanSolve, ThePatternIsReusedWhileTheStructureStays) {
   EXPECT_FALSE(ReadNormalPattern(changed, &pattern));
   EXPECT_EQ(pattern.blocks.size() + 1, first.blocks.size());
   EXPECT_EQ(pattern.constant.size(), 1u);
+
+  // The same blocks, residuals and sizes, but the second residual reads its
+  // blocks the other way round: another structure.
+  double x[3] = {0, 1, 2};
+  const auto two = [&](Residuals& r, bool swap) {
+    Add(r, new ceres::AutoDiffCostFunction<Difference, 1, 1, 1>(new Difference{1.0}), nullptr,
+        {&x[0], &x[1]});
+    Add(r, new ceres::AutoDiffCostFunction<Difference, 1, 1, 1>(new Difference{1.0}), nullptr,
+        {swap ? &x[2] : &x[1], swap ? &x[1] : &x[2]});
+  };
+  Residuals straight, swapped;
+  two(straight, false);
+  two(swapped, true);
+  EXPECT_FALSE(ReadNormalPattern(straight, &pattern));
+  EXPECT_FALSE(ReadNormalPattern(swapped, &pattern));
+  EXPECT_TRUE(ReadNormalPattern(swapped, &pattern));
 }
 
 // The linearisation and the product sum two fixed halves: one thread gives
