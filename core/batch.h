@@ -29,6 +29,8 @@ class Batch {
   Batch(const Batch&) = delete;
   Batch& operator=(const Batch&) = delete;
 
+  // Releases spare capacity once every element is added.
+  virtual void Fit() = 0;
   int num_residuals() const { return rows_; }
   const std::vector<int32_t>& parameter_block_sizes() const { return sizes_; }
 
@@ -66,6 +68,7 @@ class AutoDiffBatch final : public Batch {
     functors_.push_back(functor);
     return int(functors_.size()) - 1;
   }
+  void Fit() override { functors_.shrink_to_fit(); }
 
  private:
   bool EvaluateElement(int element, double const* const* parameters, double* residuals,

@@ -212,6 +212,7 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
         }
         residuals.Clear();
         model.Build(terms, k, residuals);
+        residuals.Fit();
         built = true;
         before = model.SaveState();
 

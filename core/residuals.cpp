@@ -31,6 +31,14 @@ void Residuals::Clear() {
   rows_ = 0;
 }
 
+void Residuals::Fit() {
+  residuals_.shrink_to_fit();
+  blocks_.shrink_to_fit();
+  values_.shrink_to_fit();
+  block_of_.shrink_to_fit();
+  for (const std::unique_ptr<Batch>& b : batches_) b->Fit();
+}
+
 void Residuals::AddressRange(const double* base, int count, int width) {
   CHECK(base && count >= 0 && width > 0);
   ranges_.push_back({base, size_t(count), width, std::vector<int>(size_t(count), -1)});

@@ -77,6 +77,10 @@ class Residuals {
   // Adds element `element` of an owned batch as a residual block, as above.
   void Add(const Batch* batch, int element, const ceres::LossFunction* loss,
            double* const* blocks, int count, int part = 0);
+  // Releases the spare capacity the lists grew by (up to half of them) once a
+  // round's residuals are all added; Clear keeps the fitted capacity for the
+  // next round of the same size.
+  void Fit();
   bool Has(const double* block) const { return Find(block) >= 0; }
   // Sets the manifold (owned from here on) of a block a residual reads that
   // has none yet; deletes `manifold` otherwise.

@@ -352,6 +352,7 @@ void MeshModel::SetElements(const std::string& name, ElementSet set) {
   set.name = name;
   sets_[name] = std::move(set);
   selected_.clear();
+  subsets_.clear();
 }
 
 const ElementSet& MeshModel::Elements(const std::string& name) {
@@ -370,16 +371,17 @@ const ElementSet& MeshModel::Elements(const std::string& name) {
 // `terms.<t>.select` (problems/selection.h) on the set `terms.<t>.on`.
 const ElementSet& MeshModel::Selected(const TermSpec& spec) {
   const std::string name = spec.name;
-  if (const auto it = selected_.find(name); it != selected_.end()) return it->second;
+  if (const auto it = selected_.find(name); it != selected_.end()) return *it->second;
   const Settings& s = *hooks_.settings;
   const std::string on = s.String("terms." + name + ".on");
   const ElementSet& all = Elements(on);
   const std::string key = "terms." + name + ".select";
   const Selection selection = ParseSelection(s, key);
-  if (selection.all()) return selected_.emplace(name, all).first->second;
+  if (selection.all()) return *selected_.emplace(name, &all).first->second;
   const std::vector<size_t> keep =
       SelectElements(selection, all, store_.mesh(), hooks_.fixed, hooks_.frame, s, key);
-  return selected_.emplace(name, all.Subset(keep)).first->second;
+  const ElementSet& subset = subsets_[name] = all.Subset(keep);
+  return *selected_.emplace(name, &subset).first->second;
 }
 
 void MeshModel::Build(const std::vector<ActiveTerm>& terms, int round, Residuals& residuals) {

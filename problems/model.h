@@ -121,7 +121,8 @@ class MeshModel : public Model {
   HookContext& hooks_;
   Store& store_;
   std::map<std::string, ElementSet> sets_;
-  std::map<std::string, ElementSet> selected_;  // per term name
+  std::map<std::string, ElementSet> subsets_;          // per term name, if it selects some
+  std::map<std::string, const ElementSet*> selected_;  // per term name: all of a set or its subset
   std::vector<double> original_, previous_, normals_;
   std::vector<double> projected_point_, projected_direction_;
   std::vector<bool> on_curve_;
