@@ -103,12 +103,10 @@ struct Corrector {
   }
 };
 
-// The linearisation's scratch and its sums: H (slots), g and Σ ρ.
+// One thread's linearisation scratch and its sum Σ ρ.
 struct Work {
   std::vector<double> residual, ambient, tangent;
-  std::vector<double>* hessian = nullptr;  // the pattern's, kept between rounds
   std::vector<double*> jacobians, tangents;
-  Vector gradient;
   double total = 0;
 };
 
@@ -128,15 +126,14 @@ class Lean {
       }
       scratch = std::max(scratch, need);
     }
+    s_.hessian.resize(s_.slots);
     for (int t = 0; t < 2; ++t) {
       Work* w = t == 0 ? &work_ : &second_;
-      w->hessian = &s_.hessian[t];
       w->residual.resize(rows);
       w->ambient.resize(scratch);
       w->tangent.resize(scratch);
       w->jacobians.resize(parameters);
       w->tangents.resize(parameters);
-      w->hessian->resize(s_.slots);
     }
     // The product's halves: the first block row past half the off-diagonal slots.
     const int n = int(s_.blocks.size());
@@ -196,26 +193,29 @@ class Lean {
       b.plus_jacobian.resize(size_t(b.ambient) * b.tangent);
       if (!b.manifold->PlusJacobian(b.values, b.plus_jacobian.data())) return false;
     }
-    // Two halves of the residuals, each into its own H and g, then summed:
-    // two threads where there are, and the same sums on one.
+    // H and g in one copy: the pattern's first two runs of residuals read
+    // no block in common (two threads where there are, and the same sums on
+    // one), then its third run.
+    double* H = s_.hessian.data();
+    ForHalves(s_.slots / 2, s_.slots, [&](int, size_t first, size_t end) {
+      std::fill(H + first, H + end, 0.0);
+    });
+    gradient_.setZero(s_.tangent);
     bool good[2] = {true, true};
-    ForHalves(s_.residuals.size() / 2, s_.residuals.size(), [&](int t, size_t first, size_t end) {
+    work_.total = second_.total = 0;
+    ForHalves(size_t(s_.split[0]), size_t(s_.split[1]), [&](int t, size_t first, size_t end) {
       Work& w = t == 0 ? work_ : second_;
-      std::fill(w.hessian->begin(), w.hessian->end(), 0.0);
-      w.gradient.setZero(s_.tangent);
-      w.total = 0;
-      for (size_t i = first; i < end && good[t]; ++i) good[t] = Accumulate(i, &w);
+      for (size_t p = first; p < end && good[t]; ++p) good[t] = Accumulate(s_.visit[p], &w);
     });
     if (!good[0] || !good[1]) return false;
-    double* H = work_.hessian->data();
-    const double* H2 = second_.hessian->data();
-    const long slots = long(s_.slots);
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < slots; ++i) H[i] += H2[i];
-    work_.gradient += second_.gradient;
-    work_.total += second_.total;
-    *gradient = work_.gradient;
-    *cost = 0.5 * work_.total;
+    const double halves = work_.total + second_.total;
+    work_.total = 0;
+    for (size_t p = size_t(s_.split[1]); p < s_.visit.size() && good[0]; ++p) {
+      good[0] = Accumulate(s_.visit[p], &work_);
+    }
+    if (!good[0]) return false;
+    *gradient = gradient_;
+    *cost = 0.5 * (halves + work_.total);
     return std::isfinite(*cost) && gradient->allFinite();
   }
 
@@ -227,7 +227,7 @@ class Lean {
   // are, and the same sums on one.
   void Multiply(const Vector& damping, const Vector& x, Vector* y) const {
     const int n = int(s_.blocks.size());
-    const double* H = work_.hessian->data();
+    const double* H = s_.hessian.data();
     spare_.resize(s_.tangent);
     ForHalves(size_t(split_), size_t(n), [&](int t, size_t first, size_t end) {
       double* out = t == 0 ? y->data() : spare_.data();
@@ -333,7 +333,7 @@ class Lean {
   }
   // One residual block into the sums: ρ, its corrected tangent Jacobians,
   // g += J̃ᵀ r̃ and every J̃_aᵀ J̃_b into its slot.
-  bool Accumulate(size_t index, Work* k) const {
+  bool Accumulate(size_t index, Work* k) {
     const PatternResidual& r = s_.residuals[index];
     const Residuals::Residual& in = in_.residuals()[index];
     const ceres::LossFunction* loss = in.loss;
@@ -376,14 +376,15 @@ class Lean {
       T *= corrector.sqrt_rho1;
     }
     res *= corrector.residual_scaling;
-    double* H = k->hessian->data();
+    double* H = s_.hessian.data();
+    double* g = gradient_.data();
     int pair = r.pairs;
     for (int a = 0; a < m; ++a) {
       const int i = s_.block[r.first + a];
       if (i < 0) continue;
       const PatternBlock& bi = s_.blocks[i];
       AddTransposeProduct(tangents[a], res.data(), rows, bi.tangent, 1,
-                          k->gradient.data() + bi.offset);
+                          g + bi.offset);
       AddTransposeProduct(tangents[a], tangents[a], rows, bi.tangent, bi.tangent,
                           H + s_.diagonal[i]);
       for (int c = a + 1; c < m; ++c) {
@@ -423,12 +424,13 @@ class Lean {
     return rho[0];
   }
   Eigen::Map<const RowMatrix> Slot(int offset, int rows, int cols) const {
-    return Eigen::Map<const RowMatrix>(work_.hessian->data() + offset, rows, cols);
+    return Eigen::Map<const RowMatrix>(s_.hessian.data() + offset, rows, cols);
   }
 
   const Residuals& in_;
   NormalPattern& s_;
   Work work_, second_;
+  Vector gradient_;  // g = J^T r
   int split_ = 0;
   mutable Vector spare_;  // the product's second half
 };

@@ -47,6 +47,53 @@ bool Renew(const Residuals& in, NormalPattern& s) {
   return true;
 }
 
+// The residuals' visiting order and its runs (NormalPattern::visit): a
+// stable counting sort by bucket of kBucket consecutive free blocks (the
+// blocks are numbered by first use, so a bucket is a stretch of the mesh),
+// cut at half the residuals; a residual reading a block that residuals of
+// both halves read goes to the run after them.
+void Partition(NormalPattern& s) {
+  const int n = int(s.residuals.size());
+  const int blocks = int(s.blocks.size());
+  const auto each_block = [&](int k, auto&& f) {
+    for (int a = s.residuals[k].first; a < s.residuals[k].end; ++a) {
+      if (s.block[a] >= 0) f(s.block[a]);
+    }
+  };
+  // The first free block of each residual, and the block below which half
+  // of them start.
+  std::vector<int> key(n, 0), count(blocks + 1, 0);
+  for (int k = 0; k < n; ++k) {
+    int first = blocks;
+    each_block(k, [&](int b) { first = std::min(first, b); });
+    key[k] = first;
+    ++count[first];
+  }
+  int cut = 0;
+  for (int below = 0; cut < blocks && 2 * (below + count[cut]) <= n; ++cut) below += count[cut];
+  // Which half reads each block: bit 1 the first, bit 2 the second.
+  std::vector<unsigned char> read_by(blocks, 0);
+  for (int k = 0; k < n; ++k) {
+    each_block(k, [&](int b) { read_by[b] |= key[k] < cut ? 1 : 2; });
+  }
+  // Runs: the first half's residuals that read no block of both halves, the
+  // second half's, then those that do, each in the residuals' order.
+  std::vector<unsigned char> run(n);
+  for (int k = 0; k < n; ++k) {
+    bool shared = false;
+    each_block(k, [&](int b) { shared = shared || read_by[b] == 3; });
+    run[k] = shared ? 2 : key[k] < cut ? 0 : 1;
+  }
+  s.visit.clear();
+  s.visit.reserve(n);
+  for (int r = 0; r < 3; ++r) {
+    for (int k = 0; k < n; ++k) {
+      if (run[k] == r) s.visit.push_back(k);
+    }
+    if (r < 2) s.split[r] = int(s.visit.size());
+  }
+}
+
 }  // namespace
 
 bool ReadNormalPattern(const Residuals& in, NormalPattern* pattern) {
@@ -139,6 +186,7 @@ bool ReadNormalPattern(const Residuals& in, NormalPattern* pattern) {
     }
     s.row_start.push_back(int(s.column.size()));
   }
+  Partition(s);
   return false;
 }
 

@@ -38,10 +38,18 @@ struct NormalPattern {
   int tangent = 0, slots = 0;
   int diagonal_slots = 0;  // the diagonal slots come first: [0, diagonal_slots)
   std::vector<const double*> constant;  // the constant blocks the residuals read
-  // The solver's two partial sums of H (one per half of the residuals):
-  // kept with the pattern, so that a round of the same structure reuses the
-  // pages instead of faulting in 2 × 8·slots fresh bytes.
-  std::vector<double> hessian[2];
+  // The order the solver visits the residuals in to assemble H and g, in
+  // three runs: visit[0, split[0]) and visit[split[0], split[1]) read no free
+  // block in common, so two threads write H and g at once without a second
+  // copy; visit[split[1], end) reads blocks of both and goes after them. Each
+  // run keeps the residuals' order within buckets of blocks that lie
+  // together (by their smallest free block), so the slots a stretch of
+  // residuals writes stay in cache.
+  std::vector<int> visit;
+  int split[2] = {0, 0};
+  // H, kept with the pattern, so that a round of the same structure reuses
+  // the pages instead of faulting in 8·slots fresh bytes.
+  std::vector<double> hessian;
 };
 
 // Reads `residuals` into `pattern` (constant blocks stay out of the

@@ -8,6 +8,7 @@
 #include <ceres/ceres.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -259,6 +260,39 @@ TEST(LeanSolve, ThePatternIsReusedWhileTheStructureStays) {
   EXPECT_FALSE(ReadNormalPattern(straight, &pattern));
   EXPECT_FALSE(ReadNormalPattern(swapped, &pattern));
   EXPECT_TRUE(ReadNormalPattern(swapped, &pattern));
+}
+
+// The residuals' visiting order: every residual once; the first two runs
+// (one thread each) read no free block in common; the run after them only
+// holds the residuals along the cut.
+TEST(LeanSolve, TheTwoThreadsRunsShareNoBlock) {
+  Membrane m(40);
+  NormalPattern pattern;
+  ReadNormalPattern(m.residuals, &pattern);
+  const int n = int(pattern.residuals.size());
+  std::vector<int> sorted = pattern.visit;
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<int> all(n);
+  for (int k = 0; k < n; ++k) all[k] = k;
+  EXPECT_EQ(sorted, all);
+  std::vector<int> run_of(pattern.blocks.size(), -1);
+  int shared = 0;
+  for (int p = 0; p < pattern.split[1]; ++p) {
+    const int run = p < pattern.split[0] ? 0 : 1;
+    const PatternResidual& r = pattern.residuals[pattern.visit[p]];
+    for (int a = r.first; a < r.end; ++a) {
+      const int b = pattern.block[a];
+      if (b < 0) continue;
+      shared += run_of[b] >= 0 && run_of[b] != run;
+      run_of[b] = run;
+    }
+  }
+  EXPECT_EQ(shared, 0);
+  // 40 × 40 values, 4,720 residuals: each thread's run about half of them,
+  // the rows along the cut after them.
+  EXPECT_NEAR(pattern.split[0], n / 2, n / 20);
+  EXPECT_NEAR(pattern.split[1] - pattern.split[0], n / 2, n / 20);
+  EXPECT_LT(n - pattern.split[1], n / 20);
 }
 
 // The linearisation and the product sum two fixed halves: one thread gives
