@@ -10,7 +10,9 @@
 // returns: the same functor call, the same automatic differentiation.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include <ceres/autodiff_cost_function.h>
@@ -52,6 +54,16 @@ class Batch {
   double band_;
 };
 
+// Whether `Functor` declares `static constexpr bool kFlatWhereZero = true`:
+// where its residuals are all 0, so are their derivatives (a one-sided
+// barrier max(gap, 0), idle on most elements). Its batch then evaluates an
+// element in doubles first and differentiates it only where it is not 0.
+template <class Functor, class = void>
+struct FlatWhereZero : std::false_type {};
+template <class Functor>
+struct FlatWhereZero<Functor, std::void_t<decltype(Functor::kFlatWhereZero)>>
+    : std::bool_constant<Functor::kFlatWhereZero> {};
+
 // The elements of ceres::AutoDiffCostFunction<Functor, kResiduals, Ns...>:
 // one functor each.
 template <class Functor, int kResiduals, int... Ns>
@@ -75,6 +87,16 @@ class AutoDiffBatch final : public Batch {
                        double** jacobians) const override {
     const Functor& f = functors_[size_t(element)];
     if (!jacobians) return ceres::internal::VariadicEvaluate<Dims>(f, parameters, residuals);
+    if constexpr (FlatWhereZero<Functor>::value) {
+      if (!ceres::internal::VariadicEvaluate<Dims>(f, parameters, residuals)) return false;
+      if (std::all_of(residuals, residuals + kResiduals, [](double r) { return r == 0.0; })) {
+        const std::vector<int32_t>& sizes = parameter_block_sizes();
+        for (size_t b = 0; b < sizes.size(); ++b) {
+          if (jacobians[b]) std::fill(jacobians[b], jacobians[b] + kResiduals * sizes[b], 0.0);
+        }
+        return true;
+      }
+    }
     return ceres::internal::AutoDifferentiate<kResiduals, Dims>(f, parameters, kResiduals,
                                                                 residuals, jacobians);
   }

@@ -65,6 +65,9 @@ struct Convexity {
 
   Eigen::Vector3d normal;
   double threshold;
+  // max(gap, 0): where the residual is 0 its derivatives are 0 too (its
+  // batch differentiates only the elements that are not idle).
+  static constexpr bool kFlatWhereZero = true;
 };
 
 // The sine s of the turn at b (as in Convexity), for thresholds and reports.

@@ -52,6 +52,9 @@ struct MinEdgeLength {
   }
 
   double min_length;
+  // max(gap, 0): where the residual is 0 its derivatives are 0 too (its
+  // batch differentiates only the elements that are not idle).
+  static constexpr bool kFlatWhereZero = true;
 };
 
 // Returns a new AutoDiffCostFunction<MinEdgeLength, 1, 3, 3> (blocks a, b);

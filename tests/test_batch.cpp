@@ -14,6 +14,7 @@
 #include "core/lean_solve.h"
 #include "core/residuals.h"
 #include "core/tolerance_band.h"
+#include "energies/convexity.h"
 #include "energies/pq_diagonal.h"
 
 namespace archgeo {
@@ -57,6 +58,35 @@ TEST(Batch, AnElementGivesTheBitsOfItsCostFunction) {
     if (band == 10.0) EXPECT_EQ(zeroed, 20);
     if (band < 0) EXPECT_EQ(zeroed, 0);
   }
+}
+
+// A barrier (kFlatWhereZero) element is differentiated only where it is not
+// idle: bit-equal residual and Jacobians to its AutoDiffCostFunction on idle
+// corners (zero Jacobians written over garbage) and on violated ones.
+TEST(Batch, AnIdleBarrierElementGivesTheBitsOfItsCostFunction) {
+  using ConvexityCost = ceres::AutoDiffCostFunction<Convexity, 1, 3, 3, 3>;
+  BatchOf<ConvexityCost>::type batch(-1.0);
+  const double normal[3] = {0, 0, 1};
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int idle = 0, violated = 0;
+  for (int k = 0; k < 40; ++k) {
+    const double threshold = 0.05 * (k % 7);
+    const int element = batch.Push(Convexity(normal, threshold));
+    const std::unique_ptr<ceres::CostFunction> cost(MakeConvexity(normal, threshold));
+    std::vector<double> x(9);
+    for (double& v : x) v = u(random);
+    const double* blocks[3] = {&x[0], &x[3], &x[6]};
+    std::vector<double> mine(10, 7.0), theirs(10, -7.0);
+    double* mj[3] = {&mine[1], &mine[4], &mine[7]};
+    double* tj[3] = {&theirs[1], &theirs[4], &theirs[7]};
+    ASSERT_TRUE(batch.Evaluate(element, blocks, mine.data(), mj));
+    ASSERT_TRUE(cost->Evaluate(blocks, theirs.data(), tj));
+    EXPECT_EQ(mine, theirs) << k;
+    (theirs[0] == 0.0 ? idle : violated) += 1;
+  }
+  EXPECT_GT(idle, 5);
+  EXPECT_GT(violated, 5);
 }
 
 // Noisy quads pulled planar against anchors: n quads over shared corners.
