@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -226,25 +227,40 @@ Metrics ComputeMetrics(const Mesh& mesh, const ReferenceSurface* reference, cons
 
   if (reference != nullptr) {
     const std::vector<bool> boundary = BoundaryVertices(mesh);
-    MaxMean prox, boundary_prox, surface;
-    for (VertexIndex v : mesh.vertices()) {
-      const Vec3 x = ToVec3(mesh.point(v));
-      const ReferenceSurface::SurfacePoint closest = reference->Closest(x);
-      const Vector offset = mesh.point(v) - ToPoint(closest.point);
-      surface.Add(Length(offset));
-      if (!boundary[v.idx()] || !reference->HasBoundary()) {
-        // δ_prox: distance to the tangent plane at π(v)   [Zadravec 2010, §6]
-        // (boundary vertices too when the reference has no boundary curve to
-        // measure them against, as the planar_quads builder treats them)
-        const Vector n(closest.normal[0], closest.normal[1], closest.normal[2]);
-        prox.Add(std::abs(offset * n));
-      } else if (reference->HasBoundary()) {
-        // δ∂_prox: distance to the boundary tangent at π̃(v)   [Zadravec 2010, §6]
-        const ReferenceSurface::CurvePoint curve = *reference->ClosestOnBoundary(x);
-        const Vector d = mesh.point(v) - ToPoint(curve.point);
-        const Vector t(curve.tangent[0], curve.tangent[1], curve.tangent[2]);
-        boundary_prox.Add(Length(d - (d * t) * t));
+    // Each vertex's distances in parallel (CGAL's trees answer concurrent
+    // queries), then summed in vertex order.
+    const std::vector<VertexIndex> vertices(mesh.vertices().begin(), mesh.vertices().end());
+    const long n = long(vertices.size());
+    std::vector<double> to_surface(n), to_plane(n, -1), to_curve(n, -1);
+    {
+      const FullTeams teams;
+#pragma omp parallel for schedule(dynamic, 1024)
+      for (long i = 0; i < n; ++i) {
+        const VertexIndex v = vertices[i];
+        const Vec3 x = ToVec3(mesh.point(v));
+        const ReferenceSurface::SurfacePoint closest = reference->Closest(x);
+        const Vector offset = mesh.point(v) - ToPoint(closest.point);
+        to_surface[i] = Length(offset);
+        if (!boundary[v.idx()] || !reference->HasBoundary()) {
+          // δ_prox: distance to the tangent plane at π(v)   [Zadravec 2010, §6]
+          // (boundary vertices too when the reference has no boundary curve to
+          // measure them against, as the planar_quads builder treats them)
+          const Vector normal(closest.normal[0], closest.normal[1], closest.normal[2]);
+          to_plane[i] = std::abs(offset * normal);
+        } else {
+          // δ∂_prox: distance to the boundary tangent at π̃(v)   [Zadravec 2010, §6]
+          const ReferenceSurface::CurvePoint curve = *reference->ClosestOnBoundary(x);
+          const Vector d = mesh.point(v) - ToPoint(curve.point);
+          const Vector t(curve.tangent[0], curve.tangent[1], curve.tangent[2]);
+          to_curve[i] = Length(d - (d * t) * t);
+        }
       }
+    }
+    MaxMean prox, boundary_prox, surface;
+    for (long i = 0; i < n; ++i) {
+      surface.Add(to_surface[i]);
+      if (to_plane[i] >= 0) prox.Add(to_plane[i]);
+      if (to_curve[i] >= 0) boundary_prox.Add(to_curve[i]);
     }
     m.prox_max = prox.max;
     m.boundary_prox_max = reference->HasBoundary() ? boundary_prox.max : -1;

@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <memory>
 
+#include "core/solver_options.h"
 #include "energies/registry.h"
 #include "mesh/curves.h"
 #include "mesh/elements.h"
@@ -323,15 +324,20 @@ void MeshModel::BeginRound(bool project) {
                       s.Number("terms.boundary_proximity.weight") > 0;
   projected_point_.resize(3 * n);
   projected_direction_.resize(3 * n);
-  on_curve_.assign(n, false);
-  for (VertexIndex v : mesh.vertices()) {
+  on_curve_.assign(n, 0);
+  // Every vertex's closest point is independent (CGAL's trees answer
+  // concurrent queries).
+  const FullTeams teams;
+#pragma omp parallel for schedule(dynamic, 1024)
+  for (long i = 0; i < long(n); ++i) {
+    const VertexIndex v{VertexIndex::size_type(i)};
     const Vec3 x = ToVec3(mesh.point(v));
     Vec3 point, direction;
     if (curves && boundary_[v.idx()]) {
       const auto c = hooks_.reference->ClosestOnBoundary(x);
       point = c->point;
       direction = c->tangent;
-      on_curve_[v.idx()] = true;
+      on_curve_[v.idx()] = 1;
     } else {
       const auto c = hooks_.reference->Closest(x);
       point = c.point;

@@ -125,7 +125,7 @@ class MeshModel : public Model {
   std::map<std::string, const ElementSet*> selected_;  // per term name: all of a set or its subset
   std::vector<double> original_, previous_, normals_;
   std::vector<double> projected_point_, projected_direction_;
-  std::vector<bool> on_curve_;
+  std::vector<char> on_curve_;  // per vertex (not vector<bool>: written in parallel)
   std::vector<bool> boundary_;
   double box_diagonal_ = 0;  // of the mesh at the start of the solve (the guard's unit)
   Mesh start_;               // the mesh at the start of the solve (validity's reference)
