@@ -127,6 +127,12 @@ class Lean {
       scratch = std::max(scratch, need);
     }
     s_.hessian.resize(s_.slots);
+    size_t plus = 0;
+    for (PatternBlock& b : s_.blocks) {
+      b.plus = b.manifold ? int(plus) : -1;
+      if (b.manifold) plus += size_t(b.ambient) * b.tangent;
+    }
+    s_.plus_jacobians.resize(plus);
     for (int t = 0; t < 2; ++t) {
       Work* w = t == 0 ? &work_ : &second_;
       w->residual.resize(rows);
@@ -190,8 +196,7 @@ class Lean {
   bool Linearise(double* cost, Vector* gradient) {
     for (PatternBlock& b : s_.blocks) {
       if (!b.manifold) continue;
-      b.plus_jacobian.resize(size_t(b.ambient) * b.tangent);
-      if (!b.manifold->PlusJacobian(b.values, b.plus_jacobian.data())) return false;
+      if (!b.manifold->PlusJacobian(b.values, s_.plus_jacobians.data() + b.plus)) return false;
     }
     // H and g in one copy: the pattern's first two runs of residuals read
     // no block in common (two threads where there are, and the same sums on
@@ -365,7 +370,7 @@ class Lean {
       if (b.manifold) {
         MapMatrix(tangents[a], rows, b.tangent).noalias() =
             MapMatrix(jacobians[a], rows, b.ambient) *
-            Eigen::Map<const RowMatrix>(b.plus_jacobian.data(), b.ambient, b.tangent);
+            Eigen::Map<const RowMatrix>(s_.plus_jacobians.data() + b.plus, b.ambient, b.tangent);
       } else {
         tangents[a] = jacobians[a];  // tangent = ambient: in place
       }

@@ -102,6 +102,7 @@ bool ReadNormalPattern(const Residuals& in, NormalPattern* pattern) {
   NormalPattern& s = *pattern;
   // Free blocks in order of first use (as Residuals keeps them); -1: constant.
   std::vector<int> free_index(in.blocks().size(), -1);
+  s.blocks.reserve(in.blocks().size());
   for (size_t k = 0; k < in.blocks().size(); ++k) {
     const Residuals::Block& b = in.blocks()[k];
     if (b.constant) {
@@ -186,6 +187,8 @@ bool ReadNormalPattern(const Residuals& in, NormalPattern* pattern) {
     }
     s.row_start.push_back(int(s.column.size()));
   }
+  s.column.shrink_to_fit();
+  s.slot.shrink_to_fit();
   Partition(s);
   return false;
 }

@@ -15,8 +15,8 @@ struct PatternBlock {
   double* values = nullptr;
   int ambient = 0, tangent = 0;
   int offset = 0;  // into the tangent vector
+  int plus = -1;  // with a manifold: its Plus Jacobian at NormalPattern::plus_jacobians[plus]
   const ceres::Manifold* manifold = nullptr;  // nullptr: Euclidean
-  std::vector<double> plus_jacobian;           // ambient × tangent, row-major
 };
 
 struct PatternResidual {  // its cost and loss: the Residuals' entry of the same index
@@ -50,6 +50,9 @@ struct NormalPattern {
   // H, kept with the pattern, so that a round of the same structure reuses
   // the pages instead of faulting in 8·slots fresh bytes.
   std::vector<double> hessian;
+  // The manifold blocks' Plus Jacobians (ambient × tangent, row-major) at the
+  // current values.
+  std::vector<double> plus_jacobians;
 };
 
 // Reads `residuals` into `pattern` (constant blocks stay out of the

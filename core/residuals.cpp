@@ -16,7 +16,9 @@ Residuals::Residuals() : parts_{""} {}
 Residuals::~Residuals() { Clear(); }
 
 void Residuals::Clear() {
-  for (Residual& r : residuals_) delete r.cost;
+  for (Residual& r : residuals_) {
+    if (r.element < 0) delete r.cost;
+  }
   residuals_.clear();
   blocks_.clear();
   values_.clear();
@@ -105,6 +107,7 @@ Batch* Residuals::Own(std::unique_ptr<Batch> batch) {
 
 void Residuals::Add(const Batch* batch, int element, const ceres::LossFunction* loss,
                     double* const* blocks, int count, int part) {
+  CHECK_GE(element, 0);
   Residual r;
   r.batch = batch;
   r.element = element;
@@ -193,7 +196,7 @@ std::unique_ptr<ceres::Problem> Residuals::MakeProblem() const {
   std::vector<double*> read;
   for (const Residual& r : residuals_) {
     read.assign(values_.begin() + r.first, values_.begin() + r.end);
-    ceres::CostFunction* cost = r.cost;
+    ceres::CostFunction* cost = r.element < 0 ? r.cost : nullptr;
     if (!cost) {
       views_.push_back(std::make_unique<BatchElement>(*r.batch, r.element));
       cost = views_.back().get();

@@ -35,20 +35,24 @@ class Residuals {
     const ceres::Manifold* manifold = nullptr;  // nullptr: Euclidean
     bool constant = false;
   };
-  struct Residual {
-    ceres::CostFunction* cost = nullptr;  // or, when null, element `element` of `batch`
-    const Batch* batch = nullptr;
-    int element = 0;
+  struct Residual {  // 32 bytes: there are ~20 per quad
+    union {
+      ceres::CostFunction* cost = nullptr;  // when element < 0 (owned)
+      const Batch* batch;                   // else: its element `element`
+    };
+    int element = -1;
+    int first = 0;  // its parameter blocks in values() / block_of(): [first, end)
     const ceres::LossFunction* loss = nullptr;  // nullptr: ½‖r‖²
-    int first = 0, end = 0;  // its parameter blocks in values() / block_of()
+    int end = 0;
     int part = 0;
 
-    int rows() const { return cost ? cost->num_residuals() : batch->num_residuals(); }
+    int rows() const { return element < 0 ? cost->num_residuals() : batch->num_residuals(); }
     bool Evaluate(double const* const* values, double* residuals, double** jacobians) const {
-      return cost ? cost->Evaluate(values, residuals, jacobians)
-                  : batch->Evaluate(element, values, residuals, jacobians);
+      return element < 0 ? cost->Evaluate(values, residuals, jacobians)
+                         : batch->Evaluate(element, values, residuals, jacobians);
     }
   };
+  static_assert(sizeof(Residual) == 32);
 
   Residuals();
   ~Residuals();
