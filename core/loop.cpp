@@ -210,9 +210,11 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
           const double w = s.Number("terms." + name + ".weight") * (continued ? scale : 1.0);
           if (w > 0) terms.push_back({t, w, continued ? band : -1.0});
         }
+        const auto build_start = Clock::now();
         residuals.Clear();
         model.Build(terms, k, residuals);
         residuals.Fit();
+        result.seconds["build"] += Since(build_start);
         built = true;
         before = model.SaveState();
 
