@@ -181,13 +181,11 @@ class Lean {
   bool Cost(double* cost) {
     double total = 0;
     for (size_t i = 0; i < s_.residuals.size(); ++i) {
-      const Residuals::Residual& r = in_.residuals()[i];
-      double* residual = work_.residual.data();
-      if (!r.Evaluate(in_.values() + r.first, residual, nullptr)) return false;
-      const double sq = Eigen::Map<const Vector>(residual, Rows(i)).squaredNorm();
-      total += Loss(r, sq);
+      const double c = in_.Cost(int(i), work_.residual.data());
+      if (std::isnan(c)) return false;
+      total += c;
     }
-    *cost = 0.5 * total;
+    *cost = total;
     return std::isfinite(*cost);
   }
 
@@ -422,12 +420,6 @@ class Lean {
     return true;
   }
   int Rows(size_t i) const { return in_.residuals()[i].rows(); }
-  double Loss(const Residuals::Residual& r, double sq) const {
-    if (!r.loss) return sq;
-    double rho[3];
-    r.loss->Evaluate(sq, rho);
-    return rho[0];
-  }
   Eigen::Map<const RowMatrix> Slot(int offset, int rows, int cols) const {
     return Eigen::Map<const RowMatrix>(s_.hessian.data() + offset, rows, cols);
   }

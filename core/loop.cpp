@@ -69,9 +69,11 @@ class IterationWatch : public ceres::IterationCallback {
 std::map<std::string, double> Objective(const Residuals& residuals) {
   std::vector<double> parts(residuals.parts().size(), 0.0);
   std::vector<bool> used(parts.size(), false);
+  std::vector<double> scratch;
   for (size_t i = 0; i < residuals.residuals().size(); ++i) {
     const int part = residuals.residuals()[i].part;
-    parts[size_t(part)] += residuals.Cost(int(i));
+    scratch.resize(std::max<size_t>(scratch.size(), size_t(residuals.residuals()[i].rows())));
+    parts[size_t(part)] += residuals.Cost(int(i), scratch.data());
     used[size_t(part)] = true;
   }
   std::map<std::string, double> objective;

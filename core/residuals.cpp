@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include <Eigen/Core>
 #include <ceres/cost_function.h>
 #include <ceres/loss_function.h>
 #include <ceres/manifold.h>
@@ -172,14 +173,18 @@ int Residuals::FreeTangentSize() const {
   return n;
 }
 
-double Residuals::Cost(int i) const {
+double Residuals::Cost(int i, double* scratch) const {
   const Residual& r = residuals_[size_t(i)];
-  std::vector<double> residual(size_t(r.rows()));
-  if (!r.Evaluate(values_.data() + r.first, residual.data(), nullptr)) {
+  const int rows = r.rows();
+  std::vector<double> own;
+  if (!scratch) {
+    own.resize(size_t(rows));
+    scratch = own.data();
+  }
+  if (!r.Evaluate(values_.data() + r.first, scratch, nullptr)) {
     return std::numeric_limits<double>::quiet_NaN();
   }
-  double sq = 0;
-  for (double v : residual) sq += v * v;
+  const double sq = Eigen::Map<const Eigen::VectorXd>(scratch, rows).squaredNorm();
   if (!r.loss) return 0.5 * sq;
   double rho[3];
   r.loss->Evaluate(sq, rho);

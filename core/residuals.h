@@ -101,8 +101,9 @@ class Residuals {
   int FreeTangentSize() const;                // the variables the solve moves
 
   // ½ ρ(‖r‖²) of residual `i` at the current values (NaN if it fails to
-  // evaluate).
-  double Cost(int i) const;
+  // evaluate); `scratch`, if given, holds its residual vector (at least
+  // rows() doubles) instead of an allocation.
+  double Cost(int i, double* scratch = nullptr) const;
   // The same problem for ceres::Solve: the residuals in this order, then the
   // manifolds and constant blocks. It borrows costs, losses and manifolds
   // (and views of batch elements kept here until Clear); this list must
