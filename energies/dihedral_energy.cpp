@@ -88,15 +88,10 @@ Vec EnergyNormal(TermContext& c, const ElementSet& faces, int f) {
 }
 
 // The IRLS residual's hinge functors, ω as their parameter.
-template <typename Functor>
-void AddDihedralHinge(TermContext& c, double inv_length, double omega,
-                      const std::array<double*, 4>& blocks) {
-  CheckHingeConstants("dihedral_energy", inv_length, "omega", omega);
-  c.AddAutoDiff<DihedralCost<Functor>>(Functor(inv_length, omega), blocks);
-}
-constexpr HingeAdders kDihedralAdders = {&AddDihedralHinge<DihedralTriTri>,
-                                         &AddDihedralHinge<DihedralTriPoly>,
-                                         &AddDihedralHinge<DihedralPolyPoly>};
+constexpr HingeAdders kDihedralAdders = {"dihedral_energy", "omega",
+                                         &AddHingeResidual<DihedralCost<DihedralTriTri>>,
+                                         &AddHingeResidual<DihedralCost<DihedralTriPoly>>,
+                                         &AddHingeResidual<DihedralCost<DihedralPolyPoly>>};
 
 // Edge v→w with left face (v, w, a, …) and right face (w, v, b, …); the IRLS
 // weight ω from the current edge length and normals (a round's constant).

@@ -46,6 +46,7 @@ void SphereNormals(TermContext& c) {
 
 // Edge v→w with left face (v, w, a, …) and right face (w, v, b, …).
 void AddHinge(TermContext& c, size_t i, const HingeAdders& add, double parameter) {
+  CheckHingeConstants(add.term, 1.0, add.parameter, parameter);
   const ElementSet& e = *c.elements;
   const int* vs = e.Vertices(i);
   const int v = vs[0], w = vs[1], a = vs[2], b = vs[3];

@@ -144,20 +144,33 @@ namespace archgeo {
 
 class TermContext;
 struct TermSpec;
+template <class Cost>
+struct BatchOf;  // core/batch.h
 
 namespace terms {
 
 // The adders of one residual's three hinge functors (dihedral_energy.h,
 // smoothed_dihedral_energy.h): each adds, through the context, the residual
 // of its functor with (inv_length, parameter) over the blocks (v, w, a, b),
-// (v, w, a, n_right) or (v, w, n_left, n_right).
+// (v, w, a, n_right) or (v, w, n_left, n_right). AddHinge CHECKs the
+// constants first (CheckHingeConstants, named by `term` and `parameter`).
 struct HingeAdders {
   using Add = void (*)(TermContext& c, double inv_length, double parameter,
                        const std::array<double*, 4>& blocks);
+  const char* term;       // e.g. "dihedral_energy"
+  const char* parameter;  // the residual's parameter, e.g. "omega"
   Add tri_tri;
   Add tri_poly;
   Add poly_poly;
 };
+
+// The adder of the hinge functor of `Cost` (its ceres::AutoDiffCostFunction
+// type), constructed from (inv_length, parameter), as a batch element.
+template <typename Cost, typename Context = TermContext>
+void AddHingeResidual(Context& c, double inv_length, double parameter,
+                      const std::array<double*, 4>& blocks) {
+  c.template AddAutoDiff<Cost>(typename BatchOf<Cost>::functor(inv_length, parameter), blocks);
+}
 
 // The builder of a hinge term: adds the residual of interior edge
 // `element` (vertices v, w, a, b with left face (v, w, a, …) and right face

@@ -40,15 +40,11 @@ namespace terms {
 namespace {
 
 // The smoothed residual's hinge functors, ε as their parameter.
-template <typename Functor>
-void AddSmoothedHinge(TermContext& c, double inv_length, double epsilon,
-                      const std::array<double*, 4>& blocks) {
-  CheckHingeConstants("smoothed_dihedral_energy", inv_length, "epsilon", epsilon);
-  c.AddAutoDiff<SmoothedCost<Functor>>(Functor(inv_length, epsilon), blocks);
-}
-constexpr HingeAdders kSmoothedDihedralAdders = {&AddSmoothedHinge<SmoothedDihedralTriTri>,
-                                                 &AddSmoothedHinge<SmoothedDihedralTriPoly>,
-                                                 &AddSmoothedHinge<SmoothedDihedralPolyPoly>};
+constexpr HingeAdders kSmoothedDihedralAdders = {
+    "smoothed_dihedral_energy", "epsilon",
+    &AddHingeResidual<SmoothedCost<SmoothedDihedralTriTri>>,
+    &AddHingeResidual<SmoothedCost<SmoothedDihedralTriPoly>>,
+    &AddHingeResidual<SmoothedCost<SmoothedDihedralPolyPoly>>};
 
 // Edge v→w with left face (v, w, a, …) and right face (w, v, b, …).
 void AddSmoothedDihedral(TermContext& c, size_t i) {
