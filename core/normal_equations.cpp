@@ -47,11 +47,11 @@ bool Renew(const Residuals& in, NormalPattern& s) {
   return true;
 }
 
-// The residuals' visiting order and its runs (NormalPattern::visit): a
-// stable counting sort by bucket of kBucket consecutive free blocks (the
-// blocks are numbered by first use, so a bucket is a stretch of the mesh),
-// cut at half the residuals; a residual reading a block that residuals of
-// both halves read goes to the run after them.
+// The residuals' visiting order and its runs (NormalPattern::visit): cut
+// by their first free block at the block below which half of them start
+// (the blocks are numbered by first use, so the cut runs across the mesh);
+// a residual reading a block that residuals of both sides read goes to the
+// run after them. Each run keeps the residuals' order (term by term).
 void Partition(NormalPattern& s) {
   const int n = int(s.residuals.size());
   const int blocks = int(s.blocks.size());

@@ -41,10 +41,7 @@ struct NormalPattern {
   // The order the solver visits the residuals in to assemble H and g, in
   // three runs: visit[0, split[0]) and visit[split[0], split[1]) read no free
   // block in common, so two threads write H and g at once without a second
-  // copy; visit[split[1], end) reads blocks of both and goes after them. Each
-  // run keeps the residuals' order within buckets of blocks that lie
-  // together (by their smallest free block), so the slots a stretch of
-  // residuals writes stay in cache.
+  // copy; visit[split[1], end) reads blocks of both and goes after them.
   std::vector<int> visit;
   int split[2] = {0, 0};
   // H, kept with the pattern, so that a round of the same structure reuses
