@@ -139,7 +139,7 @@ std::vector<Key> SolverKeys() {
               "block-Jacobi conjugate gradients to a relative residual eta, at most "
               "max_linear_solver_iterations (core/lean_solve.h); 0 = never, always Ceres "
               "(planar_quads: 100000)"),
-      number("pcg_function_tolerance", 1e-4, 0, 1,
+      number("pcg_function_tolerance", 1e-3, 0, 1,
              "with pcg_above: such a solve stops when the relative cost change falls below this "
              "(or function_tolerance, if larger); the next round goes on from there"),
   };
