@@ -107,6 +107,7 @@ struct Corrector {
 struct Work {
   std::vector<double> residual, ambient, tangent;
   std::vector<double*> jacobians, tangents;
+  std::vector<int> free;
   double total = 0;
 };
 
@@ -115,18 +116,18 @@ class Lean {
   Lean(const Residuals& residuals, NormalPattern& pattern) : in_(residuals), s_(pattern) {
     ReadNormalPattern(residuals, &s_);
     size_t rows = 0, scratch = 0, parameters = 0;
-    for (size_t i = 0; i < s_.residuals.size(); ++i) {
-      const PatternResidual& r = s_.residuals[i];
+    for (size_t i = 0; i < residuals.residuals().size(); ++i) {
+      const Residuals::Residual& r = residuals.residuals()[i];
       const int m = Rows(i);
       rows = std::max<size_t>(rows, m);
       parameters = std::max<size_t>(parameters, r.end - r.first);
       size_t need = 0;
       for (int a = r.first; a < r.end; ++a) {
-        if (s_.block[a] >= 0) need += size_t(m) * ambient(a);
+        if (block(a) >= 0) need += size_t(m) * ambient(a);
       }
       scratch = std::max(scratch, need);
     }
-    s_.hessian.resize(s_.slots);
+    s_.hessian.Resize(size_t(s_.slots));
     size_t plus = 0;
     for (PatternBlock& b : s_.blocks) {
       b.plus = b.manifold ? int(plus) : -1;
@@ -140,6 +141,7 @@ class Lean {
       w->tangent.resize(scratch);
       w->jacobians.resize(parameters);
       w->tangents.resize(parameters);
+      w->free.resize(parameters);
     }
     // The product's halves: the first block row past half the off-diagonal slots.
     const int n = int(s_.blocks.size());
@@ -180,7 +182,7 @@ class Lean {
   // ½ Σ ρ(‖r‖²) at the current values; false if a block fails to evaluate.
   bool Cost(double* cost) {
     double total = 0;
-    for (size_t i = 0; i < s_.residuals.size(); ++i) {
+    for (size_t i = 0; i < in_.residuals().size(); ++i) {
       const double c = in_.Cost(int(i), work_.residual.data());
       if (std::isnan(c)) return false;
       total += c;
@@ -331,38 +333,39 @@ class Lean {
   }
 
  private:
-  int ambient(int parameter) const {
-    return s_.blocks[s_.block[parameter]].ambient;
-  }
+  // The free block of residual parameter `parameter` (-1: constant).
+  int block(int parameter) const { return s_.free[size_t(in_.block_of()[size_t(parameter)])]; }
+  int ambient(int parameter) const { return s_.blocks[size_t(block(parameter))].ambient; }
   // One residual block into the sums: ρ, its corrected tangent Jacobians,
   // g += J̃ᵀ r̃ and every J̃_aᵀ J̃_b into its slot.
   bool Accumulate(size_t index, Work* k) {
-    const PatternResidual& r = s_.residuals[index];
     const Residuals::Residual& in = in_.residuals()[index];
-    const ceres::LossFunction* loss = in.loss;
+    const ceres::LossFunction* loss = in_.Loss(in.loss());
     const int rows = in.rows();
-    const int m = r.end - r.first;
+    const int m = in.end - in.first;
     double** jacobians = k->jacobians.data();
     double** tangents = k->tangents.data();
+    int* free = k->free.data();  // its parameters' free blocks (-1: constant)
     size_t used = 0;
     for (int a = 0; a < m; ++a) {
+      free[a] = block(in.first + a);
       jacobians[a] = tangents[a] = nullptr;
-      if (s_.block[r.first + a] < 0) continue;
+      if (free[a] < 0) continue;
       jacobians[a] = k->ambient.data() + used;
       tangents[a] = k->tangent.data() + used;
-      used += size_t(rows) * ambient(r.first + a);
+      used += size_t(rows) * s_.blocks[size_t(free[a])].ambient;
     }
-    if (!in.Evaluate(in_.values() + r.first, k->residual.data(), jacobians)) return false;
+    if (!in.Evaluate(in_.values() + in.first, k->residual.data(), jacobians)) return false;
     Eigen::Map<Vector> res(k->residual.data(), rows);
     const double sq = res.squaredNorm();
     double rho[3] = {sq, 1.0, 0.0};
     if (loss) loss->Evaluate(sq, rho);
     k->total += rho[0];
-    if (sq == 0.0 && AllZero(jacobians, m, rows, r.first)) return true;  // e.g. an idle barrier
+    if (sq == 0.0 && AllZero(jacobians, free, m, rows)) return true;  // e.g. an idle barrier
     const Corrector corrector(sq, rho);
     // Tangent Jacobians, corrected: J̃ = √ρ' (J − α/‖r‖² r rᵀ J).
     for (int a = 0; a < m; ++a) {
-      const int i = s_.block[r.first + a];
+      const int i = free[a];
       if (i < 0) continue;
       const PatternBlock& b = s_.blocks[i];
       if (b.manifold) {
@@ -381,9 +384,9 @@ class Lean {
     res *= corrector.residual_scaling;
     double* H = s_.hessian.data();
     double* g = gradient_.data();
-    int pair = r.pairs;
+    int pair = s_.pairs[index];
     for (int a = 0; a < m; ++a) {
-      const int i = s_.block[r.first + a];
+      const int i = free[a];
       if (i < 0) continue;
       const PatternBlock& bi = s_.blocks[i];
       AddTransposeProduct(tangents[a], res.data(), rows, bi.tangent, 1,
@@ -391,7 +394,7 @@ class Lean {
       AddTransposeProduct(tangents[a], tangents[a], rows, bi.tangent, bi.tangent,
                           H + s_.diagonal[i]);
       for (int c = a + 1; c < m; ++c) {
-        const int j = s_.block[r.first + c];
+        const int j = free[c];
         if (j < 0 || j == i) continue;
         const PatternBlock& bj = s_.blocks[j];
         if (i < j) {
@@ -407,13 +410,13 @@ class Lean {
     return true;
   }
 
-  // Whether every Jacobian of a residual reading the parameters from `first`
-  // is zero: it adds nothing to g or H.
-  bool AllZero(double* const* jacobians, int m, int rows, int first) const {
+  // Whether every Jacobian of a residual whose parameters are in the free
+  // blocks `free` is zero: it adds nothing to g or H.
+  bool AllZero(double* const* jacobians, const int* free, int m, int rows) const {
     for (int a = 0; a < m; ++a) {
       if (!jacobians[a]) continue;
       const double* J = jacobians[a];
-      for (int e = 0, n = rows * ambient(first + a); e < n; ++e) {
+      for (int e = 0, n = rows * s_.blocks[size_t(free[a])].ambient; e < n; ++e) {
         if (J[e] != 0.0) return false;
       }
     }

@@ -71,7 +71,7 @@ std::map<std::string, double> Objective(const Residuals& residuals) {
   std::vector<bool> used(parts.size(), false);
   std::vector<double> scratch;
   for (size_t i = 0; i < residuals.residuals().size(); ++i) {
-    const int part = residuals.residuals()[i].part;
+    const int part = residuals.residuals()[i].part();
     scratch.resize(std::max<size_t>(scratch.size(), size_t(residuals.residuals()[i].rows())));
     parts[size_t(part)] += residuals.Cost(int(i), scratch.data());
     used[size_t(part)] = true;

@@ -12,39 +12,48 @@ int TangentSize(const Residuals::Block& b) {
   return b.manifold ? b.manifold->TangentSize() : b.size;
 }
 
+// NormalPattern::structure: the residuals' count and ends and every
+// parameter's block, hashed in four interleaved lanes (multiply, xor-shift;
+// one chain would wait on each multiply) and mixed by splitmix64's finaliser.
+uint64_t Mix(uint64_t z) {
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+uint64_t Structure(const Residuals& in) {
+  uint64_t lane[4] = {1, 2, 3, 4};
+  const auto add = [&](int k, uint64_t x) {
+    lane[k] = (lane[k] ^ x) * 0x9E3779B97F4A7C15ull;
+    lane[k] ^= lane[k] >> 29;
+  };
+  const MappedList<Residuals::Residual>& residuals = in.residuals();
+  for (size_t k = 0; k < residuals.size(); ++k) add(int(k & 3), uint64_t(residuals[k].end));
+  const MappedList<int>& block_of = in.block_of();
+  for (size_t a = 0; a < block_of.size(); ++a) add(int(a & 3), uint64_t(uint32_t(block_of[a])));
+  uint64_t h = Mix(residuals.size());
+  for (uint64_t x : lane) h = Mix(h ^ x);
+  return h;
+}
+
 // Renews `s`'s manifolds from `in` if the structure is `s`'s; false (and
 // `s` partly renewed) if not.
 bool Renew(const Residuals& in, NormalPattern& s) {
-  const std::vector<Residuals::Residual>& residuals = in.residuals();
-  if (residuals.size() != s.residuals.size() ||
-      in.blocks().size() != s.blocks.size() + s.constant.size() ||
-      in.block_of().size() != s.block.size()) {
-    return false;
-  }
-  for (size_t k = 0; k < residuals.size(); ++k) {
-    const PatternResidual& r = s.residuals[k];
-    if (residuals[k].first != r.first || residuals[k].end != r.end) return false;
-  }
+  if (in.residuals().size() != s.pairs.size() || in.blocks().size() != s.free.size()) return false;
   // The free blocks in order, and the constant ones, as before...
-  std::vector<int> free_index(in.blocks().size(), -1);
-  size_t free = 0, constant = 0;
+  size_t constant = 0;
   for (size_t k = 0; k < in.blocks().size(); ++k) {
     const Residuals::Block& b = in.blocks()[k];
+    if (b.constant != (s.free[k] < 0)) return false;
     if (b.constant) {
-      if (constant == s.constant.size() || s.constant[constant++] != b.values) return false;
+      if (s.constant[constant++] != b.values) return false;
       continue;
     }
-    if (free == s.blocks.size()) return false;
-    PatternBlock& p = s.blocks[free];
+    PatternBlock& p = s.blocks[size_t(s.free[k])];
     if (p.values != b.values || p.ambient != b.size || p.tangent != TangentSize(b)) return false;
     p.manifold = b.manifold;
-    free_index[k] = int(free++);
   }
   // ...and every residual reading the same blocks.
-  for (size_t a = 0; a < s.block.size(); ++a) {
-    if (s.block[a] != free_index[size_t(in.block_of()[a])]) return false;
-  }
-  return true;
+  return Structure(in) == s.structure;
 }
 
 // The residuals' visiting order and its runs (NormalPattern::visit): cut
@@ -52,12 +61,14 @@ bool Renew(const Residuals& in, NormalPattern& s) {
 // (the blocks are numbered by first use, so the cut runs across the mesh);
 // a residual reading a block that residuals of both sides read goes to the
 // run after them. Each run keeps the residuals' order (term by term).
-void Partition(NormalPattern& s) {
-  const int n = int(s.residuals.size());
+void Partition(const Residuals& in, NormalPattern& s) {
+  const int n = int(in.residuals().size());
   const int blocks = int(s.blocks.size());
   const auto each_block = [&](int k, auto&& f) {
-    for (int a = s.residuals[k].first; a < s.residuals[k].end; ++a) {
-      if (s.block[a] >= 0) f(s.block[a]);
+    const Residuals::Residual& r = in.residuals()[size_t(k)];
+    for (int a = r.first; a < r.end; ++a) {
+      const int b = s.free[size_t(in.block_of()[size_t(a)])];
+      if (b >= 0) f(b);
     }
   };
   // The first free block of each residual, and the block below which half
@@ -97,11 +108,11 @@ void Partition(NormalPattern& s) {
 }  // namespace
 
 bool ReadNormalPattern(const Residuals& in, NormalPattern* pattern) {
-  if (!pattern->residuals.empty() && Renew(in, *pattern)) return true;
+  if (!pattern->pairs.empty() && Renew(in, *pattern)) return true;
   *pattern = NormalPattern();
   NormalPattern& s = *pattern;
   // Free blocks in order of first use (as Residuals keeps them); -1: constant.
-  std::vector<int> free_index(in.blocks().size(), -1);
+  s.free.assign(in.blocks().size(), -1);
   s.blocks.reserve(in.blocks().size());
   for (size_t k = 0; k < in.blocks().size(); ++k) {
     const Residuals::Block& b = in.blocks()[k];
@@ -109,7 +120,7 @@ bool ReadNormalPattern(const Residuals& in, NormalPattern* pattern) {
       s.constant.push_back(b.values);
       continue;
     }
-    free_index[k] = int(s.blocks.size());
+    s.free[k] = int(s.blocks.size());
     PatternBlock block;
     block.values = b.values;
     block.ambient = b.size;
@@ -119,17 +130,9 @@ bool ReadNormalPattern(const Residuals& in, NormalPattern* pattern) {
     s.tangent += block.tangent;
     s.blocks.push_back(std::move(block));
   }
-  const std::vector<Residuals::Residual>& residuals = in.residuals();
-  const size_t parameters = residuals.empty() ? 0 : size_t(residuals.back().end);
-  s.block.resize(parameters);
-  for (size_t a = 0; a < parameters; ++a) s.block[a] = free_index[in.block_of()[a]];
-  s.residuals.reserve(residuals.size());
-  for (const Residuals::Residual& from : residuals) {
-    PatternResidual r;
-    r.first = from.first;
-    r.end = from.end;
-    s.residuals.push_back(r);
-  }
+  s.structure = Structure(in);
+  const MappedList<Residuals::Residual>& residuals = in.residuals();
+  const auto block = [&](int a) { return s.free[size_t(in.block_of()[size_t(a)])]; };
   // Slots: the diagonal, then block row by block row its upper pairs (so a
   // row's slots lie together for the product).
   const int n = int(s.blocks.size());
@@ -143,21 +146,23 @@ bool ReadNormalPattern(const Residuals& in, NormalPattern* pattern) {
   // residuals read each block.
   std::vector<int> incident_start(n + 1, 0);
   int pair_count = 0;
-  for (PatternResidual& r : s.residuals) {
-    r.pairs = pair_count;
+  s.pairs.resize(residuals.size());
+  for (size_t k = 0; k < residuals.size(); ++k) {
+    const Residuals::Residual& r = residuals[k];
+    s.pairs[k] = pair_count;
     for (int a = r.first; a < r.end; ++a) {
-      if (s.block[a] >= 0) ++incident_start[s.block[a] + 1];
+      if (block(a) >= 0) ++incident_start[block(a) + 1];
       for (int b = a + 1; b < r.end; ++b) {
-        pair_count += s.block[a] >= 0 && s.block[b] >= 0 && s.block[a] != s.block[b];
+        pair_count += block(a) >= 0 && block(b) >= 0 && block(a) != block(b);
       }
     }
   }
   for (int b = 0; b < n; ++b) incident_start[b + 1] += incident_start[b];
   std::vector<int> incident(incident_start[n]);
   std::vector<int> fill(incident_start.begin(), incident_start.end() - 1);
-  for (size_t r = 0; r < s.residuals.size(); ++r) {
-    for (int a = s.residuals[r].first; a < s.residuals[r].end; ++a) {
-      if (s.block[a] >= 0) incident[fill[s.block[a]]++] = int(r);
+  for (size_t k = 0; k < residuals.size(); ++k) {
+    for (int a = residuals[k].first; a < residuals[k].end; ++a) {
+      if (block(a) >= 0) incident[fill[block(a)]++] = int(k);
     }
   }
   s.pair_slot.assign(pair_count, -1);
@@ -165,11 +170,11 @@ bool ReadNormalPattern(const Residuals& in, NormalPattern* pattern) {
   std::vector<int> mark(n, -1), position(n, 0);
   for (int i = 0; i < n; ++i) {
     for (int k = incident_start[i]; k < incident_start[i + 1]; ++k) {
-      const PatternResidual& r = s.residuals[incident[k]];
-      int pair = r.pairs;
+      const Residuals::Residual& r = residuals[size_t(incident[k])];
+      int pair = s.pairs[size_t(incident[k])];
       for (int a = r.first; a < r.end; ++a) {
         for (int b = a + 1; b < r.end; ++b) {
-          const int p = s.block[a], q = s.block[b];
+          const int p = block(a), q = block(b);
           if (p < 0 || q < 0 || p == q) continue;
           const int at = pair++;
           if (std::min(p, q) != i) continue;
@@ -189,7 +194,7 @@ bool ReadNormalPattern(const Residuals& in, NormalPattern* pattern) {
   }
   s.column.shrink_to_fit();
   s.slot.shrink_to_fit();
-  Partition(s);
+  Partition(in, s);
   return false;
 }
 

@@ -5,6 +5,7 @@
 // that a residual reads together (upper triangle; a row's slots lie together).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "core/residuals.h"
@@ -19,25 +20,25 @@ struct PatternBlock {
   const ceres::Manifold* manifold = nullptr;  // nullptr: Euclidean
 };
 
-struct PatternResidual {  // its cost and loss: the Residuals' entry of the same index
-  int first = 0, end = 0;  // its parameter blocks in Residuals::values() / NormalPattern::block
-  int pairs = 0;           // its slots in NormalPattern::pair_slot (free pairs a < b)
-};
-
 // The structure of a round's residuals as the PCG solver reads it (their
-// costs and losses stay in the Residuals), and the block pattern of J^T J.
+// costs, losses and the blocks they read stay in the Residuals), and the
+// block pattern of J^T J.
 struct NormalPattern {
-  std::vector<PatternBlock> blocks;      // free blocks
-  std::vector<PatternResidual> residuals;
-  std::vector<int> block;         // per residual parameter (Residuals::values()): free block or -1
-  std::vector<int> pair_slot;     // per residual, per free pair (a < b): slot offset
-  std::vector<int> diagonal;      // per block: its diagonal slot offset
+  std::vector<PatternBlock> blocks;  // free blocks
+  std::vector<int> free;             // per Residuals block: its free block, or -1 (constant)
+  std::vector<int> pairs;            // per residual: its first slot in pair_slot
+  std::vector<int> pair_slot;        // per residual, per free pair (a < b): slot offset
+  std::vector<int> diagonal;         // per block: its diagonal slot offset
   // The off-diagonal slots of each block row i: H_ij for j > i, stored
   // row × column, in slot order.
   std::vector<int> row_start, column, slot;
   int tangent = 0, slots = 0;
   int diagonal_slots = 0;  // the diagonal slots come first: [0, diagonal_slots)
   std::vector<const double*> constant;  // the constant blocks the residuals read
+  // A 64-bit hash of which blocks each residual reads (Residuals::block_of
+  // and every residual's first parameter): the structure a later round's
+  // residuals must have for ReadNormalPattern to reuse this one.
+  uint64_t structure = 0;
   // The order the solver visits the residuals in to assemble H and g, in
   // three runs: visit[0, split[0]) and visit[split[0], split[1]) read no free
   // block in common, so two threads write H and g at once without a second
@@ -45,8 +46,10 @@ struct NormalPattern {
   std::vector<int> visit;
   int split[2] = {0, 0};
   // H, kept with the pattern, so that a round of the same structure reuses
-  // the pages instead of faulting in 8·slots fresh bytes.
-  std::vector<double> hessian;
+  // the pages instead of faulting in 8·slots fresh bytes (920 MB at 1M
+  // quads; mapped, so that the first linearisation's zeroing on two threads
+  // faults them in, not a serial value-initialisation before it).
+  MappedList<double> hessian;
   // The manifold blocks' Plus Jacobians (ambient × tangent, row-major) at the
   // current values.
   std::vector<double> plus_jacobians;
@@ -54,10 +57,11 @@ struct NormalPattern {
 
 // Reads `residuals` into `pattern` (constant blocks stay out of the
 // pattern). When `pattern` holds the pattern of residuals of the same
-// structure — the same residual blocks in the same order, reading the same
-// parameter blocks, free and constant alike, of the same sizes — only the
-// manifolds are read anew; the loop builds its residuals every round with
-// that structure. Returns whether it was reused.
+// structure — the same number of residual blocks, reading the same parameter
+// blocks (by hash, NormalPattern::structure), the same blocks free and
+// constant in the same order, of the same sizes — only the manifolds are read
+// anew; the loop builds its residuals every round with that structure.
+// Returns whether it was reused.
 bool ReadNormalPattern(const Residuals& residuals, NormalPattern* pattern);
 
 }  // namespace archgeo

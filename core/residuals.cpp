@@ -28,6 +28,9 @@ void Residuals::Clear() {
   ranges_.clear();
   parts_.assign(1, "");
   losses_.clear();
+  loss_of_.assign(1, nullptr);
+  loss_index_ = {{nullptr, 0}};
+  last_loss_ = 0;
   manifolds_.clear();
   views_.clear();
   batches_.clear();
@@ -35,10 +38,10 @@ void Residuals::Clear() {
 }
 
 void Residuals::Fit() {
-  residuals_.shrink_to_fit();
+  residuals_.Fit();
   blocks_.shrink_to_fit();
-  values_.shrink_to_fit();
-  block_of_.shrink_to_fit();
+  values_.Fit();
+  block_of_.Fit();
   for (const std::unique_ptr<Batch>& b : batches_) b->Fit();
 }
 
@@ -96,9 +99,7 @@ void Residuals::Add(ceres::CostFunction* cost, const ceres::LossFunction* loss,
                     double* const* blocks, int count, int part) {
   Residual r;
   r.cost = cost;
-  r.loss = loss;
-  r.part = part;
-  Append(r, cost->parameter_block_sizes(), blocks, count);
+  Append(r, loss, part, cost->parameter_block_sizes(), blocks, count);
 }
 
 Batch* Residuals::Own(std::unique_ptr<Batch> batch) {
@@ -112,15 +113,23 @@ void Residuals::Add(const Batch* batch, int element, const ceres::LossFunction* 
   Residual r;
   r.batch = batch;
   r.element = element;
-  r.loss = loss;
-  r.part = part;
-  Append(r, batch->parameter_block_sizes(), blocks, count);
+  Append(r, loss, part, batch->parameter_block_sizes(), blocks, count);
 }
 
-void Residuals::Append(Residual r, const std::vector<int32_t>& sizes, double* const* blocks,
-                       int count) {
+void Residuals::Append(Residual r, const ceres::LossFunction* loss, int part,
+                       const std::vector<int32_t>& sizes, double* const* blocks, int count) {
   CHECK_EQ(int(sizes.size()), count) << "a cost function over " << sizes.size()
                                      << " blocks added with " << count;
+  CHECK(part >= 0 && part < 256) << "objective part " << part << ": at most 256";
+  if (loss_of_[last_loss_] != loss) {
+    const auto [it, added] = loss_index_.emplace(loss, uint32_t(loss_of_.size()));
+    if (added) {
+      CHECK_LT(loss_of_.size(), size_t(1) << 24) << "more than 2^24 loss functions";
+      loss_of_.push_back(loss);
+    }
+    last_loss_ = it->second;
+  }
+  r.loss_part = last_loss_ << 8 | uint32_t(part);
   r.first = int(values_.size());
   for (int a = 0; a < count; ++a) {
     for (int b = 0; b < a; ++b) CHECK(blocks[a] != blocks[b]) << "a block read twice by one residual";
@@ -185,9 +194,10 @@ double Residuals::Cost(int i, double* scratch) const {
     return std::numeric_limits<double>::quiet_NaN();
   }
   const double sq = Eigen::Map<const Eigen::VectorXd>(scratch, rows).squaredNorm();
-  if (!r.loss) return 0.5 * sq;
+  const ceres::LossFunction* loss = Loss(r.loss());
+  if (!loss) return 0.5 * sq;
   double rho[3];
-  r.loss->Evaluate(sq, rho);
+  loss->Evaluate(sq, rho);
   return 0.5 * rho[0];
 }
 
@@ -200,13 +210,13 @@ std::unique_ptr<ceres::Problem> Residuals::MakeProblem() const {
   auto problem = std::make_unique<ceres::Problem>(options);
   std::vector<double*> read;
   for (const Residual& r : residuals_) {
-    read.assign(values_.begin() + r.first, values_.begin() + r.end);
+    read.assign(values_.data() + r.first, values_.data() + r.end);
     ceres::CostFunction* cost = r.element < 0 ? r.cost : nullptr;
     if (!cost) {
       views_.push_back(std::make_unique<BatchElement>(*r.batch, r.element));
       cost = views_.back().get();
     }
-    problem->AddResidualBlock(cost, const_cast<ceres::LossFunction*>(r.loss), read);
+    problem->AddResidualBlock(cost, const_cast<ceres::LossFunction*>(Loss(r.loss())), read);
   }
   for (const Block& b : blocks_) {
     if (b.manifold) problem->SetManifold(b.values, const_cast<ceres::Manifold*>(b.manifold));

@@ -10,6 +10,7 @@
 // It owns every cost, loss and manifold added to it.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <unordered_map>
@@ -18,6 +19,7 @@
 #include <ceres/cost_function.h>
 
 #include "core/batch.h"
+#include "core/mapped_list.h"
 
 namespace ceres {
 class LossFunction;
@@ -35,16 +37,19 @@ class Residuals {
     const ceres::Manifold* manifold = nullptr;  // nullptr: Euclidean
     bool constant = false;
   };
-  struct Residual {  // 32 bytes: there are ~20 per quad
+  struct Residual {  // 24 bytes: there are ~30 per quad
     union {
       ceres::CostFunction* cost = nullptr;  // when element < 0 (owned)
       const Batch* batch;                   // else: its element `element`
     };
     int element = -1;
     int first = 0;  // its parameter blocks in values() / block_of(): [first, end)
-    const ceres::LossFunction* loss = nullptr;  // nullptr: ½‖r‖²
     int end = 0;
-    int part = 0;
+    uint32_t loss_part = 0;  // loss << 8 | part
+
+    // Its loss, Residuals::Loss(loss()) (0: none, ½‖r‖²), and its objective part.
+    int loss() const { return int(loss_part >> 8); }
+    int part() const { return int(loss_part & 255); }
 
     int rows() const { return element < 0 ? cost->num_residuals() : batch->num_residuals(); }
     bool Evaluate(double const* const* values, double* residuals, double** jacobians) const {
@@ -52,7 +57,7 @@ class Residuals {
                          : batch->Evaluate(element, values, residuals, jacobians);
     }
   };
-  static_assert(sizeof(Residual) == 32);
+  static_assert(sizeof(Residual) == 24);
 
   Residuals();
   ~Residuals();
@@ -91,11 +96,13 @@ class Residuals {
   void SetManifold(double* block, ceres::Manifold* manifold);
   void SetConstant(const double* block);  // CHECKs that a residual reads it
 
-  const std::vector<Residual>& residuals() const { return residuals_; }
+  const MappedList<Residual>& residuals() const { return residuals_; }
   const std::vector<Block>& blocks() const { return blocks_; }
   double* const* values() const { return values_.data(); }  // per residual parameter
-  const std::vector<int>& block_of() const { return block_of_; }  // per residual parameter
+  const MappedList<int>& block_of() const { return block_of_; }  // per residual parameter
   const std::vector<std::string>& parts() const { return parts_; }
+  // The loss function of a residual's loss() (nullptr: none).
+  const ceres::LossFunction* Loss(int loss) const { return loss_of_[size_t(loss)]; }
   int NumResiduals() const { return rows_; }  // scalar residuals
   int NumParameters() const;                  // every block's size, constant ones too
   int FreeTangentSize() const;                // the variables the solve moves
@@ -120,17 +127,21 @@ class Residuals {
   // The block index of `block` (-1: none); its slot in a range, if in one.
   int Find(const double* block) const;
   int* RangeSlot(const double* block, int size);
-  // Appends the residual `r` over `blocks` of `sizes`.
-  void Append(Residual r, const std::vector<int32_t>& sizes, double* const* blocks, int count);
+  // Appends the residual `r` (with `loss` and `part`) over `blocks` of `sizes`.
+  void Append(Residual r, const ceres::LossFunction* loss, int part,
+              const std::vector<int32_t>& sizes, double* const* blocks, int count);
 
   std::vector<Range> ranges_;
-  std::vector<Residual> residuals_;
+  MappedList<Residual> residuals_;  // the long lists: mapped (core/mapped_list.h)
   std::vector<Block> blocks_;
-  std::vector<double*> values_;
-  std::vector<int> block_of_;
+  MappedList<double*> values_;
+  MappedList<int> block_of_;
   std::unordered_map<const double*, int> index_;
   std::vector<std::string> parts_;
   std::vector<std::unique_ptr<ceres::LossFunction>> losses_;
+  std::vector<const ceres::LossFunction*> loss_of_{nullptr};  // Residual::loss() → loss
+  std::unordered_map<const ceres::LossFunction*, uint32_t> loss_index_{{nullptr, 0}};
+  uint32_t last_loss_ = 0;  // the last one added (terms add runs of one loss)
   std::vector<std::unique_ptr<ceres::Manifold>> manifolds_;
   std::vector<std::unique_ptr<Batch>> batches_;
   mutable std::vector<std::unique_ptr<ceres::CostFunction>> views_;  // MakeProblem's

@@ -153,6 +153,63 @@ TEST(LeanSolve, ResidualsGiveCeresTheSameProblem) {
   EXPECT_GT(total, 0.1);  // the outliers (Cauchy-discounted) and the tilted start
 }
 
+// The residual list's mapped lists (core/mapped_list.h) keep every value
+// while they grow (the pages move), are fitted and are cleared and filled
+// again.
+TEST(LeanSolve, MappedListsKeepTheirValuesThroughGrowthAndFit) {
+  MappedList<int> list;
+  const int n = 3'000'000;  // 12 MB: the mapping grows and moves ~12 times
+  for (int k = 0; k < n; ++k) list.push_back(k * 7);
+  ASSERT_EQ(list.size(), size_t(n));
+  bool same = true;
+  for (int k = 0; k < n; ++k) same = same && list[size_t(k)] == k * 7;
+  EXPECT_TRUE(same);
+  list.Fit();
+  EXPECT_EQ(list.back(), (n - 1) * 7);
+  list.clear();
+  EXPECT_TRUE(list.empty());
+  for (int k = 0; k < 1000; ++k) list.push_back(-k);
+  list.Fit();  // shrinks the mapping to one page
+  for (int k = 0; k < 5000; ++k) list.push_back(k);
+  EXPECT_EQ(list.size(), 6000u);
+  EXPECT_EQ(list[999], -999);
+  EXPECT_EQ(list[1000], 0);
+  EXPECT_EQ(list.back(), 4999);
+  list.clear();
+  list.Fit();  // no mapping at all
+  list.push_back(5);
+  EXPECT_EQ(list[0], 5);
+  MappedList<int> moved = std::move(list);
+  EXPECT_TRUE(list.empty());
+  EXPECT_EQ(moved[0], 5);
+  MappedList<double> h;  // as J^T J: sized, never initialised
+  h.Resize(100000);
+  EXPECT_EQ(h.size(), 100000u);
+  EXPECT_EQ(h[99999], 0.0);  // a page never written
+}
+
+// Each residual keeps its own loss and objective part in its 24 bytes, with
+// losses added in turn (as proximity adds its two weights vertex by vertex).
+TEST(LeanSolve, EachResidualKeepsItsLossAndPart) {
+  Residuals residuals;
+  const ceres::LossFunction* losses[2] = {
+      residuals.Own(new ceres::ScaledLoss(nullptr, 2.0, ceres::TAKE_OWNERSHIP)),
+      residuals.Own(new ceres::CauchyLoss(1.0))};
+  const int parts[2] = {residuals.Part("a"), residuals.Part("b")};
+  std::vector<double> x(300, 1.0);
+  for (int k = 0; k < 300; ++k) {
+    double* block = &x[size_t(k)];
+    residuals.Add(new ceres::AutoDiffCostFunction<Data, 1, 1>(new Data{1.0, 0.0}),
+                  k % 3 == 2 ? nullptr : losses[k % 3], &block, 1, parts[k % 2]);
+  }
+  for (int k = 0; k < 300; ++k) {
+    const Residuals::Residual& r = residuals.residuals()[size_t(k)];
+    EXPECT_EQ(residuals.Loss(r.loss()), k % 3 == 2 ? nullptr : losses[k % 3]) << k;
+    EXPECT_EQ(r.part(), parts[k % 2]) << k;
+  }
+  EXPECT_NE(parts[0], parts[1]);
+}
+
 TEST(LeanSolve, ReachesCeresOptimumOnALinearProblem) {
   Membrane ceres_side(30), lean_side(30);
   ceres::Solver::Summary reference;
@@ -227,12 +284,14 @@ TEST(LeanSolve, ThePatternIsReusedWhileTheStructureStays) {
   Membrane fresh(12), kept(12);
   NormalPattern pattern;
   EXPECT_FALSE(ReadNormalPattern(kept.residuals, &pattern));
-  const NormalPattern first = pattern;
+  const int first_slots = pattern.slots;
+  const std::vector<int> first_pair_slot = pattern.pair_slot;
+  const size_t first_blocks = pattern.blocks.size();
   Residuals again;
   kept.AddTo(again);
   EXPECT_TRUE(ReadNormalPattern(again, &pattern));
-  EXPECT_EQ(pattern.slots, first.slots);
-  EXPECT_EQ(pattern.pair_slot, first.pair_slot);
+  EXPECT_EQ(pattern.slots, first_slots);
+  EXPECT_EQ(pattern.pair_slot, first_pair_slot);
 
   ASSERT_TRUE(LeanSolve(Tight(), again, &pattern).usable);
   ASSERT_TRUE(LeanSolve(Tight(), fresh.residuals).usable);
@@ -242,7 +301,7 @@ TEST(LeanSolve, ThePatternIsReusedWhileTheStructureStays) {
   kept.AddTo(changed);
   changed.SetConstant(&kept.x[5]);
   EXPECT_FALSE(ReadNormalPattern(changed, &pattern));
-  EXPECT_EQ(pattern.blocks.size() + 1, first.blocks.size());
+  EXPECT_EQ(pattern.blocks.size() + 1, first_blocks);
   EXPECT_EQ(pattern.constant.size(), 1u);
 
   // The same blocks, residuals and sizes, but the second residual reads its
@@ -269,7 +328,7 @@ TEST(LeanSolve, TheTwoThreadsRunsShareNoBlock) {
   Membrane m(40);
   NormalPattern pattern;
   ReadNormalPattern(m.residuals, &pattern);
-  const int n = int(pattern.residuals.size());
+  const int n = int(pattern.pairs.size());
   std::vector<int> sorted = pattern.visit;
   std::sort(sorted.begin(), sorted.end());
   std::vector<int> all(n);
@@ -279,9 +338,9 @@ TEST(LeanSolve, TheTwoThreadsRunsShareNoBlock) {
   int shared = 0;
   for (int p = 0; p < pattern.split[1]; ++p) {
     const int run = p < pattern.split[0] ? 0 : 1;
-    const PatternResidual& r = pattern.residuals[pattern.visit[p]];
+    const Residuals::Residual& r = m.residuals.residuals()[size_t(pattern.visit[p])];
     for (int a = r.first; a < r.end; ++a) {
-      const int b = pattern.block[a];
+      const int b = pattern.free[size_t(m.residuals.block_of()[size_t(a)])];
       if (b < 0) continue;
       shared += run_of[b] >= 0 && run_of[b] != run;
       run_of[b] = run;
