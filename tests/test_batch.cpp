@@ -55,8 +55,12 @@ TEST(Batch, AnElementGivesTheBitsOfItsCostFunction) {
       zeroed += mine[1] == 0.0 && mine[0] == 0.0;
     }
     // The band 10 holds every residual, so it zeroes every Jacobian.
-    if (band == 10.0) EXPECT_EQ(zeroed, 20);
-    if (band < 0) EXPECT_EQ(zeroed, 0);
+    if (band == 10.0) {
+      EXPECT_EQ(zeroed, 20);
+    }
+    if (band < 0) {
+      EXPECT_EQ(zeroed, 0);
+    }
   }
 }
 
