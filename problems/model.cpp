@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <memory>
+#include <unordered_map>
 
 #include "core/solver_options.h"
 #include "energies/registry.h"
@@ -89,7 +90,7 @@ class MeshModel::View : public TermContext {
     part_ = -1;
     loss_ = loss;
     loss_scale_ = loss_scale;
-    shared_loss_ = nullptr;
+    shared_losses_.clear();
     batches_.clear();
   }
 
@@ -198,16 +199,17 @@ class MeshModel::View : public TermContext {
     }
     return false;
   }
-  // One weighted loss per run of residuals of equal weight (the problem
-  // owns it once, however many residuals share it).
+  // One weighted loss per weight in a round (the residuals own it once,
+  // however many residuals share it): a term that adds two weights in turn,
+  // as proximity with its point weight, shares two.
   const ceres::LossFunction* Loss(double weight) {
     const double w = weight >= 0 ? weight : this->weight;
-    if (!shared_loss_ || w != shared_weight_) {
-      shared_loss_ = residuals_->Own(
+    const auto [it, added] = shared_losses_.emplace(w, nullptr);
+    if (added) {
+      it->second = residuals_->Own(
           new ceres::ScaledLoss(Robust(loss_, loss_scale_), w, ceres::TAKE_OWNERSHIP));
-      shared_weight_ = w;
     }
-    return shared_loss_;
+    return it->second;
   }
   int Part(const char* part) {
     const char* key = part ? part : name_.c_str();
@@ -222,8 +224,7 @@ class MeshModel::View : public TermContext {
   int part_ = -1;  // the part of the last Add (-1: none yet)
   std::string loss_ = "none";
   double loss_scale_ = 1;
-  const ceres::LossFunction* shared_loss_ = nullptr;  // owned by residuals_
-  double shared_weight_ = 0;
+  std::unordered_map<double, const ceres::LossFunction*> shared_losses_;  // owned by residuals_
 };
 
 std::vector<const TermSpec*> TermsOf(const ProblemDecl& declaration) {
