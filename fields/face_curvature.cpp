@@ -102,7 +102,8 @@ FaceCurvature CurvatureOfMatrix(const Eigen::Matrix2d& M_in, double flat_curvatu
 namespace {
 
 template <class LeastSquares>
-std::vector<Eigen::Matrix3d> ShapeTensors(const Mesh& mesh, const JetOptions& options) {
+std::vector<Eigen::Matrix3d> ShapeTensors(const Mesh& mesh, const JetOptions& options,
+                                          const std::vector<char>* only) {
   CHECK(!mesh.has_garbage());
   CHECK(options.degree >= 2 && options.degree <= 4) << "jet degree must be 2..4";
   CHECK(options.rings >= 1 && options.rings <= kMaxRings) << "jet rings must be 1.." << kMaxRings;
@@ -123,7 +124,7 @@ std::vector<Eigen::Matrix3d> ShapeTensors(const Mesh& mesh, const JetOptions& op
 #pragma omp for schedule(dynamic, 512)
     for (int i = 0; i < count; ++i) {
       const VertexIndex v(static_cast<VertexIndex::size_type>(i));
-      if (mesh.is_isolated(v)) continue;
+      if (mesh.is_isolated(v) || (only && !(*only)[size_t(i)])) continue;
       const std::vector<VertexIndex> hood = Neighbourhood(mesh, v, options.rings, min_points, &mark, i);
       // Lower the degree for tiny components rather than fail.
       int degree = options.degree;
@@ -148,8 +149,15 @@ std::vector<Eigen::Matrix3d> ShapeTensors(const Mesh& mesh, const JetOptions& op
 }  // namespace
 
 std::vector<Eigen::Matrix3d> VertexShapeTensors(const Mesh& mesh, const JetOptions& options) {
-  return options.qr ? ShapeTensors<QrLeastSquares>(mesh, options)
-                    : ShapeTensors<CGAL::Eigen_svd>(mesh, options);
+  return options.qr ? ShapeTensors<QrLeastSquares>(mesh, options, nullptr)
+                    : ShapeTensors<CGAL::Eigen_svd>(mesh, options, nullptr);
+}
+
+std::vector<Eigen::Matrix3d> VertexShapeTensors(const Mesh& mesh, const JetOptions& options,
+                                                const std::vector<char>& only) {
+  CHECK_EQ(only.size(), mesh.number_of_vertices());
+  return options.qr ? ShapeTensors<QrLeastSquares>(mesh, options, &only)
+                    : ShapeTensors<CGAL::Eigen_svd>(mesh, options, &only);
 }
 
 Eigen::Matrix2d FaceMatrix(const Mesh& mesh, const FaceFrames& frames, FaceIndex f,

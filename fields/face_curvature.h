@@ -84,6 +84,11 @@ FaceCurvature CurvatureOfMatrix(const Eigen::Matrix2d& M, double flat_curvature,
 // area-weighted vertex normal. Precondition (CHECKed): triangle mesh without
 // garbage, at least (d + 1)(d + 2)/2 vertices in each connected component.
 std::vector<Eigen::Matrix3d> VertexShapeTensors(const Mesh& mesh, const JetOptions& options = {});
+// The same, fitted only at the vertices v with only[v.idx()] != 0 (the others
+// stay 0): a measure over a sample of faces fits the jets it reads and no
+// more. `only` has one entry per vertex index.
+std::vector<Eigen::Matrix3d> VertexShapeTensors(const Mesh& mesh, const JetOptions& options,
+                                                const std::vector<char>& only);
 
 // Per face (indexed by face index): M_f and the derived data above.
 std::vector<FaceCurvature> ComputeFaceCurvature(const Mesh& mesh, const FaceFrames& frames,

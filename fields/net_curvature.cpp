@@ -75,12 +75,26 @@ JetOptions FastJets() {
 
 NetCurvatureFigures MeasureNetCurvature(const Mesh& net) {
   NetCurvatureFigures out;
-  const std::vector<Eigen::Matrix3d> S = VertexShapeTensors(net, FastJets());
+  std::vector<FaceIndex> sample;
+  for (FaceIndex f : net.faces()) {
+    if (net.degree(f) == 4) sample.push_back(f);
+  }
+  out.quads = int(sample.size());
+  const size_t stride = (sample.size() + kSampledQuads - 1) / kSampledQuads;
+  if (stride > 1) {
+    size_t kept = 0;
+    for (size_t i = 0; i < sample.size(); i += stride) sample[kept++] = sample[i];
+    sample.resize(kept);
+  }
+  out.sampled = int(sample.size());
+  std::vector<char> fit(net.number_of_vertices(), 0);
+  for (FaceIndex f : sample) {
+    for (VertexIndex v : net.vertices_around_face(net.halfedge(f))) fit[v.idx()] = 1;
+  }
+  const std::vector<Eigen::Matrix3d> S = VertexShapeTensors(net, FastJets(), fit);
   const double flat = kFlat / std::max(BboxDiagonal(net), 1e-300);
   double conjugacy_sum = 0, angle_sum = 0;
-  for (FaceIndex f : net.faces()) {
-    if (net.degree(f) != 4) continue;
-    ++out.quads;
+  for (FaceIndex f : sample) {
     std::array<Eigen::Vector3d, 4> p;
     Eigen::Matrix3d tensor = Eigen::Matrix3d::Zero();
     int k = 0;

@@ -16,6 +16,12 @@
 // Faces (edges) whose κ · (bounding-box diagonal) < 1e-6 are flat and not
 // measured. All figures are unit-free (ratios, degrees).
 //
+// A net of more than kSampledQuads quads is measured on an even sample of
+// them (every k-th quad in face order, k = ⌈quads / kSampledQuads⌉), with
+// jets fitted only at the sampled quads' vertices: the figures are the
+// sample's (mean ± about 1% of its spread; the max is the sample's max). A
+// 1M-quad net's check took 14 s with every quad, and ~0.3 s sampled.
+//
 // Per quad with corners p0..p3 the two edge directions are the means of
 // opposite edges, u = (p1 − p0 + p2 − p3)/2 and v = (p3 − p0 + p2 − p1)/2:
 //   conjugacy  |II(u, v)| / (κ |u| |v|)   (0 for a conjugate net);
@@ -36,8 +42,11 @@
 
 namespace archgeo {
 
+constexpr int kSampledQuads = 5000;
+
 struct NetCurvatureFigures {
   int quads = 0;                 // quad faces of the net
+  int sampled = 0;               // of those, looked at (all, up to kSampledQuads)
   int measured = 0;              // of those, not flat
   double conjugacy_mean = 0, conjugacy_max = 0;
   int negative_curvature = 0;    // measured quads with K < 0

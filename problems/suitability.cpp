@@ -25,6 +25,8 @@ void Report(HookContext& c, nlohmann::json figures, const std::string& warning) 
 void CheckAsymptoticNet(HookContext& c, const Mesh& net) {
   const NetCurvatureFigures f = MeasureNetCurvature(net);
   nlohmann::json figures = {{"check", "edges along asymptotic directions (A-net)"},
+                            {"quads", f.quads},
+                            {"quads_sampled", f.sampled},
                             {"quads_measured", f.measured},
                             {"asymptotic_angle_mean_degrees", f.asymptotic_angle_mean},
                             {"asymptotic_angle_max_degrees", f.asymptotic_angle_max},
@@ -50,6 +52,8 @@ void CheckAsymptoticNet(HookContext& c, const Mesh& net) {
 void CheckConjugateNet(HookContext& c, const Mesh& net) {
   const NetCurvatureFigures f = MeasureNetCurvature(net);
   nlohmann::json figures = {{"check", "quad edges along conjugate directions (PQ net)"},
+                            {"quads", f.quads},
+                            {"quads_sampled", f.sampled},
                             {"quads_measured", f.measured},
                             {"conjugacy_mean", f.conjugacy_mean},
                             {"conjugacy_max", f.conjugacy_max},

@@ -56,6 +56,23 @@ TEST(NetCurvature, ATranslationalRoofIsConjugate) {
   EXPECT_GT(noisy.conjugacy_mean, f.conjugacy_mean);
 }
 
+// Past kSampledQuads quads the measure reads an even sample: on a 120 × 120
+// grid of z = xy (14,400 quads) it looks at ⌈14,400 / 3⌉ = 4,800 of them and
+// still finds the asymptotic net, with a conjugacy mean within 10% of the
+// 30 × 20 grid's (every quad measured).
+TEST(NetCurvature, ALargeNetIsMeasuredOnAnEvenSample) {
+  const NetCurvatureFigures f = MeasureNetCurvature(QuadGrid(120, 120, HyperbolicParaboloid));
+  EXPECT_EQ(f.quads, 14400);
+  EXPECT_EQ(f.sampled, 4800);
+  EXPECT_EQ(f.measured, 4800);
+  EXPECT_EQ(f.positive_curvature_fraction, 0.0);
+  EXPECT_LT(f.asymptotic_angle_mean, 0.5);
+  EXPECT_GT(f.conjugacy_mean, 0.3);
+  const NetCurvatureFigures small = MeasureNetCurvature(QuadGrid(30, 20, HyperbolicParaboloid));
+  EXPECT_EQ(small.sampled, small.quads);
+  EXPECT_NEAR(f.conjugacy_mean, small.conjugacy_mean, 0.1 * small.conjugacy_mean);
+}
+
 TEST(NetCurvature, CylinderRulingsAndCirclesArePrincipalTheirDiagonalsAreNot) {
   const int around = 32, rows = 16;
   const double radius = 1.0, height = 2.0;
