@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <iterator>
 
+#include "core/solver_options.h"
 #include "mesh/reference.h"
 #include "mesh/vec3.h"
 
@@ -102,6 +103,43 @@ void Note(ValidityCheck& c, double value, int element, bool worse_is_larger = tr
   ++c.count;
 }
 
+double EdgeLength(const Mesh& mesh, EdgeIndex e) {
+  return Norm(Sub(ToVec3(mesh.point(mesh.vertex(e, 0))), ToVec3(mesh.point(mesh.vertex(e, 1)))));
+}
+
+// One face's validity figures against its input shape (`before` empty: no
+// input); what is new in the output only.
+struct FaceFigures {
+  bool bow_tie_new = false, reflex_new = false, small_new = false, aspect_new = false;
+  double worst_reflex = 0, worst_small = 180, aspect = 1;
+};
+
+FaceFigures Figures(const std::vector<Vec3>& p, const std::vector<Vec3>& before_corners,
+                    const ValidityLimits& limits) {
+  FaceFigures g;
+  if (p.size() < 4) return g;
+  const bool in = !before_corners.empty();
+  const Panel now = Shape(p);
+  const Panel before = in ? Shape(before_corners) : Panel{};
+  g.bow_tie_new = now.bow_tie && !before.bow_tie;
+  for (size_t i = 0; i < now.interior.size(); ++i) {
+    const double bent = now.interior[i] - 180.0;
+    const bool was_bent = in && before.interior[i] - 180.0 > limits.max_reflex_degrees;
+    if (bent > limits.max_reflex_degrees && !was_bent) {
+      g.reflex_new = true;
+      g.worst_reflex = std::max(g.worst_reflex, bent);
+    }
+    const bool was_small = in && before.interior[i] < limits.min_corner_degrees;
+    if (now.interior[i] < limits.min_corner_degrees && !was_small) {
+      g.small_new = true;
+      g.worst_small = std::min(g.worst_small, now.interior[i]);
+    }
+  }
+  g.aspect = now.aspect;
+  g.aspect_new = now.aspect > limits.max_aspect && !(in && before.aspect > limits.max_aspect);
+  return g;
+}
+
 size_t SelfIntersections(const Mesh& mesh) {
   const Mesh triangles = TriangulatedCopy(mesh);
   std::vector<std::pair<FaceIndex, FaceIndex>> pairs;
@@ -159,16 +197,27 @@ nlohmann::json Validity::ToJson() const {
 }
 
 PanelShapes MeasurePanelShapes(const Mesh& mesh) {
-  PanelShapes shapes;
-  for (FaceIndex f : mesh.faces()) {
-    if (mesh.degree(f) < 4) continue;
-    ++shapes.panels;
+  // Counts and a maximum: the same in any order.
+  const long faces = long(mesh.num_faces());
+  int panels = 0, nonconvex = 0;
+  double worst_reflex = 0;
+  const FullTeams teams;
+#pragma omp parallel for schedule(dynamic, 4096) reduction(+ : panels, nonconvex) \
+    reduction(max : worst_reflex)
+  for (long i = 0; i < faces; ++i) {
+    const FaceIndex f(static_cast<FaceIndex::size_type>(i));
+    if (mesh.is_removed(f) || mesh.degree(f) < 4) continue;
+    ++panels;
     const Panel panel = Shape(Corners(mesh, f));
     double worst = 0;
     for (double interior : panel.interior) worst = std::max(worst, interior - 180.0);
-    if (worst > 0 || panel.bow_tie) ++shapes.nonconvex;
-    shapes.worst_reflex_degrees = std::max(shapes.worst_reflex_degrees, worst);
+    if (worst > 0 || panel.bow_tie) ++nonconvex;
+    worst_reflex = std::max(worst_reflex, worst);
   }
+  PanelShapes shapes;
+  shapes.panels = panels;
+  shapes.nonconvex = nonconvex;
+  shapes.worst_reflex_degrees = worst_reflex;
   return shapes;
 }
 
@@ -201,62 +250,55 @@ Validity CheckValidity(const Mesh& out, const Mesh* input, const ValidityLimits&
     result.checks = {finite};
     return result;
   }
-  std::vector<Vec3> normal_out(out.number_of_faces()), normal_in;
-  if (in) normal_in.resize(in->number_of_faces());
-  for (FaceIndex f : out.faces()) {
+  // Each face's and edge's figures in parallel (they read only the meshes),
+  // then noted in index order, so the worst and its example are those of a
+  // serial pass.
+  const FullTeams teams;
+  const long faces = long(out.number_of_faces());
+  std::vector<Vec3> normal_out(static_cast<size_t>(faces)), normal_in;
+  if (in) normal_in.resize(size_t(faces));
+  std::vector<FaceFigures> figures(static_cast<size_t>(faces));
+#pragma omp parallel for schedule(dynamic, 4096)
+  for (long i = 0; i < faces; ++i) {
+    const FaceIndex f(static_cast<FaceIndex::size_type>(i));
     const std::vector<Vec3> p = Corners(out, f);
-    normal_out[f.idx()] = Newell(p);
-    if (in) normal_in[f.idx()] = Newell(Corners(*in, f));
-    if (in && Angle(normal_out[f.idx()], normal_in[f.idx()]) > limits.max_flip_degrees) {
-      Note(flipped, Angle(normal_out[f.idx()], normal_in[f.idx()]), int(f.idx()));
+    normal_out[size_t(i)] = Newell(p);
+    if (in) normal_in[size_t(i)] = Newell(Corners(*in, f));
+    figures[size_t(i)] = Figures(p, in ? Corners(*in, f) : std::vector<Vec3>{}, limits);
+  }
+  for (long i = 0; i < faces; ++i) {
+    const FaceFigures& g = figures[size_t(i)];
+    if (in) {
+      const double turned = Angle(normal_out[size_t(i)], normal_in[size_t(i)]);
+      if (turned > limits.max_flip_degrees) Note(flipped, turned, int(i));
     }
-    if (p.size() < 4) continue;
-    const Panel now = Shape(p);
-    const Panel before = in ? Shape(Corners(*in, f)) : Panel{};
-    if (now.bow_tie && !before.bow_tie) Note(bow_ties, 1, int(f.idx()));
-    double worst_reflex = 0, worst_small = 180;
-    bool reflex_new = false, small_new = false;
-    for (size_t i = 0; i < now.interior.size(); ++i) {
-      const double bent = now.interior[i] - 180.0;
-      const bool was_bent = in && before.interior[i] - 180.0 > limits.max_reflex_degrees;
-      if (bent > limits.max_reflex_degrees && !was_bent) {
-        reflex_new = true;
-        worst_reflex = std::max(worst_reflex, bent);
-      }
-      const bool was_small = in && before.interior[i] < limits.min_corner_degrees;
-      if (now.interior[i] < limits.min_corner_degrees && !was_small) {
-        small_new = true;
-        worst_small = std::min(worst_small, now.interior[i]);
-      }
-    }
-    if (reflex_new) Note(reflex, worst_reflex, int(f.idx()));
-    if (small_new) Note(small, worst_small, int(f.idx()), false);
-    if (now.aspect > limits.max_aspect && !(in && before.aspect > limits.max_aspect)) {
-      Note(aspect, now.aspect, int(f.idx()));
-    }
+    if (g.bow_tie_new) Note(bow_ties, 1, int(i));
+    if (g.reflex_new) Note(reflex, g.worst_reflex, int(i));
+    if (g.small_new) Note(small, g.worst_small, int(i), false);
+    if (g.aspect_new) Note(aspect, g.aspect, int(i));
   }
   double mean_in = 0;
   const Mesh& base = in ? *in : out;
-  for (EdgeIndex e : base.edges()) {
-    mean_in += Norm(Sub(ToVec3(base.point(base.vertex(e, 0))), ToVec3(base.point(base.vertex(e, 1)))));
-  }
+  for (EdgeIndex e : base.edges()) mean_in += EdgeLength(base, e);
   mean_in /= std::max<size_t>(1, base.number_of_edges());
-  for (EdgeIndex e : out.edges()) {
-    const double length =
-        Norm(Sub(ToVec3(out.point(out.vertex(e, 0))), ToVec3(out.point(out.vertex(e, 1)))));
-    const double length_in =
-        in ? Norm(Sub(ToVec3(in->point(in->vertex(e, 0))), ToVec3(in->point(in->vertex(e, 1)))))
-           : 1e300;
-    if (length < limits.min_edge_relative * mean_in && length < 0.5 * length_in) {
-      Note(short_edges, length / mean_in, int(e.idx()), false);
-    }
+  const long edges = long(out.number_of_edges());
+  std::vector<double> length(static_cast<size_t>(edges)), crease(static_cast<size_t>(edges), 0.0);
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < edges; ++i) {
+    const EdgeIndex e(static_cast<EdgeIndex::size_type>(i));
+    length[size_t(i)] = EdgeLength(out, e);
     if (!in || out.is_border(e)) continue;
     const FaceIndex a = out.face(out.halfedge(e, 0)), b = out.face(out.halfedge(e, 1));
-    const double now = Angle(normal_out[a.idx()], normal_out[b.idx()]);
-    const double before = Angle(normal_in[a.idx()], normal_in[b.idx()]);
-    if (now - before > limits.max_crease_increase_degrees) {
-      Note(creases, now - before, int(e.idx()));
+    crease[size_t(i)] = Angle(normal_out[a.idx()], normal_out[b.idx()]) -
+                        Angle(normal_in[a.idx()], normal_in[b.idx()]);
+  }
+  for (long i = 0; i < edges; ++i) {
+    const EdgeIndex e(static_cast<EdgeIndex::size_type>(i));
+    const double length_in = in ? EdgeLength(*in, e) : 1e300;
+    if (length[size_t(i)] < limits.min_edge_relative * mean_in && length[size_t(i)] < 0.5 * length_in) {
+      Note(short_edges, length[size_t(i)] / mean_in, int(i), false);
     }
+    if (crease[size_t(i)] > limits.max_crease_increase_degrees) Note(creases, crease[size_t(i)], int(i));
   }
   result.checks = {finite, reflex, bow_ties, flipped, short_edges, creases};
   if (full && limits.self_intersections) {

@@ -8,6 +8,7 @@
 
 #include <glog/logging.h>
 
+#include "core/solver_options.h"
 #include "mesh/vec3.h"
 
 namespace archgeo {
@@ -312,10 +313,25 @@ SmoothnessMetrics ComputeSmoothnessMetrics(const Mesh& mesh) {
     m.E_prime += edges.energy[i];                   // [§3]
     m.max_edge_energy = std::max(m.max_edge_energy, edges.energy[i]);
   }
+  // Each vertex's figures in parallel (they read only the mesh and the
+  // normals), then summed in vertex order: the same sums as a serial pass.
+  const long n = long(mesh.number_of_vertices());
+  std::vector<double> c(static_cast<size_t>(n), 0.0);
+  std::vector<VertexStar> stars(static_cast<size_t>(n));
+  {
+    const FullTeams teams;
+#pragma omp parallel for schedule(dynamic, 4096)
+    for (long i = 0; i < n; ++i) {
+      const VertexIndex v(static_cast<VertexIndex::size_type>(i));
+      if (mesh.is_removed(v)) continue;
+      const std::array<double, 2> lambda = ShapeOperatorEigenvalues(mesh, normals, v);
+      c[size_t(i)] = std::abs(lambda[0]) + std::abs(lambda[1]);  // [§5.3]
+      stars[size_t(i)] = ClassifyVertexStar(mesh, normals, v);
+    }
+  }
   for (VertexIndex v : mesh.vertices()) {
-    const std::array<double, 2> lambda = ShapeOperatorEigenvalues(mesh, normals, v);
-    m.C += std::abs(lambda[0]) + std::abs(lambda[1]);  // [§5.3]
-    const VertexStar star = ClassifyVertexStar(mesh, normals, v);
+    m.C += c[v.idx()];
+    const VertexStar& star = stars[v.idx()];
     if (!star.measured) continue;
     ++m.interior_vertices;
     m.self_intersecting_pyramids += star.self_intersecting_pyramid ? 1 : 0;
