@@ -2,6 +2,7 @@
 #include "mesh/metrics.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -11,6 +12,8 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/property_map.h>
 #include <CGAL/spatial_sort.h>
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
@@ -124,32 +127,141 @@ double MeanEdgeLength(const Mesh& mesh) {
 // close, as after an optimisation; this grid took 0.11 s each and was 9% low
 // / exact / exact.
 //
-// CGAL's sequential approximate_Hausdorff_distance, with the closest-point
-// queries on every core: the same samples (sample_triangle_mesh), the same
-// spatial sort and the same exact distances, so the same maximum.
-double OneSided(const Mesh& from, const Mesh& to) {
-  std::vector<Point> samples;
-  PMP::sample_triangle_mesh(
-      from, std::back_inserter(samples),
-      PMP::parameters::use_grid_sampling(true).grid_spacing(HausdorffGridSpacing(from)));
+// Pruned: every vertex of `from` is a sample and is queried first, with the
+// triangle of `to` it is closest to; L is their largest distance. The
+// distance to one triangle T′ of `to` is convex, so on a triangle T of `from`
+// it is largest at a corner of T: no point of T is farther from `to` than
+// U = max over T's corners v of d(v, T′). T′ is tried as the triangle closest
+// to each corner (no query), then as the one closest to T's centroid (one
+// query). A triangle with U ≤ L cannot hold a farther point and is not
+// sampled; only the others get their grid (CGAL's sample_triangle_mesh with
+// the spacing of the whole surface, on a copy of just those triangles),
+// queried on every core in spatial order. So the result is at least the
+// full grid's and keeps its density guarantee. A 100k-quad roof after
+// planar_quads: 17,414 of 200,978 triangles kept, the after-metrics 3.1 →
+// ~2 s (the six data meshes: the same Hausdorff distances to the last bit).
+using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+
+Kernel::Triangle_3 Triangle(const Mesh& mesh, FaceIndex f) {
+  const HalfedgeIndex h = mesh.halfedge(f);
+  return {mesh.point(mesh.source(h)), mesh.point(mesh.target(h)),
+          mesh.point(mesh.target(mesh.next(h)))};
+}
+
+// The largest distance from `samples` (spatially sorted here) to the tree's
+// surface, on every core, each query starting from the last one's answer.
+double Farthest(std::vector<Point> samples, const Tree& tree, const Point& start) {
   CGAL::spatial_sort(samples.begin(), samples.end());
-  using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
-  Tree tree(faces(to).first, faces(to).second, to);
-  tree.build();
   const long n = long(samples.size());
   double worst = 0;
   const FullTeams teams;
 #pragma omp parallel reduction(max : worst)
   {
-    Point hint = to.point(*vertices(to).first);  // where a query starts
+    Point hint = start;
 #pragma omp for schedule(static)
     for (long i = 0; i < n; ++i) {
-      hint = tree.closest_point(samples[i], hint);
-      worst = std::max(worst, CGAL::squared_distance(hint, samples[i]));
+      hint = tree.closest_point(samples[size_t(i)], hint);
+      worst = std::max(worst, CGAL::squared_distance(hint, samples[size_t(i)]));
     }
   }
   return std::sqrt(worst);
+}
+
+double OneSided(const Mesh& from, const Mesh& to) {
+  Tree tree(faces(to).first, faces(to).second, to);
+  tree.build();
+  const Point start = to.point(*vertices(to).first);
+  // Every vertex: its distance and closest triangle, in spatial order.
+  const long n = long(from.num_vertices());
+  std::vector<size_t> order;
+  std::vector<Point> points(static_cast<size_t>(n), CGAL::ORIGIN);
+  for (VertexIndex v : from.vertices()) {
+    order.push_back(v.idx());
+    points[v.idx()] = from.point(v);
+  }
+  using Adapter = CGAL::Spatial_sort_traits_adapter_3<
+      Kernel, CGAL::Pointer_property_map<Point>::type>;
+  CGAL::spatial_sort(order.begin(), order.end(), Adapter(CGAL::make_property_map(points)));
+  std::vector<double> distance(static_cast<size_t>(n), 0.0);
+  std::vector<FaceIndex> nearest(static_cast<size_t>(n));
+  double lower = 0;
+  const FullTeams teams;
+#pragma omp parallel reduction(max : lower)
+  {
+    Tree::Point_and_primitive_id hint(start, *faces(to).first);
+#pragma omp for schedule(static)
+    for (long k = 0; k < long(order.size()); ++k) {
+      const size_t i = order[size_t(k)];
+      hint = tree.closest_point_and_primitive(points[i], hint);
+      distance[i] = CGAL::squared_distance(hint.first, points[i]);
+      nearest[i] = hint.second;
+      lower = std::max(lower, distance[i]);
+    }
+  }
+  // The triangles that may hold a farther point.
+  const long faces_count = long(from.num_faces());
+  std::vector<char> keep(static_cast<size_t>(faces_count), 0);
+#pragma omp parallel for schedule(dynamic, 4096)
+  for (long i = 0; i < faces_count; ++i) {
+    const FaceIndex f(static_cast<FaceIndex::size_type>(i));
+    if (from.is_removed(f)) continue;
+    std::array<VertexIndex, 3> corner;
+    int k = 0;
+    for (VertexIndex v : from.vertices_around_face(from.halfedge(f))) {
+      if (k < 3) corner[size_t(k)] = v;
+      ++k;
+    }
+    if (k != 3) {
+      keep[size_t(i)] = 1;
+      continue;
+    }
+    // The largest squared distance of the corners from one triangle of `to`.
+    const auto farthest = [&](FaceIndex t) {
+      const Kernel::Triangle_3 triangle = Triangle(to, t);
+      double d = 0;
+      for (VertexIndex v : corner) d = std::max(d, CGAL::squared_distance(from.point(v), triangle));
+      return d;
+    };
+    // First the triangles the corners are closest to (no query), then the
+    // one closest to the centroid (one query).
+    bool within = false;
+    for (VertexIndex c : corner) within = within || farthest(nearest[c.idx()]) <= lower;
+    if (!within) {
+      const Point g = CGAL::centroid(from.point(corner[0]), from.point(corner[1]),
+                                     from.point(corner[2]));
+      const Tree::Point_and_primitive_id hint(from.point(corner[0]), nearest[corner[0].idx()]);
+      within = farthest(tree.closest_point_and_primitive(g, hint).second) <= lower;
+    }
+    keep[size_t(i)] = !within;
+  }
+  // Their grid samples.
+  Mesh kept;
+  std::vector<VertexIndex> copy(static_cast<size_t>(n));
+  std::vector<char> copied(static_cast<size_t>(n), 0);
+  for (long i = 0; i < faces_count; ++i) {
+    if (!keep[size_t(i)]) continue;
+    std::vector<VertexIndex> corners;
+    for (VertexIndex v : from.vertices_around_face(from.halfedge(FaceIndex(FaceIndex::size_type(i))))) {
+      if (!copied[v.idx()]) {
+        copy[v.idx()] = kept.add_vertex(from.point(v));
+        copied[v.idx()] = 1;
+      }
+      corners.push_back(copy[v.idx()]);
+    }
+    if (kept.add_face(corners) == Mesh::null_face()) {  // not a manifold copy: one by one
+      const VertexIndex a = kept.add_vertex(kept.point(corners[0]));
+      const VertexIndex b = kept.add_vertex(kept.point(corners[1]));
+      const VertexIndex c = kept.add_vertex(kept.point(corners[2]));
+      kept.add_face(a, b, c);
+    }
+  }
+  if (kept.number_of_faces() == 0) return std::sqrt(lower);
+  std::vector<Point> samples;
+  PMP::sample_triangle_mesh(
+      kept, std::back_inserter(samples),
+      PMP::parameters::use_grid_sampling(true).grid_spacing(HausdorffGridSpacing(from)));
+  return std::max(std::sqrt(lower), Farthest(std::move(samples), tree, start));
 }
 
 double Hausdorff(const Mesh& mesh, const Mesh& triangles) {
@@ -164,22 +276,30 @@ PlanarityMeasure MeasureFacePlanarity(const Mesh& mesh) {
   result.distance.assign(mesh.num_faces(), 0.0);
   result.normalized.assign(mesh.num_faces(), 0.0);
   result.warp.assign(mesh.num_faces(), 0.0);
-  std::vector<Point> p;
-  for (FaceIndex f : mesh.faces()) {
-    p.clear();
-    for (VertexIndex v : mesh.vertices_around_face(mesh.halfedge(f))) p.push_back(mesh.point(v));
-    if (p.size() < 4) continue;
-    double distance, diagonal;
-    if (p.size() == 4) {
-      distance = QuadDiagonalDistance(p);
-      diagonal = 0.5 * (Length(p[2] - p[0]) + Length(p[3] - p[1]));
-    } else {
-      distance = PlaneFitDistance(p);
-      diagonal = MeanDiagonal(p);
+  const long faces = long(mesh.num_faces());
+  const FullTeams teams;
+#pragma omp parallel
+  {
+    std::vector<Point> p;
+#pragma omp for schedule(dynamic, 4096)
+    for (long i = 0; i < faces; ++i) {
+      const FaceIndex f(static_cast<FaceIndex::size_type>(i));
+      if (mesh.is_removed(f)) continue;
+      p.clear();
+      for (VertexIndex v : mesh.vertices_around_face(mesh.halfedge(f))) p.push_back(mesh.point(v));
+      if (p.size() < 4) continue;
+      double distance, diagonal;
+      if (p.size() == 4) {
+        distance = QuadDiagonalDistance(p);
+        diagonal = 0.5 * (Length(p[2] - p[0]) + Length(p[3] - p[1]));
+      } else {
+        distance = PlaneFitDistance(p);
+        diagonal = MeanDiagonal(p);
+      }
+      result.distance[f.idx()] = distance;
+      result.normalized[f.idx()] = Ratio(distance, diagonal);
+      result.warp[f.idx()] = Ratio(distance, ShortestEdge(p));
     }
-    result.distance[f.idx()] = distance;
-    result.normalized[f.idx()] = Ratio(distance, diagonal);
-    result.warp[f.idx()] = Ratio(distance, ShortestEdge(p));
   }
   return result;
 }

@@ -524,6 +524,33 @@ TEST(Metrics, HausdorffBoundsOnANoisyGrid) {
   EXPECT_LE(with.hausdorff, 1.2 * 0.1 * grid_edge);
 }
 
+// The farthest point can lie inside a triangle, away from every vertex: one
+// flat unit quad over a flat reference with a square hole [0.3, 0.7]² under
+// its middle. Every corner and every point of the reference lies on the other
+// surface; only the quad's centre (a grid sample on its diagonal) is 0.2 from
+// the reference. The vertices alone would give 0: the triangles that may hold
+// a farther point must still be sampled.
+TEST(Metrics, HausdorffFindsTheFarthestPointInsideATriangle) {
+  const int n = 20;
+  std::vector<Vec3> points;
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i) points.push_back({double(i) / n, double(j) / n, 0.0});
+  }
+  std::vector<std::vector<int>> faces;
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      if (i >= 6 && i < 14 && j >= 6 && j < 14) continue;  // the hole
+      const int a = j * (n + 1) + i;
+      faces.push_back({a, a + 1, a + n + 2, a + n + 1});
+    }
+  }
+  const ReferenceSurface reference(MakeMesh(points, faces));
+  const Mesh quad = MakeMesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2, 3}});
+  const Metrics m = ComputeMetrics(quad, &reference, nullptr);
+  EXPECT_LT(m.surface_distance_max, kExact);  // the corners
+  EXPECT_NEAR(m.hausdorff, 0.2, 1e-9);
+}
+
 TEST(PlanarityColors, GreenToRed) {
   PlanarityMeasure planarity;
   planarity.normalized = {0.0, 0.005, 0.01, 0.5};
