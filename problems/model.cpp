@@ -91,6 +91,7 @@ class MeshModel::View : public TermContext {
     loss_ = loss;
     loss_scale_ = loss_scale;
     shared_losses_.clear();
+    last_loss_ = nullptr;
     batches_.clear();
   }
 
@@ -204,12 +205,14 @@ class MeshModel::View : public TermContext {
   // as proximity with its point weight, shares two.
   const ceres::LossFunction* Loss(double weight) {
     const double w = weight >= 0 ? weight : this->weight;
+    if (last_loss_ && w == last_weight_) return last_loss_;  // terms add runs of one weight
     const auto [it, added] = shared_losses_.emplace(w, nullptr);
     if (added) {
       it->second = residuals_->Own(
           new ceres::ScaledLoss(Robust(loss_, loss_scale_), w, ceres::TAKE_OWNERSHIP));
     }
-    return it->second;
+    last_weight_ = w;
+    return last_loss_ = it->second;
   }
   int Part(const char* part) {
     const char* key = part ? part : name_.c_str();
@@ -225,6 +228,8 @@ class MeshModel::View : public TermContext {
   std::string loss_ = "none";
   double loss_scale_ = 1;
   std::unordered_map<double, const ceres::LossFunction*> shared_losses_;  // owned by residuals_
+  double last_weight_ = 0;  // the last Loss, if any
+  const ceres::LossFunction* last_loss_ = nullptr;
 };
 
 std::vector<const TermSpec*> TermsOf(const ProblemDecl& declaration) {
