@@ -225,7 +225,8 @@ Validity CheckValidity(const Mesh& out, const Mesh* input, const ValidityLimits&
                        bool full) {
   const bool same = input && input->number_of_vertices() == out.number_of_vertices() &&
                     input->number_of_faces() == out.number_of_faces() &&
-                    input->number_of_edges() == out.number_of_edges();
+                    input->number_of_edges() == out.number_of_edges() &&
+                    input->num_faces() == out.num_faces() && input->num_edges() == out.num_edges();
   const Mesh* in = same ? input : nullptr;
   ValidityCheck finite{"finite", true, 0, 0, 0, "non-finite vertices"};
   ValidityCheck reflex{"reflex_corners", true, 0, 0, limits.max_reflex_degrees, "degrees bent inward"};
@@ -254,19 +255,21 @@ Validity CheckValidity(const Mesh& out, const Mesh* input, const ValidityLimits&
   // then noted in index order, so the worst and its example are those of a
   // serial pass.
   const FullTeams teams;
-  const long faces = long(out.number_of_faces());
+  const long faces = long(out.num_faces());  // index slots, removed ones too
   std::vector<Vec3> normal_out(static_cast<size_t>(faces)), normal_in;
   if (in) normal_in.resize(size_t(faces));
   std::vector<FaceFigures> figures(static_cast<size_t>(faces));
 #pragma omp parallel for schedule(dynamic, 4096)
   for (long i = 0; i < faces; ++i) {
     const FaceIndex f(static_cast<FaceIndex::size_type>(i));
+    if (out.is_removed(f)) continue;
     const std::vector<Vec3> p = Corners(out, f);
     normal_out[size_t(i)] = Newell(p);
     if (in) normal_in[size_t(i)] = Newell(Corners(*in, f));
     figures[size_t(i)] = Figures(p, in ? Corners(*in, f) : std::vector<Vec3>{}, limits);
   }
   for (long i = 0; i < faces; ++i) {
+    if (out.is_removed(FaceIndex(static_cast<FaceIndex::size_type>(i)))) continue;
     const FaceFigures& g = figures[size_t(i)];
     if (in) {
       const double turned = Angle(normal_out[size_t(i)], normal_in[size_t(i)]);
@@ -281,11 +284,12 @@ Validity CheckValidity(const Mesh& out, const Mesh* input, const ValidityLimits&
   const Mesh& base = in ? *in : out;
   for (EdgeIndex e : base.edges()) mean_in += EdgeLength(base, e);
   mean_in /= std::max<size_t>(1, base.number_of_edges());
-  const long edges = long(out.number_of_edges());
+  const long edges = long(out.num_edges());
   std::vector<double> length(static_cast<size_t>(edges)), crease(static_cast<size_t>(edges), 0.0);
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < edges; ++i) {
     const EdgeIndex e(static_cast<EdgeIndex::size_type>(i));
+    if (out.is_removed(e)) continue;
     length[size_t(i)] = EdgeLength(out, e);
     if (!in || out.is_border(e)) continue;
     const FaceIndex a = out.face(out.halfedge(e, 0)), b = out.face(out.halfedge(e, 1));
@@ -294,6 +298,7 @@ Validity CheckValidity(const Mesh& out, const Mesh* input, const ValidityLimits&
   }
   for (long i = 0; i < edges; ++i) {
     const EdgeIndex e(static_cast<EdgeIndex::size_type>(i));
+    if (out.is_removed(e)) continue;
     const double length_in = in ? EdgeLength(*in, e) : 1e300;
     if (length[size_t(i)] < limits.min_edge_relative * mean_in && length[size_t(i)] < 0.5 * length_in) {
       Note(short_edges, length[size_t(i)] / mean_in, int(i), false);

@@ -19,8 +19,9 @@
 // A net of more than kSampledQuads quads is measured on an even sample of
 // them (every k-th quad in face order, k = ⌈quads / kSampledQuads⌉), with
 // jets fitted only at the sampled quads' vertices: the figures are the
-// sample's (mean ± about 1% of its spread; the max is the sample's max). A
-// 1M-quad net's check took 14 s with every quad, and ~0.3 s sampled.
+// sample's (mean ± about 1% of its spread; the max is the sample's max). On
+// every quad a 1M-quad net's check took ~14 s; sampled, its work no longer
+// grows with the net.
 //
 // Per quad with corners p0..p3 the two edge directions are the means of
 // opposite edges, u = (p1 − p0 + p2 − p3)/2 and v = (p3 − p0 + p2 − p1)/2:

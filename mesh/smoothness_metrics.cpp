@@ -315,7 +315,7 @@ SmoothnessMetrics ComputeSmoothnessMetrics(const Mesh& mesh) {
   }
   // Each vertex's figures in parallel (they read only the mesh and the
   // normals), then summed in vertex order: the same sums as a serial pass.
-  const long n = long(mesh.number_of_vertices());
+  const long n = long(mesh.num_vertices());  // index slots, removed ones too
   std::vector<double> c(static_cast<size_t>(n), 0.0);
   std::vector<VertexStar> stars(static_cast<size_t>(n));
   {
