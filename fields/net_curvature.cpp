@@ -80,11 +80,20 @@ NetCurvatureFigures MeasureNetCurvature(const Mesh& net) {
     if (net.degree(f) == 4) sample.push_back(f);
   }
   out.quads = int(sample.size());
-  const size_t stride = (sample.size() + kSampledQuads - 1) / kSampledQuads;
-  if (stride > 1) {
-    size_t kept = 0;
-    for (size_t i = 0; i < sample.size(); i += stride) sample[kept++] = sample[i];
-    sample.resize(kept);
+  if (sample.size() > size_t(kSampledQuads)) {
+    // The golden-ratio (Weyl) sequence over the face order: spread over the
+    // rows and the columns of a grid of any width (a fixed stride that
+    // divides the width, e.g. 200 on a 1000-wide grid, would read 5 columns).
+    std::vector<size_t> pick;
+    for (int k = 1; k <= kSampledQuads; ++k) {
+      const double t = k * 0.6180339887498949;
+      pick.push_back(size_t((t - std::floor(t)) * double(sample.size())));
+    }
+    std::sort(pick.begin(), pick.end());
+    pick.erase(std::unique(pick.begin(), pick.end()), pick.end());
+    std::vector<FaceIndex> kept;
+    for (size_t i : pick) kept.push_back(sample[i]);
+    sample.swap(kept);
   }
   out.sampled = int(sample.size());
   std::vector<char> fit(net.number_of_vertices(), 0);
