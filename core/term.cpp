@@ -2,17 +2,23 @@
 
 namespace archgeo {
 
-double TermContext::Number(const std::string& option) const {
-  return settings().Number("terms." + term_name() + "." + option);
+double TermContext::Option(const std::string& option, bool boolean) const {
+  for (const auto& [name, value] : options_) {
+    if (name == option) return value;
+  }
+  const std::string key = "terms." + term_name() + "." + option;
+  const double value = boolean ? double(settings().Bool(key)) : settings().Number(key);
+  options_.emplace_back(option, value);
+  return value;
 }
+
+double TermContext::Number(const std::string& option) const { return Option(option, false); }
 
 long long TermContext::Integer(const std::string& option) const {
   return settings().Integer("terms." + term_name() + "." + option);
 }
 
-bool TermContext::Bool(const std::string& option) const {
-  return settings().Bool("terms." + term_name() + "." + option);
-}
+bool TermContext::Bool(const std::string& option) const { return Option(option, true) != 0.0; }
 
 const std::string& TermContext::String(const std::string& option) const {
   return settings().String("terms." + term_name() + "." + option);

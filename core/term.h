@@ -19,6 +19,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/batch.h"
@@ -116,7 +117,7 @@ class TermContext {
   virtual bool Fixed(int v) const = 0;
   // A variable block by element index (vertex, face or edge index, or the
   // index of a global block).
-  virtual double* Block(const std::string& name, int index) = 0;
+  virtual double* Block(std::string_view name, int index) = 0;
   // The closest point of the reference and its normal (surface) or tangent
   // (boundary curve), re-computed at the start of every round.
   virtual const double* ProjectedPoint(int v) const = 0;
@@ -146,6 +147,8 @@ class TermContext {
   // The term's options ("terms.<name>.<option>").
   virtual const Settings& settings() const = 0;
   virtual const std::string& term_name() const = 0;
+  // Number and Bool are read once per option and round (terms read them per
+  // element).
   double Number(const std::string& option) const;
   long long Integer(const std::string& option) const;
   bool Bool(const std::string& option) const;
@@ -196,6 +199,11 @@ class TermContext {
     Batch* batch;
   };
   std::vector<Kept> batches_;
+  // Number and Bool options read this round (cleared with the batches).
+  mutable std::vector<std::pair<std::string, double>> options_;
+
+ private:
+  double Option(const std::string& option, bool boolean) const;
 };
 
 }  // namespace archgeo

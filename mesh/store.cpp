@@ -103,15 +103,22 @@ bool Store::IsGlobal(const std::string& name) const {
   return blocks_[it->second].count > 0;
 }
 
-double* Store::At(const std::string& name, int index) {
+size_t Store::Find(std::string_view name) const {
   const auto it = index_.find(name);
   CHECK(it != index_.end()) << "no block '" << name << "'";
-  Entry& e = blocks_[it->second];
-  CHECK(index >= 0 && index < Count(name)) << "block '" << name << "' index " << index;
+  return it->second;
+}
+
+double* Store::At(size_t block, int index) {
+  Entry& e = blocks_[block];
+  const int count = e.count > 0 ? e.count : Elements(mesh_, e.decl.on);
+  CHECK(index >= 0 && index < count) << "block '" << e.decl.name << "' index " << index;
   return e.count > 0 ? e.global.data() + size_t(index) * e.decl.width : e.at(index);
 }
 
-const double* Store::At(const std::string& name, int index) const {
+double* Store::At(std::string_view name, int index) { return At(Find(name), index); }
+
+const double* Store::At(std::string_view name, int index) const {
   return const_cast<Store*>(this)->At(name, index);
 }
 

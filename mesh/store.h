@@ -11,6 +11,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -39,8 +40,12 @@ class Store {
   std::vector<std::string> Names() const;  // in declaration order
   // Number of blocks (elements of its kind, or the global count).
   int Count(const std::string& name) const;
-  double* At(const std::string& name, int index);
-  const double* At(const std::string& name, int index) const;
+  double* At(std::string_view name, int index);
+  const double* At(std::string_view name, int index) const;
+  // A block by its position in declaration order (Find), for callers that
+  // read many elements of one block: At(Find(name), i) == At(name, i).
+  size_t Find(std::string_view name) const;
+  double* At(size_t block, int index);
   bool IsGlobal(const std::string& name) const;
 
   // Every variable: positions, then each block's values, in order.
@@ -63,7 +68,7 @@ class Store {
   };
   Mesh mesh_;
   std::vector<Entry> blocks_;
-  std::map<std::string, size_t> index_;
+  std::map<std::string, size_t, std::less<>> index_;  // by name
 };
 
 // Maps `width` values of a block between file units and the canonical frame.

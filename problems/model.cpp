@@ -88,11 +88,13 @@ class MeshModel::View : public TermContext {
   void Prepare(Residuals* residuals, const std::string& loss, double loss_scale) {
     residuals_ = residuals;
     part_ = -1;
+    part_key_ = nullptr;
     loss_ = loss;
     loss_scale_ = loss_scale;
     shared_losses_.clear();
     last_loss_ = nullptr;
     batches_.clear();
+    options_.clear();
   }
 
   int NumVertices() const override { return int(model_.store_.mesh().number_of_vertices()); }
@@ -101,8 +103,12 @@ class MeshModel::View : public TermContext {
   const double* Previous(int v) const override { return &model_.previous_[3 * size_t(v)]; }
   const double* VertexNormal(int v) const override { return &model_.normals_[3 * size_t(v)]; }
   bool Fixed(int v) const override { return model_.hooks_.fixed[v]; }
-  double* Block(const std::string& name, int index) override {
-    return model_.store_.At(name, index);
+  double* Block(std::string_view name, int index) override {
+    if (name != block_name_) {  // terms read runs of one block
+      block_ = model_.store_.Find(name);
+      block_name_ = name;
+    }
+    return model_.store_.At(block_, index);
   }
   const double* ProjectedPoint(int v) const override {
     CHECK(!model_.projected_point_.empty()) << name_ << ": no projection this round";
@@ -214,9 +220,13 @@ class MeshModel::View : public TermContext {
     last_weight_ = w;
     return last_loss_ = it->second;
   }
+  // `part` is a literal (or nullptr: the term's name), so the same address
+  // names the same part.
   int Part(const char* part) {
     const char* key = part ? part : name_.c_str();
+    if (key == part_key_ && part_ >= 0) return part_;
     if (part_ < 0 || residuals_->parts()[size_t(part_)] != key) part_ = residuals_->Part(key);
+    part_key_ = key;
     return part_;
   }
 
@@ -225,6 +235,9 @@ class MeshModel::View : public TermContext {
   std::map<std::string, std::vector<Curve>> curves_;  // per option, read once per solve
   Residuals* residuals_ = nullptr;
   int part_ = -1;  // the part of the last Add (-1: none yet)
+  const char* part_key_ = nullptr;  // and the key it was asked by
+  std::string block_name_;  // the last Block's name and position in the store
+  size_t block_ = 0;
   std::string loss_ = "none";
   double loss_scale_ = 1;
   std::unordered_map<double, const ceres::LossFunction*> shared_losses_;  // owned by residuals_
