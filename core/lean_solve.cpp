@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -514,6 +515,18 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
       radius = std::min(options.max_trust_region_radius,
                         radius / std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * rho - 1.0, 3)));
       decrease_factor = 2.0;
+      // A step that ends the solve is not linearised again.
+      bool ends = change <= options.function_tolerance * (cost + change) ||
+                  delta.norm() <= options.parameter_tolerance * (x_norm + options.parameter_tolerance);
+      for (ceres::IterationCallback* callback : options.callbacks) {
+        auto* ending = dynamic_cast<EndingCallback*>(callback);
+        ends = ends || (ending && ending->Ends());
+      }
+      if (ends) {
+        gradient.setConstant(std::numeric_limits<double>::quiet_NaN());
+        report(iteration, delta.norm(), true, change);
+        break;
+      }
       t = Clock::now();
       if (!lean.Linearise(&cost, &gradient)) {
         out.usable = false;
@@ -522,10 +535,7 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
       }
       out.jacobian_seconds += Since(t);
       if (report(iteration, delta.norm(), true, change)) break;
-      if (change <= options.function_tolerance * (cost + change)) break;
       if (gradient.lpNorm<Eigen::Infinity>() <= options.gradient_tolerance) break;
-      if (delta.norm() <= options.parameter_tolerance * (x_norm + options.parameter_tolerance))
-        break;
     } else {
       lean.Restore(before);
       radius /= decrease_factor;

@@ -46,6 +46,15 @@ struct SolveSummary {
   bool terminated_by_callback = false;
 };
 
+// An iteration callback that can tell, at an accepted step and before
+// LeanSolve linearises there, that it will end the solve at this step (e.g.
+// its tolerances hold at the current values). LeanSolve then reports the
+// step without that linearisation (gradient norms NaN: not evaluated).
+class EndingCallback : public ceres::IterationCallback {
+ public:
+  virtual bool Ends() = 0;
+};
+
 // Minimises the sum of `residuals` from the values in their parameter blocks
 // (which hold the result on return). Reads from `options`: max_num_iterations,
 // max_solver_time_in_seconds, function/gradient/parameter_tolerance,

@@ -32,12 +32,19 @@ std::string MeasureText(const std::map<std::string, double>& measures) {
 }
 
 // One progress line per Ceres iteration; ends the solve when every
-// per-iteration tolerance holds.
-class IterationWatch : public ceres::IterationCallback {
+// per-iteration tolerance holds (and tells LeanSolve so before it linearises).
+class IterationWatch : public EndingCallback {
  public:
   IterationWatch(Model& model, const ProgressSink& sink, std::string label,
                  std::vector<std::pair<std::string, double>> watched)
       : model_(model), sink_(sink), label_(std::move(label)), watched_(std::move(watched)) {}
+
+  bool Ends() override {
+    model_.StateChanged();
+    bool met = !watched_.empty();
+    for (const auto& [measure, bound] : watched_) met = met && model_.Measure(measure) <= bound;
+    return met;
+  }
 
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
     model_.StateChanged();
@@ -49,9 +56,12 @@ class IterationWatch : public ceres::IterationCallback {
       met = met && value <= bound;
     }
     if (sink_) {
+      // NaN: LeanSolve did not linearise at a step that ends the solve.
+      const std::string gradient =
+          std::isnan(s.gradient_max_norm) ? "-" : Format("%.2e", s.gradient_max_norm);
       char line[256];
-      std::snprintf(line, sizeof line, "%s  iter %3d  cost %.6e%s  |gradient| %.2e  |step| %.2e  %.3f s",
-                    label_.c_str(), s.iteration, s.cost, values.c_str(), s.gradient_max_norm,
+      std::snprintf(line, sizeof line, "%s  iter %3d  cost %.6e%s  |gradient| %s  |step| %.2e  %.3f s",
+                    label_.c_str(), s.iteration, s.cost, values.c_str(), gradient.c_str(),
                     s.step_norm, s.cumulative_time_in_seconds);
       sink_(line);
     }

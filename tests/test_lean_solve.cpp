@@ -277,6 +277,54 @@ TEST(LeanSolve, ACallbackEndsTheSolve) {
   EXPECT_EQ(stop.seen, 2);  // iteration 0 and 1
 }
 
+// Knows before LeanSolve linearises that the step it is at ends the solve
+// (the step reported as iteration `at`); records the reported gradients.
+struct EndAt : EndingCallback {
+  int at, reports = 0;
+  std::vector<double> gradient;
+  explicit EndAt(int a) : at(a) {}
+  bool Ends() override { return reports >= at; }  // the coming report is iteration `reports`
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    ++reports;
+    gradient.push_back(s.gradient_max_norm);
+    return s.iteration >= at ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
+  }
+};
+
+// A step that ends the solve is not linearised again: its report carries no
+// gradient, and the result is that of a callback that ends it after the
+// linearisation; so is a step that meets the function tolerance.
+TEST(LeanSolve, AStepThatEndsTheSolveIsNotLinearisedAgain) {
+  PlaneFit ended, stopped;
+  EndAt end(2);
+  StopAfter stop(2);
+  ceres::Solver::Options o = Tight();
+  o.callbacks.push_back(&end);
+  const SolveSummary a = LeanSolve(o, ended.residuals);
+  o.callbacks = {&stop};
+  const SolveSummary b = LeanSolve(o, stopped.residuals);
+  EXPECT_TRUE(a.terminated_by_callback);
+  EXPECT_EQ(a.iterations, 2);
+  ASSERT_EQ(end.gradient.size(), 3u);
+  EXPECT_TRUE(std::isfinite(end.gradient[0]) && std::isfinite(end.gradient[1]));
+  EXPECT_TRUE(std::isnan(end.gradient[2]));
+  EXPECT_EQ(b.iterations, 2);
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(ended.normal[k], stopped.normal[k]);
+  EXPECT_EQ(ended.offset, stopped.offset);
+  EXPECT_DOUBLE_EQ(a.final_cost, b.final_cost);
+
+  PlaneFit loose;
+  EndAt never(1000);
+  o = Tight();
+  o.function_tolerance = 1e-2;
+  o.callbacks.push_back(&never);
+  const SolveSummary c = LeanSolve(o, loose.residuals);
+  EXPECT_FALSE(c.terminated_by_callback);
+  ASSERT_GE(never.gradient.size(), 2u);
+  EXPECT_TRUE(std::isnan(never.gradient.back()));  // ended by the function tolerance
+  EXPECT_LT(c.final_cost, c.initial_cost);
+}
+
 // The loop builds its residuals every round: the pattern of J^T J is kept
 // while the structure stays, with the new round's costs, and the solve from
 // it is the solve from a fresh pattern.
