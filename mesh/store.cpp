@@ -93,8 +93,7 @@ std::vector<std::string> Store::Names() const {
 int Store::Count(const std::string& name) const {
   const auto it = index_.find(name);
   CHECK(it != index_.end()) << "no block '" << name << "'";
-  const Entry& e = blocks_[it->second];
-  return e.count > 0 ? e.count : Elements(mesh_, e.decl.on);
+  return Count(blocks_[it->second]);
 }
 
 bool Store::IsGlobal(const std::string& name) const {
@@ -109,10 +108,11 @@ size_t Store::Find(std::string_view name) const {
   return it->second;
 }
 
+int Store::Count(const Entry& e) const { return e.count > 0 ? e.count : Elements(mesh_, e.decl.on); }
+
 double* Store::At(size_t block, int index) {
   Entry& e = blocks_[block];
-  const int count = e.count > 0 ? e.count : Elements(mesh_, e.decl.on);
-  CHECK(index >= 0 && index < count) << "block '" << e.decl.name << "' index " << index;
+  CHECK(index >= 0 && index < Count(e)) << "block '" << e.decl.name << "' index " << index;
   return e.count > 0 ? e.global.data() + size_t(index) * e.decl.width : e.at(index);
 }
 
@@ -123,17 +123,20 @@ const double* Store::At(std::string_view name, int index) const {
 }
 
 std::vector<double> Store::Save() const {
+  Store& self = const_cast<Store&>(*this);  // At is the same lookup either way
+  size_t size = 3 * mesh_.number_of_vertices();
+  for (const Entry& e : blocks_) size += size_t(Count(e)) * size_t(e.decl.width);
   std::vector<double> state;
-  state.reserve(3 * mesh_.number_of_vertices());
+  state.reserve(size);
   for (VertexIndex v : mesh_.vertices()) {
     const Point& p = mesh_.point(v);
     state.insert(state.end(), {p.x(), p.y(), p.z()});
   }
-  for (const Entry& e : blocks_) {
-    const int n = Count(e.decl.name);
+  for (size_t b = 0; b < blocks_.size(); ++b) {
+    const int n = Count(blocks_[b]);
     for (int i = 0; i < n; ++i) {
-      const double* x = At(e.decl.name, i);
-      state.insert(state.end(), x, x + e.decl.width);
+      const double* x = self.At(b, i);
+      state.insert(state.end(), x, x + blocks_[b].decl.width);
     }
   }
   return state;
@@ -146,12 +149,13 @@ void Store::Restore(const std::vector<double>& state) {
     mesh_.point(v) = Point(state[k], state[k + 1], state[k + 2]);
     k += 3;
   }
-  for (const Entry& e : blocks_) {
-    const int n = Count(e.decl.name);
+  for (size_t b = 0; b < blocks_.size(); ++b) {
+    const int n = Count(blocks_[b]);
+    const int width = blocks_[b].decl.width;
     for (int i = 0; i < n; ++i) {
-      double* x = At(e.decl.name, i);
-      CHECK_LE(k + e.decl.width, state.size()) << "Store::Restore: state of another store";
-      for (int j = 0; j < e.decl.width; ++j) x[j] = state[k++];
+      double* x = At(b, i);
+      CHECK_LE(k + width, state.size()) << "Store::Restore: state of another store";
+      for (int j = 0; j < width; ++j) x[j] = state[k++];
     }
   }
   CHECK_EQ(k, state.size()) << "Store::Restore: state of another store";

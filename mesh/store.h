@@ -66,6 +66,7 @@ class Store {
     std::vector<double> global;         // global blocks' values
     std::function<double*(int)> at;     // element blocks
   };
+  int Count(const Entry& e) const;
   Mesh mesh_;
   std::vector<Entry> blocks_;
   std::map<std::string, size_t, std::less<>> index_;  // by name

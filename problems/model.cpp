@@ -569,8 +569,9 @@ bool MeshModel::Finite() const {
   for (const std::string& name : store_.Names()) {
     const BlockDecl& decl = store_.Decl(name);
     if (decl.constant) continue;
-    for (int i = 0; i < store_.Count(name); ++i) {
-      const double* x = store_.At(name, i);
+    const size_t block = store_.Find(name);
+    for (int i = 0, n = store_.Count(name); i < n; ++i) {
+      const double* x = store_.At(block, i);
       for (int k = 0; k < decl.width; ++k) {
         if (!std::isfinite(x[k])) return false;
       }
