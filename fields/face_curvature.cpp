@@ -1,11 +1,13 @@
 #include "fields/face_curvature.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 // Jet fitting needs an SVD traits class; naming CGAL::Eigen_svd explicitly
 // avoids depending on CGAL_EIGEN3_ENABLED (CGAL::Eigen3_support) for the
-// default template argument. JetOptions::qr swaps in pivoted QR.
+// default template argument. JetOptions::qr fits by QrJetTensor instead.
+#include <CGAL/Default_diagonalize_traits.h>
 #include <CGAL/Eigen_matrix.h>
 #include <CGAL/Eigen_svd.h>
 #include <CGAL/Eigen_vector.h>
@@ -20,23 +22,7 @@ namespace archgeo {
 namespace {
 
 constexpr int kMaxRings = 8;
-
-// A jet fit's least squares (CGAL's SvdTraits concept) by pivoted
-// Householder QR (JetOptions::qr). The condition number it returns (which
-// archgeo never reads) is QR's estimate: the ratio of R's largest to smallest
-// diagonal entry (an exact one, from the eigenvalues of RᵀR, took about a
-// tenth of the fitting time).
-struct QrLeastSquares {
-  using FT = double;
-  using Vector = CGAL::Eigen_vector<FT>;
-  using Matrix = CGAL::Eigen_matrix<FT>;
-  static FT solve(const Matrix& M, Vector& B) {
-    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(M.eigen_object());
-    B.eigen_object() = qr.solve(Eigen::VectorXd(B.eigen_object()));
-    const Eigen::VectorXd d = qr.matrixR().diagonal().cwiseAbs();
-    return d.maxCoeff() / d.minCoeff();
-  }
-};
+constexpr int kMaxDegree = 4;
 
 Eigen::Vector3d P(const Mesh& mesh, VertexIndex v) {
   const Point& p = mesh.point(v);
@@ -79,6 +65,131 @@ std::vector<VertexIndex> Neighbourhood(const Mesh& mesh, VertexIndex v, int ring
   return out;
 }
 
+// Σ k d dᵀ of a Monge form (principal curvatures k, unit directions d).
+template <class MongeForm>
+Eigen::Matrix3d TensorOf(const MongeForm& monge) {
+  const Vector d1 = monge.maximal_principal_direction();
+  const Vector d2 = monge.minimal_principal_direction();
+  const Eigen::Vector3d a(d1.x(), d1.y(), d1.z()), b(d2.x(), d2.y(), d2.z());
+  return monge.principal_curvatures(0) * a * a.transpose() +
+         monge.principal_curvatures(1) * b * b.transpose();
+}
+
+// One vertex's shape tensor Σ k d dᵀ from a degree-`degree` jet fitted to
+// `points` (the vertex first), oriented so that its normal agrees with
+// `normal`: CGAL's Monge_via_jet_fitting with its Jacobi SVD, as
+// Monge_form::comply_wrt_given_normal orients it.
+Eigen::Matrix3d SvdJetTensor(const std::vector<Point>& points, int degree,
+                             const Eigen::Vector3d& normal) {
+  using Fitting = CGAL::Monge_via_jet_fitting<Kernel, Kernel, CGAL::Eigen_svd>;
+  Fitting fitting;
+  typename Fitting::Monge_form monge = fitting(points.begin(), points.end(), degree, 2);
+  monge.comply_wrt_given_normal(Vector(normal.x(), normal.y(), normal.z()));
+  return TensorOf(monge);
+}
+
+// The same fit step by step (Cazals & Pouget 2003, as CGAL 5.5's
+// Monge_via_jet_fitting computes it), with its least squares by pivoted
+// Householder QR (JetOptions::qr):
+//   1. the fitting frame: the principal axes of the points' covariance (the
+//      same diagonalisation as CGAL's), the least spread one as z, made
+//      direct by flipping the first;
+//   2. the jet z = Σ_{k ≤ d} Σ_{i ≤ k} A_{k,i} x^{k−i} y^i / ((k−i)! i!) in
+//      that frame about the first point, by least squares on monomials
+//      preconditioned by the mean |x|, |y| (monomials by products: CGAL's
+//      std::pow took most of a fit's time);
+//   3. the Weingarten map I⁻¹ II of the graph at the origin, in the
+//      orthonormal tangent basis (Y, Z) of Gram–Schmidt on X_u, X_v; the
+//      tensor is that symmetric map in 3-D (what Σ k d dᵀ of its eigen-
+//      decomposition gives back), rotated to the world, negated when the
+//      fit's normal (−A₁, −A₂, 1) disagrees with `normal`.
+Eigen::Matrix3d QrJetTensor(const std::vector<Point>& points, int degree,
+                            const Eigen::Vector3d& normal) {
+  const int n = int(points.size());
+  double sx = 0, sy = 0, sz = 0, sxx = 0, syy = 0, szz = 0, sxy = 0, sxz = 0, syz = 0;
+  for (const Point& p : points) {
+    const double x = p.x(), y = p.y(), z = p.z();
+    sx += x / n;
+    sy += y / n;
+    sz += z / n;
+    sxx += x * x / n;
+    syy += y * y / n;
+    szz += z * z / n;
+    sxy += x * y / n;
+    sxz += x * z / n;
+    syz += y * z / n;
+  }
+  const std::array<double, 6> covariance = {{sxx - sx * sx, sxy - sx * sy, sxz - sx * sz,
+                                             syy - sy * sy, syz - sy * sz, szz - sz * sz}};
+  std::array<double, 3> values = {{0, 0, 0}};
+  std::array<double, 9> vectors = {{0, 0, 0, 0, 0, 0, 0, 0, 0}};
+  CGAL::Default_diagonalize_traits<double, 3>::diagonalize_selfadjoint_covariance_matrix(
+      covariance, values, vectors);  // ascending
+  Eigen::Matrix3d R;  // rows: the fitting axes, world → fitting
+  R.row(0) << vectors[6], vectors[7], vectors[8];
+  R.row(1) << vectors[3], vectors[4], vectors[5];
+  R.row(2) << vectors[0], vectors[1], vectors[2];
+  if (R.row(0).dot(R.row(1).cross(R.row(2))) < 0) R.row(0) *= -1.0;
+
+  const Eigen::Vector3d origin(points[0].x(), points[0].y(), points[0].z());
+  std::vector<Eigen::Vector3d> local(n);
+  double precondition = 0;
+  for (int r = 0; r < n; ++r) {
+    local[r] = R * (Eigen::Vector3d(points[r].x(), points[r].y(), points[r].z()) - origin);
+    precondition += std::abs(local[r].x()) + std::abs(local[r].y());
+  }
+  precondition /= 2 * n;
+  const int coefficients = NumCoefficients(degree);
+  double factorial[kMaxDegree + 1] = {1}, scale[kMaxDegree + 1] = {1};
+  for (int k = 1; k <= degree; ++k) {
+    factorial[k] = factorial[k - 1] * k;
+    scale[k] = scale[k - 1] * precondition;
+  }
+  Eigen::MatrixXd M(n, coefficients);
+  Eigen::VectorXd Z(n);
+  for (int r = 0; r < n; ++r) {
+    double xp[kMaxDegree + 1] = {1}, yp[kMaxDegree + 1] = {1};
+    for (int k = 1; k <= degree; ++k) {
+      xp[k] = xp[k - 1] * local[r].x();
+      yp[k] = yp[k - 1] * local[r].y();
+    }
+    Z[r] = local[r].z();
+    for (int k = 0; k <= degree; ++k) {
+      for (int i = 0; i <= k; ++i) {
+        M(r, k * (k + 1) / 2 + i) = xp[k - i] * yp[i] / (factorial[i] * factorial[k - i] * scale[k]);
+      }
+    }
+  }
+  Eigen::VectorXd A = Eigen::ColPivHouseholderQR<Eigen::MatrixXd>(M).solve(Z);
+  for (int k = 0; k <= degree; ++k) {
+    for (int i = 0; i <= k; ++i) A[k * (k + 1) / 2 + i] /= scale[k];
+  }
+
+  const double norm2 = 1 + A[1] * A[1] + A[2] * A[2];
+  const double e = 1 + A[1] * A[1], f = A[1] * A[2], g = 1 + A[2] * A[2];
+  const double l = A[3], m = A[4], nn = A[5];
+  const double w = std::sqrt(norm2) * norm2;
+  Eigen::Matrix2d W;
+  W << (g * l - f * m) / w, (g * m - f * nn) / w, (e * m - f * l) / w, (e * nn - f * m) / w;
+  const Eigen::Vector3d Xu(1, 0, A[1]), Xv(0, 1, A[2]);
+  const double norm_u = Xu.norm(), uv = Xu.dot(Xv);
+  const Eigen::Vector3d Y = Xu / norm_u;
+  Eigen::Vector3d T = Xv - uv * Xu / (norm_u * norm_u);
+  const double norm_t = T.norm();
+  T /= norm_t;
+  Eigen::Matrix2d C;  // (X_u, X_v) → (Y, T)
+  C << 1 / norm_u, -uv / (norm_u * norm_u * norm_t), 0, 1 / norm_t;
+  const Eigen::Matrix2d V = C.inverse() * W * C;
+  Eigen::Matrix<double, 3, 2> B;
+  B << Y, T;
+  Eigen::Matrix2d S;  // the lower triangle, as CGAL's diagonalisation reads it
+  S << V(0, 0), V(1, 0), V(1, 0), V(1, 1);
+  Eigen::Matrix3d tensor = R.transpose() * (B * S * B.transpose()) * R;
+  const Eigen::Vector3d fit_normal = R.transpose() * Eigen::Vector3d(-A[1], -A[2], 1.0) / std::sqrt(norm2);
+  if (fit_normal.dot(normal) < 0) tensor = -tensor;
+  return tensor;
+}
+
 }  // namespace
 
 FaceCurvature CurvatureOfMatrix(const Eigen::Matrix2d& M_in, double flat_curvature,
@@ -101,18 +212,16 @@ FaceCurvature CurvatureOfMatrix(const Eigen::Matrix2d& M_in, double flat_curvatu
 
 namespace {
 
-template <class LeastSquares>
 std::vector<Eigen::Matrix3d> ShapeTensors(const Mesh& mesh, const JetOptions& options,
                                           const std::vector<char>* only) {
   CHECK(!mesh.has_garbage());
-  CHECK(options.degree >= 2 && options.degree <= 4) << "jet degree must be 2..4";
+  CHECK(options.degree >= 2 && options.degree <= kMaxDegree) << "jet degree must be 2..4";
   CHECK(options.rings >= 1 && options.rings <= kMaxRings) << "jet rings must be 1.." << kMaxRings;
   const int needed = NumCoefficients(options.degree);
   const int min_points = options.min_points > 0 ? options.min_points : 2 * needed;
   CHECK(min_points >= needed) << "jet min_points " << min_points << " < " << needed
                               << " coefficients of a degree-" << options.degree << " jet";
 
-  using Fitting = CGAL::Monge_via_jet_fitting<Kernel, Kernel, LeastSquares>;
   std::vector<Eigen::Matrix3d> tensors(mesh.number_of_vertices(), Eigen::Matrix3d::Zero());
   const int count = static_cast<int>(mesh.number_of_vertices());
   // Every vertex's fit is independent (each thread has its own marks).
@@ -132,15 +241,8 @@ std::vector<Eigen::Matrix3d> ShapeTensors(const Mesh& mesh, const JetOptions& op
       if (static_cast<int>(hood.size()) < NumCoefficients(degree)) continue;  // stays 0
       points.clear();
       for (VertexIndex u : hood) points.push_back(mesh.point(u));
-      Fitting fitting;
-      typename Fitting::Monge_form monge = fitting(points.begin(), points.end(), degree, 2);
       const Eigen::Vector3d n = VertexNormal(mesh, v);
-      monge.comply_wrt_given_normal(Vector(n.x(), n.y(), n.z()));
-      const Vector d1 = monge.maximal_principal_direction();
-      const Vector d2 = monge.minimal_principal_direction();
-      const Eigen::Vector3d a(d1.x(), d1.y(), d1.z()), b(d2.x(), d2.y(), d2.z());
-      tensors[i] = monge.principal_curvatures(0) * a * a.transpose() +
-                   monge.principal_curvatures(1) * b * b.transpose();
+      tensors[i] = options.qr ? QrJetTensor(points, degree, n) : SvdJetTensor(points, degree, n);
     }
   }
   return tensors;
@@ -149,15 +251,13 @@ std::vector<Eigen::Matrix3d> ShapeTensors(const Mesh& mesh, const JetOptions& op
 }  // namespace
 
 std::vector<Eigen::Matrix3d> VertexShapeTensors(const Mesh& mesh, const JetOptions& options) {
-  return options.qr ? ShapeTensors<QrLeastSquares>(mesh, options, nullptr)
-                    : ShapeTensors<CGAL::Eigen_svd>(mesh, options, nullptr);
+  return ShapeTensors(mesh, options, nullptr);
 }
 
 std::vector<Eigen::Matrix3d> VertexShapeTensors(const Mesh& mesh, const JetOptions& options,
                                                 const std::vector<char>& only) {
   CHECK_EQ(only.size(), mesh.number_of_vertices());
-  return options.qr ? ShapeTensors<QrLeastSquares>(mesh, options, &only)
-                    : ShapeTensors<CGAL::Eigen_svd>(mesh, options, &only);
+  return ShapeTensors(mesh, options, &only);
 }
 
 Eigen::Matrix2d FaceMatrix(const Mesh& mesh, const FaceFrames& frames, FaceIndex f,
