@@ -4,6 +4,7 @@
 #include "core/solver_options.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -85,6 +86,15 @@ void ForHalves(size_t split, size_t n, const Body& body) {
   const int threads = std::min(2, omp_get_max_threads());
 #pragma omp parallel for num_threads(threads) schedule(static, 1)
   for (int t = 0; t < 2; ++t) body(t, t == 0 ? 0 : split, t == 0 ? split : n);
+}
+
+// The sums {a, b} of body(first, end) over the two fixed halves of [0, n),
+// each half's then added (ForHalves: the same sums on one thread).
+template <class Body>
+std::array<double, 2> SumHalves(size_t split, size_t n, const Body& body) {
+  std::array<double, 2> half[2] = {{0, 0}, {0, 0}};
+  ForHalves(split, n, [&](int t, size_t first, size_t end) { half[t] = body(first, end); });
+  return {half[0][0] + half[1][0], half[0][1] + half[1][1]};
 }
 
 // Ceres' loss corrector (Triggs et al. 1999, "Bundle adjustment — a modern
@@ -268,7 +278,9 @@ class Lean {
         }
       }
     });
-    *y += spare_;
+    ForHalves(size_t(s_.tangent) / 2, size_t(s_.tangent), [&](int, size_t first, size_t end) {
+      y->segment(first, end - first) += spare_.segment(first, end - first);
+    });
   }
 
   // The diagonal of H.
@@ -299,35 +311,57 @@ class Lean {
       if (llt.info() == Eigen::Success) inv = llt.solve(inv);
       Eigen::Map<RowMatrix>(inverse.data() + s_.diagonal[i], b.tangent, b.tangent) = inv;
     }
-    auto precondition = [&](const Vector& r, Vector* z) {
-#pragma omp parallel for schedule(static, 256)
-      for (int i = 0; i < blocks; ++i) {
-        const PatternBlock& b = s_.blocks[i];
-        z->segment(b.offset, b.tangent).setZero();
-        AddProduct<false>(inverse.data() + s_.diagonal[i], b.tangent, b.tangent,
-                          r.data() + b.offset, z->data() + b.offset);
-      }
-    };
+    // The vector work of a step in three passes over the two fixed halves
+    // of the blocks (two threads where there are, and the same sums on one),
+    // fused so that each vector streams from memory once per pass.
     const int n = s_.tangent;
+    const size_t half = size_t(blocks / 2);
+    const auto offset = [&](size_t i) { return i < size_t(blocks) ? size_t(s_.blocks[i].offset) : size_t(n); };
     delta->setZero(n);
     Vector r = -gradient, z(n), p(n), q(n);
     const double stop = eta * r.norm();
-    precondition(r, &z);
+    // z = M⁻¹ r on blocks [first, end); returns their r·z and r·r.
+    const auto precondition = [&](size_t first, size_t end) {
+      std::array<double, 2> sum = {0, 0};
+      for (size_t i = first; i < end; ++i) {
+        const PatternBlock& b = s_.blocks[i];
+        const double* ri = r.data() + b.offset;
+        double* zi = z.data() + b.offset;
+        std::fill(zi, zi + b.tangent, 0.0);
+        AddProduct<false>(inverse.data() + s_.diagonal[i], b.tangent, b.tangent, ri, zi);
+        for (int c = 0; c < b.tangent; ++c) {
+          sum[0] += ri[c] * zi[c];
+          sum[1] += ri[c] * ri[c];
+        }
+      }
+      return sum;
+    };
+    std::array<double, 2> sums = SumHalves(half, size_t(blocks), precondition);
     p = z;
-    double rz = r.dot(z);
+    double rz = sums[0], rr = sums[1];
     int k = 0;
-    while (k < max_iterations && r.norm() > stop) {
+    while (k < max_iterations && std::sqrt(rr) > stop) {
       Multiply(damping, p, &q);
-      const double pq = p.dot(q);
+      const double pq = SumHalves(half, size_t(blocks), [&](size_t first, size_t end) {
+        const size_t a = offset(first), e = offset(end);
+        return std::array<double, 2>{p.segment(a, e - a).dot(q.segment(a, e - a)), 0.0};
+      })[0];
       if (!(pq > 0.0)) break;
       const double alpha = rz / pq;
-      *delta += alpha * p;
-      r -= alpha * q;
+      sums = SumHalves(half, size_t(blocks), [&](size_t first, size_t end) {
+        const size_t a = offset(first), e = offset(end);
+        delta->segment(a, e - a) += alpha * p.segment(a, e - a);
+        r.segment(a, e - a) -= alpha * q.segment(a, e - a);
+        return precondition(first, end);
+      });
       ++k;
-      precondition(r, &z);
-      const double rz_next = r.dot(z);
-      p = z + (rz_next / rz) * p;
-      rz = rz_next;
+      const double beta = sums[0] / rz;
+      rz = sums[0];
+      rr = sums[1];
+      ForHalves(half, size_t(blocks), [&](int, size_t first, size_t end) {
+        const size_t a = offset(first), e = offset(end);
+        p.segment(a, e - a) = z.segment(a, e - a) + beta * p.segment(a, e - a);
+      });
     }
     return k;
   }
