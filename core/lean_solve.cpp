@@ -557,6 +557,8 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
     const bool valid = model_change < 0.0 && lean.Step(delta) && lean.Cost(&new_cost);
     out.residual_seconds += Since(t);
     const double rho = valid ? (cost - new_cost) / -model_change : -1.0;
+    const bool small_step =
+        delta.norm() <= options.parameter_tolerance * (x_norm + options.parameter_tolerance);
     if (valid && rho > options.min_relative_decrease) {
       const double change = cost - new_cost;
       cost = new_cost;
@@ -564,8 +566,7 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
                         radius / std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * rho - 1.0, 3)));
       decrease_factor = 2.0;
       // A step that ends the solve is not linearised again.
-      bool ends = change <= options.function_tolerance * (cost + change) ||
-                  delta.norm() <= options.parameter_tolerance * (x_norm + options.parameter_tolerance);
+      bool ends = change <= options.function_tolerance * (cost + change) || small_step;
       for (ceres::IterationCallback* callback : options.callbacks) {
         auto* ending = dynamic_cast<EndingCallback*>(callback);
         ends = ends || (ending && ending->Ends());
@@ -590,8 +591,7 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
       decrease_factor *= 2.0;
       if (report(iteration, delta.norm(), false, 0.0)) break;
       if (radius < options.min_trust_region_radius) break;
-      if (delta.norm() <= options.parameter_tolerance * (x_norm + options.parameter_tolerance))
-        break;
+      if (small_step) break;
     }
   }
   out.final_cost = cost;

@@ -40,21 +40,16 @@ class IterationWatch : public EndingCallback {
       : model_(model), sink_(sink), label_(std::move(label)), watched_(std::move(watched)) {}
 
   bool Ends() override {
-    model_.StateChanged();
-    bool met = !watched_.empty();
-    for (const auto& [measure, bound] : watched_) met = met && model_.Measure(measure) <= bound;
+    measured_ = false;  // a new step
+    const bool met = Met(nullptr);
+    measured_ = true;
     return met;
   }
 
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
-    model_.StateChanged();
-    bool met = !watched_.empty();
     std::string values;
-    for (const auto& [measure, bound] : watched_) {
-      const double value = model_.Measure(measure);
-      values += "  " + measure + " " + Format("%.3e", value);
-      met = met && value <= bound;
-    }
+    const bool met = Met(&values);
+    measured_ = false;
     if (sink_) {
       // NaN: LeanSolve did not linearise at a step that ends the solve.
       const std::string gradient =
@@ -69,10 +64,25 @@ class IterationWatch : public EndingCallback {
   }
 
  private:
+  // Whether every watched measure holds at the current values (" name value"
+  // of each into `values`). The state changed since the last report, unless
+  // Ends measured this same step just before it.
+  bool Met(std::string* values) {
+    if (!measured_) model_.StateChanged();
+    bool met = !watched_.empty();
+    for (const auto& [measure, bound] : watched_) {
+      const double value = model_.Measure(measure);
+      if (values) *values += "  " + measure + " " + Format("%.3e", value);
+      met = met && value <= bound;
+    }
+    return met;
+  }
+
   Model& model_;
   const ProgressSink& sink_;
   std::string label_;
   std::vector<std::pair<std::string, double>> watched_;
+  bool measured_ = false;  // Ends measured the current step
 };
 
 // ½ Σ w r² per objective part and in total, at the current state.
