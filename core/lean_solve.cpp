@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include <omp.h>
@@ -26,7 +27,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double Since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-using MapMatrix = Eigen::Map<RowMatrix>;
 using Vector = Eigen::VectorXd;
 
 // y += M x (or Mᵀ x) for a row-major rows × cols block; 3 × 3 unrolled.
@@ -54,28 +54,79 @@ inline void AddProduct(const double* M, int rows, int cols, const double* x, dou
 }
 
 // C += Aᵀ B for row-major A (rows × a) and B (rows × b), C a × b: the tiny
-// products of one residual's Jacobians (Eigen's dynamic-size product costs
-// more in dispatch than in arithmetic here).
+// products of one residual's Jacobians. Each entry sums its rows first, then
+// adds to C (so C is read and written once).
+inline void AddTransposeProductAny(const double* A, const double* B, int rows, int a, int b,
+                                   double* C) {
+#pragma GCC unroll 4
+  for (int i = 0; i < a; ++i) {
+#pragma GCC unroll 4
+    for (int j = 0; j < b; ++j) {
+      double sum = 0;
+#pragma GCC unroll 4
+      for (int r = 0; r < rows; ++r) sum += A[r * a + i] * B[r * b + j];
+      C[i * b + j] += sum;
+    }
+  }
+}
+template <int kRows, int kA, int kB>
+void AddTransposeProductFixed(const double* A, const double* B, double* C) {
+  AddTransposeProductAny(A, B, kRows, kA, kB, C);  // inlined with the sizes known
+}
+// T = J P for row-major J (rows × a) and P (a × t): a block's tangent
+// Jacobian through its manifold's Plus Jacobian.
+inline void TangentProductAny(const double* J, const double* P, int rows, int a, int t,
+                              double* T) {
+#pragma GCC unroll 4
+  for (int r = 0; r < rows; ++r) {
+#pragma GCC unroll 4
+    for (int j = 0; j < t; ++j) {
+      double sum = 0;
+#pragma GCC unroll 4
+      for (int k = 0; k < a; ++k) sum += J[r * a + k] * P[k * t + j];
+      T[r * t + j] = sum;
+    }
+  }
+}
+template <int kRows, int kA, int kT>
+void TangentProductFixed(const double* J, const double* P, double* T) {
+  TangentProductAny(J, P, kRows, kA, kT, T);  // inlined with the sizes known
+}
+
+// The kernels above of every size up to kMax (rows and columns), indexed
+// [rows − 1][a − 1][b − 1], so that a residual's products run unrolled
+// (with the same sums as the loops: each entry over its rows in order).
+constexpr int kMax = 4;
+using Kernel = void (*)(const double*, const double*, double*);
+template <template <int, int, int> class Of, int... I>
+constexpr std::array<Kernel, sizeof...(I)> KernelTable(std::integer_sequence<int, I...>) {
+  return {Of<I / (kMax * kMax) + 1, I / kMax % kMax + 1, I % kMax + 1>::kernel...};
+}
+template <int R, int A, int B>
+struct TransposeProductOf {
+  static constexpr Kernel kernel = &AddTransposeProductFixed<R, A, B>;
+};
+template <int R, int A, int T>
+struct TangentProductOf {
+  static constexpr Kernel kernel = &TangentProductFixed<R, A, T>;
+};
+constexpr auto kTransposeProducts =
+    KernelTable<TransposeProductOf>(std::make_integer_sequence<int, kMax * kMax * kMax>());
+constexpr auto kTangentProducts =
+    KernelTable<TangentProductOf>(std::make_integer_sequence<int, kMax * kMax * kMax>());
+inline bool Fits(int rows, int a, int b) { return rows <= kMax && a <= kMax && b <= kMax; }
+inline int KernelIndex(int rows, int a, int b) { return ((rows - 1) * kMax + a - 1) * kMax + b - 1; }
+
+// C += Aᵀ B (see AddTransposeProductAny), unrolled where the sizes fit the table.
 inline void AddTransposeProduct(const double* A, const double* B, int rows, int a, int b,
                                 double* C) {
-  if (a == 3 && b == 3) {  // the common vertex × vertex block: C read and written once
-    using V3 = Eigen::Matrix<double, 1, 3>;
-    Eigen::Matrix3d sum = Eigen::Map<const V3>(A).transpose() * Eigen::Map<const V3>(B);
-    for (int r = 1; r < rows; ++r) {
-      sum.noalias() += Eigen::Map<const V3>(A + 3 * r).transpose() * Eigen::Map<const V3>(B + 3 * r);
-    }
-    Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(C) += sum;
-    return;
-  }
-  for (int r = 0; r < rows; ++r) {
-    const double* Ar = A + r * a;
-    const double* Br = B + r * b;
-    for (int i = 0; i < a; ++i) {
-      const double v = Ar[i];
-      double* Ci = C + i * b;
-      for (int j = 0; j < b; ++j) Ci[j] += v * Br[j];
-    }
-  }
+  if (Fits(rows, a, b)) return kTransposeProducts[size_t(KernelIndex(rows, a, b))](A, B, C);
+  AddTransposeProductAny(A, B, rows, a, b, C);
+}
+// T = J P (see TangentProductAny), unrolled where the sizes fit the table.
+inline void TangentProduct(const double* J, const double* P, int rows, int a, int t, double* T) {
+  if (Fits(rows, a, t)) return kTangentProducts[size_t(KernelIndex(rows, a, t))](J, P, T);
+  TangentProductAny(J, P, rows, a, t, T);
 }
 
 // Runs body(t, first, end) for the two fixed halves of [0, n), t = 0 on
@@ -418,19 +469,25 @@ class Lean {
       if (i < 0) continue;
       const PatternBlock& b = s_.blocks[i];
       if (b.manifold) {
-        MapMatrix(tangents[a], rows, b.tangent).noalias() =
-            MapMatrix(jacobians[a], rows, b.ambient) *
-            Eigen::Map<const RowMatrix>(s_.plus_jacobians.data() + b.plus, b.ambient, b.tangent);
+        TangentProduct(jacobians[a], s_.plus_jacobians.data() + b.plus, rows, b.ambient,
+                       b.tangent, tangents[a]);
       } else {
         tangents[a] = jacobians[a];  // tangent = ambient: in place
       }
-      MapMatrix T(tangents[a], rows, b.tangent);
+      double* T = tangents[a];
+      const int t = b.tangent;
       if (corrector.alpha_sq_norm != 0.0) {
-        T -= corrector.alpha_sq_norm * res * (res.transpose() * T);
+        for (int c = 0; c < t; ++c) {
+          double dot = 0;
+          for (int r = 0; r < rows; ++r) dot += res[r] * T[r * t + c];
+          for (int r = 0; r < rows; ++r) T[r * t + c] -= corrector.alpha_sq_norm * res[r] * dot;
+        }
       }
-      T *= corrector.sqrt_rho1;
+      if (corrector.sqrt_rho1 != 1.0) {
+        for (int e = 0; e < rows * t; ++e) T[e] *= corrector.sqrt_rho1;
+      }
     }
-    res *= corrector.residual_scaling;
+    if (corrector.residual_scaling != 1.0) res *= corrector.residual_scaling;
     double* H = s_.hessian.data();
     double* g = gradient_.data();
     int pair = s_.pairs[index];

@@ -60,7 +60,8 @@ bool Renew(const Residuals& in, NormalPattern& s) {
 // by their first free block at the block below which half of them start
 // (the blocks are numbered by first use, so the cut runs across the mesh);
 // a residual reading a block that residuals of both sides read goes to the
-// run after them. Each run keeps the residuals' order (term by term).
+// run after them. Each run goes chunk by chunk of the mesh, and keeps the
+// residuals' order (term by term) within a chunk.
 void Partition(const Residuals& in, NormalPattern& s) {
   const int n = int(in.residuals().size());
   const int blocks = int(s.blocks.size());
@@ -95,14 +96,16 @@ void Partition(const Residuals& in, NormalPattern& s) {
     each_block(k, [&](int b) { shared = shared || read_by[b] == 3; });
     run[k] = shared ? 2 : key[k] < cut ? 0 : 1;
   }
-  s.visit.clear();
-  s.visit.reserve(n);
-  for (int r = 0; r < 3; ++r) {
-    for (int k = 0; k < n; ++k) {
-      if (run[k] == r) s.visit.push_back(k);
-    }
-    if (r < 2) s.split[r] = int(s.visit.size());
-  }
+  // Within a run, chunk by chunk (kVisitChunk), each in the residuals' order.
+  const int chunks = blocks / kVisitChunk + 1;
+  std::vector<int> start(size_t(3 * chunks) + 1, 0);
+  const auto bucket = [&](int k) { return run[k] * chunks + key[k] / kVisitChunk; };
+  for (int k = 0; k < n; ++k) ++start[size_t(bucket(k)) + 1];
+  for (size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+  s.visit.assign(n, 0);
+  for (int k = 0; k < n; ++k) s.visit[size_t(start[size_t(bucket(k))]++)] = k;
+  s.split[0] = start[size_t(chunks) - 1];
+  s.split[1] = start[size_t(2 * chunks) - 1];
 }
 
 }  // namespace

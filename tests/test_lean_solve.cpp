@@ -54,23 +54,33 @@ struct Membrane {
   int n;
   std::vector<double> x;
   Residuals residuals;
-  explicit Membrane(int size) : n(size), x(size * size, 0.0) { AddTo(residuals); }
+  // by_term: all data terms first, then all differences (as a round adds
+  // its terms one after another); else cell by cell.
+  explicit Membrane(int size, bool by_term = false) : n(size), x(size * size, 0.0) {
+    AddTo(residuals, by_term);
+  }
   // The membrane's residual blocks over `x`, into `r` (in the same order).
-  void AddTo(Residuals& r) {
+  void AddTo(Residuals& r, bool by_term = false) {
     for (int i = 0; i < n; ++i) {
       for (int j = 0; j < n; ++j) {
         const double target = std::sin(0.7 * i) * std::cos(1.3 * j) + ((i * 7 + j * 3) % 5) * 0.1;
         Add(r, new ceres::AutoDiffCostFunction<Data, 1, 1>(new Data{0.5, target}), nullptr,
             {&x[i * n + j]});
-        if (i + 1 < n) {
-          Add(r, new ceres::AutoDiffCostFunction<Difference, 1, 1, 1>(new Difference{1.0}),
-              nullptr, {&x[i * n + j], &x[(i + 1) * n + j]});
-        }
-        if (j + 1 < n) {
-          Add(r, new ceres::AutoDiffCostFunction<Difference, 1, 1, 1>(new Difference{1.0}),
-              nullptr, {&x[i * n + j], &x[i * n + j + 1]});
-        }
+        if (!by_term) AddDifferences(r, i, j);
       }
+    }
+    for (int i = 0; i < n && by_term; ++i) {
+      for (int j = 0; j < n; ++j) AddDifferences(r, i, j);
+    }
+  }
+  void AddDifferences(Residuals& r, int i, int j) {
+    if (i + 1 < n) {
+      Add(r, new ceres::AutoDiffCostFunction<Difference, 1, 1, 1>(new Difference{1.0}), nullptr,
+          {&x[i * n + j], &x[(i + 1) * n + j]});
+    }
+    if (j + 1 < n) {
+      Add(r, new ceres::AutoDiffCostFunction<Difference, 1, 1, 1>(new Difference{1.0}), nullptr,
+          {&x[i * n + j], &x[i * n + j + 1]});
     }
   }
 };
@@ -400,6 +410,84 @@ TEST(LeanSolve, TheTwoThreadsRunsShareNoBlock) {
   EXPECT_NEAR(pattern.split[0], n / 2, n / 20);
   EXPECT_NEAR(pattern.split[1] - pattern.split[0], n / 2, n / 20);
   EXPECT_LT(n - pattern.split[1], n / 20);
+}
+
+// Within each run the residuals go chunk by chunk of kVisitChunk blocks (by
+// their first free block), in their own order (term by term) within a chunk.
+TEST(LeanSolve, EachRunVisitsTheMeshChunkByChunkTermByTerm) {
+  Membrane m(100, /*by_term=*/true);  // 10,000 blocks: 10 chunks
+  NormalPattern pattern;
+  ReadNormalPattern(m.residuals, &pattern);
+  const auto chunk = [&](int k) {
+    const Residuals::Residual& r = m.residuals.residuals()[size_t(k)];
+    int first = int(pattern.blocks.size());
+    for (int a = r.first; a < r.end; ++a) {
+      first = std::min(first, pattern.free[size_t(m.residuals.block_of()[size_t(a)])]);
+    }
+    return first / kVisitChunk;
+  };
+  const int ends[3] = {pattern.split[0], pattern.split[1], int(pattern.visit.size())};
+  int chunks_seen = 0;
+  for (int run = 0, p = 0; run < 3; ++run) {
+    for (int begin = p; p < ends[run]; ++p) {
+      if (p == begin) continue;
+      const int a = pattern.visit[size_t(p - 1)], b = pattern.visit[size_t(p)];
+      ASSERT_LE(chunk(a), chunk(b)) << "run " << run << " position " << p;
+      if (chunk(a) == chunk(b)) {
+        ASSERT_LT(a, b) << "run " << run << " position " << p;
+      } else {
+        ++chunks_seen;
+      }
+    }
+  }
+  EXPECT_GE(chunks_seen, 8);  // the two halves: ~5 chunks each
+}
+
+// Blocks and residuals larger than the unrolled products' sizes (a 6-vector,
+// a point on the 5-sphere, 5 rows per residual) take the general products:
+// LeanSolve reaches Ceres' optimum.
+struct Rows5 {
+  template <typename T>
+  bool operator()(const T* x, T* r) const {
+    for (int i = 0; i < 5; ++i) {
+      r[i] = T(-b[i]);
+      for (int j = 0; j < 6; ++j) r[i] += T(a[i][j]) * x[j];
+    }
+    return true;
+  }
+  double a[5][6], b[5];
+};
+TEST(LeanSolve, LargeBlocksReachCeresOptimum) {
+  struct Problem {
+    double c[6] = {0, 0, 0, 0, 0, 0};
+    double u[6] = {1, 0, 0, 0, 0, 0};
+    Residuals residuals;
+    Problem() {
+      for (int k = 0; k < 4; ++k) {
+        for (double* x : {c, u}) {
+          auto* f = new Rows5;
+          for (int i = 0; i < 5; ++i) {
+            for (int j = 0; j < 6; ++j) f->a[i][j] = std::sin(1.0 + 7 * k + 3 * i + 2.0 * j + (x == u));
+            f->b[i] = std::cos(2.0 * k + i);
+          }
+          Add(residuals, new ceres::AutoDiffCostFunction<Rows5, 5, 6>(f), nullptr, {x});
+        }
+      }
+      residuals.SetManifold(u, new ceres::SphereManifold<6>());
+    }
+  };
+  Problem ceres_side, lean_side;
+  ceres::Solver::Summary reference;
+  ceres::Solve(Tight(), ceres_side.residuals.MakeProblem().get(), &reference);
+  ASSERT_TRUE(reference.IsSolutionUsable());
+  const SolveSummary lean = LeanSolve(Tight(), lean_side.residuals);
+  ASSERT_TRUE(lean.usable) << lean.message;
+  EXPECT_LT(lean.final_cost, 0.8 * lean.initial_cost);  // 14.5 -> 10.5
+  EXPECT_NEAR(lean.final_cost, reference.final_cost, 1e-9 * reference.initial_cost);
+  for (int k = 0; k < 6; ++k) {
+    EXPECT_NEAR(lean_side.c[k], ceres_side.c[k], 1e-6) << k;
+    EXPECT_NEAR(lean_side.u[k], ceres_side.u[k], 1e-6) << k;
+  }
 }
 
 // The linearisation and the product sum two fixed halves: one thread gives
