@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -163,37 +164,49 @@ struct Side {
   Point start() const { return to->point(*vertices(*to).first); }
 };
 
-// Every vertex of `from`: its distance and closest triangle, queried on
-// every core in spatial order (each query starts from the last answer).
-void QueryVertices(Side& side) {
-  const Mesh& from = *side.from;
-  const long n = long(from.num_vertices());
-  std::vector<size_t> order;
-  std::vector<Point> points(static_cast<size_t>(n), CGAL::ORIGIN);
-  for (VertexIndex v : from.vertices()) {
-    order.push_back(v.idx());
-    points[v.idx()] = from.point(v);
-  }
+// Queries `points[i]` for every i in `order` against `side`'s tree, on every
+// core in spatial order (each query starts from the last answer), and calls
+// visit(i, squared distance, closest triangle). Returns the largest squared
+// distance.
+template <class Visit>
+double QuerySpatially(const Side& side, const std::vector<Point>& points,
+                      std::vector<size_t> order, const Visit& visit) {
   using Adapter = CGAL::Spatial_sort_traits_adapter_3<
-      Kernel, CGAL::Pointer_property_map<Point>::type>;
+      Kernel, CGAL::Pointer_property_map<Point>::const_type>;
   CGAL::spatial_sort(order.begin(), order.end(), Adapter(CGAL::make_property_map(points)));
-  side.distance.assign(static_cast<size_t>(n), 0.0);
-  side.nearest.assign(static_cast<size_t>(n), FaceIndex());
-  double lower = 0;
+  double worst = 0;
   const FullTeams teams;
-#pragma omp parallel reduction(max : lower)
+#pragma omp parallel reduction(max : worst)
   {
     Tree::Point_and_primitive_id hint(side.start(), *faces(*side.to).first);
 #pragma omp for schedule(static)
     for (long k = 0; k < long(order.size()); ++k) {
       const size_t i = order[size_t(k)];
       hint = side.tree->closest_point_and_primitive(points[i], hint);
-      side.distance[i] = CGAL::squared_distance(hint.first, points[i]);
-      side.nearest[i] = hint.second;
-      lower = std::max(lower, side.distance[i]);
+      const double d = CGAL::squared_distance(hint.first, points[i]);
+      visit(i, d, hint.second);
+      worst = std::max(worst, d);
     }
   }
-  side.lower = lower;
+  return worst;
+}
+
+// Every vertex of `from`: its distance and closest triangle.
+void QueryVertices(Side& side) {
+  const Mesh& from = *side.from;
+  const size_t n = from.num_vertices();
+  std::vector<size_t> order;
+  std::vector<Point> points(n, CGAL::ORIGIN);
+  for (VertexIndex v : from.vertices()) {
+    order.push_back(v.idx());
+    points[v.idx()] = from.point(v);
+  }
+  side.distance.assign(n, 0.0);
+  side.nearest.assign(n, FaceIndex());
+  side.lower = QuerySpatially(side, points, std::move(order), [&](size_t i, double d, FaceIndex f) {
+    side.distance[i] = d;
+    side.nearest[i] = f;
+  });
 }
 
 // The triangles of `from` that may hold a point farther than `lower`
@@ -258,22 +271,11 @@ Mesh MayBeFarther(const Side& side, double lower) {
   return kept;
 }
 
-// The largest distance from `samples` to the tree's surface.
-double Farthest(std::vector<Point> samples, const Side& side) {
-  CGAL::spatial_sort(samples.begin(), samples.end());
-  const long n = long(samples.size());
-  double worst = 0;
-  const FullTeams teams;
-#pragma omp parallel reduction(max : worst)
-  {
-    Point hint = side.start();
-#pragma omp for schedule(static)
-    for (long i = 0; i < n; ++i) {
-      hint = side.tree->closest_point(samples[size_t(i)], hint);
-      worst = std::max(worst, CGAL::squared_distance(hint, samples[size_t(i)]));
-    }
-  }
-  return worst;
+// The largest squared distance from `samples` to the tree's surface.
+double Farthest(const std::vector<Point>& samples, const Side& side) {
+  std::vector<size_t> order(samples.size());
+  std::iota(order.begin(), order.end(), size_t(0));
+  return QuerySpatially(side, samples, std::move(order), [](size_t, double, FaceIndex) {});
 }
 
 double Hausdorff(const Mesh& mesh, const Mesh& triangles) {
@@ -300,7 +302,7 @@ double Hausdorff(const Mesh& mesh, const Mesh& triangles) {
     PMP::sample_triangle_mesh(
         kept, std::back_inserter(samples),
         PMP::parameters::use_grid_sampling(true).grid_spacing(HausdorffGridSpacing(*side.from)));
-    worst = std::max(worst, Farthest(std::move(samples), side));
+    worst = std::max(worst, Farthest(samples, side));
   }
   return std::sqrt(worst);
 }
