@@ -103,10 +103,6 @@ void Note(ValidityCheck& c, double value, int element, bool worse_is_larger = tr
   ++c.count;
 }
 
-double EdgeLength(const Mesh& mesh, EdgeIndex e) {
-  return Norm(Sub(ToVec3(mesh.point(mesh.vertex(e, 0))), ToVec3(mesh.point(mesh.vertex(e, 1)))));
-}
-
 // One face's validity figures against its input shape (`before` empty: no
 // input); what is new in the output only.
 struct FaceFigures {

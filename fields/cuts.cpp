@@ -14,12 +14,6 @@
 namespace archgeo {
 namespace {
 
-double EdgeLength(const Mesh& mesh, HalfedgeIndex h) {
-  const Point& a = mesh.point(mesh.source(h));
-  const Point& b = mesh.point(mesh.target(h));
-  return std::sqrt(CGAL::squared_distance(a, b));
-}
-
 // Halfedges into v, clockwise (CGAL's order around the target).
 std::vector<HalfedgeIndex> Incoming(const Mesh& mesh, VertexIndex v) {
   std::vector<HalfedgeIndex> out;

@@ -38,11 +38,6 @@ Vec3 Centroid(const Mesh& mesh, FaceIndex f) {
   return Scale(1.0 / n, sum);
 }
 
-double EdgeLength(const Mesh& mesh, EdgeIndex e) {
-  const HalfedgeIndex h = mesh.halfedge(e);
-  return Norm(Sub(Position(mesh, mesh.target(h)), Position(mesh, mesh.source(h))));
-}
-
 double MeanEdgeLength(const Mesh& mesh) {
   double sum = 0.0;
   for (EdgeIndex e : mesh.edges()) sum += EdgeLength(mesh, e);

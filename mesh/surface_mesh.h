@@ -18,6 +18,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <array>
+#include <cmath>
 #include <string>
 
 namespace archgeo {
@@ -45,6 +46,12 @@ inline double* PositionBlock(Mesh& mesh, VertexIndex v) {
 inline const double* PositionBlock(const Mesh& mesh, VertexIndex v) { return &mesh.point(v).x(); }
 
 inline Vec3 ToVec3(const Point& p) { return {p.x(), p.y(), p.z()}; }
+
+// The length of halfedge `h`'s edge, and of edge `e`.
+inline double EdgeLength(const Mesh& mesh, HalfedgeIndex h) {
+  return std::sqrt(CGAL::squared_distance(mesh.point(mesh.source(h)), mesh.point(mesh.target(h))));
+}
+inline double EdgeLength(const Mesh& mesh, EdgeIndex e) { return EdgeLength(mesh, mesh.halfedge(e)); }
 inline Point ToPoint(const Vec3& v) { return Point(v[0], v[1], v[2]); }
 
 // Adds (or finds) a per-element block property named `name`, initialised to
