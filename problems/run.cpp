@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <cstdio>
 #include <functional>
+#include <future>
 #include <map>
 #include <optional>
 #include <set>
@@ -199,6 +200,15 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const M
   const LoopResult& solved = solution->loop;
   const WorkingNet& net = solution->net;
   const Mesh& input = solution->input;
+  // The result's validity against the net it came from (analysis/validity.h)
+  // needs no reference: it is checked on a second thread while the
+  // reference's trees are built and the input is measured (mostly serial).
+  std::future<Validity> validity_check;
+  if (solved.usable) {
+    validity_check = std::async(std::launch::async, [&] {
+      return CheckValidity(solution->output, &input, LimitsOf(s), true);
+    });
+  }
 
   const auto setup_start = Clock::now();
   const ReferenceSurface reference(reference_mesh ? *reference_mesh : input);
@@ -272,8 +282,7 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const M
   }
 
   const Mesh& output = solution->output;
-  // Validity of the result against the net it came from (analysis/validity.h).
-  const Validity validity = CheckValidity(output, &input, LimitsOf(s), true);
+  const Validity validity = validity_check.get();
   rep["validity"] = validity.ToJson();
   rep["validity"]["restored_round"] =
       solved.restored_valid ? nlohmann::json(solved.output_round) : nlohmann::json(nullptr);
