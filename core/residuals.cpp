@@ -122,7 +122,7 @@ void Residuals::Append(Residual r, const ceres::LossFunction* loss, int part,
                                      << " blocks added with " << count;
   CHECK(part >= 0 && part < 256) << "objective part " << part << ": at most 256";
   if (loss_of_[last_loss_] != loss) {
-    const auto [it, added] = loss_index_.emplace(loss, uint32_t(loss_of_.size()));
+    const auto [it, added] = loss_index_.try_emplace(loss, uint32_t(loss_of_.size()));
     if (added) {
       CHECK_LT(loss_of_.size(), size_t(1) << 24) << "more than 2^24 loss functions";
       loss_of_.push_back(loss);
@@ -136,7 +136,7 @@ void Residuals::Append(Residual r, const ceres::LossFunction* loss, int part,
     int* slot = RangeSlot(blocks[a], sizes[a]);
     int id = slot ? *slot : -1;
     if (!slot) {
-      const auto [it, added] = index_.emplace(blocks[a], int(blocks_.size()));
+      const auto [it, added] = index_.try_emplace(blocks[a], int(blocks_.size()));
       id = added ? -1 : it->second;
     }
     if (id < 0) {

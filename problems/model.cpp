@@ -87,8 +87,7 @@ class MeshModel::View : public TermContext {
 
   void Prepare(Residuals* residuals, const std::string& loss, double loss_scale) {
     residuals_ = residuals;
-    part_ = -1;
-    part_key_ = nullptr;
+    parts_.clear();
     loss_ = loss;
     loss_scale_ = loss_scale;
     shared_losses_.clear();
@@ -212,7 +211,7 @@ class MeshModel::View : public TermContext {
   const ceres::LossFunction* Loss(double weight) {
     const double w = weight >= 0 ? weight : this->weight;
     if (last_loss_ && w == last_weight_) return last_loss_;  // terms add runs of one weight
-    const auto [it, added] = shared_losses_.emplace(w, nullptr);
+    const auto [it, added] = shared_losses_.try_emplace(w, nullptr);  // no node if there
     if (added) {
       it->second = residuals_->Own(
           new ceres::ScaledLoss(Robust(loss_, loss_scale_), w, ceres::TAKE_OWNERSHIP));
@@ -224,18 +223,17 @@ class MeshModel::View : public TermContext {
   // names the same part.
   int Part(const char* part) {
     const char* key = part ? part : name_.c_str();
-    if (key == part_key_ && part_ >= 0) return part_;
-    if (part_ < 0 || residuals_->parts()[size_t(part_)] != key) part_ = residuals_->Part(key);
-    part_key_ = key;
-    return part_;
+    for (const auto& [address, index] : parts_) {
+      if (address == key) return index;  // terms may alternate parts element by element
+    }
+    return parts_.emplace_back(key, residuals_->Part(key)).second;
   }
 
   MeshModel& model_;
   std::string name_;
   std::map<std::string, std::vector<Curve>> curves_;  // per option, read once per solve
   Residuals* residuals_ = nullptr;
-  int part_ = -1;  // the part of the last Add (-1: none yet)
-  const char* part_key_ = nullptr;  // and the key it was asked by
+  std::vector<std::pair<const char*, int>> parts_;  // this round's parts by key address
   std::string block_name_;  // the last Block's name and position in the store
   size_t block_ = 0;
   std::string loss_ = "none";
@@ -459,11 +457,12 @@ void MeshModel::Build(const std::vector<ActiveTerm>& terms, int round, Residuals
       ++last;
     }
     const ElementSet& elements = *views_.at(head.name)->elements;
+    std::vector<std::pair<View*, const TermSpec*>> group;
+    for (size_t t = first; t < last; ++t) {
+      group.emplace_back(views_.at(terms[t].spec->name).get(), terms[t].spec);
+    }
     for (size_t i = 0; i < elements.size(); ++i) {
-      for (size_t t = first; t < last; ++t) {
-        View& view = *views_.at(terms[t].spec->name);
-        terms[t].spec->add(view, i);
-      }
+      for (const auto& [view, spec] : group) spec->add(*view, i);
     }
     first = last;
   }

@@ -213,11 +213,14 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const M
   const auto setup_start = Clock::now();
   const ReferenceSurface reference(reference_mesh ? *reference_mesh : input);
   // Without a separate reference the input is its own reference surface:
-  // its Hausdorff distance to it is 0 and need not be sampled.
-  MetricsOptions before_options;
-  before_options.hausdorff = reference_mesh != nullptr;
-  Metrics before = ComputeMetrics(input, &reference, &input, before_options);
-  if (!reference_mesh) before.hausdorff = 0;
+  // every vertex lies on it, so its distances to it are 0 and need not be
+  // measured.
+  Metrics before = ComputeMetrics(input, reference_mesh ? &reference : nullptr, &input);
+  if (!reference_mesh) {
+    before.prox_max = before.surface_distance_max = before.surface_distance_mean = 0;
+    before.boundary_prox_max = reference.HasBoundary() ? 0 : -1;
+    before.hausdorff = 0;
+  }
   const double scale = before.bbox_diagonal;
   const AnalysisRows extra_before = Analyse(input, d.analyses, HNetOptionsOf(s));
   const double setup_seconds = Since(setup_start);
