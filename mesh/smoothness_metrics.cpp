@@ -296,15 +296,14 @@ VertexStar ClassifyVertexStar(const Mesh& mesh, const std::vector<Vec3>& face_no
   return star;
 }
 
-namespace {
-
-// The counts and the edges' sums of SmoothnessMetrics, from the face normals.
-SmoothnessMetrics EdgeTotals(const Mesh& mesh, const std::vector<Vec3>& normals) {
+SmoothnessMetrics ComputeSmoothnessMetrics(const Mesh& mesh) {
   SmoothnessMetrics m;
   m.vertices = int(mesh.number_of_vertices());
   m.faces = int(mesh.number_of_faces());
   m.edges = int(mesh.number_of_edges());
+  const std::vector<Vec3> normals = FaceNormals(mesh);
   for (FaceIndex f : mesh.faces()) m.degenerate_faces += IsZero(normals[f.idx()]) ? 1 : 0;
+
   const EdgeSmoothness edges = MeasureEdgeSmoothness(mesh, normals);
   for (EdgeIndex e : mesh.edges()) {
     const size_t i = e.idx();
@@ -314,18 +313,6 @@ SmoothnessMetrics EdgeTotals(const Mesh& mesh, const std::vector<Vec3>& normals)
     m.E_prime += edges.energy[i];                   // [§3]
     m.max_edge_energy = std::max(m.max_edge_energy, edges.energy[i]);
   }
-  return m;
-}
-
-}  // namespace
-
-SmoothnessMetrics ComputeEdgeSmoothnessMetrics(const Mesh& mesh) {
-  return EdgeTotals(mesh, FaceNormals(mesh));
-}
-
-SmoothnessMetrics ComputeSmoothnessMetrics(const Mesh& mesh) {
-  const std::vector<Vec3> normals = FaceNormals(mesh);
-  SmoothnessMetrics m = EdgeTotals(mesh, normals);
   // Each vertex's figures in parallel (they read only the mesh and the
   // normals), then summed in vertex order: the same sums as a serial pass.
   const long n = long(mesh.num_vertices());  // index slots, removed ones too

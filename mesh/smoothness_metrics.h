@@ -149,11 +149,6 @@ struct SmoothnessMetrics {
 // edges but have no star analysis).
 SmoothnessMetrics ComputeSmoothnessMetrics(const Mesh& mesh);
 
-// Only the edges' part of the above (vertices, faces, edges, interior and
-// degenerate counts, E, E′, max_edge_energy; the vertex figures stay 0): the
-// same sums, without the stars' analysis (a round's E, say).
-SmoothnessMetrics ComputeEdgeSmoothnessMetrics(const Mesh& mesh);
-
 // JSON object with every field; the lengths E, E_prime, C, max_edge_energy
 // also as "<name>_relative" = value / scale (normally the bounding-box
 // diagonal, like MetricsToJson). Precondition (CHECKed): scale > 0.

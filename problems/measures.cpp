@@ -30,12 +30,6 @@ std::map<std::string, double> Smoothness(HookContext& c) {
           {"bad_saddles", m.bad_saddles}};
 }
 
-// E and E′ alone (a round's log): the edges' sums, not the stars.
-std::map<std::string, double> EdgeEnergies(HookContext& c) {
-  const SmoothnessMetrics m = ComputeEdgeSmoothnessMetrics(c.store->mesh());
-  return {{"E", m.E}, {"E_prime", m.E_prime}};
-}
-
 std::map<std::string, double> Curvature(HookContext& c) {
   return {{"C", DiscreteTotalAbsoluteCurvature(c.store->mesh())}};
 }
@@ -102,8 +96,8 @@ std::map<std::string, double> ForceBalance(HookContext& c) {
 const std::map<std::string, MeasureGroup>& Groups() {
   static const std::map<std::string, MeasureGroup> groups = {
       {"pq_normalized_max", &Planarity},
-      {"E", &EdgeEnergies},
-      {"E_prime", &EdgeEnergies},
+      {"E", &Smoothness},
+      {"E_prime", &Smoothness},
       {"self_intersecting_pyramids", &Smoothness},
       {"bad_saddles", &Smoothness},
       {"C", &Curvature},
