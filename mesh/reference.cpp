@@ -198,7 +198,7 @@ ReferenceSurface::SurfacePoint ReferenceSurface::Closest(const Vec3& query) cons
     const int nearest = int(std::max_element(w.begin(), w.end()) - w.begin());
     normal = impl_->vertex_normals[v[nearest].idx()];
   }
-  return {ToVec3(point), {normal.x(), normal.y(), normal.z()}};
+  return {ToVec3(point), {normal.x(), normal.y(), normal.z()}, int(face.idx())};
 }
 
 std::optional<ReferenceSurface::CurvePoint> ReferenceSurface::ClosestOnBoundary(

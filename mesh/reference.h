@@ -24,6 +24,7 @@ class ReferenceSurface {
   struct SurfacePoint {
     Vec3 point;   // closest point on the triangulated reference
     Vec3 normal;  // unit normal of the tangent plane there
+    int face = -1;  // its triangle: a face index of Triangles()
   };
   SurfacePoint Closest(const Vec3& query) const;
 
