@@ -179,7 +179,13 @@ Vec3 FaceNormal(const Mesh& mesh, FaceIndex f) {
 
 std::vector<Vec3> FaceNormals(const Mesh& mesh) {
   std::vector<Vec3> normals(mesh.num_faces(), Vec3{0, 0, 0});
-  for (FaceIndex f : mesh.faces()) normals[f.idx()] = FaceNormal(mesh, f);
+  const long n = long(mesh.num_faces());  // index slots, removed ones too
+  const FullTeams teams;
+#pragma omp parallel for schedule(static, 4096)
+  for (long i = 0; i < n; ++i) {
+    const FaceIndex f(static_cast<FaceIndex::size_type>(i));
+    if (!mesh.is_removed(f)) normals[size_t(i)] = FaceNormal(mesh, f);
+  }
   return normals;
 }
 
@@ -203,8 +209,12 @@ EdgeSmoothness MeasureEdgeSmoothness(const Mesh& mesh, const std::vector<Vec3>& 
   result.dual_length.assign(n, 0.0);
   result.angle.assign(n, 0.0);
   result.energy.assign(n, 0.0);
-  result.measured.assign(n, false);
-  for (EdgeIndex e : mesh.edges()) {
+  result.measured.assign(n, 0);
+  const FullTeams teams;
+#pragma omp parallel for schedule(static, 4096)
+  for (long i = 0; i < long(n); ++i) {
+    const EdgeIndex e(static_cast<EdgeIndex::size_type>(i));
+    if (mesh.is_removed(e)) continue;
     const HalfedgeIndex h = mesh.halfedge(e);
     const double length =
         Norm(Sub(Position(mesh, mesh.target(h)), Position(mesh, mesh.source(h))));
@@ -214,7 +224,7 @@ EdgeSmoothness MeasureEdgeSmoothness(const Mesh& mesh, const std::vector<Vec3>& 
     const Vec3& ng = face_normals[mesh.face(mesh.opposite(h)).idx()];
     if (IsZero(nf) || IsZero(ng)) continue;
     const double angle = std::atan2(Norm(Cross(nf, ng)), Dot(nf, ng));  // |α_e| [§3]
-    result.measured[e.idx()] = true;
+    result.measured[e.idx()] = 1;
     result.dual_length[e.idx()] = Norm(Sub(nf, ng));  // ℓ*_e [§3]
     result.angle[e.idx()] = angle;
     result.energy[e.idx()] = length * angle;

@@ -55,7 +55,7 @@ Vec3 VertexNormal(const Mesh& mesh, const std::vector<Vec3>& face_normals, Verte
 // dual_length = angle = energy = 0 (length is still set).
 struct EdgeSmoothness {
   std::vector<double> length, dual_length, angle, energy;
-  std::vector<bool> measured;
+  std::vector<char> measured;  // per edge: 1 or 0 (char, not bool: written in parallel)
 };
 // face_normals: FaceNormals(mesh).
 EdgeSmoothness MeasureEdgeSmoothness(const Mesh& mesh, const std::vector<Vec3>& face_normals);
