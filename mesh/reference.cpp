@@ -10,19 +10,18 @@
 #include <string>
 #include <vector>
 
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
+#include "mesh/triangle_tree.h"
+
 namespace archgeo {
 namespace {
 
 using Segment = Kernel::Segment_3;
-using TrianglePrimitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
-using TriangleTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, TrianglePrimitive>>;
 using SegmentIterator = std::vector<Segment>::const_iterator;
 using SegmentPrimitive = CGAL::AABB_segment_primitive<Kernel, SegmentIterator>;
 using SegmentTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, SegmentPrimitive>>;
@@ -163,9 +162,7 @@ ReferenceSurface::ReferenceSurface(const Mesh& reference) : impl_(std::make_uniq
   } catch (const std::invalid_argument& error) {
     throw std::invalid_argument(std::string("reference surface: ") + error.what());
   }
-  impl_->triangle_tree.insert(faces(tri).first, faces(tri).second, tri);
-  impl_->triangle_tree.build();
-  impl_->triangle_tree.accelerate_distance_queries();
+  BuildTriangleTree(tri, &impl_->triangle_tree);
 
   for (HalfedgeIndex h : tri.halfedges()) {
     if (!tri.is_border(h)) continue;
