@@ -69,6 +69,16 @@ class ZeroedCost : public ceres::CostFunction {
 
 }  // namespace
 
+void HookContext::RecordChecks(bool wait) {
+  size_t done = 0;
+  for (; done < checks.size(); ++done) {
+    std::future<std::function<void(HookContext&)>>& check = checks[done];
+    if (!wait && check.wait_for(std::chrono::seconds(0)) != std::future_status::ready) break;
+    check.get()(*this);
+  }
+  checks.erase(checks.begin(), checks.begin() + long(done));
+}
+
 void HookContext::SetElements(const std::string& name, ElementSet set) {
   CHECK(model) << "SetElements before the model exists";
   model->SetElements(name, std::move(set));
@@ -319,6 +329,7 @@ void MeshModel::ComputeVertexNormals() {
 }
 
 void MeshModel::BeginRound(bool project) {
+  hooks_.RecordChecks(false);
   const Mesh& mesh = store_.mesh();
   const size_t n = mesh.number_of_vertices();
   previous_.resize(3 * n);

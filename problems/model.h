@@ -8,6 +8,8 @@
 #pragma once
 
 #include <any>
+#include <functional>
+#include <future>
 #include <map>
 #include <memory>
 #include <set>
@@ -65,6 +67,14 @@ class HookContext {
   // For `write`: the output in file units and the staged file per output key.
   const Mesh* output = nullptr;
   std::map<std::string, std::string> temporaries;
+
+  // Input checks a hook left running on another thread (they only read the
+  // input): each gives what it records (details, headline, a progress line).
+  std::vector<std::future<std::function<void(HookContext&)>>> checks;
+  // Records the finished checks in order, up to the first unfinished one
+  // (every one, waiting for it, if `wait`). The model records at the start of
+  // each round, Solve after the last.
+  void RecordChecks(bool wait);
 
   // A problem-provided element set (replaces one of the same name).
   void SetElements(const std::string& name, ElementSet set);

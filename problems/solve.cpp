@@ -257,6 +257,7 @@ std::unique_ptr<Solution> Solve(const ProblemSpec& spec, const Mesh& mesh, const
   solved.rounds = rounds;
   solved.iterations = iterations;
   solved.seconds = seconds;
+  hooks.RecordChecks(true);
   if (solved.usable && d.finish) d.finish(hooks);
   sol->details = hooks.details;
   sol->headline = hooks.headline;

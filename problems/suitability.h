@@ -1,8 +1,9 @@
 // archgeo — input suitability warnings: before solving, whether the net can
 // become what the problem makes, from how its edges lie against the jet-fitted
 // curvature directions of the surface (fields/net_curvature.h). A net far from
-// them gets a WARNING line with the figures (on the terminal at once and in
-// the summary) and every figure goes to the report's details.suitability; the
+// them gets a WARNING line with the figures (on the terminal at once, or for
+// planar_quads, measured on a second thread, at the start of the first round
+// after the measure ends; and in the summary) and every figure goes to the report's details.suitability; the
 // run goes on (the validity checks and tolerances decide its exit code).
 //
 //   hnet                 A-nets discretise asymptotic nets [Shi 2014, §2.2]:
