@@ -10,9 +10,11 @@
 //     own soup readers are not used: soup_readers.h says why.)
 //  3. CheckSoup: non-finite points, faces with fewer than 3 vertices,
 //     out-of-range or repeated indices, degenerate faces.
-//  4. PMP::orient_polygon_soup, refused if it had to duplicate a vertex, and
-//     PMP::polygon_soup_to_polygon_mesh, which inserts every point (isolated
-//     ones included) in file order, so vertex i is the file's i-th vertex.
+//  4. PMP::orient_polygon_soup, refused if it had to duplicate a vertex or
+//     left an edge with one direction in both its faces
+//     (mesh/soup_halfedges.h), and PMP::polygon_soup_to_polygon_mesh, which
+//     inserts every point (isolated ones included) in file order, so vertex
+//     i is the file's i-th vertex.
 // PMP::IO::read_polygon_mesh is not used: its soup repair merges duplicate
 // points and drops isolated ones, renumbering the vertices.
 // Messages number vertices and faces from 0, in file order.
@@ -38,6 +40,7 @@
 #include <type_traits>
 
 #include "mesh/input_file.h"
+#include "mesh/soup_halfedges.h"
 #include "mesh/soup_readers.h"
 #include "mesh/text_scan.h"
 
@@ -211,7 +214,7 @@ int Orient(const std::string& path, Soup* soup, const LineMap& lines) {
                   ": its faces do not form one consistently oriented fan"
                   " (two fans touch there, or the surface is not orientable)");
   }
-  if (!no_duplicates || !PMP::is_polygon_soup_a_polygon_mesh(soup->polygons)) {
+  if (!no_duplicates || !EachOrderedEdgeOnce(soup->polygons, soup->points.size())) {
     FailInput(path, 0,
               "non-manifold or non-orientable mesh: the faces cannot be oriented consistently");
   }
