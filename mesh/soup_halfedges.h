@@ -1,5 +1,6 @@
-// archgeo — the one check CGAL's polygon_soup_to_polygon_mesh still needs
-// after ReadMesh has oriented a soup (mesh/io.cpp).
+// archgeo — the one check a soup still needs, after ReadMesh has oriented it
+// (mesh/io.cpp), before its faces are added to a Surface_mesh (which needs a
+// polygon mesh: CGAL's is_polygon_soup_a_polygon_mesh).
 //
 // PMP::is_polygon_soup_a_polygon_mesh checks three things: no face repeats a
 // vertex, no ordered edge (a → b) occurs in two faces, and every edge and
