@@ -10,8 +10,8 @@
 // directions (a non-orientable surface that orient_polygon_soup cut without
 // duplicating a vertex) is left as the same ordered edge in both faces, and
 // without such edges the soup's edge map and vertex links are the ones
-// orient_polygon_soup has already found manifold. tests/test_io.cpp checks
-// the two verdicts agree on oriented and non-orientable soups.
+// orient_polygon_soup has already found manifold. tests/test_soup_halfedges.cpp
+// checks the two verdicts agree on oriented and non-orientable soups.
 //
 // CGAL's check keeps the ordered edges in a std::set (a quarter of a second
 // for 100k quads); this one sorts each vertex's outgoing edges in place.
