@@ -1,6 +1,9 @@
 #include "core/normal_equations.h"
 
 #include <algorithm>
+#include <utility>
+
+#include <omp.h>
 
 #include <ceres/manifold.h>
 
@@ -145,56 +148,108 @@ bool ReadNormalPattern(const Residuals& in, NormalPattern* pattern) {
     s.slots += s.blocks[b].tangent * s.blocks[b].tangent;
   }
   s.diagonal_slots = s.slots;
-  // Free pairs per residual (the order Linearise walks them), and which
-  // residuals read each block.
-  std::vector<int> incident_start(n + 1, 0);
-  int pair_count = 0;
-  s.pairs.resize(residuals.size());
-  for (size_t k = 0; k < residuals.size(); ++k) {
-    const Residuals::Residual& r = residuals[k];
-    s.pairs[k] = pair_count;
-    for (int a = r.first; a < r.end; ++a) {
-      if (block(a) >= 0) ++incident_start[block(a) + 1];
-      for (int b = a + 1; b < r.end; ++b) {
-        pair_count += block(a) >= 0 && block(b) >= 0 && block(a) != block(b);
-      }
-    }
-  }
-  for (int b = 0; b < n; ++b) incident_start[b + 1] += incident_start[b];
-  std::vector<int> incident(incident_start[n]);
-  std::vector<int> fill(incident_start.begin(), incident_start.end() - 1);
-  for (size_t k = 0; k < residuals.size(); ++k) {
-    for (int a = residuals[k].first; a < residuals[k].end; ++a) {
-      if (block(a) >= 0) incident[fill[block(a)]++] = int(k);
-    }
-  }
-  s.pair_slot.assign(pair_count, -1);
-  s.row_start.assign(1, 0);
-  std::vector<int> mark(n, -1), position(n, 0);
-  for (int i = 0; i < n; ++i) {
-    for (int k = incident_start[i]; k < incident_start[i + 1]; ++k) {
-      const Residuals::Residual& r = residuals[size_t(incident[k])];
-      int pair = s.pairs[size_t(incident[k])];
+  // Free pairs per residual (the order Linearise walks them), numbered, and
+  // each under its lower block: (upper block, pair number) in the order
+  // Linearise walks them, so a row's columns come in order of first use.
+  // Two halves of the residuals, one per thread where there are two: the
+  // second's pairs go after the first's, under each block.
+  const int threads = std::min(2, omp_get_max_threads());
+  const size_t middle = residuals.size() / 2;
+  // start(k) for each residual k in [from, to), then f(p, q) for each of its
+  // free pairs.
+  const auto each_pair = [&](size_t from, size_t to, auto&& start, auto&& f) {
+    for (size_t k = from; k < to; ++k) {
+      start(k);
+      const Residuals::Residual& r = residuals[k];
       for (int a = r.first; a < r.end; ++a) {
+        const int p = block(a);
+        if (p < 0) continue;
         for (int b = a + 1; b < r.end; ++b) {
-          const int p = block(a), q = block(b);
-          if (p < 0 || q < 0 || p == q) continue;
-          const int at = pair++;
-          if (std::min(p, q) != i) continue;
-          const int j = std::max(p, q);
-          if (mark[j] != i) {
-            mark[j] = i;
-            position[j] = s.slots;
-            s.column.push_back(j);
-            s.slot.push_back(s.slots);
-            s.slots += s.blocks[i].tangent * s.blocks[j].tangent;
-          }
-          s.pair_slot[at] = position[j];
+          const int q = block(b);
+          if (q >= 0 && p != q) f(p, q);
         }
       }
     }
-    s.row_start.push_back(int(s.column.size()));
+  };
+  s.pairs.resize(residuals.size());
+  std::vector<int> count[2] = {std::vector<int>(n + 1, 0), std::vector<int>(n + 1, 0)};
+  int half_pairs[2] = {0, 0};
+#pragma omp parallel for num_threads(threads) schedule(static, 1)
+  for (int t = 0; t < 2; ++t) {
+    int pairs = 0;
+    std::vector<int>& c = count[t];
+    each_pair(t == 0 ? 0 : middle, t == 0 ? middle : residuals.size(), [](size_t) {},
+              [&](int p, int q) {
+                ++c[std::min(p, q)];
+                ++pairs;
+              });
+    half_pairs[t] = pairs;
   }
+  const int pair_count = half_pairs[0] + half_pairs[1];
+  std::vector<int> lower_start(n + 1, 0);
+  for (int b = 0; b < n; ++b) {
+    const int first = count[0][b], second = count[1][b];
+    count[0][b] = lower_start[b];          // where the first half's pairs under b go
+    count[1][b] = lower_start[b] + first;  // and the second's
+    lower_start[b + 1] = lower_start[b] + first + second;
+  }
+  std::vector<std::pair<int, int>> upper(static_cast<size_t>(pair_count));  // (upper, pair)
+#pragma omp parallel for num_threads(threads) schedule(static, 1)
+  for (int t = 0; t < 2; ++t) {
+    std::vector<int>& fill = count[t];
+    int at = t == 0 ? 0 : half_pairs[0];
+    each_pair(t == 0 ? 0 : middle, t == 0 ? middle : residuals.size(),
+              [&](size_t k) { s.pairs[k] = at; },
+              [&](int p, int q) {
+                upper[size_t(fill[std::min(p, q)]++)] = {std::max(p, q), at++};
+              });
+  }
+  // Slots, row by row: a row's distinct upper blocks, in order of first use.
+  // The rows in two halves (by pairs), one per thread where there are two;
+  // the second half's slots and columns are numbered from 0, then moved past
+  // the first's.
+  s.pair_slot.assign(size_t(pair_count), -1);
+  const int half = int(std::upper_bound(lower_start.begin(), lower_start.end(), pair_count / 2) -
+                       lower_start.begin()) - 1;
+  struct Rows {
+    int from, to, slots;
+    std::vector<int> row_start, column, slot;
+  } rows[2] = {{0, std::max(half, 0), s.slots, {}, {}, {}},
+               {std::max(half, 0), n, 0, {}, {}, {}}};
+  const auto lay_out = [&](Rows& part) {
+    std::vector<int> mark(n, -1), position(n, 0);
+    for (int i = part.from; i < part.to; ++i) {
+      for (int e = lower_start[i]; e < lower_start[i + 1]; ++e) {
+        const auto [j, at] = upper[size_t(e)];
+        if (mark[j] != i) {
+          mark[j] = i;
+          position[j] = part.slots;
+          part.column.push_back(j);
+          part.slot.push_back(part.slots);
+          part.slots += s.blocks[i].tangent * s.blocks[j].tangent;
+        }
+        s.pair_slot[size_t(at)] = position[j];
+      }
+      part.row_start.push_back(int(part.column.size()));
+    }
+  };
+#pragma omp parallel for num_threads(threads) schedule(static, 1)
+  for (int t = 0; t < 2; ++t) lay_out(rows[t]);
+  const int moved = rows[0].slots;
+  for (int i = rows[1].from; i < rows[1].to; ++i) {
+    for (int e = lower_start[i]; e < lower_start[i + 1]; ++e) {
+      s.pair_slot[size_t(upper[size_t(e)].second)] += moved;
+    }
+  }
+  s.slots = rows[0].slots + rows[1].slots;
+  s.row_start.assign(1, 0);
+  s.row_start.insert(s.row_start.end(), rows[0].row_start.begin(), rows[0].row_start.end());
+  const int columns = int(rows[0].column.size());
+  for (int r : rows[1].row_start) s.row_start.push_back(columns + r);
+  s.column = std::move(rows[0].column);
+  s.column.insert(s.column.end(), rows[1].column.begin(), rows[1].column.end());
+  s.slot = std::move(rows[0].slot);
+  for (int slot : rows[1].slot) s.slot.push_back(slot + moved);
   s.column.shrink_to_fit();
   s.slot.shrink_to_fit();
   Partition(in, s);
