@@ -27,6 +27,7 @@
 #include <thread>
 #include <vector>
 
+#include "mesh/input_error.h"
 #include "problems/run.h"
 #include "core/solver_options.h"
 #include "problems/spec.h"
@@ -96,15 +97,23 @@ inline fs::path Scratch() {
 // One solve in this process: the spec with `overrides`, no output files.
 // Returns the run report plus "wall_seconds" (around RunSpec) and "exit_code".
 // `progress` is called once per Ceres iteration, on the solving thread.
+// Bad input (a --set naming an unknown key, say) ends the program as
+// `archgeo solve` would: the message, exit code 2 (SolveCommand too).
 inline Json Solve(const std::string& spec_path, const std::vector<std::string>& overrides,
                   const archgeo::ProgressSink& progress = {}) {
   std::vector<std::string> all = overrides;
   all.insert(all.end(), ExtraSets().begin(), ExtraSets().end());
   all.push_back("output.mesh=");  // no output files
   all.push_back("output.report=");
-  const archgeo::ProblemSpec spec = archgeo::ReadSpec(spec_path, all);
   const auto start = Clock::now();
-  const archgeo::RunResult run = archgeo::RunSpec(spec, progress);
+  archgeo::RunResult run;
+  try {
+    run = archgeo::RunSpec(archgeo::ReadSpec(spec_path, all), progress);
+  } catch (const archgeo::InputError& e) {
+    std::cout << std::flush;
+    std::cerr << "error: " << e.what() << "\n";
+    std::exit(2);
+  }
   Json report = run.report;
   report["wall_seconds"] = Seconds(start);
   report["exit_code"] = run.exit_code;
@@ -160,7 +169,8 @@ inline ProcessResult RunProcess(const std::vector<std::string>& argv, double tim
 // `archgeo solve SPEC --quiet --set ...` as a subprocess, writing the report
 // (and the mesh if `write_mesh`) to the scratch folder; the report is read back
 // into `report` (null if the run failed) and the files are removed (the
-// subprocess's output log is kept if it failed).
+// subprocess's output log is kept if it failed). Bad input (exit code 2)
+// ends the program with archgeo's message and the same exit code.
 inline ProcessResult SolveCommand(const std::string& spec, std::vector<std::string> sets,
                                   Json* report, bool write_mesh = false, double timeout = 0) {
   const fs::path out = Scratch() / ("run_" + std::to_string(getpid()));
@@ -172,6 +182,12 @@ inline ProcessResult SolveCommand(const std::string& spec, std::vector<std::stri
                             : "output={report: " + rep + "}");
   for (const std::string& s : sets) argv.insert(argv.end(), {"--set", s});
   const ProcessResult r = RunProcess(argv, timeout, out.string() + ".log");
+  if (r.exit_code == 2) {  // bad input: archgeo's message, and the same exit code
+    std::cout << std::flush;
+    std::cerr << std::ifstream(out.string() + ".log").rdbuf();
+    fs::remove(out.string() + ".log");
+    std::exit(2);
+  }
   *report = nullptr;
   if (r.exit_code == 0 && fs::exists(rep)) *report = Json::parse(std::ifstream(rep));
   for (const std::string& f : {rep, mesh}) fs::remove(f);
