@@ -1,5 +1,6 @@
 #include "core/lean_solve.h"
 
+#include "core/halves.h"
 #include "core/normal_equations.h"
 #include "core/solver_options.h"
 
@@ -127,16 +128,6 @@ inline void AddTransposeProduct(const double* A, const double* B, int rows, int 
 inline void TangentProduct(const double* J, const double* P, int rows, int a, int t, double* T) {
   if (Fits(rows, a, t)) return kTangentProducts[size_t(KernelIndex(rows, a, t))](J, P, T);
   TangentProductAny(J, P, rows, a, t, T);
-}
-
-// Runs body(t, first, end) for the two fixed halves of [0, n), t = 0 on
-// [0, split) and t = 1 on [split, n): on two threads where there are, and
-// the same sums on one (omp_set_num_threads(1) runs both halves there).
-template <class Body>
-void ForHalves(size_t split, size_t n, const Body& body) {
-  const int threads = std::min(2, omp_get_max_threads());
-#pragma omp parallel for num_threads(threads) schedule(static, 1)
-  for (int t = 0; t < 2; ++t) body(t, t == 0 ? 0 : split, t == 0 ? split : n);
 }
 
 // The sums {a, b} of body(first, end) over the two fixed halves of [0, n),

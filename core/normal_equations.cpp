@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <utility>
 
-#include <omp.h>
-
 #include <ceres/manifold.h>
+
+#include "core/halves.h"
 
 namespace archgeo {
 
@@ -153,7 +153,6 @@ bool ReadNormalPattern(const Residuals& in, NormalPattern* pattern) {
   // Linearise walks them, so a row's columns come in order of first use.
   // Two halves of the residuals, one per thread where there are two: the
   // second's pairs go after the first's, under each block.
-  const int threads = std::min(2, omp_get_max_threads());
   const size_t middle = residuals.size() / 2;
   // start(k) for each residual k in [from, to), then f(p, q) for each of its
   // free pairs.
@@ -174,17 +173,15 @@ bool ReadNormalPattern(const Residuals& in, NormalPattern* pattern) {
   s.pairs.resize(residuals.size());
   std::vector<int> count[2] = {std::vector<int>(n + 1, 0), std::vector<int>(n + 1, 0)};
   int half_pairs[2] = {0, 0};
-#pragma omp parallel for num_threads(threads) schedule(static, 1)
-  for (int t = 0; t < 2; ++t) {
+  ForHalves(middle, residuals.size(), [&](int t, size_t from, size_t to) {
     int pairs = 0;
     std::vector<int>& c = count[t];
-    each_pair(t == 0 ? 0 : middle, t == 0 ? middle : residuals.size(), [](size_t) {},
-              [&](int p, int q) {
-                ++c[std::min(p, q)];
-                ++pairs;
-              });
+    each_pair(from, to, [](size_t) {}, [&](int p, int q) {
+      ++c[std::min(p, q)];
+      ++pairs;
+    });
     half_pairs[t] = pairs;
-  }
+  });
   const int pair_count = half_pairs[0] + half_pairs[1];
   std::vector<int> lower_start(n + 1, 0);
   for (int b = 0; b < n; ++b) {
@@ -194,16 +191,13 @@ bool ReadNormalPattern(const Residuals& in, NormalPattern* pattern) {
     lower_start[b + 1] = lower_start[b] + first + second;
   }
   std::vector<std::pair<int, int>> upper(static_cast<size_t>(pair_count));  // (upper, pair)
-#pragma omp parallel for num_threads(threads) schedule(static, 1)
-  for (int t = 0; t < 2; ++t) {
+  ForHalves(middle, residuals.size(), [&](int t, size_t from, size_t to) {
     std::vector<int>& fill = count[t];
     int at = t == 0 ? 0 : half_pairs[0];
-    each_pair(t == 0 ? 0 : middle, t == 0 ? middle : residuals.size(),
-              [&](size_t k) { s.pairs[k] = at; },
-              [&](int p, int q) {
-                upper[size_t(fill[std::min(p, q)]++)] = {std::max(p, q), at++};
-              });
-  }
+    each_pair(from, to, [&](size_t k) { s.pairs[k] = at; }, [&](int p, int q) {
+      upper[size_t(fill[std::min(p, q)]++)] = {std::max(p, q), at++};
+    });
+  });
   // Slots, row by row: a row's distinct upper blocks, in order of first use.
   // The rows in two halves (by pairs), one per thread where there are two;
   // the second half's slots and columns are numbered from 0, then moved past
@@ -233,8 +227,7 @@ bool ReadNormalPattern(const Residuals& in, NormalPattern* pattern) {
       part.row_start.push_back(int(part.column.size()));
     }
   };
-#pragma omp parallel for num_threads(threads) schedule(static, 1)
-  for (int t = 0; t < 2; ++t) lay_out(rows[t]);
+  ForHalves(0, 0, [&](int t, size_t, size_t) { lay_out(rows[t]); });
   const int moved = rows[0].slots;
   for (int i = rows[1].from; i < rows[1].to; ++i) {
     for (int e = lower_start[i]; e < lower_start[i + 1]; ++e) {
