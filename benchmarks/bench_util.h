@@ -63,17 +63,41 @@ inline std::vector<std::string>& ExtraSets() {
   return sets;
 }
 
+// An argument a benchmark program takes besides --set KEY=VALUE, and
+// whether a value follows it.
+struct Flag {
+  std::string name;
+  bool value = false;
+};
+
 // InitLogging, and the --set arguments taken out of argv (the rest is left
-// for the program, argv[0] first). Returns the remaining arguments.
-inline std::vector<std::string> Init(int argc, char** argv) {
+// for the program, in order). Any other argument must be one of `flags`
+// (with its value where it takes one): otherwise the program prints its
+// usage and exits with code 2 before running anything, so a misspelt
+// option is never silently ignored.
+inline std::vector<std::string> Init(int argc, char** argv, const std::vector<Flag>& flags = {}) {
   InitLogging(argv[0]);
   std::vector<std::string> rest;
+  std::string usage;
+  for (const Flag& f : flags) usage += " [" + f.name + (f.value ? " VALUE]" : "]");
+  const auto refuse = [&](const std::string& why) {
+    std::fprintf(stderr, "%s: %s\nusage: %s%s [--set KEY=VALUE]...\n", argv[0], why.c_str(),
+                 argv[0], usage.c_str());
+    std::exit(2);
+  };
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--set" && i + 1 < argc) {
+    if (a == "--set") {
+      if (i + 1 >= argc) refuse("--set needs KEY=VALUE");
       ExtraSets().push_back(argv[++i]);
-    } else {
-      rest.push_back(a);
+      continue;
+    }
+    const auto f = std::find_if(flags.begin(), flags.end(), [&](const Flag& x) { return x.name == a; });
+    if (f == flags.end()) refuse("unknown argument '" + a + "'");
+    rest.push_back(a);
+    if (f->value) {
+      if (i + 1 >= argc) refuse(a + " needs a value");
+      rest.push_back(argv[++i]);
     }
   }
   if (!ExtraSets().empty()) {
@@ -82,6 +106,19 @@ inline std::vector<std::string> Init(int argc, char** argv) {
     std::printf("\n\n");
   }
   return rest;
+}
+
+// The value of a flag that takes a positive number of seconds; any other
+// text ends the program with code 2 and a message naming the flag.
+inline double SecondsArgument(const char* argv0, const std::string& flag, const std::string& text) {
+  char* end = nullptr;
+  const double x = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !(x > 0) || !std::isfinite(x)) {
+    std::fprintf(stderr, "%s: %s '%s': expected a positive number of seconds\n", argv0,
+                 flag.c_str(), text.c_str());
+    std::exit(2);
+  }
+  return x;
 }
 
 // A scratch folder under $TMPDIR (or /tmp), created on first use.

@@ -149,7 +149,7 @@ std::string Versus(const Measures& q, const PaperRow& p) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  bench::Init(argc, argv);
+  bench::Init(argc, argv, {{"--scene", true}, {"--method", true}, {"--no-timing"}});
   std::string only, only_method;
   bool timing = true;
   for (int i = 1; i < argc; ++i) {

@@ -62,7 +62,8 @@ void WritePrincipalExample(const std::string& dir) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::vector<std::string> args = bench::Init(argc, argv);
+  const std::vector<std::string> args =
+      bench::Init(argc, argv, {{"--write-principal-example", true}, {"--quick"}});
   if (args.size() == 2 && args[0] == "--write-principal-example") {
     WritePrincipalExample(args[1]);
     return 0;
@@ -71,7 +72,7 @@ int main(int argc, char** argv) {
   const std::string torus_path = (bench::Scratch() / "pellis_fig20_torus.obj").string();
   archgeo::WriteMesh(torus_path,
                      archgeo::PrincipalSymmetricTorus(3.0, 1.0, 48, 40, 0.1, 3, nullptr));
-  const bool quick = !args.empty() && args[0] == "--quick";  // the acceptance meshes only
+  const bool quick = std::count(args.begin(), args.end(), "--quick") > 0;  // the acceptance meshes only
   std::vector<Case> cases = {
       {"Concerthall", bench::Data("directional_Concerthall.off"), "14e", true},
       {"train-station", bench::Data("directional_train-station.off"), "18", true},

@@ -52,19 +52,17 @@ int main(int argc, char** argv) {
   std::vector<int> sizes = {100, 316};
   double timeout = 600;
   bool compare = true;
-  const std::vector<std::string> rest = bench::Init(argc, argv);  // takes the --set arguments
+  // bench::Init takes the --set arguments and refuses any other it is not given here.
+  const std::vector<std::string> rest = bench::Init(
+      argc, argv, {{"--include-1m"}, {"--defaults-only"}, {"--timeout", true}});
   for (size_t i = 0; i < rest.size(); ++i) {
-    const std::string& arg = rest[i];
-    if (arg == "--include-1m") {
+    if (rest[i] == "--include-1m") {
       sizes.push_back(1000);
-    } else if (arg == "--defaults-only") {
+    } else if (rest[i] == "--defaults-only") {
       compare = false;
-    } else if (arg == "--timeout" && i + 1 < rest.size()) {
-      timeout = std::stod(rest[++i]);
-    } else {
-      std::cerr << "usage: " << argv[0]
-                << " [--include-1m] [--defaults-only] [--timeout SECONDS] [--set KEY=VALUE]...\n";
-      return 2;
+    } else {  // --timeout SECONDS
+      timeout = bench::SecondsArgument(argv[0], rest[i], rest[i + 1]);
+      ++i;
     }
   }
   const std::string spec = bench::Source("examples/planar_quads.yaml");

@@ -97,8 +97,8 @@ double BboxDiagonal(const std::string& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::vector<std::string> args = bench::Init(argc, argv);
-  const bool quick = !args.empty() && args[0] == "--quick";
+  const std::vector<std::string> args = bench::Init(argc, argv, {{"--quick"}});
+  const bool quick = !args.empty();  // --quick, the only flag
   const std::string spec = bench::Source("examples/hnet.yaml");
   const auto dir = bench::Scratch();
 

@@ -45,18 +45,16 @@ std::string SubdividedConcerthall() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::vector<std::string> args = bench::Init(argc, argv);
+  // bench::Init takes the --set arguments and refuses any other it is not given here.
+  const std::vector<std::string> args =
+      bench::Init(argc, argv, {{"--mesh", true}, {"--timeout", true}});
   std::string mesh;
   double timeout = 900;
-  for (size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--mesh" && i + 1 < args.size()) {
-      mesh = args[++i];
-    } else if (args[i] == "--timeout" && i + 1 < args.size()) {
-      timeout = std::stod(args[++i]);
-    } else {
-      std::fprintf(stderr, "usage: %s [--mesh FILE] [--timeout S] [--set KEY=VALUE ...]\n",
-                   argv[0]);
-      return 2;
+  for (size_t i = 0; i + 1 < args.size(); i += 2) {
+    if (args[i] == "--mesh") {
+      mesh = args[i + 1];
+    } else {  // --timeout SECONDS
+      timeout = bench::SecondsArgument(argv[0], args[i], args[i + 1]);
     }
   }
   const bool acceptance = mesh.empty();

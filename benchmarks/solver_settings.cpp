@@ -206,6 +206,7 @@ void PrintBlasTable(const std::string& mesh) {
 int main(int argc, char** argv) {
   bench::InitLogging(argv[0]);
   benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
   std::cout << "BLAS: " << archgeo::BlasLibrary() << "\n"
             << "spec: " << kSpec << " (weights as in the file; only solver keys overridden)\n"
             << "times: wall-clock on this machine (2 cores, shared with other work)\n\n";

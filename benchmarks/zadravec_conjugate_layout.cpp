@@ -39,8 +39,8 @@ struct Row {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::vector<std::string> args = bench::Init(argc, argv);
-  const bool quick = !args.empty() && args[0] == "--quick";
+  const std::vector<std::string> args = bench::Init(argc, argv, {{"--quick"}});
+  const bool quick = !args.empty();  // --quick, the only flag
   std::vector<std::string> failures;
   const auto check = [&](bool ok, const std::string& what) {
     if (!ok) failures.push_back(what);

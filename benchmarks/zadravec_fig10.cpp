@@ -150,8 +150,8 @@ void CommandTable() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::vector<std::string> args = bench::Init(argc, argv);
-  const bool quick = !args.empty() && args[0] == "--quick";
+  const std::vector<std::string> args = bench::Init(argc, argv, {{"--quick"}});
+  const bool quick = !args.empty();  // --quick, the only flag
   std::cout << "BLAS: " << archgeo::BlasLibrary() << "\n\n";
   const bool ok = Fig10Table(bench::Source("examples/planar_quads.yaml"), quick);
   if (!quick) CommandTable();  // timed: not an acceptance
