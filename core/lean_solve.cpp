@@ -156,6 +156,23 @@ struct Corrector {
   }
 };
 
+// out = (H + diag(D))⁻¹ for one n × n diagonal block H (row-major) of the
+// normal equations, by Cholesky; the identity where H + diag(D) is not
+// positive definite. Square: a dynamic-size matrix type, with room for at
+// most kMax rows on the stack where the block fits (no heap allocation; the
+// same arithmetic as on the heap, to the last bit).
+template <class Square>
+void InvertDamped(const double* H, const double* D, double* out, int n) {
+  using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor,
+                             Square::MaxRowsAtCompileTime, Square::MaxColsAtCompileTime>;
+  Square Hii = Eigen::Map<const Rows>(H, n, n);
+  Hii.diagonal() += Eigen::Map<const Eigen::VectorXd>(D, n);
+  const Eigen::LLT<Square> llt(Hii);
+  Square inv = Square::Identity(n, n);
+  if (llt.info() == Eigen::Success) inv = llt.solve(inv);
+  Eigen::Map<Rows>(out, n, n) = inv;
+}
+
 // One thread's linearisation scratch and its sum Σ ρ, on cache lines of its
 // own: the other thread's writes to its sum must not evict this one's
 // scratch pointers (false sharing, which cost up to 70% of the linearisation
@@ -348,18 +365,22 @@ class Lean {
   int Solve(const Vector& damping, const Vector& gradient, double eta, int max_iterations,
             Vector* delta) const {
     // PatternBlock-Jacobi preconditioner: every block's (H_ii + D_i)⁻¹ (the identity
-    // where that is not positive definite).
+    // where that is not positive definite). Heap-allocated matrices for
+    // every block (three each) cost 0.10–0.14 s of the 100k roof's 2.2 s of CG.
     const int blocks = int(s_.blocks.size());
     std::vector<double> inverse(s_.diagonal_slots);
 #pragma omp parallel for schedule(static, 256)
     for (int i = 0; i < blocks; ++i) {
       const PatternBlock& b = s_.blocks[i];
-      Eigen::MatrixXd Hii = Slot(s_.diagonal[i], b.tangent, b.tangent);
-      Hii.diagonal() += damping.segment(b.offset, b.tangent);
-      Eigen::LLT<Eigen::MatrixXd> llt(Hii);
-      Eigen::MatrixXd inv = Eigen::MatrixXd::Identity(b.tangent, b.tangent);
-      if (llt.info() == Eigen::Success) inv = llt.solve(inv);
-      Eigen::Map<RowMatrix>(inverse.data() + s_.diagonal[i], b.tangent, b.tangent) = inv;
+      const double* H = s_.hessian.data() + s_.diagonal[i];
+      const double* D = damping.data() + b.offset;
+      double* out = inverse.data() + s_.diagonal[i];
+      if (b.tangent <= kMax) {
+        InvertDamped<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMax, kMax>>(
+            H, D, out, b.tangent);
+      } else {
+        InvertDamped<Eigen::MatrixXd>(H, D, out, b.tangent);
+      }
     }
     // The vector work of a step in three passes over the two fixed halves
     // of the blocks (two threads where there are, and the same sums on one),
