@@ -306,12 +306,14 @@ VertexStar ClassifyVertexStar(const Mesh& mesh, const std::vector<Vec3>& face_no
   return star;
 }
 
-SmoothnessMetrics ComputeSmoothnessMetrics(const Mesh& mesh) {
+namespace {
+
+// ComputeEdgeSmoothnessMetrics with the face normals it uses.
+SmoothnessMetrics EdgeMetrics(const Mesh& mesh, const std::vector<Vec3>& normals) {
   SmoothnessMetrics m;
   m.vertices = int(mesh.number_of_vertices());
   m.faces = int(mesh.number_of_faces());
   m.edges = int(mesh.number_of_edges());
-  const std::vector<Vec3> normals = FaceNormals(mesh);
   for (FaceIndex f : mesh.faces()) m.degenerate_faces += IsZero(normals[f.idx()]) ? 1 : 0;
 
   const EdgeSmoothness edges = MeasureEdgeSmoothness(mesh, normals);
@@ -323,6 +325,18 @@ SmoothnessMetrics ComputeSmoothnessMetrics(const Mesh& mesh) {
     m.E_prime += edges.energy[i];                   // [§3]
     m.max_edge_energy = std::max(m.max_edge_energy, edges.energy[i]);
   }
+  return m;
+}
+
+}  // namespace
+
+SmoothnessMetrics ComputeEdgeSmoothnessMetrics(const Mesh& mesh) {
+  return EdgeMetrics(mesh, FaceNormals(mesh));
+}
+
+SmoothnessMetrics ComputeSmoothnessMetrics(const Mesh& mesh) {
+  const std::vector<Vec3> normals = FaceNormals(mesh);
+  SmoothnessMetrics m = EdgeMetrics(mesh, normals);
   // Each vertex's figures in parallel (they read only the mesh and the
   // normals), then summed in vertex order: the same sums as a serial pass.
   const long n = long(mesh.num_vertices());  // index slots, removed ones too

@@ -149,6 +149,12 @@ struct SmoothnessMetrics {
 // edges but have no star analysis).
 SmoothnessMetrics ComputeSmoothnessMetrics(const Mesh& mesh);
 
+// Only the edges' part of the above: interior_edges, degenerate_faces, E,
+// E_prime and max_edge_energy (the same values), without the vertices'
+// curvature and stars; the rest stays 0. For the loop's per-round measure E,
+// where the stars took three quarters of the time.
+SmoothnessMetrics ComputeEdgeSmoothnessMetrics(const Mesh& mesh);
+
 // JSON object with every field; the lengths E, E_prime, C, max_edge_energy
 // also as "<name>_relative" = value / scale (normally the bounding-box
 // diagonal, like MetricsToJson). Precondition (CHECKed): scale > 0.

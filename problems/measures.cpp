@@ -22,11 +22,14 @@ std::map<std::string, double> Planarity(HookContext& c) {
   return {{"pq_normalized_max", max}};
 }
 
-std::map<std::string, double> Smoothness(HookContext& c) {
+std::map<std::string, double> EdgeSmoothness(HookContext& c) {
+  const SmoothnessMetrics m = ComputeEdgeSmoothnessMetrics(c.store->mesh());
+  return {{"E", m.E}, {"E_prime", m.E_prime}};
+}
+
+std::map<std::string, double> StarSmoothness(HookContext& c) {
   const SmoothnessMetrics m = ComputeSmoothnessMetrics(c.store->mesh());
-  return {{"E", m.E},
-          {"E_prime", m.E_prime},
-          {"self_intersecting_pyramids", m.self_intersecting_pyramids},
+  return {{"self_intersecting_pyramids", m.self_intersecting_pyramids},
           {"bad_saddles", m.bad_saddles}};
 }
 
@@ -96,10 +99,10 @@ std::map<std::string, double> ForceBalance(HookContext& c) {
 const std::map<std::string, MeasureGroup>& Groups() {
   static const std::map<std::string, MeasureGroup> groups = {
       {"pq_normalized_max", &Planarity},
-      {"E", &Smoothness},
-      {"E_prime", &Smoothness},
-      {"self_intersecting_pyramids", &Smoothness},
-      {"bad_saddles", &Smoothness},
+      {"E", &EdgeSmoothness},
+      {"E_prime", &EdgeSmoothness},
+      {"self_intersecting_pyramids", &StarSmoothness},
+      {"bad_saddles", &StarSmoothness},
       {"C", &Curvature},
       {"displacement_max", &Displacement},
       {"star_planarity_max", &Stars},
