@@ -418,5 +418,29 @@ TEST(SmoothnessSurfaces, Figure11LatticeEnergyIsMinimalForRectangles) {
                InputError);
 }
 
+// The loop's per-round measure E reads the edges' part alone: the same
+// values, to the last bit, as the full metrics (a torus with noise, so that
+// every edge and star differs), and nothing of the vertices' part.
+TEST(SmoothnessMetrics, EdgePartAloneGivesTheFullMetricsEdgeFigures) {
+  Mesh mesh = TorusPrincipalQuads(3.0, 1.0, 14, 8);
+  int k = 0;
+  for (VertexIndex v : mesh.vertices()) {
+    const double d = 0.05 * std::sin(1.7 * ++k);
+    mesh.point(v) = Point(mesh.point(v).x() + d, mesh.point(v).y() - 0.5 * d, mesh.point(v).z() + d);
+  }
+  const SmoothnessMetrics full = ComputeSmoothnessMetrics(mesh);
+  const SmoothnessMetrics edges = ComputeEdgeSmoothnessMetrics(mesh);
+  ASSERT_GT(full.E, 0.0);
+  ASSERT_GT(full.C, 0.0);
+  EXPECT_EQ(edges.E, full.E);
+  EXPECT_EQ(edges.E_prime, full.E_prime);
+  EXPECT_EQ(edges.max_edge_energy, full.max_edge_energy);
+  EXPECT_EQ(edges.interior_edges, full.interior_edges);
+  EXPECT_EQ(edges.degenerate_faces, full.degenerate_faces);
+  EXPECT_EQ(edges.C, 0.0);
+  EXPECT_EQ(edges.interior_vertices, 0);
+  EXPECT_EQ(edges.saddles, 0);
+}
+
 }  // namespace
 }  // namespace archgeo
