@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <type_traits>
 #include <vector>
 
 #include "core/lean_solve.h"
@@ -488,6 +489,53 @@ TEST(LeanSolve, LargeBlocksReachCeresOptimum) {
     EXPECT_NEAR(lean_side.c[k], ceres_side.c[k], 1e-6) << k;
     EXPECT_NEAR(lean_side.u[k], ceres_side.u[k], 1e-6) << k;
   }
+}
+
+// r = A x − b over one block of N values (N rows).
+template <int N>
+struct Square {
+  template <typename T>
+  bool operator()(const T* x, T* r) const {
+    for (int i = 0; i < N; ++i) {
+      r[i] = T(-b[i]);
+      for (int j = 0; j < N; ++j) r[i] += T(a[i][j]) * x[j];
+    }
+    return true;
+  }
+  double a[N][N], b[N];
+};
+
+// The preconditioner is each block's (H_ii + D_i)⁻¹: where the normal
+// equations are block-diagonal (blocks of 1 to 6 values, each scaled
+// differently and coupled inside), preconditioned CG solves each LM step in
+// one step. With the identity instead: 224 CG steps in 5 LM steps.
+TEST(LeanSolve, BlockJacobiSolvesIndependentBlocksInOneStepEach) {
+  double x1[1] = {0}, x2[2] = {0, 0}, x3[3] = {0, 0, 0}, x4[4] = {0, 0, 0, 0};
+  double x6[6] = {0, 0, 0, 0, 0, 0};
+  Residuals residuals;
+  const auto add = [&](auto functor, double* x, double scale) {
+    constexpr int n = sizeof(functor->b) / sizeof(double);
+    for (int i = 0; i < n; ++i) {
+      functor->b[i] = std::cos(1.0 + 2 * i) * scale;
+      for (int j = 0; j < n; ++j) {
+        functor->a[i][j] = scale * ((i == j ? 2.0 : 0.0) + 0.4 * std::sin(1.0 + 3 * i + 5.0 * j));
+      }
+    }
+    using F = std::remove_pointer_t<decltype(functor)>;
+    Add(residuals, new ceres::AutoDiffCostFunction<F, n, n>(functor), nullptr, {x});
+  };
+  add(new Square<1>, x1, 0.01);
+  add(new Square<2>, x2, 30.0);
+  add(new Square<3>, x3, 1.0);
+  add(new Square<4>, x4, 300.0);
+  add(new Square<6>, x6, 0.1);  // wider than the stack-sized inverse
+  ceres::Solver::Options o = Tight();
+  o.eta = 1e-12;
+  const SolveSummary lean = LeanSolve(o, residuals);
+  ASSERT_TRUE(lean.usable) << lean.message;
+  ASSERT_GT(lean.iterations, 0);
+  EXPECT_EQ(lean.cg_iterations, lean.iterations);
+  EXPECT_LT(lean.final_cost, 1e-12 * lean.initial_cost);  // A x = b: every residual 0
 }
 
 // The linearisation and the product sum two fixed halves: one thread gives
