@@ -131,6 +131,19 @@ inline fs::path Scratch() {
   return dir;
 }
 
+// f(); bad input (an InputError: a --set naming an unknown key, say) ends
+// the program as it ends `archgeo solve`: the message and exit code 2.
+template <class F>
+auto ExitOnInputError(const F& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const archgeo::InputError& e) {
+    std::cout << std::flush;
+    std::cerr << "error: " << e.what() << "\n";
+    std::exit(2);
+  }
+}
+
 // One solve in this process: the spec with `overrides`, no output files.
 // Returns the run report plus "wall_seconds" (around RunSpec) and "exit_code".
 // `progress` is called once per Ceres iteration, on the solving thread.
@@ -143,14 +156,8 @@ inline Json Solve(const std::string& spec_path, const std::vector<std::string>& 
   all.push_back("output.mesh=");  // no output files
   all.push_back("output.report=");
   const auto start = Clock::now();
-  archgeo::RunResult run;
-  try {
-    run = archgeo::RunSpec(archgeo::ReadSpec(spec_path, all), progress);
-  } catch (const archgeo::InputError& e) {
-    std::cout << std::flush;
-    std::cerr << "error: " << e.what() << "\n";
-    std::exit(2);
-  }
+  const archgeo::RunResult run =
+      ExitOnInputError([&] { return archgeo::RunSpec(archgeo::ReadSpec(spec_path, all), progress); });
   Json report = run.report;
   report["wall_seconds"] = Seconds(start);
   report["exit_code"] = run.exit_code;

@@ -27,7 +27,6 @@
 // other load included: run it on a quiet machine for figures to quote).
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -96,11 +95,11 @@ struct Run {
 Run SolveExample(const std::string& example, const std::vector<std::string>& overrides) {
   std::vector<std::string> all = overrides;
   all.insert(all.end(), bench::ExtraSets().begin(), bench::ExtraSets().end());
-  const archgeo::ProblemSpec spec =
-      archgeo::ReadSpec(bench::Source("examples/grid_" + example + ".yaml"), all);
+  const archgeo::ProblemSpec spec = bench::ExitOnInputError(
+      [&] { return archgeo::ReadSpec(bench::Source("examples/grid_" + example + ".yaml"), all); });
   Run r;
   const auto start = bench::Clock::now();
-  r.solution = archgeo::Solve(spec, archgeo::Mesh(), nullptr, {});
+  r.solution = bench::ExitOnInputError([&] { return archgeo::Solve(spec, archgeo::Mesh(), nullptr, {}); });
   r.seconds = bench::Seconds(start);
   const archgeo::Validity v = archgeo::CheckValidity(
       r.solution->output, &r.solution->input, archgeo::LimitsOf(spec.settings), true);
@@ -149,23 +148,25 @@ std::string Versus(const Measures& q, const PaperRow& p) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  bench::Init(argc, argv, {{"--scene", true}, {"--method", true}, {"--no-timing"}});
+  // bench::Init takes the --set arguments and refuses any other it is not given here.
+  const std::vector<std::string> args =
+      bench::Init(argc, argv, {{"--scene", true}, {"--method", true}, {"--no-timing"}});
   std::string only, only_method;
   bool timing = true;
-  for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--scene") && i + 1 < argc) {
-      only = argv[++i];
-    } else if (!std::strcmp(argv[i], "--method") && i + 1 < argc) {
-      only_method = argv[++i];
-    } else if (!std::strcmp(argv[i], "--set") && i + 1 < argc) {
-      ++i;  // taken by bench::Init
-    } else if (!std::strcmp(argv[i], "--no-timing")) {
+  for (size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--no-timing") {
       timing = false;
     } else {
-      std::cerr << "usage: " << argv[0]
-                << " [--scene NAME] [--method least_squares|force] [--no-timing]\n";
-      return 2;
+      (args[i] == "--scene" ? only : only_method) = args[i + 1];
+      ++i;
     }
+  }
+  // (an unknown --method is refused by the spec, as `archgeo solve` refuses it)
+  const std::vector<Scene> scenes = Scenes();
+  if (!only.empty() && std::none_of(scenes.begin(), scenes.end(),
+                                    [&](const Scene& s) { return only == s.example; })) {
+    std::cerr << argv[0] << ": --scene '" << only << "': no such scene\n";
+    return 2;
   }
   std::vector<std::string> methods = {"least_squares", "force"};
   if (!only_method.empty()) methods = {only_method};
@@ -179,7 +180,7 @@ int main(int argc, char** argv) {
                       "stop", "time", "outside", "valid", "least squares vs paper after"});
   std::vector<std::string> stand_ins;
   bool ok = true;  // acceptance: every least-squares result valid and ≤ the paper's after row
-  for (const Scene& scene : Scenes()) {
+  for (const Scene& scene : scenes) {
     if (!only.empty() && only != scene.example) continue;
     bool first = true;
     for (const std::string& method : methods) {

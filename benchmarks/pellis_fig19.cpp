@@ -82,11 +82,12 @@ int main(int argc, char** argv) {
   bool accepted = true;
   for (const Case& c : cases) {
     const std::string out = (bench::Scratch() / "fig19_out.obj").string();
-    archgeo::ProblemSpec s = archgeo::ReadSpec(
-        spec, {"mesh=" + c.mesh, "output.mesh=" + out, "output.report="});
+    std::vector<std::string> sets = {"mesh=" + c.mesh, "output.mesh=" + out, "output.report="};
+    sets.insert(sets.end(), bench::ExtraSets().begin(), bench::ExtraSets().end());
+    const archgeo::ProblemSpec s = bench::ExitOnInputError([&] { return archgeo::ReadSpec(spec, sets); });
     const auto start = bench::Clock::now();
     const double cpu_start = CpuSeconds();
-    const archgeo::RunResult run = archgeo::RunSpec(s, {});
+    const archgeo::RunResult run = bench::ExitOnInputError([&] { return archgeo::RunSpec(s, {}); });
     const double seconds = bench::Seconds(start);
     const double cpu = CpuSeconds() - cpu_start;
     const bench::Json& r = run.report;
