@@ -121,6 +121,19 @@ inline double SecondsArgument(const char* argv0, const std::string& flag, const 
   return x;
 }
 
+// The value of a flag that takes a count from 1 to 1000; any other text
+// ends the program with code 2 and a message naming the flag.
+inline int CountArgument(const char* argv0, const std::string& flag, const std::string& text) {
+  char* end = nullptr;
+  const long x = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || x < 1 || x > 1000) {
+    std::fprintf(stderr, "%s: %s '%s': expected a whole number from 1 to 1000\n", argv0,
+                 flag.c_str(), text.c_str());
+    std::exit(2);
+  }
+  return int(x);
+}
+
 // A scratch folder under $TMPDIR (or /tmp), created on first use.
 inline fs::path Scratch() {
   static const fs::path dir = [] {
