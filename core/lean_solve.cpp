@@ -360,10 +360,18 @@ class Lean {
     return d;
   }
 
-  // Solves (H + diag(damping)) δ = −g by block-Jacobi PCG to ‖residual‖ ≤
-  // eta ‖g‖ or `max_iterations` steps; returns the steps taken.
-  int Solve(const Vector& damping, const Vector& gradient, double eta, int max_iterations,
-            Vector* delta) const {
+  // Solves (H + diag(damping)) δ = −g by block-Jacobi PCG, from δ = 0, for
+  // at least `min_iterations` and at most `max_iterations` steps; returns the
+  // steps taken. It stops as Ceres' conjugate gradients do inside its
+  // Levenberg–Marquardt (Nash & Sofer 1990, "Assessing a search direction
+  // within a truncated-Newton method"): at step k once
+  // k (Q_k − Q_(k−1)) / Q_k < eta, Q the quadratic model δᵀAδ − 2bᵀδ
+  // (A = H + diag(damping), b = −g), which each step lowers by α rᵀz. The
+  // residual ‖b − Aδ‖, the test used before, keeps falling slowly long after
+  // the model's decrease has stalled: on 100k-quad roofs the last steps of a
+  // round took 76–185 CG steps each for a cost change of 1e-4.
+  int Solve(const Vector& damping, const Vector& gradient, double eta, int min_iterations,
+            int max_iterations, Vector* delta) const {
     // PatternBlock-Jacobi preconditioner: every block's (H_ii + D_i)⁻¹ (the identity
     // where that is not positive definite). Heap-allocated matrices for
     // every block (three each) cost 0.10–0.14 s of the 100k roof's 2.2 s of CG.
@@ -390,7 +398,6 @@ class Lean {
     const auto offset = [&](size_t i) { return i < size_t(blocks) ? size_t(s_.blocks[i].offset) : size_t(n); };
     delta->setZero(n);
     Vector r = -gradient, z(n), p(n), q(n);
-    const double stop = eta * r.norm();
     // z = M⁻¹ r on blocks [first, end); returns their r·z and r·r.
     const auto precondition = [&](size_t first, size_t end) {
       std::array<double, 2> sum = {0, 0};
@@ -410,8 +417,9 @@ class Lean {
     std::array<double, 2> sums = SumHalves(half, size_t(blocks), precondition);
     p = z;
     double rz = sums[0], rr = sums[1];
+    double model = 0;  // Q at δ
     int k = 0;
-    while (k < max_iterations && std::sqrt(rr) > stop) {
+    while (k < max_iterations && rr > 0) {
       Multiply(damping, p, &q);
       const double pq = SumHalves(half, size_t(blocks), [&](size_t first, size_t end) {
         const size_t a = offset(first), e = offset(end);
@@ -426,6 +434,9 @@ class Lean {
         return precondition(first, end);
       });
       ++k;
+      const double next = model - alpha * rz;
+      if (k >= min_iterations && k * (next - model) / next < eta) break;
+      model = next;
       const double beta = sums[0] / rz;
       rz = sums[0];
       rr = sums[1];
@@ -582,6 +593,7 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
   out.jacobian_seconds += Since(t);
   out.initial_cost = out.final_cost = cost;
   double radius = options.initial_trust_region_radius, decrease_factor = 2.0;
+  double last_change = 0;  // the cost change of the last accepted step
   Vector delta;
   auto report = [&](int iteration, double step_norm, bool success, double change) {
     ceres::IterationSummary it;
@@ -624,6 +636,7 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
         options.max_lm_diagonal);
     const Vector damping = diagonal / radius;
     out.cg_iterations += lean.Solve(damping, gradient, options.eta,
+                                    options.min_linear_solver_iterations,
                                     options.max_linear_solver_iterations, &delta);
     const double model_change = lean.ModelChange(gradient, delta);
     out.linear_solver_seconds += Since(t);
@@ -642,8 +655,14 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
       radius = std::min(options.max_trust_region_radius,
                         radius / std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * rho - 1.0, 3)));
       decrease_factor = 2.0;
-      // A step that ends the solve is not linearised again.
-      bool ends = change <= options.function_tolerance * (cost + change) || small_step;
+      // A step that ends the solve is not linearised again. It ends where
+      // its change, or the next one extrapolated from the last two (Δ_k² /
+      // Δ_(k−1): the changes falling geometrically), is below the function
+      // tolerance: the iteration that would only confirm it is not taken.
+      const double next_change = last_change > 0 ? change * change / last_change : change;
+      bool ends = change <= options.function_tolerance * (cost + change) ||
+                  next_change <= options.function_tolerance * cost || small_step;
+      last_change = change;
       for (ceres::IterationCallback* callback : options.callbacks) {
         auto* ending = dynamic_cast<EndingCallback*>(callback);
         ends = ends || (ending && ending->Ends());

@@ -16,12 +16,16 @@
 //   - fixes the block pattern of J^T J once (and keeps it for the next
 //     round while the structure stays), and each iteration accumulates
 //     every residual block's J_a^T J_b into its slot (no J is stored);
-//   - solves (J^T J + μ diag(J^T J)) δ = −J^T r by block-Jacobi PCG to a
-//     relative residual `eta` (Ceres' option), at most
-//     max_linear_solver_iterations steps (an inexact Newton step);
+//   - solves (J^T J + μ diag(J^T J)) δ = −J^T r by block-Jacobi PCG (an
+//     inexact Newton step), ending as Ceres' conjugate gradients do in its
+//     Levenberg–Marquardt: when the quadratic model's relative decrease,
+//     times the step count, falls below `eta` (Nash & Sofer's test), after
+//     at least min_ and at most max_linear_solver_iterations steps;
 //   - steps and adapts μ as Ceres' Levenberg–Marquardt strategy does, with its
 //     tolerances (function, gradient, parameter), iteration and time limits,
-//     and iteration callbacks (so a per-iteration tolerance ends the solve).
+//     and iteration callbacks (so a per-iteration tolerance ends the solve);
+//     the function tolerance also ends it where the next cost change,
+//     extrapolated from the last two (Δ_k² / Δ_(k−1)), would be below it.
 // Losses are applied with Ceres' corrector (Triggs et al.): the same cost.
 #pragma once
 
@@ -59,7 +63,7 @@ class EndingCallback : public ceres::IterationCallback {
 // (which hold the result on return). Reads from `options`: max_num_iterations,
 // max_solver_time_in_seconds, function/gradient/parameter_tolerance,
 // min_relative_decrease, initial/max/min_trust_region_radius,
-// min/max_lm_diagonal, eta, max_linear_solver_iterations, callbacks.
+// min/max_lm_diagonal, eta, min/max_linear_solver_iterations, callbacks.
 // `pattern`, if given, keeps the pattern of J^T J from one call to the next
 // and is reused while the problem's structure stays (core/normal_equations.h).
 SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& residuals,

@@ -136,12 +136,13 @@ std::vector<Key> SolverKeys() {
       integer("pcg_above", 0, 0, 1000000000,
               "a round with more than this many variables is solved by archgeo's own "
               "Levenberg-Marquardt: normal equations assembled once per iteration, each step by "
-              "block-Jacobi conjugate gradients to a relative residual eta, at most "
-              "max_linear_solver_iterations (core/lean_solve.h); 0 = never, always Ceres "
-              "(planar_quads: 100000)"),
+              "block-Jacobi conjugate gradients, ended by eta as Ceres ends its own (the "
+              "quadratic model's relative decrease), at most max_linear_solver_iterations "
+              "(core/lean_solve.h); 0 = never, always Ceres (planar_quads: 100000)"),
       number("pcg_function_tolerance", 1e-3, 0, 1,
-             "with pcg_above: such a solve stops when the relative cost change falls below this "
-             "(or function_tolerance, if larger); the next round goes on from there"),
+             "with pcg_above: such a solve stops when the relative cost change, or the next one "
+             "extrapolated from the last two, falls below this (or function_tolerance, if "
+             "larger); the next round goes on from there"),
   };
 }
 

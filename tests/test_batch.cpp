@@ -149,7 +149,9 @@ TEST(Batch, LeanSolveAndCeresSolveBatchElementsAsCostObjects) {
   for (int i = 0; i < int(ra.residuals().size()); ++i) EXPECT_EQ(ra.Cost(i), rb.Cost(i));
 
   ceres::Solver::Options options;
-  options.max_num_iterations = 30;
+  // LeanSolve's inexact steps (CG ended by eta = 0.1, Nash and Sofer's test
+  // as in Ceres) take ~50 iterations to the optimum a direct solve reaches.
+  options.max_num_iterations = 100;
   const SolveSummary lean_batched = LeanSolve(options, ra, nullptr);
   const SolveSummary lean_objects = LeanSolve(options, rb, nullptr);
   ASSERT_TRUE(lean_batched.usable);

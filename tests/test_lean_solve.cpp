@@ -57,7 +57,9 @@ struct Membrane {
   Residuals residuals;
   // by_term: all data terms first, then all differences (as a round adds
   // its terms one after another); else cell by cell.
-  explicit Membrane(int size, bool by_term = false) : n(size), x(size * size, 0.0) {
+  double data = 0.5;  // the data terms' weight (small: a stiffer membrane)
+  explicit Membrane(int size, bool by_term = false, double data_weight = 0.5)
+      : n(size), x(size * size, 0.0), data(data_weight) {
     AddTo(residuals, by_term);
   }
   // The membrane's residual blocks over `x`, into `r` (in the same order).
@@ -65,7 +67,7 @@ struct Membrane {
     for (int i = 0; i < n; ++i) {
       for (int j = 0; j < n; ++j) {
         const double target = std::sin(0.7 * i) * std::cos(1.3 * j) + ((i * 7 + j * 3) % 5) * 0.1;
-        Add(r, new ceres::AutoDiffCostFunction<Data, 1, 1>(new Data{0.5, target}), nullptr,
+        Add(r, new ceres::AutoDiffCostFunction<Data, 1, 1>(new Data{data, target}), nullptr,
             {&x[i * n + j]});
         if (!by_term) AddDifferences(r, i, j);
       }
@@ -508,7 +510,9 @@ struct Square {
 // The preconditioner is each block's (H_ii + D_i)⁻¹: where the normal
 // equations are block-diagonal (blocks of 1 to 6 values, each scaled
 // differently and coupled inside), preconditioned CG solves each LM step in
-// one step. With the identity instead: 224 CG steps in 5 LM steps.
+// its first step; Nash and Sofer's test, which compares a step's decrease of
+// the model with the decrease so far, ends it at the second. With the
+// identity instead: 224 CG steps in 5 LM steps.
 TEST(LeanSolve, BlockJacobiSolvesIndependentBlocksInOneStepEach) {
   double x1[1] = {0}, x2[2] = {0, 0}, x3[3] = {0, 0, 0}, x4[4] = {0, 0, 0, 0};
   double x6[6] = {0, 0, 0, 0, 0, 0};
@@ -534,8 +538,74 @@ TEST(LeanSolve, BlockJacobiSolvesIndependentBlocksInOneStepEach) {
   const SolveSummary lean = LeanSolve(o, residuals);
   ASSERT_TRUE(lean.usable) << lean.message;
   ASSERT_GT(lean.iterations, 0);
-  EXPECT_EQ(lean.cg_iterations, lean.iterations);
+  EXPECT_EQ(lean.cg_iterations, 2 * lean.iterations);
   EXPECT_LT(lean.final_cost, 1e-12 * lean.initial_cost);  // A x = b: every residual 0
+}
+
+// Records every report's cost and cost change.
+struct Costs : ceres::IterationCallback {
+  std::vector<double> cost, change;
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    cost.push_back(s.cost);
+    change.push_back(s.cost_change);
+    return ceres::SOLVER_CONTINUE;
+  }
+};
+
+// One Gauss–Newton step on a stiff membrane (data weight 0.03: a 2-D
+// Laplacian, where CG's residual falls slowly long after the model's
+// decrease has settled). Nash and Sofer's test with eta = 0.1 ends CG after
+// 22 steps, with 97.5% of the exact step's decrease; the residual test
+// ‖b − Aδ‖ ≤ eta ‖b‖ used before took 46 steps (for 99.99%).
+TEST(LeanSolve, ConjugateGradientsEndWhenTheModelDecreaseSettles) {
+  Membrane exact(40, false, 0.03), one(40, false, 0.03);
+  ceres::Solver::Summary reference;
+  ceres::Solve(Tight(), exact.residuals.MakeProblem().get(), &reference);
+  ceres::Solver::Options o = Tight();
+  o.eta = 0.1;
+  o.max_num_iterations = 1;
+  o.initial_trust_region_radius = 1e12;  // no damping to speak of
+  const SolveSummary step = LeanSolve(o, one.residuals);
+  ASSERT_TRUE(step.usable) << step.message;
+  const double fraction =
+      (step.initial_cost - step.final_cost) / (step.initial_cost - reference.final_cost);
+  EXPECT_GT(fraction, 0.95);
+  EXPECT_LE(step.cg_iterations, 30);
+  // At least min_linear_solver_iterations steps, as in Ceres.
+  Membrane longer(40, false, 0.03);
+  o.min_linear_solver_iterations = 35;
+  EXPECT_EQ(LeanSolve(o, longer.residuals).cg_iterations, 35);
+}
+
+// A PCG round is re-projected and re-linearised by the next one: LeanSolve
+// also ends where the next cost change, extrapolated from the last two
+// (Δ_k² / Δ_(k−1)), is below the function tolerance, without the step that
+// would only confirm it. The plane fit's changes: 1.38, 0.61, 0.0168, then
+// 2.5e-5 (a confirming step that 1e-2 does not need).
+TEST(LeanSolve, TheFunctionToleranceEndsWhereTheNextChangeWouldMeetIt) {
+  PlaneFit loose, tight;
+  Costs ended, further;
+  ceres::Solver::Options o = Tight();
+  o.eta = 0.1;
+  o.function_tolerance = 1e-2;
+  o.callbacks.push_back(&ended);
+  const SolveSummary s = LeanSolve(o, loose.residuals);
+  ASSERT_TRUE(s.usable) << s.message;
+  const size_t k = ended.change.size() - 1;  // the last step
+  ASSERT_GE(k, 2u);
+  EXPECT_EQ(s.iterations, int(k));
+  // Not its own change but the extrapolated one ended it ...
+  EXPECT_GT(ended.change[k], o.function_tolerance * ended.cost[k - 1]);
+  EXPECT_LE(ended.change[k] * ended.change[k] / ended.change[k - 1],
+            o.function_tolerance * ended.cost[k]);
+  // ... and rightly: the same solve with a tighter tolerance takes that
+  // step, and it changes the cost by less than 1e-2.
+  o.function_tolerance = 1e-3;
+  o.callbacks = {&further};
+  LeanSolve(o, tight.residuals);
+  ASSERT_GT(further.change.size(), k + 1);
+  EXPECT_DOUBLE_EQ(further.cost[k], ended.cost[k]);  // (summed in another order)
+  EXPECT_LT(further.change[k + 1], 1e-2 * further.cost[k]);
 }
 
 // The linearisation and the product sum two fixed halves: one thread gives
