@@ -1,10 +1,9 @@
 // How the planar-quad solve scales with mesh size (STYLE.md, "Direct solves
 // grow ~n^1.5"): examples/planar_quads.yaml on generated non-planar roof grids
 // (`archgeo generate --noise 0.05`) of 100x100 (10k quads) and 316x316 (~100k
-// quads), and 1000x1000 (1M quads) only with --include-1m (long: 120–131 s,
-// depending on the hour, and 5.70 GiB with the defaults on 2026-11-28; add
-// --defaults-only, Ceres' Cholesky would need more memory than this machine
-// has). Every size is solved twice, by Ceres with one sparse Cholesky per
+// quads), and 1000x1000 (1M quads) only with --include-1m (long: about 90 s
+// and 5.65 GiB with the defaults on 2026-11-28; add --defaults-only, Ceres'
+// Cholesky would need more memory than this machine has). Every size is solved twice, by Ceres with one sparse Cholesky per
 // step (solver.pcg_above=0) and with the spec's defaults (Levenberg-Marquardt
 // with conjugate gradients on the assembled normal equations for large
 // rounds, core/lean_solve.h), unless --defaults-only. Prints time to
