@@ -105,12 +105,6 @@ ProblemSpec Read(const std::string& spec, const std::string& mesh,
   return ReadSpec(spec, overrides);
 }
 
-double Median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
-}
-
 std::string Number(double x, const char* format = "%.4g") {
   char text[64];
   std::snprintf(text, sizeof text, format, x);
@@ -268,6 +262,12 @@ void Validate(const BenchRequest& q, const std::vector<Settings_>& plan) {
 }
 
 }  // namespace
+
+double Median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
+}
 
 json RunOnce(const std::string& self, const std::string& spec, const std::string& mesh,
              const Settings_& settings, int repeat) {

@@ -59,4 +59,7 @@ nlohmann::json RunOnce(const std::string& self, const std::string& spec, const s
 // Records merged into rows (grouped by settings and mesh, first-seen order).
 nlohmann::json MergeRecords(const std::vector<nlohmann::json>& records);
 
+// The median of `values` (0 if there are none).
+double Median(std::vector<double> values);
+
 }  // namespace archgeo

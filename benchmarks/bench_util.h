@@ -108,28 +108,30 @@ inline std::vector<std::string> Init(int argc, char** argv, const std::vector<Fl
   return rest;
 }
 
-// The value of a flag that takes a positive number of seconds; any other
-// text ends the program with code 2 and a message naming the flag.
+// Ends the program with code 2 and a message naming the flag, its value and
+// what it takes.
+[[noreturn]] inline void RefuseValue(const char* argv0, const std::string& flag,
+                                     const std::string& text, const char* expected) {
+  std::fprintf(stderr, "%s: %s '%s': expected %s\n", argv0, flag.c_str(), text.c_str(), expected);
+  std::exit(2);
+}
+
+// The value of a flag that takes a positive number of seconds (else RefuseValue).
 inline double SecondsArgument(const char* argv0, const std::string& flag, const std::string& text) {
   char* end = nullptr;
   const double x = std::strtod(text.c_str(), &end);
   if (text.empty() || *end != '\0' || !(x > 0) || !std::isfinite(x)) {
-    std::fprintf(stderr, "%s: %s '%s': expected a positive number of seconds\n", argv0,
-                 flag.c_str(), text.c_str());
-    std::exit(2);
+    RefuseValue(argv0, flag, text, "a positive number of seconds");
   }
   return x;
 }
 
-// The value of a flag that takes a count from 1 to 1000; any other text
-// ends the program with code 2 and a message naming the flag.
+// The value of a flag that takes a count from 1 to 1000 (else RefuseValue).
 inline int CountArgument(const char* argv0, const std::string& flag, const std::string& text) {
   char* end = nullptr;
   const long x = std::strtol(text.c_str(), &end, 10);
   if (text.empty() || *end != '\0' || x < 1 || x > 1000) {
-    std::fprintf(stderr, "%s: %s '%s': expected a whole number from 1 to 1000\n", argv0,
-                 flag.c_str(), text.c_str());
-    std::exit(2);
+    RefuseValue(argv0, flag, text, "a whole number from 1 to 1000");
   }
   return int(x);
 }

@@ -3,7 +3,8 @@
 // (`archgeo generate --noise 0.05`) of 100x100 (10k quads) and 316x316 (~100k
 // quads), and 1000x1000 (1M quads) only with --include-1m (long: about 90 s
 // and 5.65 GiB with the defaults on 2026-11-28; add --defaults-only, Ceres'
-// Cholesky would need more memory than this machine has). Every size is solved twice, by Ceres with one sparse Cholesky per
+// Cholesky would need more memory than this machine has). Every size is
+// solved twice, by Ceres with one sparse Cholesky per
 // step (solver.pcg_above=0) and with the spec's defaults (Levenberg-Marquardt
 // with conjugate gradients on the assembled normal equations for large
 // rounds, core/lean_solve.h), unless --defaults-only. Prints time to
@@ -22,6 +23,7 @@
 // Times are wall-clock on the machine that runs it. Grids are cached in the
 // scratch folder (see bench::Scratch()).
 #include "benchmarks/bench_util.h"
+#include "bench/bench.h"
 
 #include <algorithm>
 #include <array>
@@ -34,10 +36,12 @@ namespace {
 
 using bench::Fmt;
 using bench::Get;
+using archgeo::Median;
 
 // Generates (once) an n x n quad grid with noise seed `seed` and returns its path.
 std::string Grid(int n, int seed) {
-  const std::string name = seed == 1 ? Fmt("grid_%dx%d.ply", n, n) : Fmt("grid_%dx%d_seed%d.ply", n, n, seed);
+  const std::string name =
+      seed == 1 ? Fmt("grid_%dx%d.ply", n, n) : Fmt("grid_%dx%d_seed%d.ply", n, n, seed);
   const std::string path = (bench::Scratch() / name).string();
   if (!bench::fs::exists(path)) {
     const std::string size = std::to_string(n);
@@ -52,12 +56,6 @@ std::string Grid(int n, int seed) {
 // Fitted exponent b of y = a x^b between two sizes.
 double Exponent(double x1, double y1, double x2, double y2) {
   return std::log(y2 / y1) / std::log(x2 / x1);
-}
-
-double Median(std::vector<double> x) {
-  std::sort(x.begin(), x.end());
-  const size_t n = x.size();
-  return n % 2 ? x[n / 2] : 0.5 * (x[n / 2 - 1] + x[n / 2]);
 }
 
 }  // namespace
@@ -147,7 +145,8 @@ int main(int argc, char** argv) {
     std::cout << "\ndefault, per size (" << seeds << " roofs; those that met the tolerance):\n";
     for (const auto& [quads, runs] : curve["default"]) {
       const auto [low, high] = std::minmax_element(runs[0].begin(), runs[0].end());
-      std::cout << Fmt("  %9d quads: %zu met, total %.1f-%.1f s (median %.1f), peak %.0f MB (median)\n",
+      std::cout << Fmt("  %9d quads: %zu met, total %.1f-%.1f s (median %.1f), "
+                       "peak %.0f MB (median)\n",
                        quads, runs[0].size(), *low, *high, Median(runs[0]), Median(runs[1]));
     }
   }

@@ -398,7 +398,8 @@ class Lean {
     const auto offset = [&](size_t i) { return i < size_t(blocks) ? size_t(s_.blocks[i].offset) : size_t(n); };
     delta->setZero(n);
     Vector r = -gradient, z(n), p(n), q(n);
-    // z = M⁻¹ r on blocks [first, end); returns their r·z and r·r.
+    // z = M⁻¹ r on blocks [first, end); returns their r·z (M⁻¹ is positive
+    // definite: r·z > 0 unless r = 0).
     const auto precondition = [&](size_t first, size_t end) {
       std::array<double, 2> sum = {0, 0};
       for (size_t i = first; i < end; ++i) {
@@ -407,19 +408,16 @@ class Lean {
         double* zi = z.data() + b.offset;
         std::fill(zi, zi + b.tangent, 0.0);
         AddProduct<false>(inverse.data() + s_.diagonal[i], b.tangent, b.tangent, ri, zi);
-        for (int c = 0; c < b.tangent; ++c) {
-          sum[0] += ri[c] * zi[c];
-          sum[1] += ri[c] * ri[c];
-        }
+        for (int c = 0; c < b.tangent; ++c) sum[0] += ri[c] * zi[c];
       }
       return sum;
     };
     std::array<double, 2> sums = SumHalves(half, size_t(blocks), precondition);
     p = z;
-    double rz = sums[0], rr = sums[1];
+    double rz = sums[0];
     double model = 0;  // Q at δ
     int k = 0;
-    while (k < max_iterations && rr > 0) {
+    while (k < max_iterations && rz > 0) {
       Multiply(damping, p, &q);
       const double pq = SumHalves(half, size_t(blocks), [&](size_t first, size_t end) {
         const size_t a = offset(first), e = offset(end);
@@ -439,7 +437,6 @@ class Lean {
       model = next;
       const double beta = sums[0] / rz;
       rz = sums[0];
-      rr = sums[1];
       ForHalves(half, size_t(blocks), [&](int, size_t first, size_t end) {
         const size_t a = offset(first), e = offset(end);
         p.segment(a, e - a) = z.segment(a, e - a) + beta * p.segment(a, e - a);
