@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the public API (api/archgeo/archgeo.h) over problems/ and mesh/.
 #include "archgeo/archgeo.h"
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — `archgeo bench`: solver-setting sweeps on the user's meshes.
 //
 //   archgeo bench SPEC --mesh A.obj --mesh B.off

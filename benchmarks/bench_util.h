@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo benchmarks — shared helpers (header-only: benchmarks/CMakeLists.txt
 // builds every .cpp here into its own program).
 //

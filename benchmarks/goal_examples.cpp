@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The goal library's examples on the real meshes [Gebreiter 2012, §10, §11;
 // issue 18], in this process (ReadSpec + RunSpec, no output files), with the
 // figures the README quotes:

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Orthogonal, locally equilateral grids, Table 1 — one command:
 //   build/benchmarks/grids_table1 [--scene NAME] [--method least_squares|force]
 //                                 [--no-timing] [--set KEY=VALUE ...]

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reproduces [Pellis 2019, §3.3, Fig. 11]: for lattices inscribed in the
 // paraboloid z = αx² + βy² (αβ < 0), the energy Σ ℓ ℓ* per area, as a
 // function of the polar angle θ of an edge, is minimal when θ is a multiple

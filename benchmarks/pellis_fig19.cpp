@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Pellis et al. 2019, Fig. 19: statistics of minimising the total absolute
 // curvature C(Φ) = ∫ |κ1| + |κ2| dA under boundary conditions, with the
 // total_absolute_curvature builder (problems/total_absolute_curvature.h) and

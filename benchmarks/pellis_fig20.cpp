@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reproduces the statistics table of [Pellis 2019, Fig. 20] (mesh design)
 // for the smooth_mesh builder (problems/smooth_mesh.h, §5.1), and checks the
 // acceptance of examples/smooth_mesh.yaml: on the two Directional meshes it

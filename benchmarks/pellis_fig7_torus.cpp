@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reproduces the claim of [Pellis 2019, §3.1, Fig. 7]: on finer and finer
 // principal meshes of one surface, the energy E = Σ ℓ_e ‖n_f − n_f′‖ tends
 // to the total absolute curvature C(Φ) = ∫ |κ1| + |κ2| dA.

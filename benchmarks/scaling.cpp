@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // How the planar-quad solve scales with mesh size (STYLE.md, "Direct solves
 // grow ~n^1.5"): examples/planar_quads.yaml on generated non-planar roof grids
 // (`archgeo generate --noise 0.05`) of 100x100 (10k quads) and 316x316 (~100k

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // smooth_mesh at scale (issue 14, point 4): examples/smooth_mesh.yaml, unchanged
 // but for its mesh, on Concerthall Loop-subdivided once (13,535 → 54,140
 // faces), as one `archgeo solve` subprocess. Prints what the run spent its

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Compares Ceres settings for the planar-quad solve (examples/planar_quads.yaml
 // on the Conjugate mesh): sparse Cholesky with SuiteSparse vs Eigen, CGNR,
 // Levenberg-Marquardt vs dogleg, 1 vs 2 threads, OpenMP dynamic threads on vs

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The pipeline of [Zadravec 2010, Fig. 1] — TCD field → level sets → layout →
 // planar quads — with examples/conjugate_layout.yaml on the design surfaces
 // in ../shared/data, beside libigl's own layouts of the inspired mesh

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reproduces the table of [Zadravec 2010, §6, Fig. 10] ("Details of PQ
 // optimization") on the public quad meshes in ../shared/data, with
 // examples/planar_quads.yaml (only the mesh and the outputs overridden), and

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — many residual blocks of one cost functor type, one per element,
 // evaluated by one object: a term adds its elements to a batch instead of
 // allocating a ceres::CostFunction per element. At 100k quads a planar_quads

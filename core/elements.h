@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the elements a term acts on: quads, interior edges, vertex
 // stars, polyline triples, ... Each element lists vertex indices in the order
 // the term expects, the face or edge it belongs to, its "site" (the vertex,

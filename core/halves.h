@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — ForHalves: one loop split into two fixed halves, each on a
 // thread of its own where there are two (core/lean_solve.cpp's sums and
 // products, core/normal_equations.cpp's pattern). The halves are fixed, so

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — Levenberg–Marquardt on hand-assembled normal equations with a
 // preconditioned conjugate-gradient step, for problems too large for one
 // sparse Cholesky factorisation.

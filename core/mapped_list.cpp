@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — MappedList's mappings (see mapped_list.h).
 #include "core/mapped_list.h"
 

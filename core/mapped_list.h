@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — MappedList<T>: a list of trivially copyable values in its own
 // memory mapping, for the loop's lists of hundreds of MB (core/residuals.h:
 // ~30 residual blocks and ~100 parameter entries per quad). It grows by

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the block pattern of a round's normal equations J^T J,
 // as core/lean_solve.h assembles them: the free parameter blocks (with their
 // manifolds), the residual blocks (cost, loss, the blocks they read), and one

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — a problem is a declaration: the terms it composes (with default
 // weights), its own settings, the stages of its schedule (rounds, tolerance
 // stops, continuation, rest rules, undo, keep-best), the measures it logs,

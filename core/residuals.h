@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — one round's residual blocks as the problem layer adds them: the
 // cost functions, the weighted losses they share, the parameter blocks they
 // read (in order of first use, with their manifolds and constant flags), and

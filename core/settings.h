@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — settings declared once: every key of a problem spec is a Key
 // (name, type, default, range or choices, one-line doc) in a Schema. Reading
 // and validation (problems/spec_reader.h), the report's settings, `archgeo

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the `solver:` section of a spec: ceres::Solver::Options by
 // Ceres' own option names (lower case in YAML, e.g. `linear_solver_type:
 // sparse_normal_cholesky`), converted with ceres::StringTo*. Every choice

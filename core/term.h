@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — terms: an energy of energies/ registered once, with what it acts
 // on, what it reads and how it is weighted, so that any problem (or a user's
 // `problem: custom` spec) can compose it.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — a tolerance band around a scalar residual.
 //
 //   r' = r − clamp(r, −b, b),   ∂r'/∂x = ∂r/∂x if |r| > b, else 0

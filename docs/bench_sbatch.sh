@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: The archgeo authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Slurm job array for `archgeo bench --emit-jobs JOBS` (docs/bench.md): array
 # task k runs line k of JOBS, which writes its record into the records folder.
 #   sbatch --array=1-$(wc -l < jobs.txt) docs/bench_sbatch.sh jobs.txt

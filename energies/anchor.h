@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Soft anchor, one 3-vector residual per vertex:
 //
 //   r = (v − a) / L

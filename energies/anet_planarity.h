@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A-net vertex-star planarity — the YAML term `anet_planarity`, two variants.
 //
 //   [Shi, Wang, Pottmann 2014, §3.2 step 1, eq. 10: F_anet = Σ_i F_p(b_i) + …;

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Bending at a vertex v between two opposite edges (u, v) and (v, w) — the
 // YAML term `bending`, one 3-vector residual per triple (u, v, w):
 //

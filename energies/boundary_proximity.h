@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Proximity to the reference boundary through its tangent line, one 3-vector
 // residual per boundary vertex:
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Principal-symmetric triangle meshes: the three conditions of Pellis 2019,
 // §2.3, in the implementation of §5.2, with a sphere parametrisation that
 // admits planes.

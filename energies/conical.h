@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Conical-mesh angle condition at an interior vertex v of valence 4 — the
 // YAML term `conical`, one residual per vertex star (v; w1, w2, w3, w4):
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Convex panels: a one-sided (hinge) barrier on every corner of a face, one
 // residual per corner (a, b, c) = (previous, corner, next vertex):
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Edge-length × dihedral energy by iteratively reweighted least squares, one
 // 3-vector residual per interior edge e = vw = f ∩ f′:
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The hinge of an interior edge e = vw = f ∩ f′, shared by the two
 // edge-length × dihedral energies (energies/dihedral_energy.h, IRLS;
 // energies/smoothed_dihedral_energy.h, direct): the unit-free edge length

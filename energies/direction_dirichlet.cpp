@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "energies/direction_dirichlet.h"
 
 #include <ceres/autodiff_cost_function.h>

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Dirichlet energy of a per-face unit direction field, one 3-vector residual
 // per interior edge between faces f and g:
 //

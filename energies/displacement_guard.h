@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Displacement guard, one 3-vector residual per guarded vertex:
 //
 //   r = (v − v⁰) / L,   weight g_v (the block "guard_weight")

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Face planarity through an auxiliary plane, one residual per (face, vertex):
 //
 //   r = (n·(v − c) − d) / L

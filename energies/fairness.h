@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Polyline fairness, one 3-vector residual per triple (u, v, w) of consecutive
 // vertices on a mesh polyline:
 //

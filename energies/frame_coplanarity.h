@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Frame-point coplanarity across an interior edge of an H-net — the YAML term
 // `frame_coplanarity`, one residual per interior edge b0b3:
 //

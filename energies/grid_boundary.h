@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Grid boundary anti-folding, one residual per boundary vertex p0 of a grid
 // (3 neighbours: p1, p2 along the boundary, p3 inside):
 //

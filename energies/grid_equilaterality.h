@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Grid equilaterality, one residual per grid edge (a, b):
 //
 //   r = (√(‖x(b) − x(a)‖² + (ε L)²) − L) / L

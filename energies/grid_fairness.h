@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Grid fairness, one 3-vector residual per three consecutive vertices
 // (a, b, c) of a grid line:
 //

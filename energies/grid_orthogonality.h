@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Grid orthogonality at an interior grid vertex, one residual per vertex:
 //
 //   r = a·b / √(‖a‖² ‖b‖² + (ε L²)²),   a = x(l1) − x(l0),   b = x(t1) − x(t0),

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Local equilaterality of a grid quad, four residuals per quad (a, b, c, d in
 // cyclic order):
 //

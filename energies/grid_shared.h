@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What the grid problem (problems/grid.cpp) shares with its four terms
 // (grid_orthogonality, grid_equilaterality, grid_boundary, grid_fairness):
 // the parametric surface and the ideal edge length L, both in file units,

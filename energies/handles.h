@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Design handles, one 3-vector residual per handle vertex:
 //
 //   r = (v − h) / L

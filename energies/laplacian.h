@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Laplacian (umbrella-operator) smoothing of a vertex v with neighbours
 // w_1 … w_n — the YAML term `laplacian`, one 3-vector residual per vertex:
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Jump condition at a cut vertex whose two sides are one wedge (the source
 // vertex of a cut from a singularity), 1 residual:
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Conjugacy of the level sets of two functions g, h in one triangle f,
 // 1 residual:
 //

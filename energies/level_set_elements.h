@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The per-element data of the level-set terms (level_set_*.h), shared by the
 // terms' adders and the problems that build their element sets
 // (problems/level_sets.cpp). Not a cost functor.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The gradient of a piecewise-linear function on one triangle, in the
 // triangle's 2-D frame: shared by the level-set functors (level_set_*.h).
 //

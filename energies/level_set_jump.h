@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Jump condition of a level-set function across a cut, one pair of values of
 // one cut vertex, 1 residual:
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Alignment of a level-set function with a direction field, ignoring spacing,
 // one triangle f, 2 residuals:
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Load with force balance at a free vertex (hanging-net form finding) — the
 // YAML term `load`, one 3-vector residual per free vertex v with neighbours
 // w_1 … w_n joined to v by springs:

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Mean-curvature (area-gradient) smoothing of a vertex v of a triangle mesh
 // with its one-ring w_1 … w_n — the YAML term `mean_curvature_flow`, one
 // 3-vector residual per vertex:

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Edges that do not collapse: a one-sided (hinge) barrier per edge (a, b):
 //
 //   r = max(0, ℓ_min − ‖b − a‖) / ℓ_min,    ℓ_min = min(f · L̄, ½ ‖b₀ − a₀‖)

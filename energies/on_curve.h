@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Vertices that slide on a polyline — the YAML term `on_curve`, in two forms:
 //
 // (a) Exact (CurveManifold, recommended): the vertex's position block gets a

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Planar-quad diagonal distance, one residual per quad face (b0, b1, b2, b3):
 //
 //   r = n·(b1 − b0) / L,   n = c / sqrt(‖c‖² + (ε L²)²),   c = (b2 − b0) × (b3 − b1)

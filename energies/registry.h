@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — every registered term (core/term.h), by name. A term is the
 // energy of the same name in energies/<name>.h; its declaration (TermSpec)
 // sits at the end of energies/<name>.cpp and is listed once in registry.cpp.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Principal-symmetric triangle meshes [Pellis 2019, §2.3, §5.2]: the vertex
 // spheres Σ(v) = (n(v), κ(v)) are those of energies/co_spherical.h.
 //

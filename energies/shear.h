@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shear of a quad face (b0, b1, b2, b3): its two diagonals of equal length —
 // the YAML term `shear`, one residual per quad:
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Edge-length × dihedral energy, smoothed at flat edges and minimised
 // directly (no reweighting between solves). One 4-vector residual per
 // interior edge e = vw = f ∩ f′, d = n_f − n_f′ (so ‖d‖ = ℓ*_e):

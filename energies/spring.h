@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Spring along a mesh edge (a, b) — the YAML term `spring`, two forms:
 //
 //   length spring  (L0 > 0):  r = (‖a − b‖_ε − L0) / L              1 residual

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Step regulariser, one 3-vector residual per vertex:
 //
 //   r = (v − v_prev) / L

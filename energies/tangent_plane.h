@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Distance to a prescribed tangent plane, one residual per (vertex, plane):
 //
 //   r = n·(v − p) / L

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // TCD field smoothness across one interior edge e = (f, g), 2 residuals:
 //
 //   r = sqrt(w_e) · (ζ_f − R(2 τ_fg) ζ_g),   ζ = z_N − e1,   e1 = (1, 0)

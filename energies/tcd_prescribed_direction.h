@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Prescribed conjugate direction in one face, 1 residual:
 //
 //   r = (z_N − p_d) × D̂,   p_d = e1 + (cos 2θ, sin 2θ),

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Singularity avoidance of a TCD field in one face, 1 residual:
 //
 //   t = sqrt(‖z_N − z_M‖² + ε²),   r = (1 − t/ρ)² if t < ρ, else 0,

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Placement of a TCD field singularity in a chosen face, 2 residuals:
 //
 //   r = z_N − z_M

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Transversality of a TCD field in one face, 1 residual:
 //
 //   r = ‖z_N − e1‖² = (z1 − 1)² + z2²,   so ½ r² = ½ φ(‖z_N − e1‖), φ(t) = t⁴

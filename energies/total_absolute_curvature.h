@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Total absolute curvature by iteratively reweighted least squares, two
 // residuals per vertex v with one-ring w_1..w_k:
 //

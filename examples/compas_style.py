@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: The archgeo authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Planar quads from Python, the way a COMPAS script holds a mesh.
 
 A COMPAS mesh goes to plain lists with `mesh.to_vertices_and_faces()` and

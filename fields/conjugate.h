@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the conjugacy relation in one face, in the face's 2-D frame
 // (e1, e2) [Zadravec 2010, §2–3]. Plain Eigen, no CGAL: used by the field
 // code in fields/ and by tests with analytic second fundamental forms.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the jumps of level-set functions across a cut graph
 // (fields/cuts.h) [Zadravec 2010, §5]: the matching signs s_C of a direction
 // field across the cut chains, the constraints the relations g[left] = α_C +

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — cuts for multivalued level-set functions [Zadravec 2010, §5
 // "Quad meshes from a TCD field with singularities"]: a set of mesh edges
 // that joins every singular vertex to the boundary and makes the surface

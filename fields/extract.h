@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — a quad-dominant polygon mesh from two level-set functions on a
 // triangle mesh [Zadravec 2010, §5]: vertices at the crossings of the level
 // sets g = iΔw and h = jΔw', edges along the level sets between crossings,

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — curvature per face of a triangle mesh: the second fundamental form
 // M_f in the face frame, z_M,f, principal and asymptotic directions, the sign
 // of the Gaussian curvature [Zadravec 2010, §2; osculating jets: Cazals &

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — per-face orthonormal frames of a triangle mesh and the frame
 // transport between adjacent faces (the discrete Levi-Civita connection).
 //

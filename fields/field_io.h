@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — files of the field pipeline: the field as a viewable PLY of line
 // segments, and libigl's dense-matrix (DMAT) files of per-face constraints.
 //

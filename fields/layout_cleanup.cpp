@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Polygon-soup clean-ups of a layout (see fields/layout_cleanup.h).
 #include "fields/layout_cleanup.h"
 

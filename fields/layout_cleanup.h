@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — clean-ups of a layout's polygon soup (fields/extract.h step 6):
 // faces as cycles of point indices, oriented consistently, points in 3D.
 // Each function keeps that orientation; "dropped" counts faces left with

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — a net's edges against the surface's curvature directions (see
 // net_curvature.h).
 #include "fields/net_curvature.h"

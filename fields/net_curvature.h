@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — how a net's edges lie against the curvature of the surface it
 // samples: conjugacy of a quad net (planar quads discretise conjugate nets
 // [Zadravec 2010, §1, §3]), closeness of a quad net to the asymptotic

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the conjugate pairs of a TCD field on a triangle mesh, their
 // singularities with index, and the local move of a singularity
 // [Zadravec 2010, §3 (Prop. 2, Def. 1, remark after Prop. 7), §4 eq. 4].

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: The archgeo authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Writes the seed inputs of fuzz/corpus/{obj,off,ply,spec}/ (seed-* files).
 
 Deterministic: crops of the meshes in ../shared/data and examples/ (the first

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer harness: one mesh reader (OBJ, OFF or PLY, chosen at compile
 // time by ARCHGEO_FUZZ_NAME's extension) on arbitrary bytes, through
 // ReadMeshFromMemory, the code path of ReadMesh after the file is read.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer harness: the YAML spec reader, archgeo::ReadSpec(path, overrides)
 // of problems/spec.h, on arbitrary bytes written to a temporary file (ReadSpec
 // reads a path; it opens no other file).

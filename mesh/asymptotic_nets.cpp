@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — analytic asymptotic quad nets [Shi, Wang, Pottmann 2014, §3.3].
 #include "mesh/asymptotic_nets.h"
 

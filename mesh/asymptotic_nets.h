@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — analytic asymptotic quad nets: test surfaces for A-net / H-net
 // optimisation [Shi, Wang, Pottmann 2014, §3.2–3.3, Table 1].
 //

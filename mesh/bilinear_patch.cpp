@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — rational bilinear patches, smooth joins, Darboux transformation
 // [Shi, Wang, Pottmann 2014, §2, §4].
 #include "mesh/bilinear_patch.h"

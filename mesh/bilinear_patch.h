@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — rational bilinear patches, their smooth joins and the Darboux
 // transformation [Shi, Wang, Pottmann 2014, §2 and §4].
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — curves for the goal library: polylines read from OBJ `l` records
 // or given as points, closest point with arc length and tangent, the
 // boundary loops of a mesh, and Catmull-Rom resampling.

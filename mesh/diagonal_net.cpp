@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the diagonal nets of a quad mesh (see diagonal_net.h).
 #include "mesh/diagonal_net.h"
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the named element sets terms act on (core/elements.h), built
 // from a mesh. Every set, its vertex order and its site:
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — metrics of the goal library (see goal_metrics.h).
 #include "mesh/goal_metrics.h"
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — metrics of the goal library [Gebreiter 2012, §10.1, §11]: conical
 // residual and constant face offsets of conical meshes [Liu et al. 2006],
 // spread of edge lengths and of boundary spacing, force balance of a hanging

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — a grid on a parametric surface as a CGAL quad mesh, and its files
 // with the (u, v) of every vertex.
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — MDO, ADO, MDE, ADE of any quad mesh that is a grid
 // [force-directed grids paper, §4, eqs. 4–6; definitions and the spline /
 // discrete evaluations in surfaces/grid_quality.h].

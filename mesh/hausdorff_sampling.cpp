@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the sample grid of the Hausdorff metric (see hausdorff_sampling.h).
 #include "mesh/hausdorff_sampling.h"
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the sample grid of the Hausdorff metric (mesh/metrics.cpp), with
 // a bounded number of samples.
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — hyperbolic nets on a quad mesh [Shi, Wang, Pottmann 2014, §2.3,
 // §3.2 step 2, §3.3, §4].
 #include "mesh/hnet.h"

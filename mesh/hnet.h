@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — hyperbolic nets (H-nets): the smooth extension of a quad mesh by
 // rational bilinear patches [Shi, Wang, Pottmann 2014, §2.3, §3.2 step 2, §4].
 //

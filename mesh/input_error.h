@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — user-input errors.
 //
 // Every problem with a user's input (a mesh file, a YAML spec, a command-line

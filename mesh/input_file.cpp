@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — opening user input files: regular files only (see input_file.h).
 #include "mesh/input_file.h"
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — opening user input files: regular files only.
 //
 // Every file archgeo reads on the user's behalf (the mesh, the reference, the

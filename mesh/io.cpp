@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — mesh files: parsing (mesh/soup_readers.h), CGAL's soup repair,
 // and CGAL's writers.
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — mesh files: OBJ, OFF, PLY (ASCII and binary), polygonal faces.
 #pragma once
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — all-or-nothing output files (protocol in mesh/output_files.h).
 #include "mesh/output_files.h"
 

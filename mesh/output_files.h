@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — all-or-nothing output files.
 //
 // A run's outputs are staged: each is written to a temporary file beside its

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — writing a sampled patchwork (mesh/hnet.h SampledPatchwork) as a
 // PLY triangle mesh with per-vertex normals and, optionally, per-vertex
 // colours (e.g. isophote bands, [Shi 2014, Fig. 5]).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Principal edges of triangle meshes (mesh/principal_edges.h).
 #include "mesh/principal_edges.h"
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — principal edges of triangle meshes [Pellis 2019, §2.3]: the two
 // opposite edges of a valence-6 vertex that follow a principal curvature
 // direction; the labels principal_symmetric reads, checks, makes by splitting

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — size limits for reading a mesh file (no CGAL; the spec reader
 // includes this to fill them from its `limits:` section).
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — reference surfaces: closest point and smooth tangent plane on a
 // triangulated copy (CGAL AABB tree of triangles), closest point and tangent on
 // its boundary polylines (AABB tree of segments).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — reference surfaces for proximity: closest point and tangent
 // plane on a triangle mesh (CGAL AABB tree), closest point and tangent on the
 // reference's boundary curves.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the canonical frame a problem is solved in.
 //
 // Builders work on a copy of the input moved to its centroid, rotated onto

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — visual-smoothness analysis [Pellis 2019, §2–§5.3].
 #include "mesh/smoothness_metrics.h"
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — visual-smoothness analysis of polygon meshes [Pellis et al. 2019].
 //
 // Works on any mesh the store holds (triangles, quads, polygons, mixed, with

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — analytic test meshes for the visual-smoothness analysis [Pellis 2019].
 #include "mesh/smoothness_surfaces.h"
 

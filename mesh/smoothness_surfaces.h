@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — analytic test meshes for the visual-smoothness analysis
 // [Pellis et al. 2019]: the torus principal mesh of Fig. 7, surfaces of
 // revolution between two circles (§4, Fig. 13), and the parallelogram

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — see mesh/soup_halfedges.h.
 #include "mesh/soup_halfedges.h"
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the one check a soup still needs, after ReadMesh has oriented it
 // (mesh/io.cpp), before its faces are added to a Surface_mesh (which needs a
 // polygon mesh: CGAL's is_polygon_soup_a_polygon_mesh).

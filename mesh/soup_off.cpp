@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — OFF (ASCII and binary) into a polygon soup (see soup_readers.h).
 #include <cmath>
 #include <cstdint>

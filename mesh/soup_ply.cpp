@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — PLY (ASCII, binary little- and big-endian) into a polygon soup
 // (see soup_readers.h).
 #include <cmath>

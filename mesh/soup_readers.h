@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — OBJ, OFF and PLY files held in memory, parsed into a polygon soup
 // (no CGAL). Step 1 of ReadMesh (mesh/io.cpp), which then checks and orients
 // the soup with CGAL and builds the Surface_mesh.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the variable store: one CGAL Surface_mesh holds the topology,
 // the vertex positions (its points) and every named variable block
 // (core/term.h BlockDecl) as a property map of fixed-width double arrays, or

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — subdivision for multiresolution optimisation [Pellis 2019, §6]:
 // "we first design a coarse mesh ... subsequently we apply subdivision and
 // optimize again". Thin wrappers over CGAL Subdivision_method_3.

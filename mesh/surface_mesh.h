@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the parameter store.
 //
 // One CGAL::Surface_mesh holds the topology and every optimisation variable.

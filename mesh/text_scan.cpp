@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the lexical layer of the mesh readers (see text_scan.h).
 #include "mesh/text_scan.h"
 

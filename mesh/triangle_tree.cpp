@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the AABB tree of a triangle mesh's faces (see triangle_tree.h).
 #include "mesh/triangle_tree.h"
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the AABB tree of a triangle mesh's faces for closest-point
 // queries (mesh/reference.cpp, mesh/metrics.cpp), built with CGAL's search
 // tree for each query's first bound.

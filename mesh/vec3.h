@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — small arithmetic on Vec3 (std::array<double, 3>) for mesh-side
 // geometry; energies use Eigen maps instead.
 #pragma once

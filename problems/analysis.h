@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the analyses a report shows besides the planarity/proximity
 // metrics (mesh/metrics.h): visual smoothness [Pellis 2019], A-net / H-net
 // quality [Shi 2014], conical meshes and length spreads [Gebreiter 2012, §10,

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the per-face scalar a solve shows: the face colours and named
 // float properties of the output PLY, the pictures (output.image, `archgeo
 // render`) and the report's arrays (output.arrays). By the name a problem

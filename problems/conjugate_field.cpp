@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — `conjugate_field`: a field of transverse conjugate directions (a
 // TCD field) on a triangle mesh of the design surface [Zadravec 2010, §2–4].
 //

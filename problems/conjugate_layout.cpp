@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — `conjugate_layout`: from a triangle mesh of the design surface to
 // a planar-quad layout, the pipeline of [Zadravec 2010, Fig. 1]:
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — `problem: custom`: the problem is the spec's own list of terms.
 //
 //   problem: custom

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — what the three problems of the design-surface-to-layout pipeline
 // [Zadravec 2010, Fig. 1] share: conjugate_field (a TCD field on a triangle
 // mesh, §2–4), level_sets (two functions whose level sets follow the field and

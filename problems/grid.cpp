@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — `grid`: orthogonal, locally equilateral quad grids on parametric
 // surfaces [force-directed grids paper, §3–4, Listing 1, Table 1].
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — `hnet`: optimise a quad mesh towards an A-net and extend it to a
 // smooth hyperbolic net (H-net) of rational bilinear patches [Shi, Wang,
 // Pottmann 2014, §3.2, Fig. 4, Table 1].

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — which net the hnet builder optimises (see hnet_net.h).
 #include "problems/hnet_net.h"
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — which net the hnet builder optimises: the input quad mesh or one
 // of its diagonal nets (mesh/diagonal_net.h).
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — `level_sets`: two functions g, h on a triangle mesh whose level
 // sets follow a TCD field, and the quad-dominant layout they cut out
 // [Zadravec 2010, §5].

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the measures a stage logs and its tolerances test, on the
 // current state of the store (canonical frame: lengths in input mean edge
 // lengths). Measures computed together form a group (one pass):

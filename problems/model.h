@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the problem layer under the one loop (core/loop.h): a Model over
 // the variable store (mesh/store.h), the reference surface and the measures,
 // and the HookContext a problem declaration's hooks see.

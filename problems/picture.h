@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — pictures of meshes (render/picture.h) with a solve's per-face
 // values (problems/colors.h): output.image and `archgeo render`.
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — `planar_quads`: every quad (and polygon) planar to a tolerance
 // while the mesh keeps its shape, its boundary and its visual smoothness.
 //

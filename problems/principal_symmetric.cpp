@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — `principal_symmetric`: make a triangle mesh principal-symmetric
 // [Pellis 2019, §2.3, §5.2; Fig. 5, 14].
 //

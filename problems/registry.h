@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — every problem declaration (core/problem.h) by name: one file
 // problems/<name>.cpp each, listed once in registry.cpp, plus `custom`, which
 // composes any registered terms named in the spec (problems/custom.h).

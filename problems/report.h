@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — human-readable tables of metrics, for `solve` and `measure`.
 #pragma once
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — one `archgeo solve` run: read the spec's files, solve the problem
 // in the canonical frame (level by level with multiresolution) through the
 // one loop, measure before and after, write the outputs atomically.

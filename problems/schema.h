@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the settings schema of a problem: the common keys (mesh,
 // reference, fixed, schedule, multiresolution, limits, output), the solver
 // keys (core/solver_options.h), the keys of every term of the problem

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — `terms.<t>.select`: which elements of a term's element set it
 // acts on. Each element has a site (a vertex, face or edge; core/elements.h)
 // and the selection tests the site. Forms (YAML):

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — `smooth_mesh`: lower the visual-smoothness energy E = Σ_e ℓ_e ℓ*_e
 // of a triangle or hybrid (triangle + planar polygon) mesh while it keeps to
 // its reference surface or follows moved handles.

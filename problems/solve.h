@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — solving a problem on meshes in memory: the working net, the
 // canonical frame, multiresolution levels and the one loop, without files.
 // `archgeo solve` (problems/run.h) adds reading, metrics, the report and the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the YAML problem spec: parse, validate against the problem's
 // schema (problems/schema.h), apply --set overrides.
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — input suitability warnings: before solving, whether the net can
 // become what the problem makes, from how its edges lie against the jet-fitted
 // curvature directions of the surface (fields/net_curvature.h). A net far from

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — `total_absolute_curvature`: form finding of a surface of small
 // total absolute curvature C(Φ) = ∫ |κ1| + |κ2| dA under boundary conditions
 // [Pellis 2019, §4, §5.3; Fig. 13, 15, 19].

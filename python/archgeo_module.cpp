@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the Python module `archgeo` (pybind11, numpy arrays in and out)
 // over the public C++ API (api/archgeo/archgeo.h). Input errors raise
 // archgeo.InputError (a ValueError) with the CLI's message.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the one colour scale of face colours and pictures: green at 0,
 // yellow at red_at / 2, red at red_at and above (Zadravec 2010, Fig. 1).
 // Header-only, no dependencies.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the self-contained HTML view (render/picture.h).
 #include <nlohmann/json.hpp>
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — PNG pictures of meshes with a per-face scalar as colours
 // (`archgeo render`, output.image). Drawn with cairo (Debian libcairo2):
 // orthographic view, painter's algorithm (faces sorted back to front), flat

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Catenoid (test surface; a minimal surface of revolution):
 //   x(u, v) = (c cosh(v/c) cos u, c cosh(v/c) sin u, v),
 //   u ∈ [0, 2π) periodic, v ∈ [−H/2, H/2] open.

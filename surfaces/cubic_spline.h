@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — interpolating cubic spline curve in R³ through given points (no CGAL).
 //
 // C² cubic spline S(t) with S(t_k) = P_k, chord-length parametrisation

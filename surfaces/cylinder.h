@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Circular cylinder (test surface):
 //   x(u, v) = (R cos u, R sin u, v),   u ∈ [0, 2π) periodic, v ∈ [0, H] open.
 // Stands for no Table 1 scene; it is developable, so a grid closed in u can be

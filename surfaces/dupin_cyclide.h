@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Dupin-cyclide bridge (Table 1 scene "Bridge", type C0, Fig. 7: "a part of a
 // Dupin cyclide which is enclosed with metallic rings"). The ring cyclide in
 // its curvature-line parametrisation (α, β) [e.g. Wikipedia, "Dupin cyclide",

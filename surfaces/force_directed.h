@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the force-directed algorithm for orthogonal, locally equilateral
 // grids on parametric surfaces [force-directed grids paper, §3, Listing 1]
 // (no CGAL).

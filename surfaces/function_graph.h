@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Function graph (Table 1 scene "Function Graph", type C0): a roof over the
 // rectangle [0, a] × [0, b], a dome plus a saddle,
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — quad grids on parametric surfaces (no CGAL).
 //
 // A grid is n_u × n_v vertices, each carrying its surface parameter (u, v);

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — orthogonality and equilaterality of quad grids: MDO, ADO, MDE, ADE
 // [force-directed grids paper, §4, eqs. 4–6, Table 1] (no CGAL).
 //

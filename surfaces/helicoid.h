@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Helicoid (test surface; a ruled minimal surface):
 //   x(u, v) = (v cos u, v sin u, c u),
 //   u ∈ [0, angle] open (the turning angle), v ∈ [−radius, radius] open.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Klein bottle, the figure-8 immersion (Table 1 scene "Klein Bottle", type C2,
 // a grid closed in both directions; Figs. 5 and 6 of the paper lay a hall out
 // on a Klein bottle and cut the result in half). With c = cos(u/2),

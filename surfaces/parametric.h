@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — what every parametric surface provides (no CGAL, header only).
 //
 // A parametric surface is a map x : [u0, u1] × [v0, v1] → R³. Every surface

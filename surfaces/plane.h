@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Plane (test surface): x(u, v) = (u, v, 0) on [0, a] × [0, b], open in u and v.
 // Stands for no Table 1 scene; used by the tests (an orthogonal equilateral
 // grid on it is the analytic zero of every grid measure and energy).

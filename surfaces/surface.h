@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — Surface: one parametric surface of any kind in surfaces/, placed
 // in space by a rigid motion (no CGAL).
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — surfaces by name, with validated parameters (no CGAL).
 //
 // Names and what they stand for (each header has the formula):

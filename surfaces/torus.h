@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Ring torus (test surface):
 //   x(u, v) = ((R + r cos v) cos u, (R + r cos v) sin u, r sin v),
 //   u, v ∈ [0, 2π), periodic in both.

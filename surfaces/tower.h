@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Twisted hyperboloid tower (Table 1 scenes "Tower", type C1 — closed in one
 // direction, Fig. 9(a) — and, as an open sector, "Tower (Rings)", type C0,
 // Fig. 9(b)). A hyperboloid of one sheet around the z axis whose parameter

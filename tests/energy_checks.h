@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shared helpers for the energy tests (test_energies, test_anet_energies,
 // test_smoothness_energies, test_smoothed_dihedral_energy): evaluate a Ceres
 // cost function on plain blocks, compare autodiff with numeric differences

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A test mesh as OBJ text: an n × n grid of unit quads over z = twist · x · y
 // (0: planar quads; a hyperbolic paraboloid's quads are twisted, δ_PQ,n ≈
 // twist / √2 for unit quads).

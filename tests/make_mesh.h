@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Test helpers on meshes: a Surface_mesh from points and faces (indices into
 // points; every face must be added, EXPECTed), an open quad cylinder, a
 // vertex's position as an Eigen vector, the vertex nearest a point, and the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A fresh, empty folder per test under the system temp folder, removed after.
 #pragma once
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Runs a shell command in the tests (the CLI, Python, CMake, a browser):
 // its exit code and its output (stdout and stderr together).
 #pragma once

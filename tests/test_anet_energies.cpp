@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests for the A-net / H-net energies [Shi, Wang, Pottmann 2014, §3.2]:
 // energies/anet_planarity (vertex-normal and quad variants),
 // energies/frame_coplanarity and the third-difference fairness of

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests for mesh/asymptotic_nets: the analytic asymptotic test nets of
 // [Shi, Wang, Pottmann 2014, §3.3, Table 1].
 //  - the Weierstrass ODE route reproduces Enneper's closed form (also through

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Batches (core/batch.h): an element evaluates to the bits of its
 // ceres::AutoDiffCostFunction (inside a ToleranceBand when banded), and a
 // residual list of batch elements gives LeanSolve and Ceres (MakeProblem) the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `archgeo bench` end to end (bench/bench.h), through the binary:
 //  - a sweep of 4 settings × 2 meshes × 2 repeats gives 8 rows in the table,
 //    the CSV and the JSON; the combination Ceres rejects (cgnr with dogleg)

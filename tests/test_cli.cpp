@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // End to end through the `archgeo` binary: planarising a generated grid,
 // invariance under similarity, and every class of bad input (exit 2, a
 // message naming the file, no output, the input untouched).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // End to end through the `archgeo` binary (issue 17, input side): every bad
 // input below ends with exit 2 at once, a message naming the file or option,
 // and nothing written: non-finite or huge `generate` options, sizes beyond the

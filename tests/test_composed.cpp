@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Composed problems (problem: custom): examples/planar_smooth.yaml — planar
 // quads with Pellis' visual smoothness and the validity barriers — and the
 // barrier terms' functors (convexity, min_edge_length).

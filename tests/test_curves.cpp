@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests for mesh/curves: OBJ polylines and their errors (file and line),
 // polylines from points, closest points with arc length and tangent, the
 // boundary loops of a mesh, Catmull-Rom resampling.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Outputs are byte-identical run to run at a fixed thread count (README,
 // Guarantees): the same spec, mesh and `solver.num_threads` give the same
 // output mesh and the same report figures. (Threads 1 and 2 may differ in the

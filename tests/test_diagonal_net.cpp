@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Diagonal nets (mesh/diagonal_net.h): combinatorics and orientation on a
 // grid, the exact A-net among the diagonals of a hyperbolic paraboloid
 // sampled along its principal-like directions, the two nets of the negshell

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests for the planar-quad energies (energies/pq_diagonal, face_planarity,
 // fairness, proximity, boundary_proximity, anchor):
 //  (a) autodiff Jacobians against numeric differences (ceres::GradientChecker)

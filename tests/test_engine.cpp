@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The engine: the one loop's schedule rules on a model whose rounds are
 // scripted, the term registry, per-face variable blocks end to end
 // (solved, written to the report in file units and read back), and

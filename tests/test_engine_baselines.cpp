@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The engine reproduces the five examples' objectives from before the
 // validity checks (issue 10: "the total objectives stay within 1e-6 relative
 // of today's"): each example is run with the settings of then — validity

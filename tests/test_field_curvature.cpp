@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests for the per-face frames, frame transport and curvature of fields/:
 //  - frames are orthonormal and tangent; the smooth frame of a plane is
 //    constant; the transport around a vertex rotates by −(angle defect);

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests for fields/cuts.h: the cut graph makes every surface a disk (Euler
 // characteristic 1 per component after cutting) — plane with a singularity,
 // cylinder, closed ellipsoid with four singularities, torus, the real meshes

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests for the TCD field and level-set energies (energies/tcd_*.h,
 // energies/level_set_*.h):
 //  (a) autodiff Jacobians against numeric differences (GradientChecker) on

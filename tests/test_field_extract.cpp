@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests for fields/extract.h on level sets whose quad mesh is known:
 //  - g = x, h = y on a plane patch (jittered, and grid-aligned so that levels
 //    run through mesh vertices and along mesh edges): the regular grid, exact

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests for the orientation of a conjugate pair across the cuts
 // (fields/cut_jumps.h OrientPair) and the parity of the rounded jumps at
 // singular vertices (RoundJumps):

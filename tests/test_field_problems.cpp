@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // End-to-end runs of the field pipeline's problems [Zadravec 2010, Fig. 1]
 // (problems/conjugate_field.cpp, level_sets.cpp, conjugate_layout.cpp), with
 // bounds from analytic surfaces and the paper:

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests for fields/singularities.h:
 //  - indices are multiples of 1/2 and sum to the Euler characteristic on a
 //    closed surface for ANY field (discrete Poincaré–Hopf);

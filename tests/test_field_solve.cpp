@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Small test-only Ceres problems that check the minimisers of the field and
 // level-set functors (not the phase-2 orchestration):
 //  - Dirichlet with frame transport: boundary values of a parallel line field

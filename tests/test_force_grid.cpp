@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests for grids on parametric surfaces, their quality measures and the
 // force-directed method (surfaces/grid, grid_quality, force_directed;
 // mesh/grid_mesh, grid_metrics):

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every input of the committed fuzz corpora (fuzz/corpus/: seeds, coverage
 // inputs and the regression inputs of past findings) read the way the
 // harnesses read it: success or an InputError, never another exception.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests for the goal-library energies [Gebreiter 2012, §10.1, §11]
 // (energies/spring, shear, bending, conical, load, laplacian,
 // mean_curvature_flow, on_curve):

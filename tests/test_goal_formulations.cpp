@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Small test-only Ceres problems proving that the goal-library formulations
 // reach what the thesis' workflows need [Gebreiter 2012, §11.2.2, §11.7.1,
 // §10.1] (the real problem declarations belong to the engine):

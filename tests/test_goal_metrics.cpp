@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests for mesh/goal_metrics: conical residual, constant face offsets
 // [Liu et al. 2006], length spreads, tributary areas and force balance, each
 // against an analytic value or a theorem.

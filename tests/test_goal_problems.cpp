@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The goal library as registered terms composed in `problem: custom` specs
 // [Gebreiter 2012, §10, §11]: the three examples' figures end to end (the
 // hanging net on its own 12 × 12 grid; conical.yaml on a noisy torus principal

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests for the grid energies (energies/grid_orthogonality, grid_equilaterality,
 // grid_quad_equilaterality, grid_boundary, grid_fairness), whose variables are the (u, v) of grid
 // vertices on a parametric surface:

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // End to end: the `grid` problem (problems/grid.cpp) — grids on parametric
 // surfaces [force-directed grids paper]:
 //  (a) a plane grid that is already orthogonal and equilateral stays put

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests for the bounded Hausdorff sample grid (mesh/hausdorff_sampling.h):
 // the sample count is CGAL's own, the spacing keeps it under the cap even
 // when one vertex is moved far away (issue 17: 147 s on a 2,000-vertex mesh),

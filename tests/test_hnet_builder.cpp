@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The hnet builder end to end (ReadSpec + RunSpec) on small nets: the exact
 // A-net of a hyperbolic paraboloid stays exact, a small Enneper piece meets
 // the acceptance bounds of Shi 2014 Table 1's "minimal surface 2" row, non-quad

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests for mesh/bilinear_patch and mesh/hnet [Shi, Wang, Pottmann 2014]:
 //  (a) rational bilinear patches: corners, frame points, straight rulings,
 //      W = 1 is bilinear, derivatives vs finite differences (eq. 1–4);

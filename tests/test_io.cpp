@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests for mesh/io (ReadMesh, WriteMesh) and mesh/output_files (StagedOutputs):
 // round trips in every format, the real meshes of ../shared/data, one test per
 // class of bad input, and the all-or-nothing output files.

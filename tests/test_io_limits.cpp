@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests for the mesh readers' bounds (mesh/io.h, mesh/soup_readers.h,
 // mesh/input_file.h): no silent misreading (OBJ indices beyond 2^31, relative
 // indices, files holding more or fewer records than their header declares),

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests for the layout clean-ups of fields/extract.h step 6 on the branched
 // pair g + i h = z^(1/2) (a +1/2 singularity at the origin, cut along the
 // negative x-axis, s = −1), both levels even:

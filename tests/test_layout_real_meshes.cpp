@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Issue 11's acceptance on real meshes: "The same pipeline runs unchanged on
 // ../shared/data/directional_Concerthall.off and directional_train-station.off
 // (a surface with a hole: the cuts make it simply connected) and produces

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // LeanSolve (core/lean_solve.h): Levenberg–Marquardt with block-Jacobi PCG on
 // the assembled normal equations reaches Ceres' optimum on a linear and on a
 // non-linear problem with a manifold and a robust loss, keeps constant blocks,

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests for mesh/reference, mesh/topology, mesh/metrics and mesh/generators.
 #include <algorithm>
 #include <chrono>

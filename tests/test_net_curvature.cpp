@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A net's edges against the surface's curvature directions
 // (fields/net_curvature.h), on nets whose relation to the curvature is known
 // analytically: the parameter grid of z = xy is its asymptotic net, the grid

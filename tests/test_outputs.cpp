@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The output protocol of mesh/output_files.h: regular files only, nothing
 // replaced before everything is written, all old or all new when a rename
 // fails or a signal arrives, checked writes on a full disk — as a unit and

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The installed C++ package (issue 15): `cmake --install` of this build into
 // a scratch prefix puts libarchgeo, <archgeo/archgeo.h> (no CGAL, Ceres or
 // YAML include in any installed header) and archgeoConfig.cmake there; a

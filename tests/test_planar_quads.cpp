@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The planar_quads builder in process: polygons, fixed vertices, mixed
 // meshes, fixed-weight convergence and agreement between linear solvers.
 #include <gtest/gtest.h>

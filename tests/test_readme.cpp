@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // README.md's key tables come from the settings schema: each block between
 // `<!-- keys: PROBLEM -->` and `<!-- /keys -->` must equal `archgeo spec
 // PROBLEM --keys` (`common`: the keys every problem has), and every problem

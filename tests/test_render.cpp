@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Pictures and coloured outputs (issue 15): the per-face value of every
 // problem and its red value (problems/colors.h), the PLY's named float face
 // property read back by Debian's meshio (python3-meshio) and by archgeo's own

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The HTML view (`archgeo render ... --out view.html`, render/html_view.cpp)
 // in a real browser: Debian's headless Chromium loads the self-contained
 // page from a file (no server) and takes a screenshot, decoded with cairo: a

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every example's report (and `measure --json`) validates against
 // docs/report.schema.json, with strict integers (a count written as 3.0
 // fails); the schema itself rejects what issue 15 found wrong (a count as a

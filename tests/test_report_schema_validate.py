@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: The archgeo authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Validates archgeo reports against docs/report.schema.json.
 
 Usage: test_report_schema_validate.py SCHEMA REPORT.json...

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The smooth_mesh and principal_symmetric builders end to end (ReadSpec +
 // RunSpec) on small meshes [Pellis 2019, §5.1, §5.2]: E drops on a noisy
 // saddle, planar quads stay planar in a hybrid mesh, handles move the

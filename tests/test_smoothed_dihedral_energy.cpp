@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests for energies/smoothed_dihedral_energy.h, the directly minimised
 // E_ε = Σ ℓ_e sqrt(ℓ*²_e + ε²) [Pellis 2019, §3, §5.1]:
 //  (a) autodiff Jacobians against numeric differences, bent and flat hinges;

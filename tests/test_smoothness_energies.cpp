@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests for the visual-smoothness energies of Pellis 2019
 // (energies/dihedral_energy, total_absolute_curvature, principal_symmetric):
 //  (a) autodiff Jacobians against numeric differences (ceres::GradientChecker,

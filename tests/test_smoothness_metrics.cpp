@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests for mesh/smoothness_metrics and mesh/smoothness_surfaces [Pellis 2019].
 #include <cmath>
 #include <string>

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // EachOrderedEdgeOnce (mesh/soup_halfedges.h) against CGAL's
 // is_polygon_soup_a_polygon_mesh: after orient_polygon_soup has succeeded
 // without a report, the two give the same verdict (ReadMesh relies on it);

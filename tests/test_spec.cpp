@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The YAML problem spec: defaults, overrides and every class of bad input.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `archgeo spec PROBLEM > s.yaml && archgeo solve s.yaml --set mesh=…
 // --set output.mesh=… --set output.report=…` runs for every problem: the
 // template of each registered problem, read back and solved on a small mesh

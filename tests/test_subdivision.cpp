@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // mesh/subdivision: the multiresolution step [Pellis 2019, §6]. Loop and
 // Catmull–Clark keep the old vertices' indices (run.cpp relies on it to keep
 // `fixed` vertex ids through the levels), counts follow the schemes' rules,

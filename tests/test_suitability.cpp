@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Input suitability warnings (problems/suitability.h), end to end: each
 // problem warns, before solving and in the summary, when its input net is far
 // from what it can make buildable, with the figures in details.suitability,

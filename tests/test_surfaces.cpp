@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests for surfaces/: the parametric surfaces and their factory.
 //  (a) analytic first derivatives of every named surface against central
 //      differences, and Jets through Point equal to Tangents;

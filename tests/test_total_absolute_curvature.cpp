@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The total_absolute_curvature builder end to end (ReadSpec + RunSpec) on
 // small surfaces of revolution [Pellis 2019, §4, Fig. 13]: with both boundary
 // circles fixed, a bulged start relaxes to the straight generator (cone or

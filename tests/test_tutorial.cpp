@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // docs/tutorial.md runs as written: every ```sh block, in order, from the
 // repository root (build/archgeo replaced by the binary under test), after
 // out/tutorial/ is removed, so a step that needs a file no earlier step

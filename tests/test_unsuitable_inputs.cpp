@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Unsuitable inputs (issue 13): nets a problem was not made for, run with
 // its example's settings. Each run either returns a valid mesh with every
 // tolerance met (exit 0) — re-measured here on the written file against the

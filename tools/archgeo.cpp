@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — command-line tool. Parses arguments and prints; all work is in
 // problems/ and mesh/.
 //

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: The archgeo authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Fuzz smoke run (CI): builds the libFuzzer harnesses of fuzz/ with clang,
 # ASan and UBSan in build-fuzz/, then runs each for a few seconds starting
 # from its committed corpus fuzz/corpus/<name>/ (every committed input, the

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: The archgeo authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Installs every build, test and run dependency of archgeo from Debian 12 packages.
 # Idempotent: packages already present are left alone; nothing is downloaded
 # outside apt. Run as root (or with sudo available).
@@ -21,6 +23,8 @@ packages=(
   chromium
   # tools/fuzz_smoke.sh: clang with libFuzzer and the sanitizer runtimes.
   clang libclang-rt-14-dev
+  # tests: the licence check (ctest Licensing: reuse lint).
+  reuse
 )
 
 sudo_cmd=()

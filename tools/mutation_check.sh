@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: The archgeo authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Mutation check of the energies: for every registered term, run the test
 # suite with that term's residuals zeroed (a build with
 # -DARCHGEO_MUTATION_TESTING=ON and ARCHGEO_ZERO_TERM=<term>) and report the

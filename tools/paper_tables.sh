@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: The archgeo authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The papers' tables, fast variants (CI runs this from tools/test.sh): each
 # benchmark program prints the paper's rows beside ours and exits non-zero
 # when its acceptance fails; this script runs them all and fails if any does.

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: The archgeo authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Sanitizer run: builds the libraries, the archgeo tool and every test with
 # AddressSanitizer and UndefinedBehaviorSanitizer in build-asan/ (gcc,
 # RelWithDebInfo without NDEBUG, so CGAL and Eigen keep their assertions as in

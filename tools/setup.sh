@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: The archgeo authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Sets archgeo up on a fresh Debian 12 machine: installs the Debian packages,
 # builds (Release, into build/), and runs the demo (examples/demo.yaml).
 set -euo pipefail

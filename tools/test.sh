@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: The archgeo authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs the archgeo test suite (GoogleTest via ctest) on the build from
 # tools/setup.sh, then the fast variants of the papers' tables with their
 # acceptances (tools/paper_tables.sh), then a fuzz smoke run of the readers

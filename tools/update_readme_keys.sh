@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: The archgeo authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Regenerates the key tables of README.md from the settings schema: every block
 #   <!-- keys: PROBLEM -->
 #   ...

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the public C++ API (installed as <archgeo/archgeo.h>, target
 // archgeo::archgeo). No CGAL, Ceres or YAML in this header: meshes are plain
 // arrays in file units (any unit: the library moves them into its canonical

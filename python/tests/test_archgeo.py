@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: The archgeo authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Tests of the Python module archgeo (python/archgeo_module.cpp).
 
 Run by ctest (test python_archgeo, with PYTHONPATH at the built module,
