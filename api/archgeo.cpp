@@ -11,11 +11,12 @@
 #include <filesystem>
 #include <functional>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/io.h"
 #include "problems/generate.h"
 #include "problems/registry.h"
 #include "problems/run.h"
+#include "problems/mesh_inputs.h"
 #include "problems/schema.h"
 #include "problems/spec.h"
 

@@ -16,7 +16,7 @@
 #include <map>
 #include <sstream>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/output_files.h"
 #include "problems/spec.h"
 

@@ -29,7 +29,7 @@
 #include <thread>
 #include <vector>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "problems/run.h"
 #include "core/solver_options.h"
 #include "problems/spec.h"

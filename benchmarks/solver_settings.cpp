@@ -131,7 +131,7 @@ void BM_SmallGridSolve(benchmark::State& state, std::vector<std::string> overrid
 }
 
 void BM_PqDiagonalEvaluate(benchmark::State& state) {
-  std::unique_ptr<ceres::CostFunction> cost(archgeo::MakePqDiagonal(1.0));
+  std::unique_ptr<ceres::CostFunction> cost(archgeo::MakeAutoDiff(archgeo::PqDiagonal(1.0)));
   double b[4][3] = {{0, 0, 0}, {1, 0, 0.01}, {1, 1, 0}, {0, 1, -0.02}};
   double residual, jac[4][3];
   const double* params[] = {b[0], b[1], b[2], b[3]};

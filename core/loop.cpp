@@ -4,6 +4,7 @@
 
 #include <ceres/solver.h>
 #include <glog/logging.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>

@@ -24,17 +24,16 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "core/problem.h"
+#include "core/progress.h"
 #include "core/residuals.h"
 #include "core/settings.h"
 #include "core/term.h"
 
 
 namespace archgeo {
-
-using ProgressSink = std::function<void(const std::string& line)>;
 
 // A term as the loop activates it for one round.
 struct ActiveTerm {

@@ -3,6 +3,7 @@
 #include "core/settings.h"
 
 #include <glog/logging.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <sstream>

@@ -17,9 +17,9 @@
 #include <variant>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 
 namespace archgeo {
 

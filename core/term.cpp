@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/term.h"
 
+#include "core/batch.h"
+
 namespace archgeo {
 
 double TermContext::Option(const std::string& option, bool boolean) const {
@@ -24,6 +26,19 @@ bool TermContext::Bool(const std::string& option) const { return Option(option, 
 
 const std::string& TermContext::String(const std::string& option) const {
   return settings().String("terms." + term_name() + "." + option);
+}
+
+Batch* TermContext::FindBatch(const void* key, double band) const {
+  for (const Kept& k : batches_) {
+    if (k.key == key && k.band == band) return k.batch;
+  }
+  return nullptr;
+}
+
+Batch* TermContext::KeepBatch(const void* key, double band, std::unique_ptr<Batch> batch) {
+  Batch* kept = Keep(std::move(batch));
+  batches_.push_back({key, band, kept});
+  return kept;
 }
 
 }  // namespace archgeo

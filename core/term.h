@@ -18,13 +18,12 @@
 #pragma once
 
 #include <any>
-#include <array>
 #include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "core/batch.h"
+#include "core/blocks.h"
 #include "core/elements.h"
 #include "core/settings.h"
 
@@ -35,37 +34,7 @@ class Manifold;
 
 namespace archgeo {
 
-// How a variable block maps from the file's units to the canonical frame the
-// problem is solved in (x_c = Rᵀ(x − c)/s, mesh/similarity.h), and back.
-enum class FrameMap {
-  kPosition,       // x → Rᵀ(x − c)/s   (points)
-  kDirection,      // x → Rᵀx           (unit vectors, normals)
-  kVector,         // x → Rᵀx/s         (offsets, displacements)
-  kLength,         // x → x/s           (distances, plane offsets)
-  kInverseLength,  // x → x·s           (curvatures)
-  kInvariant,      // x → x             (angles, surface parameters, weights, ...)
-};
-
-// What happens to a block when the mesh is subdivided (multiresolution).
-enum class Carry {
-  kReinitialise,  // the owner's `init` runs again on the finer mesh
-  kInterpolate,   // vertex blocks: kept on old vertices, averaged from the
-                  // two end vertices on new edge vertices (Loop and
-                  // Catmull–Clark keep vertex ids); others: re-initialised
-};
-
-// A named variable block per vertex, face or edge (or `count` global ones).
-struct BlockDecl {
-  std::string name;   // e.g. "face_plane_normal"
-  Site on = Site::kFace;
-  int width = 1;      // doubles per element (≤ 9)
-  FrameMap frame = FrameMap::kInvariant;
-  bool unit = false;  // a unit 3-vector: optimised on the sphere (ceres::SphereManifold)
-  Carry carry = Carry::kReinitialise;
-  bool output = false;  // written to the output PLY (named float properties) and report
-  bool constant = false;  // data, not optimised (e.g. weights a problem computes)
-  std::string doc;
-};
+class Batch;
 
 class TermContext;
 using TermAdder = void (*)(TermContext& context, size_t element);
@@ -162,26 +131,17 @@ class TermContext {
   // is dropped: it cannot change.
   virtual void Add(ceres::CostFunction* cost, const std::vector<double*>& blocks,
                    const char* part = nullptr, double weight = -1) = 0;
-  // The same as Add(new Cost(new Functor(functor)), blocks, part, weight)
-  // (within a ToleranceBand of `band` when band ≥ 0), for Cost a
-  // ceres::AutoDiffCostFunction type, without a cost object per element: the
-  // term's elements of one Cost type and band share one evaluator this round
-  // (core/batch.h).
-  template <class Cost>
-  void AddAutoDiff(const typename BatchOf<Cost>::functor& functor,
-                   const std::array<double*, BatchOf<Cost>::kBlocks>& blocks, double band = -1,
-                   const char* part = nullptr, double weight = -1) {
-    using Kind = typename BatchOf<Cost>::type;
-    Kind* batch = nullptr;
-    for (const Kept& k : batches_) {
-      if (k.key == Kind::Key() && k.band == band) batch = static_cast<Kind*>(k.batch);
-    }
-    if (!batch) {
-      batch = static_cast<Kind*>(Keep(std::make_unique<Kind>(band)));
-      batches_.push_back({Kind::Key(), band, batch});
-    }
-    AddElement(*batch, batch->Push(functor), blocks.data(), int(blocks.size()), part, weight);
-  }
+  // Batched residuals (energies/autodiff.h, AddAutoDiff): many elements of
+  // one functor type share one evaluator per round instead of a cost object
+  // each (core/batch.h). The batch kept this round under (key, band), or null.
+  Batch* FindBatch(const void* key, double band) const;
+  // Takes ownership of `batch` for this round's residuals under (key, band)
+  // and returns it.
+  Batch* KeepBatch(const void* key, double band, std::unique_ptr<Batch> batch);
+  // Adds element `element` of a kept batch over `count` blocks, as Add does
+  // (the weight, the part and the dropping of all-constant residuals alike).
+  virtual void AddElement(const Batch& batch, int element, double* const* blocks, int count,
+                          const char* part, double weight) = 0;
   // Optimises the 3-block on the unit sphere.
   virtual void SetUnit(double* block) = 0;
   // Optimises `block` on `manifold` (taking ownership), unless it already has
@@ -191,9 +151,6 @@ class TermContext {
  protected:
   // Takes ownership of a batch for this round's residuals and returns it.
   virtual Batch* Keep(std::unique_ptr<Batch> batch) = 0;
-  // Add for element `element` of a kept batch.
-  virtual void AddElement(const Batch& batch, int element, double* const* blocks, int count,
-                          const char* part, double weight) = 0;
   // This round's batches (forget them when the round's residuals go).
   struct Kept {
     const void* key;

@@ -4,8 +4,10 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
+
+#include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 
@@ -13,27 +15,23 @@ Anchor CheckedAnchor(const double target[3], double inv_length) {
   CHECK(target != nullptr);
   CHECK(std::isfinite(target[0]) && std::isfinite(target[1]) &&
         std::isfinite(target[2]))
-      << "MakeAnchor: non-finite target";
+      << "Anchor: non-finite target";
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakeAnchor: inv_length must be finite and > 0, got " << inv_length;
+      << "Anchor: inv_length must be finite and > 0, got " << inv_length;
   return Anchor(target, inv_length);
 }
 
-ceres::CostFunction* MakeAnchor(const double target[3], double inv_length) {
-  return new AnchorCost(new Anchor(CheckedAnchor(target, inv_length)));
-}
 
 }  // namespace archgeo
 
 // --- term `anchor` -------------------------------------------------------------
-#include "core/term.h"
 
 namespace archgeo::terms {
 namespace {
 
 void AddAnchor(TermContext& c, size_t i) {
   const int v = c.elements->Vertices(i)[0];
-  c.AddAutoDiff<AnchorCost>(CheckedAnchor(c.Original(v), 1.0), {c.Position(v)});
+  AddAutoDiff(c, CheckedAnchor(c.Original(v), 1.0), {c.Position(v)});
 }
 
 }  // namespace
@@ -53,3 +51,5 @@ const TermSpec& anchor() {
 }
 
 }  // namespace archgeo::terms
+
+ARCHGEO_AUTODIFF(archgeo::Anchor)

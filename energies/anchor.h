@@ -24,11 +24,14 @@
 #define ARCHGEO_ENERGIES_ANCHOR_H_
 
 #include <Eigen/Core>
-#include <ceres/autodiff_cost_function.h>
+
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 struct Anchor {
+  using Shape = CostShape<3, 3>;
+
   // target: 3 doubles, the anchor point a; inv_length: 1/L.
   Anchor(const double target[3], double inv_length)
       : target(target[0], target[1], target[2]), inv_length(inv_length) {}
@@ -47,13 +50,10 @@ struct Anchor {
   double inv_length;
 };
 
-// Returns a new AutoDiffCostFunction<Anchor, 3, 3> (block v); the caller takes
-// ownership. Preconditions (CHECKed): target finite, inv_length finite and > 0.
-ceres::CostFunction* MakeAnchor(const double target[3], double inv_length);
-// The functor MakeAnchor wraps, after the same checks, and its cost type:
-// for TermContext::AddAutoDiff (proximity's point part adds it too).
+// The functor after checking its input (CHECKs: target finite, inv_length
+// finite and > 0); the terms anchor, handles, step, displacement_guard and
+// proximity's point part add it.
 Anchor CheckedAnchor(const double target[3], double inv_length);
-using AnchorCost = ceres::AutoDiffCostFunction<Anchor, 3, 3>;
 
 }  // namespace archgeo
 

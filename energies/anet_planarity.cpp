@@ -4,8 +4,11 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
+#include <Eigen/Eigenvalues>
 #include <glog/logging.h>
+
+#include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 
@@ -17,28 +20,23 @@ std::vector<std::array<int, 3>> AnetStarQuadNeighbours(int valence) {
   return quads;
 }
 
-ceres::CostFunction* MakeAnetVertexNormal(double inv_length) {
+AnetVertexNormal CheckedAnetVertexNormal(double inv_length) {
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakeAnetVertexNormal: inv_length must be finite and > 0, got "
+      << "AnetVertexNormal: inv_length must be finite and > 0, got "
       << inv_length;
-  return new ceres::AutoDiffCostFunction<AnetVertexNormal, 1, 3, 3, 3>(
-      new AnetVertexNormal(inv_length));
+  return AnetVertexNormal(inv_length);
 }
 
-ceres::CostFunction* MakeAnetStarQuad(double inv_length) {
+AnetStarQuad CheckedAnetStarQuad(double inv_length) {
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakeAnetStarQuad: inv_length must be finite and > 0, got "
+      << "AnetStarQuad: inv_length must be finite and > 0, got "
       << inv_length;
-  return new ceres::AutoDiffCostFunction<AnetStarQuad, 1, 3, 3, 3, 3>(
-      new AnetStarQuad(inv_length));
+  return AnetStarQuad(inv_length);
 }
 
 }  // namespace archgeo
 
 // --- term `anet_planarity` -----------------------------------------------------
-#include <Eigen/Eigenvalues>
-
-#include "core/term.h"
 
 namespace archgeo::terms {
 namespace {
@@ -81,12 +79,12 @@ void AddAnet(TermContext& c, size_t i) {
   if (c.String("variant") == "normals") {
     double* n = c.Block("anet_normal", s[0]);
     for (int k = 1; k < count; ++k) {
-      c.Add(MakeAnetVertexNormal(inv_length), {n, c.Position(s[0]), c.Position(s[k])});
+      AddAutoDiff(c, CheckedAnetVertexNormal(inv_length), {n, c.Position(s[0]), c.Position(s[k])});
     }
     c.SetUnit(n);
   } else {
     for (const auto& t : AnetStarQuadNeighbours(count - 1)) {
-      c.Add(MakeAnetStarQuad(inv_length), {c.Position(s[0]), c.Position(s[1 + t[0]]),
+      AddAutoDiff(c, CheckedAnetStarQuad(inv_length), {c.Position(s[0]), c.Position(s[1 + t[0]]),
                                            c.Position(s[1 + t[1]]), c.Position(s[1 + t[2]])});
     }
   }
@@ -116,3 +114,6 @@ const TermSpec& anet_planarity() {
 }
 
 }  // namespace archgeo::terms
+
+ARCHGEO_AUTODIFF(archgeo::AnetVertexNormal)
+ARCHGEO_AUTODIFF(archgeo::AnetStarQuad)

@@ -73,14 +73,14 @@
 
 #include "energies/pq_diagonal.h"
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 // Variant (i): r = n_v·(w − v) / L.
 struct AnetVertexNormal {
+  using Shape = CostShape<1, 3, 3, 3>;
+
   // inv_length: 1/L, L > 0 a fixed length of the star.
   explicit AnetVertexNormal(double inv_length) : inv_length(inv_length) {}
 
@@ -104,6 +104,8 @@ struct AnetVertexNormal {
 // Variant (ii): r = n·d / L for the auxiliary quad (b0, b1, b2, b3) =
 // (v, w_i, w_{i+1}, w_{i+2}); equals −PqDiagonal(b0, b1, b2, b3).
 struct AnetStarQuad {
+  using Shape = CostShape<1, 3, 3, 3, 3>;
+
   // inv_length: 1/L, L > 0 a fixed length of the star.
   explicit AnetStarQuad(double inv_length) : diagonal(inv_length) {}
 
@@ -125,16 +127,6 @@ struct AnetStarQuad {
 // 0-based) of quad (v, w_i, w_{i+1}, w_{i+2}), k = i = 0 … valence − 3.
 // Precondition (CHECKed): valence >= 3 (a valence-3 star gives one quad).
 std::vector<std::array<int, 3>> AnetStarQuadNeighbours(int valence);
-
-// Returns a new AutoDiffCostFunction<AnetVertexNormal, 1, 3, 3, 3> (blocks
-// n_v, v, w); the caller takes ownership. Precondition (CHECKed): inv_length
-// finite and > 0.
-ceres::CostFunction* MakeAnetVertexNormal(double inv_length);
-
-// Returns a new AutoDiffCostFunction<AnetStarQuad, 1, 3, 3, 3, 3> (blocks
-// v, w_i, w_{i+1}, w_{i+2}); the caller takes ownership. Precondition
-// (CHECKed): inv_length finite and > 0.
-ceres::CostFunction* MakeAnetStarQuad(double inv_length);
 
 }  // namespace archgeo
 

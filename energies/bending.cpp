@@ -4,22 +4,22 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
+
+#include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeBending(double inv_length) {
+Bending CheckedBending(double inv_length) {
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakeBending: inv_length must be finite and > 0, got " << inv_length;
-  return new ceres::AutoDiffCostFunction<Bending, 3, 3, 3, 3>(
-      new Bending(inv_length));
+      << "Bending: inv_length must be finite and > 0, got " << inv_length;
+  return Bending(inv_length);
 }
 
 }  // namespace archgeo
 
 // --- term `bending` ------------------------------------------------------------
-#include "core/term.h"
 
 namespace archgeo::terms {
 namespace {
@@ -27,7 +27,7 @@ namespace {
 // (u, v, w): opposite neighbours u, w of v; r = unit(w − v) − unit(v − u).
 void AddBending(TermContext& c, size_t i) {
   const int* t = c.elements->Vertices(i);
-  c.Add(MakeBending(1.0), {c.Position(t[0]), c.Position(t[1]), c.Position(t[2])});
+  AddAutoDiff(c, CheckedBending(1.0), {c.Position(t[0]), c.Position(t[1]), c.Position(t[2])});
 }
 
 }  // namespace
@@ -48,3 +48,5 @@ const TermSpec& bending() {
 }
 
 }  // namespace archgeo::terms
+
+ARCHGEO_AUTODIFF(archgeo::Bending)

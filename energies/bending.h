@@ -53,9 +53,7 @@
 
 #include <Eigen/Core>
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
@@ -63,6 +61,8 @@ namespace archgeo {
 inline constexpr double kBendingEpsilon = 1e-6;
 
 struct Bending {
+  using Shape = CostShape<3, 3, 3, 3>;
+
   // inv_length: 1/L, L > 0 the builder's mean edge length.
   explicit Bending(double inv_length) : inv_length(inv_length) {}
 
@@ -87,11 +87,6 @@ struct Bending {
 
   double inv_length;
 };
-
-// Returns a new AutoDiffCostFunction<Bending, 3, 3, 3, 3> (blocks u, v, w);
-// the caller takes ownership. Precondition (CHECKed): inv_length finite and
-// > 0.
-ceres::CostFunction* MakeBending(double inv_length);
 
 }  // namespace archgeo
 

@@ -4,30 +4,30 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
+
+#include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeBoundaryProximity(const double point[3],
+BoundaryProximity CheckedBoundaryProximity(const double point[3],
                                            const double tangent[3],
                                            double inv_length) {
   CHECK(point != nullptr && tangent != nullptr);
   for (int i = 0; i < 3; ++i) {
     CHECK(std::isfinite(point[i]) && std::isfinite(tangent[i]))
-        << "MakeBoundaryProximity: non-finite point or tangent";
+        << "BoundaryProximity: non-finite point or tangent";
   }
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakeBoundaryProximity: inv_length must be finite and > 0, got "
+      << "BoundaryProximity: inv_length must be finite and > 0, got "
       << inv_length;
-  return new ceres::AutoDiffCostFunction<BoundaryProximity, 3, 3>(
-      new BoundaryProximity(point, tangent, inv_length));
+  return BoundaryProximity(point, tangent, inv_length);
 }
 
 }  // namespace archgeo
 
 // --- term `boundary_proximity` -------------------------------------------------
-#include "core/term.h"
 
 namespace archgeo::terms {
 namespace {
@@ -35,8 +35,7 @@ namespace {
 void AddBoundaryProximity(TermContext& c, size_t i) {
   const int v = c.elements->Vertices(i)[0];
   if (!c.OnBoundaryCurve(v)) return;
-  c.Add(MakeBoundaryProximity(c.ProjectedPoint(v), c.ProjectedDirection(v), 1.0),
-        {c.Position(v)});
+  AddAutoDiff(c, CheckedBoundaryProximity(c.ProjectedPoint(v), c.ProjectedDirection(v), 1.0), {c.Position(v)});
 }
 
 }  // namespace
@@ -59,3 +58,5 @@ const TermSpec& boundary_proximity() {
 }
 
 }  // namespace archgeo::terms
+
+ARCHGEO_AUTODIFF(archgeo::BoundaryProximity)

@@ -29,13 +29,13 @@
 
 #include <Eigen/Core>
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 struct BoundaryProximity {
+  using Shape = CostShape<3, 3>;
+
   // point: 3 doubles, the closest boundary point p; tangent: 3 doubles, the
   // boundary tangent at p (normalised here; zero stays zero); inv_length: 1/L.
   BoundaryProximity(const double point[3], const double tangent[3],
@@ -63,13 +63,6 @@ struct BoundaryProximity {
   Eigen::Vector3d tangent;  // unit, or zero
   double inv_length;
 };
-
-// Returns a new AutoDiffCostFunction<BoundaryProximity, 3, 3> (block v); the
-// caller takes ownership. Preconditions (CHECKed): point and tangent finite,
-// inv_length finite and > 0.
-ceres::CostFunction* MakeBoundaryProximity(const double point[3],
-                                           const double tangent[3],
-                                           double inv_length);
 
 }  // namespace archgeo
 

@@ -4,17 +4,17 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
 
 #include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeCoSpherical(double inv_length) {
+CoSpherical CheckedCoSpherical(double inv_length) {
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakeCoSpherical: inv_length must be finite and > 0, got " << inv_length;
-  return new ceres::AutoDiffCostFunction<CoSpherical, 1, 3, 3, 1, 3>(new CoSpherical(inv_length));
+      << "CoSpherical: inv_length must be finite and > 0, got " << inv_length;
+  return CoSpherical(inv_length);
 }
 
 namespace terms {
@@ -26,7 +26,7 @@ namespace {
 void AddCoSpherical(TermContext& c, size_t i) {
   const int* s = c.elements->Vertices(i);
   for (int k = 3; k < 7; ++k) {
-    c.Add(MakeCoSpherical(1.0), {c.Position(s[0]), c.Block("sphere_normal", s[0]),
+    AddAutoDiff(c, CheckedCoSpherical(1.0), {c.Position(s[0]), c.Block("sphere_normal", s[0]),
                                  c.Block("sphere_curvature", s[0]), c.Position(s[k])});
   }
 }
@@ -57,3 +57,5 @@ const TermSpec& co_spherical() {
 
 }  // namespace terms
 }  // namespace archgeo
+
+ARCHGEO_AUTODIFF(archgeo::CoSpherical)

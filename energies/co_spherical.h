@@ -45,14 +45,14 @@
 
 #include <Eigen/Core>
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 // 1. A non-principal neighbour w on the sphere Σ(v).
 struct CoSpherical {
+  using Shape = CostShape<1, 3, 3, 1, 3>;
+
   // inv_length: 1/L > 0.
   explicit CoSpherical(double inv_length) : inv_length(inv_length) {}
 
@@ -74,11 +74,6 @@ struct CoSpherical {
 
   double inv_length;
 };
-
-// Returns AutoDiffCostFunction<CoSpherical, 1, 3, 3, 1, 3> (blocks v, n,
-// kappa, w); the caller takes ownership. Precondition (CHECKed): inv_length
-// finite and > 0.
-ceres::CostFunction* MakeCoSpherical(double inv_length);
 
 }  // namespace archgeo
 

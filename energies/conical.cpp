@@ -4,22 +4,22 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
+
+#include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeConical(double inv_length) {
+Conical CheckedConical(double inv_length) {
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakeConical: inv_length must be finite and > 0, got " << inv_length;
-  return new ceres::AutoDiffCostFunction<Conical, 1, 3, 3, 3, 3, 3>(
-      new Conical(inv_length));
+      << "Conical: inv_length must be finite and > 0, got " << inv_length;
+  return Conical(inv_length);
 }
 
 }  // namespace archgeo
 
 // --- term `conical` ------------------------------------------------------------
-#include "core/term.h"
 
 namespace archgeo::terms {
 namespace {
@@ -36,8 +36,7 @@ void AddConical(TermContext& c, size_t i) {
     length += std::sqrt((w[0] - v[0]) * (w[0] - v[0]) + (w[1] - v[1]) * (w[1] - v[1]) +
                         (w[2] - v[2]) * (w[2] - v[2])) / 4;
   }
-  c.Add(MakeConical(length > 0 ? 1.0 / length : 1.0),
-        {c.Position(s[0]), c.Position(s[1]), c.Position(s[2]), c.Position(s[3]),
+  AddAutoDiff(c, CheckedConical(length > 0 ? 1.0 / length : 1.0), {c.Position(s[0]), c.Position(s[1]), c.Position(s[2]), c.Position(s[3]),
          c.Position(s[4])});
 }
 
@@ -59,3 +58,5 @@ const TermSpec& conical() {
 }
 
 }  // namespace archgeo::terms
+
+ARCHGEO_AUTODIFF(archgeo::Conical)

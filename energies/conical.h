@@ -54,9 +54,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross()
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
@@ -74,6 +72,8 @@ T RegularisedAngle(const Eigen::Matrix<T, 3, 1>& a,
 }
 
 struct Conical {
+  using Shape = CostShape<1, 3, 3, 3, 3, 3>;
+
   // inv_length: 1/L, L > 0 the builder's mean edge length of the star.
   explicit Conical(double inv_length) : inv_length(inv_length) {}
 
@@ -98,11 +98,6 @@ struct Conical {
 
   double inv_length;
 };
-
-// Returns a new AutoDiffCostFunction<Conical, 1, 3, 3, 3, 3, 3> (blocks
-// v, w1, w2, w3, w4); the caller takes ownership. Precondition (CHECKed):
-// inv_length finite and > 0.
-ceres::CostFunction* MakeConical(double inv_length);
 
 }  // namespace archgeo
 

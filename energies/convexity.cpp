@@ -6,8 +6,10 @@
 #include <cmath>
 #include <vector>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
+
+#include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 
@@ -21,27 +23,21 @@ double CornerTurnSine(const double a[3], const double b[3], const double c[3],
 
 namespace {
 
-using ConvexityCost = ceres::AutoDiffCostFunction<Convexity, 1, 3, 3, 3>;
 
 Convexity CheckedConvexity(const double normal[3], double threshold) {
   CHECK(normal != nullptr);
   const double n2 = normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2];
-  CHECK(std::isfinite(n2) && std::abs(n2 - 1.0) < 2e-6) << "MakeConvexity: normal not unit";
+  CHECK(std::isfinite(n2) && std::abs(n2 - 1.0) < 2e-6) << "Convexity: normal not unit";
   CHECK(std::isfinite(threshold) && threshold >= -1.0 && threshold <= 1.0)
-      << "MakeConvexity: threshold must be in [-1, 1], got " << threshold;
+      << "Convexity: threshold must be in [-1, 1], got " << threshold;
   return Convexity(normal, threshold);
 }
 
 }  // namespace
 
-ceres::CostFunction* MakeConvexity(const double normal[3], double threshold) {
-  return new ConvexityCost(new Convexity(CheckedConvexity(normal, threshold)));
-}
-
 }  // namespace archgeo
 
 // --- term `convexity` ------------------------------------------------------------
-#include "core/term.h"
 
 namespace archgeo::terms {
 namespace {
@@ -75,7 +71,7 @@ void AddConvexity(TermContext& c, size_t i) {
     // A corner the input already has outside the margin (e.g. a straight
     // corner where two quads were joined) may get worse by the margin, no more.
     const double threshold = input >= margin ? margin : std::max(-1.0, input - margin);
-    c.AddAutoDiff<ConvexityCost>(CheckedConvexity(now.data(), threshold),
+    AddAutoDiff(c, CheckedConvexity(now.data(), threshold),
                                  {c.Position(a), c.Position(b), c.Position(d)});
   }
 }
@@ -102,3 +98,5 @@ const TermSpec& convexity() {
 }
 
 }  // namespace archgeo::terms
+
+ARCHGEO_AUTODIFF(archgeo::Convexity)

@@ -40,13 +40,13 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 struct Convexity {
+  using Shape = CostShape<1, 3, 3, 3>;
+
   // normal: 3 doubles, unit; threshold: t, the smallest allowed sine.
   Convexity(const double normal[3], double threshold)
       : normal(normal[0], normal[1], normal[2]), threshold(threshold) {}
@@ -75,11 +75,6 @@ struct Convexity {
 // The sine s of the turn at b (as in Convexity), for thresholds and reports.
 double CornerTurnSine(const double a[3], const double b[3], const double c[3],
                       const double normal[3]);
-
-// Returns a new AutoDiffCostFunction<Convexity, 1, 3, 3, 3> (blocks a, b, c);
-// the caller takes ownership. Preconditions (CHECKed): normal finite and of
-// unit length (±1e-6), threshold finite and in [−1, 1].
-ceres::CostFunction* MakeConvexity(const double normal[3], double threshold);
 
 }  // namespace archgeo
 

@@ -2,27 +2,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "energies/dihedral_energy.h"
 
+#include <array>
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
 
+#include "core/term.h"
+#include "energies/autodiff_impl.h"
+
 namespace archgeo {
-namespace {
-
-template <typename Functor>
-using DihedralCost = ceres::AutoDiffCostFunction<Functor, 3, 3, 3, 3, 3>;
-
-template <typename Functor>
-ceres::CostFunction* MakeDihedral(const char* name, double inv_length,
-                                  double omega, Functor** functor) {
-  CheckHingeConstants(name, inv_length, "omega", omega);
-  auto* f = new Functor(inv_length, omega);
-  if (functor != nullptr) *functor = f;
-  return new DihedralCost<Functor>(f);
-}
-
-}  // namespace
 
 double DihedralIrlsWeight(double edge_length, double dual_edge_length,
                           double inv_length, double epsilon) {
@@ -40,27 +28,9 @@ double DihedralIrlsWeight(double edge_length, double dual_edge_length,
   return edge_length * inv_length * dual_edge_length + epsilon;
 }
 
-ceres::CostFunction* MakeDihedralTriTri(double inv_length, double omega,
-                                        DihedralTriTri** functor) {
-  return MakeDihedral("MakeDihedralTriTri", inv_length, omega, functor);
-}
-
-ceres::CostFunction* MakeDihedralTriPoly(double inv_length, double omega,
-                                         DihedralTriPoly** functor) {
-  return MakeDihedral("MakeDihedralTriPoly", inv_length, omega, functor);
-}
-
-ceres::CostFunction* MakeDihedralPolyPoly(double inv_length, double omega,
-                                          DihedralPolyPoly** functor) {
-  return MakeDihedral("MakeDihedralPolyPoly", inv_length, omega, functor);
-}
-
 }  // namespace archgeo
 
 // --- term `dihedral_energy` ----------------------------------------------------
-#include <array>
-
-#include "core/term.h"
 
 namespace archgeo {
 namespace terms {
@@ -91,9 +61,9 @@ Vec EnergyNormal(TermContext& c, const ElementSet& faces, int f) {
 
 // The IRLS residual's hinge functors, ω as their parameter.
 constexpr HingeAdders kDihedralAdders = {"dihedral_energy", "omega",
-                                         &AddHingeResidual<DihedralCost<DihedralTriTri>>,
-                                         &AddHingeResidual<DihedralCost<DihedralTriPoly>>,
-                                         &AddHingeResidual<DihedralCost<DihedralPolyPoly>>};
+                                         &AddHingeResidual<DihedralTriTri>,
+                                         &AddHingeResidual<DihedralTriPoly>,
+                                         &AddHingeResidual<DihedralPolyPoly>};
 
 // Edge v→w with left face (v, w, a, …) and right face (w, v, b, …); the IRLS
 // weight ω from the current edge length and normals (a round's constant).
@@ -124,3 +94,7 @@ const TermSpec& dihedral_energy() {
 
 }  // namespace terms
 }  // namespace archgeo
+
+ARCHGEO_AUTODIFF(archgeo::DihedralTriTri)
+ARCHGEO_AUTODIFF(archgeo::DihedralTriPoly)
+ARCHGEO_AUTODIFF(archgeo::DihedralPolyPoly)

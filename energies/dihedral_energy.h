@@ -84,10 +84,6 @@
 
 #include "energies/dihedral_hinge.h"  // the functors, ε_n, ε_ℓ
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
-
 namespace archgeo {
 
 // IRLS floor of ω_e (unit-free; see above).
@@ -106,6 +102,7 @@ double DihedralIrlsWeight(double edge_length, double dual_edge_length,
 // The residual r = (ℓ_e/L)(n_f − n_f′)/sqrt(ω), 3 doubles, of the hinge
 // functors (dihedral_hinge.h) from ℓ_e/L and the normals n_f, n_f′.
 struct DihedralResidual {
+  static constexpr int kResiduals = 3;
   // ω_e > 0 (DihedralIrlsWeight). The builder may change `omega` between
   // solves (IRLS rounds), never during one.
   double omega;
@@ -124,20 +121,6 @@ struct DihedralResidual {
 using DihedralTriTri = HingeTriTri<DihedralResidual>;
 using DihedralTriPoly = HingeTriPoly<DihedralResidual>;
 using DihedralPolyPoly = HingePolyPoly<DihedralResidual>;
-
-// Factories. Each returns a new AutoDiffCostFunction<Functor, 3, 3, 3, 3, 3>
-// with the blocks in the order of the functor's operator() (TriTri: v, w, a,
-// b; TriPoly: v, w, a, n_right; PolyPoly: v, w, n_left, n_right); the caller
-// (usually ceres::Problem) takes ownership. If `functor` is not null it
-// receives a pointer to the functor owned by the cost function, so the
-// builder can update `omega` between IRLS rounds. Preconditions (CHECKed):
-// inv_length and omega finite and > 0.
-ceres::CostFunction* MakeDihedralTriTri(double inv_length, double omega,
-                                        DihedralTriTri** functor = nullptr);
-ceres::CostFunction* MakeDihedralTriPoly(double inv_length, double omega,
-                                         DihedralTriPoly** functor = nullptr);
-ceres::CostFunction* MakeDihedralPolyPoly(double inv_length, double omega,
-                                          DihedralPolyPoly** functor = nullptr);
 
 }  // namespace archgeo
 

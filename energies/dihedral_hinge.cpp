@@ -6,6 +6,8 @@
 
 #include <glog/logging.h>
 
+#include "core/term.h"
+
 namespace archgeo {
 
 void CheckHingeConstants(const char* name, double inv_length,
@@ -19,7 +21,6 @@ void CheckHingeConstants(const char* name, double inv_length,
 }  // namespace archgeo
 
 // --- the builder of the hinge terms (dihedral_energy, smoothed_dihedral_energy)
-#include "core/term.h"
 
 namespace archgeo {
 namespace terms {

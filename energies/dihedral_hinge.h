@@ -36,6 +36,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross()
 
+#include "energies/autodiff.h"
+
 namespace archgeo {
 
 // Regularisation of triangle normals, relative to L².
@@ -97,6 +99,8 @@ Eigen::Matrix<T, 3, 1> HingeFaceNormal(const T* v_ptr, const T* w_ptr,
 // residual R. inv_length: 1/L > 0; parameter: R's constant.
 template <typename Residual, bool kLeftPolygon, bool kRightPolygon>
 struct DihedralHinge : Residual {
+  using Shape = CostShape<Residual::kResiduals, 3, 3, 3, 3>;
+
   DihedralHinge(double inv_length, double parameter)
       : Residual{parameter}, inv_length(inv_length) {}
 
@@ -138,16 +142,10 @@ void CheckHingeConstants(const char* name, double inv_length,
 }  // namespace archgeo
 
 // --- the builder of the hinge terms (dihedral_hinge.cpp) --------------------
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
-
 namespace archgeo {
 
 class TermContext;
 struct TermSpec;
-template <class Cost>
-struct BatchOf;  // core/batch.h
 
 namespace terms {
 
@@ -166,12 +164,12 @@ struct HingeAdders {
   Add poly_poly;
 };
 
-// The adder of the hinge functor of `Cost` (its ceres::AutoDiffCostFunction
-// type), constructed from (inv_length, parameter), as a batch element.
-template <typename Cost, typename Context = TermContext>
-void AddHingeResidual(Context& c, double inv_length, double parameter,
+// The adder of the hinge functor `Functor` constructed from (inv_length,
+// parameter) (instantiate it where energies/autodiff_impl.h is included).
+template <typename Functor>
+void AddHingeResidual(TermContext& c, double inv_length, double parameter,
                       const std::array<double*, 4>& blocks) {
-  c.template AddAutoDiff<Cost>(typename BatchOf<Cost>::functor(inv_length, parameter), blocks);
+  AddAutoDiff(c, Functor(inv_length, parameter), blocks);
 }
 
 // The builder of a hinge term: adds the residual of interior edge

@@ -2,16 +2,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "energies/direction_dirichlet.h"
 
-#include <ceres/autodiff_cost_function.h>
-
 #include <cmath>
 
 #include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeDirectionDirichlet() {
-  return new ceres::AutoDiffCostFunction<DirectionDirichlet, 3, 3, 3>(new DirectionDirichlet());
+DirectionDirichlet CheckedDirectionDirichlet() {
+  return DirectionDirichlet();
 }
 
 namespace terms {
@@ -22,7 +21,7 @@ namespace {
 void AddDirectionDirichlet(TermContext& c, size_t i) {
   double* f = c.Block("face_direction", c.elements->face[i]);
   double* g = c.Block("face_direction", c.elements->other_face[i]);
-  c.Add(MakeDirectionDirichlet(), {f, g});
+  AddAutoDiff(c, CheckedDirectionDirichlet(), {f, g});
   c.SetUnit(f);
   c.SetUnit(g);
 }
@@ -68,3 +67,5 @@ const TermSpec& direction_dirichlet() {
 
 }  // namespace terms
 }  // namespace archgeo
+
+ARCHGEO_AUTODIFF(archgeo::DirectionDirichlet)

@@ -24,13 +24,13 @@
 
 #include <Eigen/Core>
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 struct DirectionDirichlet {
+  using Shape = CostShape<3, 3, 3>;
+
   // d_f, d_g: 3 doubles each; residual: 3 doubles.
   template <typename T>
   bool operator()(const T* d_f, const T* d_g, T* residual) const {
@@ -38,10 +38,6 @@ struct DirectionDirichlet {
     return true;
   }
 };
-
-// Returns AutoDiffCostFunction<DirectionDirichlet, 3, 3, 3>; the caller takes
-// ownership.
-ceres::CostFunction* MakeDirectionDirichlet();
 
 }  // namespace archgeo
 

@@ -3,13 +3,11 @@
 #include "energies/displacement_guard.h"
 
 #include "core/term.h"
+#include "energies/autodiff_impl.h"
 #include "energies/anchor.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeDisplacementGuard(const double original[3], double inv_length) {
-  return MakeAnchor(original, inv_length);
-}
 
 namespace terms {
 namespace {
@@ -18,7 +16,7 @@ void AddGuard(TermContext& c, size_t i) {
   const int v = c.elements->Vertices(i)[0];
   const double g = c.Block("guard_weight", v)[0];
   if (g <= 0) return;
-  c.Add(MakeDisplacementGuard(c.Original(v), 1.0), {c.Position(v)}, nullptr, g * c.weight);
+  AddAutoDiff(c, CheckedAnchor(c.Original(v), 1.0), {c.Position(v)}, -1, nullptr, g * c.weight);
 }
 
 }  // namespace

@@ -16,15 +16,7 @@
 #ifndef ARCHGEO_ENERGIES_DISPLACEMENT_GUARD_H_
 #define ARCHGEO_ENERGIES_DISPLACEMENT_GUARD_H_
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
-
 namespace archgeo {
-
-// Returns AutoDiffCostFunction<Anchor, 3, 3> (block v) pulling towards the
-// input position `original`. Preconditions (CHECKed): finite, inv_length > 0.
-ceres::CostFunction* MakeDisplacementGuard(const double original[3], double inv_length);
 
 }  // namespace archgeo
 

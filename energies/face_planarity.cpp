@@ -4,40 +4,33 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
+
+#include "core/term.h"
+#include "core/tolerance_band.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 
 namespace {
 
-using FacePlanarityCost = ceres::AutoDiffCostFunction<FacePlanarity, 1, 3, 1, 3>;
 
 FacePlanarity CheckedFacePlanarity(const double center[3], double inv_length) {
   CHECK(center != nullptr);
   CHECK(std::isfinite(center[0]) && std::isfinite(center[1]) &&
         std::isfinite(center[2]))
-      << "MakeFacePlanarity: non-finite center";
+      << "FacePlanarity: non-finite center";
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakeFacePlanarity: inv_length must be finite and > 0, got "
+      << "FacePlanarity: inv_length must be finite and > 0, got "
       << inv_length;
   return FacePlanarity(center, inv_length);
 }
 
 }  // namespace
 
-ceres::CostFunction* MakeFacePlanarity(const double center[3],
-                                       double inv_length) {
-  return new FacePlanarityCost(new FacePlanarity(CheckedFacePlanarity(center, inv_length)));
-}
-
 }  // namespace archgeo
 
 // --- term `face_planarity` -----------------------------------------------------
-#include <cmath>
-
-#include "core/term.h"
-#include "core/tolerance_band.h"
 
 namespace archgeo::terms {
 namespace {
@@ -106,7 +99,7 @@ void AddFacePlanarity(TermContext& c, size_t i) {
   d[0] = offset;
   const double inv_length = diagonal > 0 ? double(k) / diagonal : 1.0;
   const FacePlanarity functor = CheckedFacePlanarity(center.data(), inv_length);
-  for (int j = 0; j < k; ++j) c.AddAutoDiff<FacePlanarityCost>(functor, {n, d, c.Position(vs[j])}, c.band);
+  for (int j = 0; j < k; ++j) AddAutoDiff(c, functor, {n, d, c.Position(vs[j])}, c.band);
   c.SetUnit(n);
 }
 
@@ -135,3 +128,5 @@ const TermSpec& face_planarity() {
 }
 
 }  // namespace archgeo::terms
+
+ARCHGEO_AUTODIFF(archgeo::FacePlanarity)

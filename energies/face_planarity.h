@@ -35,13 +35,13 @@
 
 #include <Eigen/Core>
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 struct FacePlanarity {
+  using Shape = CostShape<1, 3, 1, 3>;
+
   // center: 3 doubles, the fixed reference point c of the face's plane;
   // inv_length: 1/L.
   FacePlanarity(const double center[3], double inv_length)
@@ -62,12 +62,6 @@ struct FacePlanarity {
   Eigen::Vector3d center;
   double inv_length;
 };
-
-// Returns a new AutoDiffCostFunction<FacePlanarity, 1, 3, 1, 3> (blocks n, d,
-// v); the caller takes ownership. Preconditions (CHECKed): center finite,
-// inv_length finite and > 0.
-ceres::CostFunction* MakeFacePlanarity(const double center[3],
-                                       double inv_length);
 
 }  // namespace archgeo
 

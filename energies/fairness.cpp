@@ -4,15 +4,15 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
+
+#include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 
 namespace {
 
-using FairnessCost = ceres::AutoDiffCostFunction<Fairness, 3, 3, 3, 3>;
-using FairnessThirdCost = ceres::AutoDiffCostFunction<FairnessThird, 3, 3, 3, 3, 3>;
 
 void CheckFairness(const char* name, const double target[3], double inv_length) {
   CHECK(target != nullptr);
@@ -24,30 +24,20 @@ void CheckFairness(const char* name, const double target[3], double inv_length) 
 }
 
 Fairness CheckedFairness(const double target[3], double inv_length) {
-  CheckFairness("MakeFairness", target, inv_length);
+  CheckFairness("Fairness", target, inv_length);
   return Fairness(target, inv_length);
 }
 
 FairnessThird CheckedFairnessThird(const double target[3], double inv_length) {
-  CheckFairness("MakeFairnessThird", target, inv_length);
+  CheckFairness("FairnessThird", target, inv_length);
   return FairnessThird(target, inv_length);
 }
 
 }  // namespace
 
-ceres::CostFunction* MakeFairness(const double target[3], double inv_length) {
-  return new FairnessCost(new Fairness(CheckedFairness(target, inv_length)));
-}
-
-ceres::CostFunction* MakeFairnessThird(const double target[3],
-                                       double inv_length) {
-  return new FairnessThirdCost(new FairnessThird(CheckedFairnessThird(target, inv_length)));
-}
-
 }  // namespace archgeo
 
 // --- term `fairness` -----------------------------------------------------------
-#include "core/term.h"
 
 namespace archgeo::terms {
 namespace {
@@ -74,11 +64,10 @@ void AddFairness(TermContext& c, size_t i) {
     for (int a = 0; a < 3; ++a) target[a] = dn * n[a];
   }
   if (k == 3) {
-    c.AddAutoDiff<FairnessCost>(CheckedFairness(target, 1.0),
+    AddAutoDiff(c, CheckedFairness(target, 1.0),
                                 {c.Position(t[0]), c.Position(t[1]), c.Position(t[2])});
   } else {
-    c.AddAutoDiff<FairnessThirdCost>(
-        CheckedFairnessThird(target, 1.0),
+    AddAutoDiff(c, CheckedFairnessThird(target, 1.0),
         {c.Position(t[0]), c.Position(t[1]), c.Position(t[2]), c.Position(t[3])});
   }
 }
@@ -107,3 +96,6 @@ const TermSpec& fairness() {
 }
 
 }  // namespace archgeo::terms
+
+ARCHGEO_AUTODIFF(archgeo::Fairness)
+ARCHGEO_AUTODIFF(archgeo::FairnessThird)

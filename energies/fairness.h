@@ -48,13 +48,13 @@
 
 #include <Eigen/Core>
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 struct Fairness {
+  using Shape = CostShape<3, 3, 3, 3>;
+
   // target: 3 doubles, the second difference Δ⁰ to keep (or zero);
   // inv_length: 1/L.
   Fairness(const double target[3], double inv_length)
@@ -77,12 +77,9 @@ struct Fairness {
   double inv_length;
 };
 
-// Returns a new AutoDiffCostFunction<Fairness, 3, 3, 3, 3> (blocks u, v, w);
-// the caller takes ownership. Preconditions (CHECKed): target finite,
-// inv_length finite and > 0.
-ceres::CostFunction* MakeFairness(const double target[3], double inv_length);
-
 struct FairnessThird {
+  using Shape = CostShape<3, 3, 3, 3, 3>;
+
   // target: 3 doubles, the third difference Δ⁰ to keep (or zero);
   // inv_length: 1/L.
   FairnessThird(const double target[3], double inv_length)
@@ -107,12 +104,6 @@ struct FairnessThird {
   Eigen::Vector3d target;
   double inv_length;
 };
-
-// Returns a new AutoDiffCostFunction<FairnessThird, 3, 3, 3, 3, 3> (blocks
-// a, b, c, d = v_{i−1}, v_i, v_{i+1}, v_{i+2}); the caller takes ownership.
-// Preconditions (CHECKed): target finite, inv_length finite and > 0.
-ceres::CostFunction* MakeFairnessThird(const double target[3],
-                                       double inv_length);
 
 }  // namespace archgeo
 

@@ -4,30 +4,29 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
+#include <Eigen/Core>
 #include <glog/logging.h>
+
+#include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeFrameCoplanarity(double w1, double w2, double w4,
+FrameCoplanarity CheckedFrameCoplanarity(double w1, double w2, double w4,
                                           double w5, double inv_length) {
   for (double w : {w1, w2, w4, w5}) {
     CHECK(std::isfinite(w) && w > 0.0)
-        << "MakeFrameCoplanarity: weights must be finite and > 0, got " << w;
+        << "FrameCoplanarity: weights must be finite and > 0, got " << w;
   }
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakeFrameCoplanarity: inv_length must be finite and > 0, got "
+      << "FrameCoplanarity: inv_length must be finite and > 0, got "
       << inv_length;
-  return new ceres::AutoDiffCostFunction<FrameCoplanarity, 1, 3, 3, 3, 3, 3, 3>(
-      new FrameCoplanarity(w1, w2, w4, w5, inv_length));
+  return FrameCoplanarity(w1, w2, w4, w5, inv_length);
 }
 
 }  // namespace archgeo
 
 // --- term `frame_coplanarity` --------------------------------------------------
-#include <Eigen/Core>
-
-#include "core/term.h"
 
 namespace archgeo::terms {
 namespace {
@@ -52,8 +51,7 @@ void AddFrame(TermContext& c, size_t i) {
   const Eigen::Vector3d f4 = (wr * V(c.Position(b[4])) + V(c.Position(b[5]))) / (1 + wr);
   const double length = 0.5 * ((V(c.Position(b[3])) - V(c.Position(b[0]))).norm() + (f4 - f1).norm());
   if (!(length > 0)) return;
-  c.Add(MakeFrameCoplanarity(1.0, wl, wr, 1.0, 1.0 / length),
-        {c.Position(b[0]), c.Position(b[1]), c.Position(b[2]), c.Position(b[3]),
+  AddAutoDiff(c, CheckedFrameCoplanarity(1.0, wl, wr, 1.0, 1.0 / length), {c.Position(b[0]), c.Position(b[1]), c.Position(b[2]), c.Position(b[3]),
          c.Position(b[4]), c.Position(b[5])});
 }
 
@@ -76,3 +74,5 @@ const TermSpec& frame_coplanarity() {
 }
 
 }  // namespace archgeo::terms
+
+ARCHGEO_AUTODIFF(archgeo::FrameCoplanarity)

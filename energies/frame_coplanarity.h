@@ -58,13 +58,13 @@
 
 #include "energies/pq_diagonal.h"
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 struct FrameCoplanarity {
+  using Shape = CostShape<1, 3, 3, 3, 3, 3, 3>;
+
   // w1, w2: weights of b1, b2 in the left patch; w4, w5: weights of b4, b5 in
   // the right patch (positive, fixed); inv_length: 1/L.
   FrameCoplanarity(double w1, double w2, double w4, double w5,
@@ -92,13 +92,6 @@ struct FrameCoplanarity {
   double t_right;  // w5 / (w4 + w5)
   PqDiagonal diagonal;
 };
-
-// Returns a new AutoDiffCostFunction<FrameCoplanarity, 1, 3, 3, 3, 3, 3, 3>
-// (blocks b0, b1, b2, b3, b4, b5); the caller takes ownership.
-// Preconditions (CHECKed): w1, w2, w4, w5 finite and > 0; inv_length finite
-// and > 0.
-ceres::CostFunction* MakeFrameCoplanarity(double w1, double w2, double w4,
-                                          double w5, double inv_length);
 
 }  // namespace archgeo
 

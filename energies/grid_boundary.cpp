@@ -4,23 +4,23 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
+
+#include "core/term.h"
+#include "energies/autodiff_impl.h"
+#include "energies/grid_shared.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeGridBoundary(const Surface& surface, double inv_length) {
+GridBoundary CheckedGridBoundary(const Surface& surface, double inv_length) {
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakeGridBoundary: inv_length must be finite and > 0, got " << inv_length;
-  return new ceres::AutoDiffCostFunction<GridBoundary, 1, 2, 2, 2, 2>(
-      new GridBoundary(surface, inv_length));
+      << "GridBoundary: inv_length must be finite and > 0, got " << inv_length;
+  return GridBoundary(surface, inv_length);
 }
 
 }  // namespace archgeo
 
 // --- term `grid_boundary` -----------------------------------------------------
-#include "core/term.h"
-#include "energies/grid_shared.h"
 
 namespace archgeo::terms {
 namespace {
@@ -30,8 +30,7 @@ namespace {
 void AddGridBoundary(TermContext& c, size_t i) {
   const GridShared g = SharedGrid(c);
   const int* v = c.elements->Vertices(i);
-  c.Add(MakeGridBoundary(*g.surface, 1.0 / g.length),
-        {c.Block("uv", v[0]), c.Block("uv", v[1]), c.Block("uv", v[2]), c.Block("uv", v[3])});
+  AddAutoDiff(c, CheckedGridBoundary(*g.surface, 1.0 / g.length), {c.Block("uv", v[0]), c.Block("uv", v[1]), c.Block("uv", v[2]), c.Block("uv", v[3])});
 }
 
 }  // namespace
@@ -52,3 +51,5 @@ const TermSpec& grid_boundary() {
 }
 
 }  // namespace archgeo::terms
+
+ARCHGEO_AUTODIFF(archgeo::GridBoundary)

@@ -37,13 +37,13 @@
 #include "energies/grid_orthogonality.h"  // kGridEpsilon
 #include "surfaces/surface.h"
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 struct GridBoundary {
+  using Shape = CostShape<1, 2, 2, 2, 2>;
+
   // surface: copied; inv_length: 1/L, L > 0 the reference length.
   GridBoundary(const Surface& surface, double inv_length)
       : surface(surface), inv_length(inv_length) {}
@@ -64,11 +64,6 @@ struct GridBoundary {
   Surface surface;
   double inv_length;
 };
-
-// Returns a new AutoDiffCostFunction<GridBoundary, 1, 2, 2, 2, 2> (blocks p0,
-// p1, p2, p3); the caller takes ownership. Precondition (CHECKed): inv_length
-// finite and > 0.
-ceres::CostFunction* MakeGridBoundary(const Surface& surface, double inv_length);
 
 }  // namespace archgeo
 

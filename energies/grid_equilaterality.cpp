@@ -4,23 +4,23 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
+
+#include "core/term.h"
+#include "energies/autodiff_impl.h"
+#include "energies/grid_shared.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeGridEquilaterality(const Surface& surface, double ideal_length) {
+GridEquilaterality CheckedGridEquilaterality(const Surface& surface, double ideal_length) {
   CHECK(std::isfinite(ideal_length) && ideal_length > 0.0)
-      << "MakeGridEquilaterality: ideal_length must be finite and > 0, got " << ideal_length;
-  return new ceres::AutoDiffCostFunction<GridEquilaterality, 1, 2, 2>(
-      new GridEquilaterality(surface, ideal_length));
+      << "GridEquilaterality: ideal_length must be finite and > 0, got " << ideal_length;
+  return GridEquilaterality(surface, ideal_length);
 }
 
 }  // namespace archgeo
 
 // --- term `grid_equilaterality` -----------------------------------------------
-#include "core/term.h"
-#include "energies/grid_shared.h"
 
 namespace archgeo::terms {
 namespace {
@@ -30,8 +30,7 @@ namespace {
 void AddGridEquilaterality(TermContext& c, size_t i) {
   const GridShared g = SharedGrid(c);
   const int* v = c.elements->Vertices(i);
-  c.Add(MakeGridEquilaterality(*g.surface, g.length),
-        {c.Block("uv", v[0]), c.Block("uv", v[1])});
+  AddAutoDiff(c, CheckedGridEquilaterality(*g.surface, g.length), {c.Block("uv", v[0]), c.Block("uv", v[1])});
 }
 
 }  // namespace
@@ -51,3 +50,5 @@ const TermSpec& grid_equilaterality() {
 }
 
 }  // namespace archgeo::terms
+
+ARCHGEO_AUTODIFF(archgeo::GridEquilaterality)

@@ -36,13 +36,13 @@
 #include "energies/grid_orthogonality.h"  // kGridEpsilon
 #include "surfaces/surface.h"
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 struct GridEquilaterality {
+  using Shape = CostShape<1, 2, 2>;
+
   // surface: copied; ideal_length: L > 0.
   GridEquilaterality(const Surface& surface, double ideal_length)
       : surface(surface), ideal_length(ideal_length) {}
@@ -60,11 +60,6 @@ struct GridEquilaterality {
   Surface surface;
   double ideal_length;
 };
-
-// Returns a new AutoDiffCostFunction<GridEquilaterality, 1, 2, 2> (blocks a,
-// b); the caller takes ownership. Precondition (CHECKed): ideal_length finite
-// and > 0.
-ceres::CostFunction* MakeGridEquilaterality(const Surface& surface, double ideal_length);
 
 }  // namespace archgeo
 

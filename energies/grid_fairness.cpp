@@ -4,23 +4,23 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
+
+#include "core/term.h"
+#include "energies/autodiff_impl.h"
+#include "energies/grid_shared.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeGridFairness(const Surface& surface, double inv_length) {
+GridFairness CheckedGridFairness(const Surface& surface, double inv_length) {
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakeGridFairness: inv_length must be finite and > 0, got " << inv_length;
-  return new ceres::AutoDiffCostFunction<GridFairness, 3, 2, 2, 2>(
-      new GridFairness(surface, inv_length));
+      << "GridFairness: inv_length must be finite and > 0, got " << inv_length;
+  return GridFairness(surface, inv_length);
 }
 
 }  // namespace archgeo
 
 // --- term `grid_fairness` -----------------------------------------------------
-#include "core/term.h"
-#include "energies/grid_shared.h"
 
 namespace archgeo::terms {
 namespace {
@@ -30,8 +30,7 @@ namespace {
 void AddGridFairness(TermContext& c, size_t i) {
   const GridShared g = SharedGrid(c);
   const int* v = c.elements->Vertices(i);
-  c.Add(MakeGridFairness(*g.surface, 1.0 / g.length),
-        {c.Block("uv", v[0]), c.Block("uv", v[1]), c.Block("uv", v[2])});
+  AddAutoDiff(c, CheckedGridFairness(*g.surface, 1.0 / g.length), {c.Block("uv", v[0]), c.Block("uv", v[1]), c.Block("uv", v[2])});
 }
 
 }  // namespace
@@ -53,3 +52,5 @@ const TermSpec& grid_fairness() {
 }
 
 }  // namespace archgeo::terms
+
+ARCHGEO_AUTODIFF(archgeo::GridFairness)

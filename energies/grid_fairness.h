@@ -35,13 +35,13 @@
 
 #include "surfaces/surface.h"
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 struct GridFairness {
+  using Shape = CostShape<3, 2, 2, 2>;
+
   // surface: copied; inv_length: 1/L, L > 0 the reference length.
   GridFairness(const Surface& surface, double inv_length)
       : surface(surface), inv_length(inv_length) {}
@@ -60,11 +60,6 @@ struct GridFairness {
   Surface surface;
   double inv_length;
 };
-
-// Returns a new AutoDiffCostFunction<GridFairness, 3, 2, 2, 2> (blocks a, b,
-// c); the caller takes ownership. Precondition (CHECKed): inv_length finite
-// and > 0.
-ceres::CostFunction* MakeGridFairness(const Surface& surface, double inv_length);
 
 }  // namespace archgeo
 

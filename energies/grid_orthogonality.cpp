@@ -4,23 +4,23 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
+
+#include "core/term.h"
+#include "energies/autodiff_impl.h"
+#include "energies/grid_shared.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeGridOrthogonality(const Surface& surface, double inv_length) {
+GridOrthogonality CheckedGridOrthogonality(const Surface& surface, double inv_length) {
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakeGridOrthogonality: inv_length must be finite and > 0, got " << inv_length;
-  return new ceres::AutoDiffCostFunction<GridOrthogonality, 1, 2, 2, 2, 2>(
-      new GridOrthogonality(surface, inv_length));
+      << "GridOrthogonality: inv_length must be finite and > 0, got " << inv_length;
+  return GridOrthogonality(surface, inv_length);
 }
 
 }  // namespace archgeo
 
 // --- term `grid_orthogonality` ------------------------------------------------
-#include "core/term.h"
-#include "energies/grid_shared.h"
 
 namespace archgeo::terms {
 namespace {
@@ -30,8 +30,7 @@ namespace {
 void AddGridOrthogonality(TermContext& c, size_t i) {
   const GridShared g = SharedGrid(c);
   const int* v = c.elements->Vertices(i);
-  c.Add(MakeGridOrthogonality(*g.surface, 1.0 / g.length),
-        {c.Block("uv", v[0]), c.Block("uv", v[1]), c.Block("uv", v[2]), c.Block("uv", v[3])});
+  AddAutoDiff(c, CheckedGridOrthogonality(*g.surface, 1.0 / g.length), {c.Block("uv", v[0]), c.Block("uv", v[1]), c.Block("uv", v[2]), c.Block("uv", v[3])});
 }
 
 }  // namespace
@@ -53,3 +52,5 @@ const TermSpec& grid_orthogonality() {
 }
 
 }  // namespace archgeo::terms
+
+ARCHGEO_AUTODIFF(archgeo::GridOrthogonality)

@@ -47,9 +47,7 @@
 
 #include "surfaces/surface.h"
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
@@ -58,6 +56,8 @@ namespace archgeo {
 inline constexpr double kGridEpsilon = 1e-6;
 
 struct GridOrthogonality {
+  using Shape = CostShape<1, 2, 2, 2, 2>;
+
   // surface: copied; inv_length: 1/L, L > 0 the reference length.
   GridOrthogonality(const Surface& surface, double inv_length)
       : surface(surface), inv_length(inv_length) {}
@@ -77,11 +77,6 @@ struct GridOrthogonality {
   Surface surface;
   double inv_length;
 };
-
-// Returns a new AutoDiffCostFunction<GridOrthogonality, 1, 2, 2, 2, 2>
-// (blocks l0, l1, t0, t1); the caller takes ownership. Precondition
-// (CHECKed): inv_length finite and > 0.
-ceres::CostFunction* MakeGridOrthogonality(const Surface& surface, double inv_length);
 
 }  // namespace archgeo
 

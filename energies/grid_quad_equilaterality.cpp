@@ -4,23 +4,23 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
+
+#include "core/term.h"
+#include "energies/autodiff_impl.h"
+#include "energies/grid_shared.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeGridQuadEquilaterality(const Surface& surface, double inv_length) {
+GridQuadEquilaterality CheckedGridQuadEquilaterality(const Surface& surface, double inv_length) {
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakeGridQuadEquilaterality: inv_length must be finite and > 0, got " << inv_length;
-  return new ceres::AutoDiffCostFunction<GridQuadEquilaterality, 4, 2, 2, 2, 2>(
-      new GridQuadEquilaterality(surface, inv_length));
+      << "GridQuadEquilaterality: inv_length must be finite and > 0, got " << inv_length;
+  return GridQuadEquilaterality(surface, inv_length);
 }
 
 }  // namespace archgeo
 
 // --- term `grid_quad_equilaterality` --------------------------------------------
-#include "core/term.h"
-#include "energies/grid_shared.h"
 
 namespace archgeo::terms {
 namespace {
@@ -30,8 +30,7 @@ namespace {
 void AddGridQuadEquilaterality(TermContext& c, size_t i) {
   const GridShared g = SharedGrid(c);
   const int* v = c.elements->Vertices(i);
-  c.Add(MakeGridQuadEquilaterality(*g.surface, 1.0 / g.length),
-        {c.Block("uv", v[0]), c.Block("uv", v[1]), c.Block("uv", v[2]), c.Block("uv", v[3])});
+  AddAutoDiff(c, CheckedGridQuadEquilaterality(*g.surface, 1.0 / g.length), {c.Block("uv", v[0]), c.Block("uv", v[1]), c.Block("uv", v[2]), c.Block("uv", v[3])});
 }
 
 }  // namespace
@@ -51,3 +50,5 @@ const TermSpec& grid_quad_equilaterality() {
 }
 
 }  // namespace archgeo::terms
+
+ARCHGEO_AUTODIFF(archgeo::GridQuadEquilaterality)

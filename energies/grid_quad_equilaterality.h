@@ -41,13 +41,13 @@
 #include "energies/grid_orthogonality.h"  // kGridEpsilon
 #include "surfaces/surface.h"
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 struct GridQuadEquilaterality {
+  using Shape = CostShape<4, 2, 2, 2, 2>;
+
   // surface: copied; inv_length: 1/L, L > 0 the reference length.
   GridQuadEquilaterality(const Surface& surface, double inv_length)
       : surface(surface), inv_length(inv_length) {}
@@ -74,11 +74,6 @@ struct GridQuadEquilaterality {
   Surface surface;
   double inv_length;
 };
-
-// Returns a new AutoDiffCostFunction<GridQuadEquilaterality, 4, 2, 2, 2, 2>
-// (blocks a, b, c, d); the caller takes ownership. Precondition (CHECKed):
-// inv_length finite and > 0.
-ceres::CostFunction* MakeGridQuadEquilaterality(const Surface& surface, double inv_length);
 
 }  // namespace archgeo
 

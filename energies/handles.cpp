@@ -3,13 +3,11 @@
 #include "energies/handles.h"
 
 #include "core/term.h"
+#include "energies/autodiff_impl.h"
 #include "energies/anchor.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeHandle(const double target[3], double inv_length) {
-  return MakeAnchor(target, inv_length);
-}
 
 namespace terms {
 namespace {
@@ -17,7 +15,7 @@ namespace {
 // Element: the handle vertex; its data: the target (canonical frame).
 void AddHandle(TermContext& c, size_t i) {
   const int v = c.elements->Vertices(i)[0];
-  c.Add(MakeHandle(c.elements->Data(i), 1.0), {c.Position(v)});
+  AddAutoDiff(c, CheckedAnchor(c.elements->Data(i), 1.0), {c.Position(v)});
 }
 
 }  // namespace

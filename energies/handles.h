@@ -15,15 +15,7 @@
 #ifndef ARCHGEO_ENERGIES_HANDLES_H_
 #define ARCHGEO_ENERGIES_HANDLES_H_
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
-
 namespace archgeo {
-
-// Returns AutoDiffCostFunction<Anchor, 3, 3> (block v) pulling towards
-// `target`. Preconditions (CHECKed): target finite, inv_length > 0.
-ceres::CostFunction* MakeHandle(const double target[3], double inv_length);
 
 }  // namespace archgeo
 

@@ -4,47 +4,36 @@
 
 #include <cmath>
 
-#include <ceres/dynamic_autodiff_cost_function.h>
 #include <glog/logging.h>
+
+#include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 namespace {
 
-// Jet size of the dynamic autodiff: 12 of the 3(n + 1) parameters per pass.
-constexpr int kStride = 12;
 
 }  // namespace
 
-ceres::CostFunction* MakeLaplacian(int valence, double inv_length) {
-  CHECK_GE(valence, 1) << "MakeLaplacian: valence must be >= 1";
-  return MakeWeightedLaplacian(std::vector<double>(valence, 1.0), inv_length);
-}
-
-ceres::CostFunction* MakeWeightedLaplacian(const std::vector<double>& weights,
-                                           double inv_length) {
-  CHECK_GE(weights.size(), 1u) << "MakeWeightedLaplacian: no neighbour";
+Laplacian CheckedLaplacian(const std::vector<double>& weights, double inv_length) {
+  CHECK_GE(weights.size(), 1u) << "Laplacian: no neighbour";
   double sum = 0.0;
   for (double c : weights) {
-    CHECK(std::isfinite(c)) << "MakeWeightedLaplacian: non-finite weight";
+    CHECK(std::isfinite(c)) << "Laplacian: non-finite weight";
     sum += c;
   }
-  CHECK(sum > 0.0) << "MakeWeightedLaplacian: the weights must have a "
+  CHECK(sum > 0.0) << "Laplacian: the weights must have a "
                       "positive sum, got "
                    << sum;
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakeWeightedLaplacian: inv_length must be finite and > 0, got "
+      << "Laplacian: inv_length must be finite and > 0, got "
       << inv_length;
-  auto* cost = new ceres::DynamicAutoDiffCostFunction<Laplacian, kStride>(
-      new Laplacian(weights, inv_length));
-  for (size_t j = 0; j <= weights.size(); ++j) cost->AddParameterBlock(3);
-  cost->SetNumResiduals(3);
-  return cost;
+  return Laplacian(weights, inv_length);
 }
 
 }  // namespace archgeo
 
 // --- term `laplacian` ----------------------------------------------------------
-#include "core/term.h"
 
 namespace archgeo::terms {
 namespace {
@@ -56,7 +45,7 @@ void AddLaplacian(TermContext& c, size_t i) {
   if (n < 1 || c.Fixed(s[0])) return;  // a support's umbrella is a reaction, not a condition
   std::vector<double*> blocks;
   for (int j = 0; j <= n; ++j) blocks.push_back(c.Position(s[j]));
-  c.Add(MakeLaplacian(n, 1.0), blocks);
+  c.Add(MakeStarAutoDiff(CheckedLaplacian(std::vector<double>(n, 1.0), 1.0)), blocks);
 }
 
 }  // namespace
@@ -77,3 +66,5 @@ const TermSpec& laplacian() {
 }
 
 }  // namespace archgeo::terms
+
+ARCHGEO_STAR_AUTODIFF(archgeo::Laplacian)

@@ -9,9 +9,9 @@
 //    barycentres of their neighbours"; §11.2.2 edge-length variation
 //    "remedied by Laplacian smoothing"; Taubin 1995, umbrella operator]
 //
-// With uniform weights c_j = 1 (MakeLaplacian) r is the vector from v to the
+// With uniform weights c_j = 1 (uniform weights) r is the vector from v to the
 // barycentre of its neighbours, over L: r = 0 iff v is at the barycentre.
-// With other constant weights (MakeWeightedLaplacian) r points to the
+// With other constant weights (cotangent weights) r points to the
 // weighted barycentre; the cotangent weights frozen at the start of a round
 // (energies/mean_curvature_flow.h CotangentWeights) give the linearised
 // mean-curvature flow of Desbrun et al. 1999 / the minimal-surface iteration
@@ -34,15 +34,15 @@
 
 #include <Eigen/Core>
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
-
 namespace archgeo {
 
-// Functor for DynamicAutoDiffCostFunction: parameters[0] = v,
+// Functor over a vertex star (MakeStarAutoDiff): parameters[0] = v,
 // parameters[j] = w_j (j = 1 … n), 3 doubles each; 3 residuals.
 struct Laplacian {
+  static constexpr int kResiduals = 3;
+  static constexpr int kStride = 12;
+  int NumBlocks() const { return int(weights.size()) + 1; }
+
   // weights: c_1 … c_n (n ≥ 1, Σ c_j > 0); inv_length: 1/L.
   Laplacian(const std::vector<double>& weights, double inv_length)
       : weights(weights), inv_length(inv_length) {
@@ -69,17 +69,10 @@ struct Laplacian {
   double scale;  // inv_length / Σ c_j
 };
 
-// Uniform weights: a new DynamicAutoDiffCostFunction<Laplacian> over
-// valence + 1 position blocks (v, w_1 … w_n; 3 doubles each), 3 residuals;
-// the caller takes ownership. Preconditions (CHECKed): valence ≥ 1;
-// inv_length finite and > 0.
-ceres::CostFunction* MakeLaplacian(int valence, double inv_length);
-
-// Given weights c_1 … c_n (n = weights.size()); otherwise as above.
-// Preconditions (CHECKed): n ≥ 1, every c_j finite, Σ c_j > 0 (individual
-// cotangent weights may be negative); inv_length finite and > 0.
-ceres::CostFunction* MakeWeightedLaplacian(const std::vector<double>& weights,
-                                           double inv_length);
+// The functor after checking its input (CHECKs: n ≥ 1, every c_j finite,
+// Σ c_j > 0 (individual cotangent weights may be negative); inv_length finite
+// and > 0). Uniform weights: std::vector<double>(n, 1.0).
+Laplacian CheckedLaplacian(const std::vector<double>& weights, double inv_length);
 
 }  // namespace archgeo
 

@@ -4,27 +4,25 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
 
 #include "core/term.h"
+#include "energies/autodiff_impl.h"
 #include "energies/level_set_elements.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeLevelSetAlignment(const double corners[6], const double v[2],
+LevelSetAlignment CheckedLevelSetAlignment(const double corners[6], const double v[2],
                                            double inv_total_area) {
   CHECK(corners != nullptr && v != nullptr);
-  for (int i = 0; i < 6; ++i) CHECK(std::isfinite(corners[i])) << "MakeLevelSetAlignment: corners";
-  CHECK(std::isfinite(v[0]) && std::isfinite(v[1])) << "MakeLevelSetAlignment: non-finite v";
+  for (int i = 0; i < 6; ++i) CHECK(std::isfinite(corners[i])) << "LevelSetAlignment: corners";
+  CHECK(std::isfinite(v[0]) && std::isfinite(v[1])) << "LevelSetAlignment: non-finite v";
   CHECK(std::isfinite(inv_total_area) && inv_total_area > 0.0)
-      << "MakeLevelSetAlignment: inv_total_area must be finite and > 0";
+      << "LevelSetAlignment: inv_total_area must be finite and > 0";
   CHECK(TriangleGradient(corners).area > 0.0)
-      << "MakeLevelSetAlignment: corners must be counter-clockwise with positive area";
-  return new ceres::AutoDiffCostFunction<LevelSetAlignment, 2, 1, 1, 1>(
-      new LevelSetAlignment(corners, v, inv_total_area));
+      << "LevelSetAlignment: corners must be counter-clockwise with positive area";
+  return LevelSetAlignment(corners, v, inv_total_area);
 }
-
 
 namespace terms {
 namespace {
@@ -39,8 +37,7 @@ void AddLevelSetAlignment(TermContext& c, size_t i) {
   const int k[3] = {int(d[ld::kWedges]), int(d[ld::kWedges + 1]), int(d[ld::kWedges + 2])};
   for (const auto& [block, v] : {std::make_pair("level_set_g", d + ld::kV),
                                  std::make_pair("level_set_h", d + ld::kW)}) {
-    c.Add(MakeLevelSetAlignment(d + ld::kCorners, v, d[ld::kInvArea]),
-          {c.Block(block, k[0]), c.Block(block, k[1]), c.Block(block, k[2])});
+    AddAutoDiff(c, CheckedLevelSetAlignment(d + ld::kCorners, v, d[ld::kInvArea]), {c.Block(block, k[0]), c.Block(block, k[1]), c.Block(block, k[2])});
   }
 }
 
@@ -62,3 +59,5 @@ const TermSpec& level_set_alignment() {
 
 }  // namespace terms
 }  // namespace archgeo
+
+ARCHGEO_AUTODIFF(archgeo::LevelSetAlignment)

@@ -38,13 +38,13 @@
 
 #include "energies/level_set_gradient.h"
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 struct LevelSetAlignment {
+  using Shape = CostShape<2, 1, 1, 1>;
+
   // corners: 6 doubles (face frame, counter-clockwise); v: 2 doubles (face
   // frame); inv_total_area: 1 / A_Φ.
   LevelSetAlignment(const double corners[6], const double v[2], double inv_total_area)
@@ -65,13 +65,6 @@ struct LevelSetAlignment {
   Eigen::Vector2d target;  // R v
   double scale;            // sqrt(A_f / A_Φ)
 };
-
-// Returns a new AutoDiffCostFunction<LevelSetAlignment, 2, 1, 1, 1> (blocks
-// g0, g1, g2: the values at the corners of the face's corner halfedges h0,
-// h1, h2, fields/face_frames.h FaceCorners2D); the caller takes ownership.
-// Preconditions (CHECKed): finite inputs, corner area > 0, inv_total_area > 0.
-ceres::CostFunction* MakeLevelSetAlignment(const double corners[6], const double v[2],
-                                           double inv_total_area);
 
 }  // namespace archgeo
 

@@ -4,22 +4,20 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
 
 #include "core/term.h"
+#include "energies/autodiff_impl.h"
 #include "energies/level_set_elements.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeLevelSetBranchPoint(int sign, double inv_length) {
-  CHECK(sign == 1 || sign == -1) << "MakeLevelSetBranchPoint: sign must be +1 or -1, got " << sign;
+LevelSetBranchPoint CheckedLevelSetBranchPoint(int sign, double inv_length) {
+  CHECK(sign == 1 || sign == -1) << "LevelSetBranchPoint: sign must be +1 or -1, got " << sign;
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakeLevelSetBranchPoint: inv_length must be finite and > 0";
-  return new ceres::AutoDiffCostFunction<LevelSetBranchPoint, 1, 1, 1>(
-      new LevelSetBranchPoint(sign, inv_length));
+      << "LevelSetBranchPoint: inv_length must be finite and > 0";
+  return LevelSetBranchPoint(sign, inv_length);
 }
-
 
 namespace terms {
 namespace {
@@ -31,10 +29,8 @@ namespace ld = level_set_data;
 void AddLevelSetBranchPoint(TermContext& c, size_t i) {
   const double* d = c.elements->Data(i);
   const int wedge = int(d[ld::kLeft]), chain = int(d[ld::kChain]);
-  c.Add(MakeLevelSetBranchPoint(int(d[ld::kSignG]), d[ld::kInvLength]),
-        {c.Block("level_set_g", wedge), c.Block("level_set_alpha_g", chain)});
-  c.Add(MakeLevelSetBranchPoint(int(d[ld::kSignH]), d[ld::kInvLength]),
-        {c.Block("level_set_h", wedge), c.Block("level_set_alpha_h", chain)});
+  AddAutoDiff(c, CheckedLevelSetBranchPoint(int(d[ld::kSignG]), d[ld::kInvLength]), {c.Block("level_set_g", wedge), c.Block("level_set_alpha_g", chain)});
+  AddAutoDiff(c, CheckedLevelSetBranchPoint(int(d[ld::kSignH]), d[ld::kInvLength]), {c.Block("level_set_h", wedge), c.Block("level_set_alpha_h", chain)});
 }
 
 }  // namespace
@@ -55,3 +51,5 @@ const TermSpec& level_set_branch_point() {
 
 }  // namespace terms
 }  // namespace archgeo
+
+ARCHGEO_AUTODIFF(archgeo::LevelSetBranchPoint)

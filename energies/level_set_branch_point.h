@@ -22,13 +22,13 @@
 #ifndef ARCHGEO_ENERGIES_LEVEL_SET_BRANCH_POINT_H_
 #define ARCHGEO_ENERGIES_LEVEL_SET_BRANCH_POINT_H_
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 struct LevelSetBranchPoint {
+  using Shape = CostShape<1, 1, 1>;
+
   // sign: s = ±1; inv_length: 1/L.
   LevelSetBranchPoint(int sign, double inv_length) : sign(sign), inv_length(inv_length) {}
 
@@ -42,11 +42,6 @@ struct LevelSetBranchPoint {
   int sign;
   double inv_length;
 };
-
-// Returns a new AutoDiffCostFunction<LevelSetBranchPoint, 1, 1, 1> (blocks g,
-// alpha); the caller takes ownership. Preconditions (CHECKed): sign ∈ {−1, +1},
-// inv_length finite and > 0.
-ceres::CostFunction* MakeLevelSetBranchPoint(int sign, double inv_length);
 
 }  // namespace archgeo
 

@@ -5,28 +5,26 @@
 #include <cmath>
 #include <vector>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
 
 #include "core/term.h"
+#include "energies/autodiff_impl.h"
 #include "energies/level_set_elements.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeLevelSetConjugacy(const double corners[6], const double m[3],
+LevelSetConjugacy CheckedLevelSetConjugacy(const double corners[6], const double m[3],
                                            double gradient_scale) {
   CHECK(corners != nullptr && m != nullptr);
-  for (int i = 0; i < 6; ++i) CHECK(std::isfinite(corners[i])) << "MakeLevelSetConjugacy: corners";
+  for (int i = 0; i < 6; ++i) CHECK(std::isfinite(corners[i])) << "LevelSetConjugacy: corners";
   CHECK(std::isfinite(m[0]) && std::isfinite(m[1]) && std::isfinite(m[2]))
-      << "MakeLevelSetConjugacy: non-finite M";
+      << "LevelSetConjugacy: non-finite M";
   CHECK(std::isfinite(gradient_scale) && gradient_scale > 0.0)
-      << "MakeLevelSetConjugacy: gradient_scale must be finite and > 0";
+      << "LevelSetConjugacy: gradient_scale must be finite and > 0";
   CHECK(TriangleGradient(corners).area > 0.0)
-      << "MakeLevelSetConjugacy: corners must be counter-clockwise with positive area";
-  return new ceres::AutoDiffCostFunction<LevelSetConjugacy, 1, 1, 1, 1, 1, 1, 1>(
-      new LevelSetConjugacy(corners, m, gradient_scale));
+      << "LevelSetConjugacy: corners must be counter-clockwise with positive area";
+  return LevelSetConjugacy(corners, m, gradient_scale);
 }
-
 
 namespace terms {
 namespace {
@@ -39,11 +37,12 @@ void AddLevelSetConjugacy(TermContext& c, size_t i) {
   const double* d = c.elements->Data(i);
   const double* m = d + ld::kM;
   if (m[0] == 0.0 && m[1] == 0.0 && m[2] == 0.0) return;
-  std::vector<double*> blocks;
-  for (const char* block : {"level_set_g", "level_set_h"}) {
-    for (int k = 0; k < 3; ++k) blocks.push_back(c.Block(block, int(d[ld::kWedges + k])));
+  BlocksOf<LevelSetConjugacy> blocks;
+  for (int k = 0; k < 3; ++k) {
+    blocks[k] = c.Block("level_set_g", int(d[ld::kWedges + k]));
+    blocks[3 + k] = c.Block("level_set_h", int(d[ld::kWedges + k]));
   }
-  c.Add(MakeLevelSetConjugacy(d + ld::kCorners, m, c.Number("gradient_scale")), blocks);
+  AddAutoDiff(c, CheckedLevelSetConjugacy(d + ld::kCorners, m, c.Number("gradient_scale")), blocks);
 }
 
 }  // namespace
@@ -67,3 +66,5 @@ const TermSpec& level_set_conjugacy() {
 
 }  // namespace terms
 }  // namespace archgeo
+
+ARCHGEO_AUTODIFF(archgeo::LevelSetConjugacy)

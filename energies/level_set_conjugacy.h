@@ -40,13 +40,13 @@
 #include "energies/level_set_gradient.h"
 #include "energies/level_set_normalised.h"  // kLevelSetGradientEpsilon
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 struct LevelSetConjugacy {
+  using Shape = CostShape<1, 1, 1, 1, 1, 1, 1>;
+
   // corners: 6 doubles (face frame, counter-clockwise); m: m11, m12, m22 (face
   // frame); gradient_scale: expected ‖∇g‖, ‖∇h‖ > 0.
   LevelSetConjugacy(const double corners[6], const double m[3], double gradient_scale)
@@ -81,13 +81,6 @@ struct LevelSetConjugacy {
   double epsilon;
   Eigen::Matrix2d rotated;   // Rᵀ M R
 };
-
-// Returns a new AutoDiffCostFunction<LevelSetConjugacy, 1, 1, 1, 1, 1, 1, 1>
-// (blocks g0, g1, g2, h0, h1, h2 at the corners of h0, h1, h2 as in
-// level_set_alignment.h); the caller takes ownership. Preconditions
-// (CHECKed): finite inputs, corner area > 0, gradient_scale > 0.
-ceres::CostFunction* MakeLevelSetConjugacy(const double corners[6], const double m[3],
-                                           double gradient_scale = 1.0);
 
 }  // namespace archgeo
 

@@ -4,22 +4,20 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
 
 #include "core/term.h"
+#include "energies/autodiff_impl.h"
 #include "energies/level_set_elements.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeLevelSetJump(int sign, double inv_length) {
-  CHECK(sign == 1 || sign == -1) << "MakeLevelSetJump: sign must be +1 or -1, got " << sign;
+LevelSetJump CheckedLevelSetJump(int sign, double inv_length) {
+  CHECK(sign == 1 || sign == -1) << "LevelSetJump: sign must be +1 or -1, got " << sign;
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakeLevelSetJump: inv_length must be finite and > 0";
-  return new ceres::AutoDiffCostFunction<LevelSetJump, 1, 1, 1, 1>(
-      new LevelSetJump(sign, inv_length));
+      << "LevelSetJump: inv_length must be finite and > 0";
+  return LevelSetJump(sign, inv_length);
 }
-
 
 namespace terms {
 namespace {
@@ -30,11 +28,9 @@ namespace ld = level_set_data;
 void AddLevelSetJump(TermContext& c, size_t i) {
   const double* d = c.elements->Data(i);
   const int left = int(d[ld::kLeft]), right = int(d[ld::kRight]), chain = int(d[ld::kChain]);
-  c.Add(MakeLevelSetJump(int(d[ld::kSignG]), d[ld::kInvLength]),
-        {c.Block("level_set_g", left), c.Block("level_set_g", right),
+  AddAutoDiff(c, CheckedLevelSetJump(int(d[ld::kSignG]), d[ld::kInvLength]), {c.Block("level_set_g", left), c.Block("level_set_g", right),
          c.Block("level_set_alpha_g", chain)});
-  c.Add(MakeLevelSetJump(int(d[ld::kSignH]), d[ld::kInvLength]),
-        {c.Block("level_set_h", left), c.Block("level_set_h", right),
+  AddAutoDiff(c, CheckedLevelSetJump(int(d[ld::kSignH]), d[ld::kInvLength]), {c.Block("level_set_h", left), c.Block("level_set_h", right),
          c.Block("level_set_alpha_h", chain)});
 }
 
@@ -56,3 +52,5 @@ const TermSpec& level_set_jump() {
 
 }  // namespace terms
 }  // namespace archgeo
+
+ARCHGEO_AUTODIFF(archgeo::LevelSetJump)

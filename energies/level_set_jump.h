@@ -30,13 +30,13 @@
 #ifndef ARCHGEO_ENERGIES_LEVEL_SET_JUMP_H_
 #define ARCHGEO_ENERGIES_LEVEL_SET_JUMP_H_
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 struct LevelSetJump {
+  using Shape = CostShape<1, 1, 1, 1>;
+
   // sign: s = ±1; inv_length: 1/L.
   LevelSetJump(int sign, double inv_length) : sign(sign), inv_length(inv_length) {}
 
@@ -51,12 +51,6 @@ struct LevelSetJump {
   int sign;
   double inv_length;
 };
-
-// Returns a new AutoDiffCostFunction<LevelSetJump, 1, 1, 1, 1> (blocks
-// g_left, g_right, alpha; g_left and g_right must be different blocks); the
-// caller takes ownership. Preconditions (CHECKed): sign ∈ {−1, +1},
-// inv_length finite and > 0.
-ceres::CostFunction* MakeLevelSetJump(int sign, double inv_length);
 
 }  // namespace archgeo
 

@@ -4,30 +4,28 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
 
 #include "core/term.h"
+#include "energies/autodiff_impl.h"
 #include "energies/level_set_elements.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeLevelSetNormalised(const double corners[6], const double v[2],
+LevelSetNormalised CheckedLevelSetNormalised(const double corners[6], const double v[2],
                                             double inv_total_area, double gradient_scale) {
   CHECK(corners != nullptr && v != nullptr);
-  for (int i = 0; i < 6; ++i) CHECK(std::isfinite(corners[i])) << "MakeLevelSetNormalised: corners";
+  for (int i = 0; i < 6; ++i) CHECK(std::isfinite(corners[i])) << "LevelSetNormalised: corners";
   CHECK(std::isfinite(v[0]) && std::isfinite(v[1]) && (v[0] != 0.0 || v[1] != 0.0))
-      << "MakeLevelSetNormalised: v must be finite and nonzero";
+      << "LevelSetNormalised: v must be finite and nonzero";
   CHECK(std::isfinite(inv_total_area) && inv_total_area > 0.0)
-      << "MakeLevelSetNormalised: inv_total_area must be finite and > 0";
+      << "LevelSetNormalised: inv_total_area must be finite and > 0";
   CHECK(std::isfinite(gradient_scale) && gradient_scale > 0.0)
-      << "MakeLevelSetNormalised: gradient_scale must be finite and > 0";
+      << "LevelSetNormalised: gradient_scale must be finite and > 0";
   CHECK(TriangleGradient(corners).area > 0.0)
-      << "MakeLevelSetNormalised: corners must be counter-clockwise with positive area";
-  return new ceres::AutoDiffCostFunction<LevelSetNormalised, 2, 1, 1, 1>(
-      new LevelSetNormalised(corners, v, inv_total_area, gradient_scale));
+      << "LevelSetNormalised: corners must be counter-clockwise with positive area";
+  return LevelSetNormalised(corners, v, inv_total_area, gradient_scale);
 }
-
 
 namespace terms {
 namespace {
@@ -43,8 +41,7 @@ void AddLevelSetNormalised(TermContext& c, size_t i) {
   for (const auto& [block, v] : {std::make_pair("level_set_g", d + ld::kV),
                                  std::make_pair("level_set_h", d + ld::kW)}) {
     if (v[0] == 0.0 && v[1] == 0.0) continue;
-    c.Add(MakeLevelSetNormalised(d + ld::kCorners, v, d[ld::kInvArea], scale),
-          {c.Block(block, k[0]), c.Block(block, k[1]), c.Block(block, k[2])});
+    AddAutoDiff(c, CheckedLevelSetNormalised(d + ld::kCorners, v, d[ld::kInvArea], scale), {c.Block(block, k[0]), c.Block(block, k[1]), c.Block(block, k[2])});
   }
 }
 
@@ -69,3 +66,5 @@ const TermSpec& level_set_normalised() {
 
 }  // namespace terms
 }  // namespace archgeo
+
+ARCHGEO_AUTODIFF(archgeo::LevelSetNormalised)

@@ -40,15 +40,15 @@
 
 #include "energies/level_set_gradient.h"
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 inline constexpr double kLevelSetGradientEpsilon = 1e-6;
 
 struct LevelSetNormalised {
+  using Shape = CostShape<2, 1, 1, 1>;
+
   // corners: 6 doubles (face frame, counter-clockwise); v: 2 doubles, nonzero;
   // inv_total_area: 1 / A_Φ; gradient_scale: expected ‖∇g‖ > 0.
   LevelSetNormalised(const double corners[6], const double v[2], double inv_total_area,
@@ -74,13 +74,6 @@ struct LevelSetNormalised {
   double scale;               // sqrt(A_f / A_Φ)
   double epsilon;
 };
-
-// Returns a new AutoDiffCostFunction<LevelSetNormalised, 2, 1, 1, 1> (blocks
-// g0, g1, g2 as in level_set_alignment.h); the caller takes ownership.
-// Preconditions (CHECKed): finite inputs, corner area > 0, v ≠ 0,
-// inv_total_area > 0, gradient_scale > 0.
-ceres::CostFunction* MakeLevelSetNormalised(const double corners[6], const double v[2],
-                                            double inv_total_area, double gradient_scale = 1.0);
 
 }  // namespace archgeo
 

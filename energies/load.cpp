@@ -2,54 +2,46 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "energies/load.h"
 
+#include <array>
 #include <cmath>
 
-#include <ceres/dynamic_autodiff_cost_function.h>
 #include <glog/logging.h>
+
+#include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 namespace {
 
-// Jet size of the dynamic autodiff: 12 of the 3(n + 1) parameters per pass.
-constexpr int kStride = 12;
 
 }  // namespace
 
-ceres::CostFunction* MakeLoadEquilibrium(const double force[3],
-                                         const std::vector<double>& stiffness,
-                                         const std::vector<double>& rest_length,
-                                         double inv_force) {
+LoadEquilibrium CheckedLoadEquilibrium(const double force[3], const std::vector<double>& stiffness,
+                                       const std::vector<double>& rest_length, double inv_force) {
   CHECK(force != nullptr);
   CHECK(std::isfinite(force[0]) && std::isfinite(force[1]) &&
         std::isfinite(force[2]))
-      << "MakeLoadEquilibrium: non-finite force";
-  CHECK_GE(stiffness.size(), 1u) << "MakeLoadEquilibrium: no spring";
+      << "LoadEquilibrium: non-finite force";
+  CHECK_GE(stiffness.size(), 1u) << "LoadEquilibrium: no spring";
   CHECK_EQ(stiffness.size(), rest_length.size())
-      << "MakeLoadEquilibrium: one rest length per spring";
+      << "LoadEquilibrium: one rest length per spring";
   for (size_t j = 0; j < stiffness.size(); ++j) {
     CHECK(std::isfinite(stiffness[j]) && stiffness[j] > 0.0)
-        << "MakeLoadEquilibrium: stiffness must be finite and > 0, got "
+        << "LoadEquilibrium: stiffness must be finite and > 0, got "
         << stiffness[j];
     CHECK(std::isfinite(rest_length[j]) && rest_length[j] >= 0.0)
-        << "MakeLoadEquilibrium: rest length must be finite and >= 0, got "
+        << "LoadEquilibrium: rest length must be finite and >= 0, got "
         << rest_length[j];
   }
   CHECK(std::isfinite(inv_force) && inv_force > 0.0)
-      << "MakeLoadEquilibrium: inv_force must be finite and > 0, got "
+      << "LoadEquilibrium: inv_force must be finite and > 0, got "
       << inv_force;
-  auto* cost = new ceres::DynamicAutoDiffCostFunction<LoadEquilibrium, kStride>(
-      new LoadEquilibrium(force, stiffness, rest_length, inv_force));
-  for (size_t j = 0; j <= stiffness.size(); ++j) cost->AddParameterBlock(3);
-  cost->SetNumResiduals(3);
-  return cost;
+  return LoadEquilibrium(force, stiffness, rest_length, inv_force);
 }
 
 }  // namespace archgeo
 
 // --- term `load` ---------------------------------------------------------------
-#include <array>
-
-#include "core/term.h"
 
 namespace archgeo::terms {
 namespace {
@@ -138,8 +130,8 @@ void AddLoad(TermContext& c, size_t i) {
     blocks.push_back(c.Position(s[j]));
   }
   const double scale = std::abs(Magnitude(c));
-  c.Add(MakeLoadEquilibrium(c.Block("load_force", s[0]), stiffness, rest,
-                            1.0 / (scale > 0 ? scale : k)),
+  c.Add(MakeStarAutoDiff(CheckedLoadEquilibrium(c.Block("load_force", s[0]), stiffness, rest,
+                                                1.0 / (scale > 0 ? scale : k))),
         blocks);
 }
 
@@ -190,3 +182,5 @@ const TermSpec& load() {
 }
 
 }  // namespace archgeo::terms
+
+ARCHGEO_STAR_AUTODIFF(archgeo::LoadEquilibrium)

@@ -65,18 +65,18 @@
 
 #include <Eigen/Core>
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
-
 namespace archgeo {
 
 // Regularisation of a length spring's ‖d‖, relative to its rest length.
 inline constexpr double kLoadEpsilon = 1e-6;
 
-// Functor for DynamicAutoDiffCostFunction: parameters[0] = v,
+// Functor over a vertex star (MakeStarAutoDiff): parameters[0] = v,
 // parameters[j] = w_j (j = 1 … n), 3 doubles each; 3 residuals.
 struct LoadEquilibrium {
+  static constexpr int kResiduals = 3;
+  static constexpr int kStride = 12;
+  int NumBlocks() const { return int(stiffness.size()) + 1; }
+
   // force: 3 doubles, the load f on v; stiffness, rest_length: k_j and L0_j
   // of the spring to neighbour j (n entries each, L0_j = 0: zero-length);
   // inv_force: 1/F.
@@ -115,15 +115,11 @@ struct LoadEquilibrium {
   double inv_force;
 };
 
-// Returns a new DynamicAutoDiffCostFunction<LoadEquilibrium> over n + 1
-// position blocks (v, w_1 … w_n; 3 doubles each), n = stiffness.size(), with
-// 3 residuals; the caller takes ownership. Preconditions (CHECKed): force
-// finite; n ≥ 1; rest_length.size() = n; every k_j finite and > 0, every
-// L0_j finite and ≥ 0; inv_force finite and > 0.
-ceres::CostFunction* MakeLoadEquilibrium(const double force[3],
-                                         const std::vector<double>& stiffness,
-                                         const std::vector<double>& rest_length,
-                                         double inv_force);
+// The functor after checking its input (CHECKs: force finite; n ≥ 1;
+// rest_length.size() = n; every k_j finite and > 0, every L0_j finite and
+// ≥ 0; inv_force finite and > 0).
+LoadEquilibrium CheckedLoadEquilibrium(const double force[3], const std::vector<double>& stiffness,
+                                       const std::vector<double>& rest_length, double inv_force);
 
 }  // namespace archgeo
 

@@ -5,14 +5,15 @@
 #include <algorithm>
 #include <cmath>
 
-#include <ceres/dynamic_autodiff_cost_function.h>
 #include <glog/logging.h>
+
+#include "core/term.h"
+#include "energies/autodiff_impl.h"
+#include "energies/laplacian.h"
 
 namespace archgeo {
 namespace {
 
-// Jet size of the dynamic autodiff: 12 of the 3(n + 1) parameters per pass.
-constexpr int kStride = 12;
 // Lower bound of the sine in CotangentWeights.
 constexpr double kMinSine = 1e-6;
 
@@ -30,19 +31,13 @@ double Cotangent(const Eigen::Vector3d& p, const Eigen::Vector3d& q,
 
 }  // namespace
 
-ceres::CostFunction* MakeMeanCurvatureFlow(int valence, bool closed,
-                                           double inv_length) {
+MeanCurvatureFlow CheckedMeanCurvatureFlow(int valence, bool closed, double inv_length) {
   CHECK_GE(valence, MinValence(closed))
-      << "MakeMeanCurvatureFlow: valence too small (closed = " << closed << ")";
+      << "MeanCurvatureFlow: valence too small (closed = " << closed << ")";
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakeMeanCurvatureFlow: inv_length must be finite and > 0, got "
+      << "MeanCurvatureFlow: inv_length must be finite and > 0, got "
       << inv_length;
-  auto* cost =
-      new ceres::DynamicAutoDiffCostFunction<MeanCurvatureFlow, kStride>(
-          new MeanCurvatureFlow(valence, closed, inv_length));
-  for (int j = 0; j <= valence; ++j) cost->AddParameterBlock(3);
-  cost->SetNumResiduals(3);
-  return cost;
+  return MeanCurvatureFlow(valence, closed, inv_length);
 }
 
 std::vector<double> CotangentWeights(const double* v,
@@ -76,8 +71,6 @@ std::vector<double> CotangentWeights(const double* v,
 }  // namespace archgeo
 
 // --- term `mean_curvature_flow` ------------------------------------------------
-#include "core/term.h"
-#include "energies/laplacian.h"
 
 namespace archgeo::terms {
 namespace {
@@ -95,12 +88,13 @@ void AddMeanCurvatureFlow(TermContext& c, size_t i) {
   std::vector<double*> blocks;
   for (int j = 0; j <= n; ++j) blocks.push_back(c.Position(s[j]));
   if (c.String("form") == "live") {
-    c.Add(MakeMeanCurvatureFlow(n, closed, 1.0), blocks);
+    c.Add(MakeStarAutoDiff(CheckedMeanCurvatureFlow(n, closed, 1.0)), blocks);
     return;
   }
   std::vector<const double*> ring;
   for (int j = 1; j <= n; ++j) ring.push_back(c.Previous(s[j]));
-  c.Add(MakeWeightedLaplacian(CotangentWeights(c.Previous(s[0]), ring, closed), 1.0), blocks);
+  c.Add(MakeStarAutoDiff(CheckedLaplacian(CotangentWeights(c.Previous(s[0]), ring, closed), 1.0)),
+        blocks);
 }
 
 }  // namespace
@@ -125,3 +119,5 @@ const TermSpec& mean_curvature_flow() {
 }
 
 }  // namespace archgeo::terms
+
+ARCHGEO_STAR_AUTODIFF(archgeo::MeanCurvatureFlow)

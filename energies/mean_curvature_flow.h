@@ -32,7 +32,7 @@
 //
 // Frozen alternative (the term's default): CotangentWeights below evaluates
 // c_j = ½(cot α_j + cot β_j) at given positions; energies/laplacian.h
-// MakeWeightedLaplacian with those weights, re-computed every round, is the
+// The Laplacian with those weights, re-computed every round, is the
 // linearised flow (Desbrun 1999's implicit fairing; Pinkall–Polthier's
 // iteration): each round is linear (one Gauss-Newton step), and its fixed
 // point is the same minimal surface (the bump above: flat to 1e-11 in one
@@ -60,19 +60,19 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross()
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
-
 namespace archgeo {
 
 // Regularisation of the triangle normals, relative to L² (see above).
 inline constexpr double kMeanCurvatureFlowEpsilon = 1e-8;
 
-// Functor for DynamicAutoDiffCostFunction: parameters[0] = v,
+// Functor over a vertex star (MakeStarAutoDiff): parameters[0] = v,
 // parameters[j] = w_j (j = 1 … n, cyclic order around v), 3 doubles each;
 // 3 residuals.
 struct MeanCurvatureFlow {
+  static constexpr int kResiduals = 3;
+  static constexpr int kStride = 12;
+  int NumBlocks() const { return valence + 1; }
+
   // valence: n; closed: interior vertex (n triangles) or boundary vertex
   // (n − 1 triangles); inv_length: 1/L.
   MeanCurvatureFlow(int valence, bool closed, double inv_length)
@@ -103,12 +103,9 @@ struct MeanCurvatureFlow {
   double inv_length;
 };
 
-// Returns a new DynamicAutoDiffCostFunction<MeanCurvatureFlow> over
-// valence + 1 position blocks (v, w_1 … w_n; 3 doubles each), 3 residuals;
-// the caller takes ownership. Preconditions (CHECKed): valence ≥ 3 if
-// closed, ≥ 2 otherwise; inv_length finite and > 0.
-ceres::CostFunction* MakeMeanCurvatureFlow(int valence, bool closed,
-                                           double inv_length);
+// The functor after checking its input (CHECKs: valence ≥ 3 if closed, ≥ 2
+// otherwise; inv_length finite and > 0).
+MeanCurvatureFlow CheckedMeanCurvatureFlow(int valence, bool closed, double inv_length);
 
 // Cotangent weights c_j = ½(cot α_j + cot β_j) of the edges v w_j at the given
 // positions (v: 3 doubles; ring: the w_j, 3 doubles each, same order and
@@ -117,7 +114,7 @@ ceres::CostFunction* MakeMeanCurvatureFlow(int valence, bool closed,
 // a large but finite weight. For a fan of non-degenerate triangles Σ_j c_j =
 // ½ Σ_k (cot + cot of the base angles) > 0; if the sum is not positive (a
 // collapsed fan) the uniform weights 1 are returned instead, so the result
-// can always be passed to MakeWeightedLaplacian. Preconditions (CHECKed):
+// can always be passed to CheckedLaplacian. Preconditions (CHECKed):
 // ring.size() ≥ 3 if closed, ≥ 2 otherwise; no null pointer.
 std::vector<double> CotangentWeights(const double* v,
                                      const std::vector<const double*>& ring,

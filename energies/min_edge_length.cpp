@@ -5,31 +5,27 @@
 #include <algorithm>
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
+
+#include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 
 namespace {
 
-using MinEdgeLengthCost = ceres::AutoDiffCostFunction<MinEdgeLength, 1, 3, 3>;
 
 MinEdgeLength CheckedMinEdgeLength(double min_length) {
   CHECK(std::isfinite(min_length) && min_length > 0.0)
-      << "MakeMinEdgeLength: min_length must be finite and > 0, got " << min_length;
+      << "MinEdgeLength: min_length must be finite and > 0, got " << min_length;
   return MinEdgeLength(min_length);
 }
 
 }  // namespace
 
-ceres::CostFunction* MakeMinEdgeLength(double min_length) {
-  return new MinEdgeLengthCost(new MinEdgeLength(CheckedMinEdgeLength(min_length)));
-}
-
 }  // namespace archgeo
 
 // --- term `min_edge_length` --------------------------------------------------------
-#include "core/term.h"
 
 namespace archgeo::terms {
 namespace {
@@ -49,7 +45,7 @@ void AddMinEdgeLength(TermContext& c, size_t i) {
     if (!(length > 0)) continue;  // an edge the input already collapsed
     // The canonical frame's unit is the input's mean edge length.
     const double min_length = std::min(fraction, 0.5 * length);
-    c.AddAutoDiff<MinEdgeLengthCost>(CheckedMinEdgeLength(min_length), {c.Position(a), c.Position(b)});
+    AddAutoDiff(c, CheckedMinEdgeLength(min_length), {c.Position(a), c.Position(b)});
   }
 }
 
@@ -74,3 +70,5 @@ const TermSpec& min_edge_length() {
 }
 
 }  // namespace archgeo::terms
+
+ARCHGEO_AUTODIFF(archgeo::MinEdgeLength)

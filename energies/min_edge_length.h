@@ -33,13 +33,13 @@
 
 #include <Eigen/Core>
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 struct MinEdgeLength {
+  using Shape = CostShape<1, 3, 3>;
+
   explicit MinEdgeLength(double min_length) : min_length(min_length) {}
 
   // a, b: 3 doubles each; residual: 1 double.
@@ -58,10 +58,6 @@ struct MinEdgeLength {
   // batch differentiates only the elements that are not idle).
   static constexpr bool kFlatWhereZero = true;
 };
-
-// Returns a new AutoDiffCostFunction<MinEdgeLength, 1, 3, 3> (blocks a, b);
-// the caller takes ownership. Precondition (CHECKed): min_length finite, > 0.
-ceres::CostFunction* MakeMinEdgeLength(double min_length);
 
 }  // namespace archgeo
 

@@ -6,8 +6,10 @@
 #include <cmath>
 #include <limits>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
+
+#include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 namespace {
@@ -129,15 +131,6 @@ bool CurveManifold::MinusJacobian(const double* x, double* jacobian) const {
   return true;
 }
 
-ceres::CostFunction* MakeOnCurve(std::shared_ptr<const CurvePolyline> curve,
-                                 double inv_length) {
-  CHECK(curve != nullptr) << "MakeOnCurve: null curve";
-  CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakeOnCurve: inv_length must be finite and > 0, got " << inv_length;
-  return new ceres::AutoDiffCostFunction<OnCurve, 3, 3, 1>(
-      new OnCurve(std::move(curve), inv_length));
-}
-
 ceres::Manifold* MakeCurveManifold(std::shared_ptr<const CurvePolyline> curve) {
   CHECK(curve != nullptr) << "MakeCurveManifold: null curve";
   return new CurveManifold(std::move(curve));
@@ -146,7 +139,6 @@ ceres::Manifold* MakeCurveManifold(std::shared_ptr<const CurvePolyline> curve) {
 }  // namespace archgeo
 
 // --- term `on_curve` -----------------------------------------------------------
-#include "core/term.h"
 
 namespace archgeo::terms {
 namespace {
@@ -222,3 +214,5 @@ const TermSpec& on_curve() {
 }
 
 }  // namespace archgeo::terms
+
+ARCHGEO_AUTODIFF(archgeo::OnCurve)

@@ -76,9 +76,7 @@
 #include <ceres/jet.h>
 #include <ceres/manifold.h>
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
@@ -141,6 +139,8 @@ class CurvePolyline {
 
 // Soft form: r = (v − C(t)) / L.
 struct OnCurve {
+  using Shape = CostShape<3, 3, 1>;
+
   // curve: shared by every vertex on it (not null); inv_length: 1/L.
   OnCurve(std::shared_ptr<const CurvePolyline> curve, double inv_length)
       : curve(std::move(curve)), inv_length(inv_length) {}
@@ -179,12 +179,6 @@ class CurveManifold : public ceres::Manifold {
  private:
   std::shared_ptr<const CurvePolyline> curve_;
 };
-
-// Returns a new AutoDiffCostFunction<OnCurve, 3, 3, 1> (blocks v, t); the
-// caller takes ownership. Preconditions (CHECKed): curve not null;
-// inv_length finite and > 0.
-ceres::CostFunction* MakeOnCurve(std::shared_ptr<const CurvePolyline> curve,
-                                 double inv_length);
 
 // Returns a new CurveManifold (the caller, usually ceres::Problem, takes
 // ownership). Precondition (CHECKed): curve not null.

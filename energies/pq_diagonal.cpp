@@ -4,33 +4,28 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
+#include <Eigen/Core>
 #include <glog/logging.h>
+
+#include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 
 namespace {
 
-using PqDiagonalCost = ceres::AutoDiffCostFunction<PqDiagonal, 1, 3, 3, 3, 3>;
 
 PqDiagonal CheckedPqDiagonal(double inv_length) {
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakePqDiagonal: inv_length must be finite and > 0, got " << inv_length;
+      << "PqDiagonal: inv_length must be finite and > 0, got " << inv_length;
   return PqDiagonal(inv_length);
 }
 
 }  // namespace
 
-ceres::CostFunction* MakePqDiagonal(double inv_length) {
-  return new PqDiagonalCost(new PqDiagonal(CheckedPqDiagonal(inv_length)));
-}
-
 }  // namespace archgeo
 
 // --- term `pq_diagonal` --------------------------------------------------------
-#include <Eigen/Core>
-
-#include "core/term.h"
 
 namespace archgeo::terms {
 namespace {
@@ -41,7 +36,7 @@ void AddPqDiagonal(TermContext& c, size_t i) {
   using V = Eigen::Map<const Eigen::Vector3d>;
   const double d0 = (V(c.Original(q[2])) - V(c.Original(q[0]))).norm();
   const double d1 = (V(c.Original(q[3])) - V(c.Original(q[1]))).norm();
-  c.AddAutoDiff<PqDiagonalCost>(CheckedPqDiagonal(2.0 / (d0 + d1)),
+  AddAutoDiff(c, CheckedPqDiagonal(2.0 / (d0 + d1)),
                                 {c.Position(q[0]), c.Position(q[1]), c.Position(q[2]), c.Position(q[3])},
                                 c.band);
 }
@@ -64,3 +59,5 @@ const TermSpec& pq_diagonal() {
 }
 
 }  // namespace archgeo::terms
+
+ARCHGEO_AUTODIFF(archgeo::PqDiagonal)

@@ -36,9 +36,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross()
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
@@ -46,6 +44,8 @@ namespace archgeo {
 inline constexpr double kPqDiagonalEpsilon = 1e-6;
 
 struct PqDiagonal {
+  using Shape = CostShape<1, 3, 3, 3, 3>;
+
   // inv_length: 1/L, L > 0 the face's reference length (mean initial diagonal).
   explicit PqDiagonal(double inv_length) : inv_length(inv_length) {}
 
@@ -69,11 +69,6 @@ struct PqDiagonal {
 
   double inv_length;
 };
-
-// Returns a new AutoDiffCostFunction<PqDiagonal, 1, 3, 3, 3, 3>; the caller
-// (usually ceres::Problem) takes ownership. Precondition (CHECKed):
-// inv_length finite and > 0.
-ceres::CostFunction* MakePqDiagonal(double inv_length);
 
 }  // namespace archgeo
 

@@ -4,18 +4,17 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
 
 #include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakePrincipalStrip(double inv_length) {
+PrincipalStrip CheckedPrincipalStrip(double inv_length) {
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakePrincipalStrip: inv_length must be finite and > 0, got " << inv_length;
-  return new ceres::AutoDiffCostFunction<PrincipalStrip, 3, 3, 3, 3, 3, 3>(
-      new PrincipalStrip(inv_length));
+      << "PrincipalStrip: inv_length must be finite and > 0, got " << inv_length;
+  return PrincipalStrip(inv_length);
 }
 
 namespace terms {
@@ -26,7 +25,7 @@ namespace {
 void AddStrip(TermContext& c, size_t i) {
   const int* e = c.elements->Vertices(i);
   double* n_e = c.Block("strip_normal", c.elements->edge[i]);
-  c.Add(MakePrincipalStrip(1.0), {n_e, c.Position(e[0]), c.Position(e[1]),
+  AddAutoDiff(c, CheckedPrincipalStrip(1.0), {n_e, c.Position(e[0]), c.Position(e[1]),
                                   c.Block("sphere_normal", e[0]), c.Block("sphere_normal", e[1])});
 }
 
@@ -57,3 +56,5 @@ const TermSpec& principal_strip() {
 
 }  // namespace terms
 }  // namespace archgeo
+
+ARCHGEO_AUTODIFF(archgeo::PrincipalStrip)

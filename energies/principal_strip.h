@@ -38,14 +38,14 @@
 
 #include <Eigen/Core>
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 // 2. The developable normal strip along a principal edge vw.
 struct PrincipalStrip {
+  using Shape = CostShape<3, 3, 3, 3, 3, 3>;
+
   // inv_length: 1/L > 0.
   explicit PrincipalStrip(double inv_length) : inv_length(inv_length) {}
 
@@ -69,11 +69,6 @@ struct PrincipalStrip {
 
   double inv_length;
 };
-
-// Returns AutoDiffCostFunction<PrincipalStrip, 3, 3, 3, 3, 3, 3> (blocks n_e,
-// v, w, n_v, n_w); the caller takes ownership. Precondition (CHECKed):
-// inv_length finite and > 0.
-ceres::CostFunction* MakePrincipalStrip(double inv_length);
 
 }  // namespace archgeo
 

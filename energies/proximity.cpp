@@ -4,38 +4,28 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
 
+#include "core/term.h"
+#include "energies/anchor.h"
+#include "energies/autodiff_impl.h"
+
 namespace archgeo {
-
-namespace {
-
-using ProximityCost = ceres::AutoDiffCostFunction<Proximity, 1, 3>;
 
 Proximity CheckedProximity(const double point[3], const double normal[3], double inv_length) {
   CHECK(point != nullptr && normal != nullptr);
   for (int i = 0; i < 3; ++i) {
     CHECK(std::isfinite(point[i]) && std::isfinite(normal[i]))
-        << "MakeProximity: non-finite point or normal";
+        << "Proximity: non-finite point or normal";
   }
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakeProximity: inv_length must be finite and > 0, got " << inv_length;
+      << "Proximity: inv_length must be finite and > 0, got " << inv_length;
   return Proximity(point, normal, inv_length);
-}
-
-}  // namespace
-
-ceres::CostFunction* MakeProximity(const double point[3],
-                                   const double normal[3], double inv_length) {
-  return new ProximityCost(new Proximity(CheckedProximity(point, normal, inv_length)));
 }
 
 }  // namespace archgeo
 
 // --- term `proximity` ----------------------------------------------------------
-#include "core/term.h"
-#include "energies/anchor.h"
 
 namespace archgeo::terms {
 namespace {
@@ -46,13 +36,13 @@ namespace {
 void AddProximity(TermContext& c, size_t i) {
   const int v = c.elements->Vertices(i)[0];
   if (!c.OnBoundaryCurve(v)) {
-    c.AddAutoDiff<ProximityCost>(CheckedProximity(c.ProjectedPoint(v), c.ProjectedDirection(v), 1.0),
-                                 {c.Position(v)});
+    AddAutoDiff(c, CheckedProximity(c.ProjectedPoint(v), c.ProjectedDirection(v), 1.0),
+                {c.Position(v)});
   }
   const double point_weight = c.Number("point_weight");
   if (point_weight > 0) {
-    c.AddAutoDiff<AnchorCost>(CheckedAnchor(c.ProjectedPoint(v), 1.0), {c.Position(v)}, -1,
-                              "proximity_point", point_weight);
+    AddAutoDiff(c, CheckedAnchor(c.ProjectedPoint(v), 1.0), {c.Position(v)}, -1,
+                "proximity_point", point_weight);
   }
 }
 
@@ -79,3 +69,5 @@ const TermSpec& proximity() {
 }
 
 }  // namespace archgeo::terms
+
+ARCHGEO_AUTODIFF(archgeo::Proximity)

@@ -32,13 +32,13 @@
 
 #include <Eigen/Core>
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 struct Proximity {
+  using Shape = CostShape<1, 3>;
+
   // point: 3 doubles, the closest reference point p; normal: 3 doubles, the
   // reference normal at p (normalised here; zero stays zero); inv_length: 1/L.
   Proximity(const double point[3], const double normal[3], double inv_length)
@@ -63,11 +63,9 @@ struct Proximity {
   double inv_length;
 };
 
-// Returns a new AutoDiffCostFunction<Proximity, 1, 3> (block v); the caller
-// takes ownership. Preconditions (CHECKed): point and normal finite,
-// inv_length finite and > 0.
-ceres::CostFunction* MakeProximity(const double point[3],
-                                   const double normal[3], double inv_length);
+// The functor after checking its input (CHECKs: point and normal finite,
+// inv_length finite and > 0); proximity and tangent_plane add it.
+Proximity CheckedProximity(const double point[3], const double normal[3], double inv_length);
 
 }  // namespace archgeo
 

@@ -2,14 +2,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "energies/saddle_sign.h"
 
-#include <ceres/autodiff_cost_function.h>
-
 #include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeSaddleSign() {
-  return new ceres::AutoDiffCostFunction<SaddleSign, 1, 3, 3, 1, 3, 1>(new SaddleSign());
+SaddleSign CheckedSaddleSign() {
+  return SaddleSign();
 }
 
 namespace terms {
@@ -23,7 +22,7 @@ void AddSaddleSign(TermContext& c, size_t i) {
   if (c.Block("saddle", s[0])[0] == 0) return;
   double* delta = c.Block("saddle_dummy", s[0]);
   for (int k = 0; k < 2; ++k) {
-    c.Add(MakeSaddleSign(), {c.Position(s[0]), c.Block("sphere_normal", s[0]),
+    AddAutoDiff(c, CheckedSaddleSign(), {c.Position(s[0]), c.Block("sphere_normal", s[0]),
                              c.Block("sphere_curvature", s[0]), c.Position(s[1 + k]), delta + k});
   }
 }
@@ -49,3 +48,5 @@ const TermSpec& saddle_sign() {
 
 }  // namespace terms
 }  // namespace archgeo
+
+ARCHGEO_AUTODIFF(archgeo::SaddleSign)

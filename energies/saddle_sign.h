@@ -34,14 +34,14 @@
 
 #include <Eigen/Core>
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 // tangent plane than the sphere Σ(v). No constants.
 struct SaddleSign {
+  using Shape = CostShape<1, 3, 3, 1, 3, 1>;
+
   // v: 3 doubles, n: 3 doubles (unit sphere normal at v), kappa: 1 double,
   // w: 3 doubles (principal neighbour), delta: 1 double (dummy, unit-free);
   // residual: 1 double.
@@ -56,11 +56,6 @@ struct SaddleSign {
     return true;
   }
 };
-
-// Returns AutoDiffCostFunction<SaddleSign, 1, 3, 3, 1, 3, 1> (blocks v, n,
-// kappa, w, delta); the caller takes ownership. A problem initialises
-// δ = sqrt(max(0, −κ n·(w − v))).
-ceres::CostFunction* MakeSaddleSign();
 
 }  // namespace archgeo
 

@@ -4,24 +4,23 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
+#include <Eigen/Core>
 #include <glog/logging.h>
+
+#include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeShear(double inv_length) {
+Shear CheckedShear(double inv_length) {
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakeShear: inv_length must be finite and > 0, got " << inv_length;
-  return new ceres::AutoDiffCostFunction<Shear, 1, 3, 3, 3, 3>(
-      new Shear(inv_length));
+      << "Shear: inv_length must be finite and > 0, got " << inv_length;
+  return Shear(inv_length);
 }
 
 }  // namespace archgeo
 
 // --- term `shear` --------------------------------------------------------------
-#include <Eigen/Core>
-
-#include "core/term.h"
 
 namespace archgeo::terms {
 namespace {
@@ -33,8 +32,7 @@ void AddShear(TermContext& c, size_t i) {
   const double d0 = (V(c.Original(q[2])) - V(c.Original(q[0]))).norm();
   const double d1 = (V(c.Original(q[3])) - V(c.Original(q[1]))).norm();
   if (!(d0 + d1 > 0)) return;  // a collapsed quad has no diagonal to compare
-  c.Add(MakeShear(2.0 / (d0 + d1)),
-        {c.Position(q[0]), c.Position(q[1]), c.Position(q[2]), c.Position(q[3])});
+  AddAutoDiff(c, CheckedShear(2.0 / (d0 + d1)), {c.Position(q[0]), c.Position(q[1]), c.Position(q[2]), c.Position(q[3])});
 }
 
 }  // namespace
@@ -53,3 +51,5 @@ const TermSpec& shear() {
 }
 
 }  // namespace archgeo::terms
+
+ARCHGEO_AUTODIFF(archgeo::Shear)

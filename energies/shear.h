@@ -36,13 +36,13 @@
 
 #include <Eigen/Core>
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 struct Shear {
+  using Shape = CostShape<1, 3, 3, 3, 3>;
+
   // inv_length: 1/L, L > 0 the face's mean diagonal at build time.
   explicit Shear(double inv_length) : inv_length(inv_length) {}
 
@@ -63,11 +63,6 @@ struct Shear {
 
   double inv_length;
 };
-
-// Returns a new AutoDiffCostFunction<Shear, 1, 3, 3, 3, 3> (blocks b0..b3);
-// the caller takes ownership. Precondition (CHECKed): inv_length finite and
-// > 0.
-ceres::CostFunction* MakeShear(double inv_length);
 
 }  // namespace archgeo
 

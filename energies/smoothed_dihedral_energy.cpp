@@ -2,40 +2,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "energies/smoothed_dihedral_energy.h"
 
-#include <ceres/autodiff_cost_function.h>
-
-namespace archgeo {
-namespace {
-
-template <typename Functor>
-using SmoothedCost = ceres::AutoDiffCostFunction<Functor, 4, 3, 3, 3, 3>;
-
-template <typename Functor>
-ceres::CostFunction* MakeSmoothed(const char* name, double inv_length, double epsilon) {
-  CheckHingeConstants(name, inv_length, "epsilon", epsilon);
-  return new SmoothedCost<Functor>(new Functor(inv_length, epsilon));
-}
-
-}  // namespace
-
-ceres::CostFunction* MakeSmoothedDihedralTriTri(double inv_length, double epsilon) {
-  return MakeSmoothed<SmoothedDihedralTriTri>("MakeSmoothedDihedralTriTri", inv_length, epsilon);
-}
-
-ceres::CostFunction* MakeSmoothedDihedralTriPoly(double inv_length, double epsilon) {
-  return MakeSmoothed<SmoothedDihedralTriPoly>("MakeSmoothedDihedralTriPoly", inv_length,
-                                               epsilon);
-}
-
-ceres::CostFunction* MakeSmoothedDihedralPolyPoly(double inv_length, double epsilon) {
-  return MakeSmoothed<SmoothedDihedralPolyPoly>("MakeSmoothedDihedralPolyPoly", inv_length,
-                                                epsilon);
-}
-
-}  // namespace archgeo
+#include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 // --- term `smoothed_dihedral_energy` ------------------------------------------
-#include "core/term.h"
 
 namespace archgeo {
 namespace terms {
@@ -44,9 +14,9 @@ namespace {
 // The smoothed residual's hinge functors, ε as their parameter.
 constexpr HingeAdders kSmoothedDihedralAdders = {
     "smoothed_dihedral_energy", "epsilon",
-    &AddHingeResidual<SmoothedCost<SmoothedDihedralTriTri>>,
-    &AddHingeResidual<SmoothedCost<SmoothedDihedralTriPoly>>,
-    &AddHingeResidual<SmoothedCost<SmoothedDihedralPolyPoly>>};
+    &AddHingeResidual<SmoothedDihedralTriTri>,
+    &AddHingeResidual<SmoothedDihedralTriPoly>,
+    &AddHingeResidual<SmoothedDihedralPolyPoly>};
 
 // Edge v→w with left face (v, w, a, …) and right face (w, v, b, …).
 void AddSmoothedDihedral(TermContext& c, size_t i) {
@@ -72,3 +42,7 @@ const TermSpec& smoothed_dihedral_energy() {
 
 }  // namespace terms
 }  // namespace archgeo
+
+ARCHGEO_AUTODIFF(archgeo::SmoothedDihedralTriTri)
+ARCHGEO_AUTODIFF(archgeo::SmoothedDihedralTriPoly)
+ARCHGEO_AUTODIFF(archgeo::SmoothedDihedralPolyPoly)

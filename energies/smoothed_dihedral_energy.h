@@ -65,10 +65,6 @@
 
 #include "energies/dihedral_hinge.h"  // the functors, ε_n, ε_ℓ
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
-
 namespace archgeo {
 
 // Smoothing radius ε of ℓ* (unit-free; see above).
@@ -77,6 +73,7 @@ inline constexpr double kSmoothedDihedralEpsilon = 1e-3;
 // The residual r = sqrt(ℓ/(L s)) (d, sqrt(s² + ε²)), d = n_f − n_f′, 4 doubles,
 // of the hinge functors (dihedral_hinge.h) from ℓ_e/L and the normals.
 struct SmoothedDihedralResidual {
+  static constexpr int kResiduals = 4;
   double epsilon;  // ε > 0 (unit-free)
 
   template <typename T>
@@ -101,18 +98,6 @@ struct SmoothedDihedralResidual {
 using SmoothedDihedralTriTri = HingeTriTri<SmoothedDihedralResidual>;
 using SmoothedDihedralTriPoly = HingeTriPoly<SmoothedDihedralResidual>;
 using SmoothedDihedralPolyPoly = HingePolyPoly<SmoothedDihedralResidual>;
-
-// Factories: a new AutoDiffCostFunction<Functor, 4, 3, 3, 3, 3> with the
-// blocks in the order of the functor's operator() (TriTri: v, w, a, b;
-// TriPoly: v, w, a, n_right; PolyPoly: v, w, n_left, n_right); the caller
-// takes ownership. Preconditions (CHECKed): inv_length and epsilon finite
-// and > 0.
-ceres::CostFunction* MakeSmoothedDihedralTriTri(
-    double inv_length, double epsilon = kSmoothedDihedralEpsilon);
-ceres::CostFunction* MakeSmoothedDihedralTriPoly(
-    double inv_length, double epsilon = kSmoothedDihedralEpsilon);
-ceres::CostFunction* MakeSmoothedDihedralPolyPoly(
-    double inv_length, double epsilon = kSmoothedDihedralEpsilon);
 
 }  // namespace archgeo
 

@@ -4,28 +4,31 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
+
+#include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeSpring(double rest_length, double inv_length) {
+// A spring of rest length L0 = rest_length ≥ 0 (0: the zero-length spring)
+// added to `c` over (a, b).
+void AddSpringResidual(TermContext& c, double rest_length, double inv_length, double* a,
+                       double* b) {
   CHECK(std::isfinite(rest_length) && rest_length >= 0.0)
-      << "MakeSpring: rest_length must be finite and >= 0, got " << rest_length;
+      << "Spring: rest_length must be finite and >= 0, got " << rest_length;
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakeSpring: inv_length must be finite and > 0, got " << inv_length;
+      << "Spring: inv_length must be finite and > 0, got " << inv_length;
   if (rest_length == 0.0) {
-    return new ceres::AutoDiffCostFunction<ZeroLengthSpring, 3, 3, 3>(
-        new ZeroLengthSpring(inv_length));
+    AddAutoDiff(c, ZeroLengthSpring(inv_length), {a, b});
+  } else {
+    AddAutoDiff(c, Spring(rest_length, inv_length), {a, b});
   }
-  return new ceres::AutoDiffCostFunction<Spring, 1, 3, 3>(
-      new Spring(rest_length, inv_length));
 }
 
 }  // namespace archgeo
 
 // --- term `spring` -------------------------------------------------------------
-#include "core/term.h"
 
 namespace archgeo::terms {
 namespace {
@@ -69,7 +72,7 @@ void BeginSpring(TermContext& c) {
 void AddSpring(TermContext& c, size_t i) {
   const int a = c.elements->Vertices(i)[0], b = c.elements->Vertices(i)[1];
   const double l0 = c.Block("spring_rest_length", c.elements->edge[i])[0];
-  c.Add(MakeSpring(l0, 1.0), {c.Position(a), c.Position(b)});
+  AddSpringResidual(c, l0, 1.0, c.Position(a), c.Position(b));
 }
 
 }  // namespace
@@ -102,3 +105,6 @@ const TermSpec& spring() {
 }
 
 }  // namespace archgeo::terms
+
+ARCHGEO_AUTODIFF(archgeo::ZeroLengthSpring)
+ARCHGEO_AUTODIFF(archgeo::Spring)

@@ -46,9 +46,7 @@
 
 #include <Eigen/Core>
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
@@ -57,6 +55,8 @@ inline constexpr double kSpringEpsilon = 1e-6;
 
 // Length spring, L0 > 0: r = (‖a − b‖_ε − L0) / L.
 struct Spring {
+  using Shape = CostShape<1, 3, 3>;
+
   // rest_length: L0 > 0; inv_length: 1/L.
   Spring(double rest_length, double inv_length)
       : rest_length(rest_length), inv_length(inv_length) {}
@@ -80,6 +80,8 @@ struct Spring {
 
 // Zero-length spring: r = (a − b) / L.
 struct ZeroLengthSpring {
+  using Shape = CostShape<3, 3, 3>;
+
   // inv_length: 1/L.
   explicit ZeroLengthSpring(double inv_length) : inv_length(inv_length) {}
 
@@ -96,13 +98,6 @@ struct ZeroLengthSpring {
 
   double inv_length;
 };
-
-// rest_length > 0: a new AutoDiffCostFunction<Spring, 1, 3, 3>;
-// rest_length = 0: a new AutoDiffCostFunction<ZeroLengthSpring, 3, 3, 3>.
-// Blocks (a, b), the edge's end points. The caller takes ownership.
-// Preconditions (CHECKed): rest_length finite and ≥ 0; inv_length finite and
-// > 0.
-ceres::CostFunction* MakeSpring(double rest_length, double inv_length);
 
 }  // namespace archgeo
 

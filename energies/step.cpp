@@ -3,20 +3,18 @@
 #include "energies/step.h"
 
 #include "core/term.h"
+#include "energies/autodiff_impl.h"
 #include "energies/anchor.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeStep(const double previous[3], double inv_length) {
-  return MakeAnchor(previous, inv_length);
-}
 
 namespace terms {
 namespace {
 
 void AddStep(TermContext& c, size_t i) {
   const int v = c.elements->Vertices(i)[0];
-  c.Add(MakeStep(c.Previous(v), 1.0), {c.Position(v)});
+  AddAutoDiff(c, CheckedAnchor(c.Previous(v), 1.0), {c.Position(v)});
 }
 
 }  // namespace

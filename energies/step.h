@@ -15,15 +15,7 @@
 #ifndef ARCHGEO_ENERGIES_STEP_H_
 #define ARCHGEO_ENERGIES_STEP_H_
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
-
 namespace archgeo {
-
-// Returns AutoDiffCostFunction<Anchor, 3, 3> (block v) pulling towards
-// `previous`. Preconditions (CHECKed): previous finite, inv_length > 0.
-ceres::CostFunction* MakeStep(const double previous[3], double inv_length);
 
 }  // namespace archgeo
 

@@ -3,14 +3,11 @@
 #include "energies/tangent_plane.h"
 
 #include "core/term.h"
+#include "energies/autodiff_impl.h"
 #include "energies/proximity.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeTangentPlane(const double point[3], const double normal[3],
-                                      double inv_length) {
-  return MakeProximity(point, normal, inv_length);
-}
 
 namespace terms {
 namespace {
@@ -19,7 +16,7 @@ namespace {
 void AddTangentPlane(TermContext& c, size_t i) {
   const int v = c.elements->Vertices(i)[0];
   const double* plane = c.elements->Data(i);
-  c.Add(MakeTangentPlane(plane, plane + 3, 1.0), {c.Position(v)});
+  AddAutoDiff(c, CheckedProximity(plane, plane + 3, 1.0), {c.Position(v)});
 }
 
 }  // namespace

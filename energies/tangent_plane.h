@@ -16,16 +16,7 @@
 #ifndef ARCHGEO_ENERGIES_TANGENT_PLANE_H_
 #define ARCHGEO_ENERGIES_TANGENT_PLANE_H_
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
-
 namespace archgeo {
-
-// Returns AutoDiffCostFunction<Proximity, 1, 3> (block v). Preconditions
-// (CHECKed): point and normal finite, inv_length > 0.
-ceres::CostFunction* MakeTangentPlane(const double point[3], const double normal[3],
-                                      double inv_length);
 
 }  // namespace archgeo
 

@@ -4,21 +4,19 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
 
 #include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeTcdDirichlet(double transport_angle, double weight) {
-  CHECK(std::isfinite(transport_angle)) << "MakeTcdDirichlet: non-finite transport angle";
+TcdDirichlet CheckedTcdDirichlet(double transport_angle, double weight) {
+  CHECK(std::isfinite(transport_angle)) << "TcdDirichlet: non-finite transport angle";
   CHECK(std::isfinite(weight) && weight >= 0.0)
-      << "MakeTcdDirichlet: weight must be finite and >= 0, got " << weight;
-  return new ceres::AutoDiffCostFunction<TcdDirichlet, 2, 2, 2>(
-      new TcdDirichlet(transport_angle, weight));
+      << "TcdDirichlet: weight must be finite and >= 0, got " << weight;
+  return TcdDirichlet(transport_angle, weight);
 }
-
 
 namespace terms {
 namespace {
@@ -27,8 +25,7 @@ namespace {
 // (`other_face`); data: τ_fg, w_e (fields/face_frames.h EdgeTransport).
 void AddTcdDirichlet(TermContext& c, size_t i) {
   const double* d = c.elements->Data(i);
-  c.Add(MakeTcdDirichlet(d[0], d[1]),
-        {c.Block("z_n", c.elements->face[i]), c.Block("z_n", c.elements->other_face[i])});
+  AddAutoDiff(c, CheckedTcdDirichlet(d[0], d[1]), {c.Block("z_n", c.elements->face[i]), c.Block("z_n", c.elements->other_face[i])});
 }
 
 }  // namespace
@@ -49,3 +46,5 @@ const TermSpec& tcd_dirichlet() {
 
 }  // namespace terms
 }  // namespace archgeo
+
+ARCHGEO_AUTODIFF(archgeo::TcdDirichlet)

@@ -38,13 +38,13 @@
 
 #include <Eigen/Core>
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 struct TcdDirichlet {
+  using Shape = CostShape<2, 2, 2>;
+
   // transport_angle: τ_fg (radians); weight: w_e ≥ 0.
   TcdDirichlet(double transport_angle, double weight)
       : cos2(std::cos(2.0 * transport_angle)),
@@ -63,11 +63,6 @@ struct TcdDirichlet {
 
   double cos2, sin2, sqrt_weight;
 };
-
-// Returns a new AutoDiffCostFunction<TcdDirichlet, 2, 2, 2> (blocks z_f, z_g);
-// the caller takes ownership. Preconditions (CHECKed): transport_angle
-// finite, weight finite and ≥ 0.
-ceres::CostFunction* MakeTcdDirichlet(double transport_angle, double weight);
 
 }  // namespace archgeo
 

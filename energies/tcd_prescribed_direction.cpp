@@ -4,27 +4,25 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
 
 #include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeTcdPrescribedDirection(const double m[3], const double direction[2]) {
+TcdPrescribedDirection CheckedTcdPrescribedDirection(const double m[3], const double direction[2]) {
   CHECK(m != nullptr && direction != nullptr);
   CHECK(std::isfinite(m[0]) && std::isfinite(m[1]) && std::isfinite(m[2]))
-      << "MakeTcdPrescribedDirection: non-finite M";
+      << "TcdPrescribedDirection: non-finite M";
   CHECK(std::isfinite(direction[0]) && std::isfinite(direction[1]))
-      << "MakeTcdPrescribedDirection: non-finite direction";
+      << "TcdPrescribedDirection: non-finite direction";
   Eigen::Vector2d point, line;
   CHECK(TcdPrescribedLine(m, direction, &point, &line))
-      << "MakeTcdPrescribedDirection: every direction is conjugate to the prescribed one "
+      << "TcdPrescribedDirection: every direction is conjugate to the prescribed one "
          "(M d = 0) or d = 0; check with TcdPrescribedLine first";
-  return new ceres::AutoDiffCostFunction<TcdPrescribedDirection, 1, 2>(
-      new TcdPrescribedDirection(point, line));
+  return TcdPrescribedDirection(point, line);
 }
-
 
 namespace terms {
 namespace {
@@ -36,8 +34,7 @@ namespace {
 void AddTcdPrescribedDirection(TermContext& c, size_t i) {
   const double* d = c.elements->Data(i);
   if (d[5] <= 0.0) return;
-  c.Add(MakeTcdPrescribedDirection(d, d + 3), {c.Block("z_n", c.elements->face[i])}, nullptr,
-        c.weight * d[5]);
+  AddAutoDiff(c, CheckedTcdPrescribedDirection(d, d + 3), {c.Block("z_n", c.elements->face[i])}, -1, nullptr, c.weight * d[5]);
 }
 
 }  // namespace
@@ -58,3 +55,5 @@ const TermSpec& tcd_prescribed_direction() {
 
 }  // namespace terms
 }  // namespace archgeo
+
+ARCHGEO_AUTODIFF(archgeo::TcdPrescribedDirection)

@@ -35,9 +35,7 @@
 
 #include <Eigen/Core>
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
@@ -61,6 +59,8 @@ inline bool TcdPrescribedLine(const double m[3], const double d[2], Eigen::Vecto
 }
 
 struct TcdPrescribedDirection {
+  using Shape = CostShape<1, 2>;
+
   // point, direction: the line from TcdPrescribedLine (direction unit).
   TcdPrescribedDirection(const Eigen::Vector2d& point, const Eigen::Vector2d& direction)
       : point(point), direction(direction) {}
@@ -76,12 +76,10 @@ struct TcdPrescribedDirection {
   Eigen::Vector2d point, direction;
 };
 
-// Returns a new AutoDiffCostFunction<TcdPrescribedDirection, 1, 2> (block z);
-// the caller takes ownership. m: m11, m12, m22 of the face's M_f; direction:
-// 2 doubles, the prescribed tangent direction in the face frame (any length
-// > 0, either sign). Preconditions (CHECKed): finite inputs and
-// TcdPrescribedLine(m, direction) succeeds.
-ceres::CostFunction* MakeTcdPrescribedDirection(const double m[3], const double direction[2]);
+// The functor of the prescribed direction `direction` (2 doubles, the face
+// frame) at a face of conjugacy matrix M (`m`, 3 doubles), after checking
+// them (CHECKs: finite, and TcdPrescribedLine finds the line).
+TcdPrescribedDirection CheckedTcdPrescribedDirection(const double m[3], const double direction[2]);
 
 }  // namespace archgeo
 

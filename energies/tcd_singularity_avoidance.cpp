@@ -4,23 +4,21 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
 
 #include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeTcdSingularityAvoidance(const double z_m[2], double radius) {
+TcdSingularityAvoidance CheckedTcdSingularityAvoidance(const double z_m[2], double radius) {
   CHECK(z_m != nullptr);
   CHECK(std::isfinite(z_m[0]) && std::isfinite(z_m[1]))
-      << "MakeTcdSingularityAvoidance: z_M must be finite (skip faces with z_M at infinity)";
+      << "TcdSingularityAvoidance: z_M must be finite (skip faces with z_M at infinity)";
   CHECK(std::isfinite(radius) && radius > 0.0)
-      << "MakeTcdSingularityAvoidance: radius must be finite and > 0, got " << radius;
-  return new ceres::AutoDiffCostFunction<TcdSingularityAvoidance, 1, 2>(
-      new TcdSingularityAvoidance(z_m, radius));
+      << "TcdSingularityAvoidance: radius must be finite and > 0, got " << radius;
+  return TcdSingularityAvoidance(z_m, radius);
 }
-
 
 namespace terms {
 namespace {
@@ -30,8 +28,7 @@ namespace {
 void AddTcdSingularityAvoidance(TermContext& c, size_t i) {
   const double* d = c.elements->Data(i);
   if (d[2] == 0.0) return;
-  c.Add(MakeTcdSingularityAvoidance(d, c.Number("radius")),
-        {c.Block("z_n", c.elements->face[i])});
+  AddAutoDiff(c, CheckedTcdSingularityAvoidance(d, c.Number("radius")), {c.Block("z_n", c.elements->face[i])});
 }
 
 }  // namespace
@@ -54,3 +51,5 @@ const TermSpec& tcd_singularity_avoidance() {
 
 }  // namespace terms
 }  // namespace archgeo
+
+ARCHGEO_AUTODIFF(archgeo::TcdSingularityAvoidance)

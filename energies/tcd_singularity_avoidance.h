@@ -36,15 +36,15 @@
 
 #include <Eigen/Core>
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 inline constexpr double kTcdAvoidanceEpsilon = 1e-6;
 
 struct TcdSingularityAvoidance {
+  using Shape = CostShape<1, 2>;
+
   // z_m: 2 doubles, z_M of the face (own frame); radius: ρ > 0.
   TcdSingularityAvoidance(const double z_m[2], double radius)
       : z_m(z_m[0], z_m[1]), inv_radius(1.0 / radius) {}
@@ -68,11 +68,6 @@ struct TcdSingularityAvoidance {
   Eigen::Vector2d z_m;
   double inv_radius;
 };
-
-// Returns a new AutoDiffCostFunction<TcdSingularityAvoidance, 1, 2> (block
-// z); the caller takes ownership. Preconditions (CHECKed): z_m finite, radius
-// finite and > 0.
-ceres::CostFunction* MakeTcdSingularityAvoidance(const double z_m[2], double radius = 1.0);
 
 }  // namespace archgeo
 

@@ -4,21 +4,19 @@
 
 #include <cmath>
 
-#include <ceres/autodiff_cost_function.h>
 #include <glog/logging.h>
 
 #include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeTcdSingularityPlacement(const double z_m[2]) {
+TcdSingularityPlacement CheckedTcdSingularityPlacement(const double z_m[2]) {
   CHECK(z_m != nullptr);
   CHECK(std::isfinite(z_m[0]) && std::isfinite(z_m[1]))
-      << "MakeTcdSingularityPlacement: z_M must be finite";
-  return new ceres::AutoDiffCostFunction<TcdSingularityPlacement, 2, 2>(
-      new TcdSingularityPlacement(z_m));
+      << "TcdSingularityPlacement: z_M must be finite";
+  return TcdSingularityPlacement(z_m);
 }
-
 
 namespace terms {
 namespace {
@@ -26,7 +24,7 @@ namespace {
 // Element (tcd_placements): a face chosen to hold a singularity (`face`);
 // data: z_M (2, finite).
 void AddTcdSingularityPlacement(TermContext& c, size_t i) {
-  c.Add(MakeTcdSingularityPlacement(c.elements->Data(i)), {c.Block("z_n", c.elements->face[i])});
+  AddAutoDiff(c, CheckedTcdSingularityPlacement(c.elements->Data(i)), {c.Block("z_n", c.elements->face[i])});
 }
 
 }  // namespace
@@ -47,3 +45,5 @@ const TermSpec& tcd_singularity_placement() {
 
 }  // namespace terms
 }  // namespace archgeo
+
+ARCHGEO_AUTODIFF(archgeo::TcdSingularityPlacement)

@@ -26,13 +26,13 @@
 
 #include <Eigen/Core>
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 struct TcdSingularityPlacement {
+  using Shape = CostShape<2, 2>;
+
   // z_m: 2 doubles, z_M of the face (own frame).
   explicit TcdSingularityPlacement(const double z_m[2]) : z_m(z_m[0], z_m[1]) {}
 
@@ -46,10 +46,6 @@ struct TcdSingularityPlacement {
 
   Eigen::Vector2d z_m;
 };
-
-// Returns a new AutoDiffCostFunction<TcdSingularityPlacement, 2, 2> (block z);
-// the caller takes ownership. Precondition (CHECKed): z_m finite.
-ceres::CostFunction* MakeTcdSingularityPlacement(const double z_m[2]);
 
 }  // namespace archgeo
 

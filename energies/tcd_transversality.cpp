@@ -2,23 +2,21 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "energies/tcd_transversality.h"
 
-#include <ceres/autodiff_cost_function.h>
-
 #include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 
-ceres::CostFunction* MakeTcdTransversality() {
-  return new ceres::AutoDiffCostFunction<TcdTransversality, 1, 2>(new TcdTransversality());
+TcdTransversality CheckedTcdTransversality() {
+  return TcdTransversality();
 }
-
 
 namespace terms {
 namespace {
 
 // Element (tcd_faces): a face (`face`).
 void AddTcdTransversality(TermContext& c, size_t i) {
-  c.Add(MakeTcdTransversality(), {c.Block("z_n", c.elements->face[i])});
+  AddAutoDiff(c, CheckedTcdTransversality(), {c.Block("z_n", c.elements->face[i])});
 }
 
 }  // namespace
@@ -39,3 +37,5 @@ const TermSpec& tcd_transversality() {
 
 }  // namespace terms
 }  // namespace archgeo
+
+ARCHGEO_AUTODIFF(archgeo::TcdTransversality)

@@ -24,13 +24,13 @@
 #ifndef ARCHGEO_ENERGIES_TCD_TRANSVERSALITY_H_
 #define ARCHGEO_ENERGIES_TCD_TRANSVERSALITY_H_
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
+#include "energies/autodiff.h"
 
 namespace archgeo {
 
 struct TcdTransversality {
+  using Shape = CostShape<1, 2>;
+
   // z: 2 doubles (z_N of the face, own frame); residual: 1.
   template <typename T>
   bool operator()(const T* z, T* residual) const {
@@ -39,10 +39,6 @@ struct TcdTransversality {
     return true;
   }
 };
-
-// Returns a new AutoDiffCostFunction<TcdTransversality, 1, 2> (block z); the
-// caller takes ownership.
-ceres::CostFunction* MakeTcdTransversality();
 
 }  // namespace archgeo
 

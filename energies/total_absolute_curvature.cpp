@@ -4,14 +4,13 @@
 
 #include <cmath>
 
-#include <ceres/dynamic_autodiff_cost_function.h>
 #include <glog/logging.h>
+
+#include "core/term.h"
+#include "energies/autodiff_impl.h"
 
 namespace archgeo {
 namespace {
-
-// Jet size of the dynamic autodiff: 8 of the 3(k + 1) parameters per pass.
-constexpr int kStride = 8;
 
 int MinValence(bool closed) { return closed ? 3 : 2; }
 
@@ -31,28 +30,19 @@ double TotalAbsoluteCurvatureIrlsWeight(double lambda, double inv_length,
   return std::abs(lambda) * inv_length + epsilon;
 }
 
-ceres::CostFunction* MakeTotalAbsoluteCurvature(
-    int valence, bool closed, double inv_length, double omega1, double omega2,
-    TotalAbsoluteCurvature** functor) {
+TotalAbsoluteCurvature CheckedTotalAbsoluteCurvature(int valence, bool closed, double inv_length,
+                                                     double omega1, double omega2) {
   CHECK_GE(valence, MinValence(closed))
-      << "MakeTotalAbsoluteCurvature: valence too small (closed = " << closed
+      << "TotalAbsoluteCurvature: valence too small (closed = " << closed
       << ")";
   CHECK(std::isfinite(inv_length) && inv_length > 0.0)
-      << "MakeTotalAbsoluteCurvature: inv_length must be finite and > 0, got "
+      << "TotalAbsoluteCurvature: inv_length must be finite and > 0, got "
       << inv_length;
   CHECK(std::isfinite(omega1) && omega1 > 0.0 && std::isfinite(omega2) &&
         omega2 > 0.0)
-      << "MakeTotalAbsoluteCurvature: omegas must be finite and > 0, got "
+      << "TotalAbsoluteCurvature: omegas must be finite and > 0, got "
       << omega1 << ", " << omega2;
-  auto* f =
-      new TotalAbsoluteCurvature(valence, closed, inv_length, omega1, omega2);
-  if (functor != nullptr) *functor = f;
-  auto* cost =
-      new ceres::DynamicAutoDiffCostFunction<TotalAbsoluteCurvature, kStride>(
-          f);
-  for (int i = 0; i <= valence; ++i) cost->AddParameterBlock(3);
-  cost->SetNumResiduals(2);
-  return cost;
+  return TotalAbsoluteCurvature(valence, closed, inv_length, omega1, omega2);
 }
 
 VertexShapeOperator EvaluateVertexShapeOperator(
@@ -85,7 +75,6 @@ VertexShapeOperator EvaluateVertexShapeOperator(
 }  // namespace archgeo
 
 // --- term `total_absolute_curvature` -------------------------------------------
-#include "core/term.h"
 
 namespace archgeo::terms {
 namespace {
@@ -107,7 +96,8 @@ void AddTotalAbsoluteCurvature(TermContext& c, size_t i) {
   const double epsilon = c.Number("epsilon");
   const double omega1 = TotalAbsoluteCurvatureIrlsWeight(op.lambda1, 1.0, epsilon);
   const double omega2 = TotalAbsoluteCurvatureIrlsWeight(op.lambda2, 1.0, epsilon);
-  c.Add(MakeTotalAbsoluteCurvature(count - 1, closed, 1.0, omega1, omega2), blocks);
+  c.Add(MakeStarAutoDiff(CheckedTotalAbsoluteCurvature(count - 1, closed, 1.0, omega1, omega2)),
+        blocks);
 }
 
 }  // namespace
@@ -129,3 +119,5 @@ const TermSpec& total_absolute_curvature() {
 }
 
 }  // namespace archgeo::terms
+
+ARCHGEO_STAR_AUTODIFF(archgeo::TotalAbsoluteCurvature)

@@ -82,10 +82,6 @@
 
 #include "energies/dihedral_hinge.h"  // RegularisedTriangleNormal
 
-namespace ceres {
-class CostFunction;
-}  // namespace ceres
-
 namespace archgeo {
 
 // IRLS floor of ω_j (unit-free; see above).
@@ -157,9 +153,13 @@ void TangentialShapeOperator(const T* v_ptr, const T* const* ring, int valence,
   *lambda2 = half_trace - half_gap;
 }
 
-// Functor for DynamicAutoDiffCostFunction: parameters[0] = v, parameters[i] =
+// Functor over a vertex star (MakeStarAutoDiff): parameters[0] = v, parameters[i] =
 // w_i (i = 1..valence), 3 doubles each; 2 residuals r_1, r_2 (λ1 ≥ λ2).
 struct TotalAbsoluteCurvature {
+  static constexpr int kResiduals = 2;
+  static constexpr int kStride = 8;
+  int NumBlocks() const { return valence + 1; }
+
   // valence: k (≥ 3 if closed, ≥ 2 otherwise); closed: interior vertex;
   // inv_length: 1/L > 0; omega1, omega2: ω_1, ω_2 > 0
   // (TotalAbsoluteCurvatureIrlsWeight of λ1⁰, λ2⁰). The builder may change
@@ -190,14 +190,10 @@ struct TotalAbsoluteCurvature {
   std::array<double, 2> omega;
 };
 
-// Returns a new DynamicAutoDiffCostFunction over valence + 1 position blocks
-// (v, w_1..w_k, 3 doubles each) with 2 residuals; the caller takes ownership.
-// If `functor` is not null it receives the functor owned by the cost function
-// (to update `omega` between rounds). Preconditions (CHECKed): valence ≥ 3 if
-// closed, ≥ 2 otherwise; inv_length, omega1, omega2 finite and > 0.
-ceres::CostFunction* MakeTotalAbsoluteCurvature(
-    int valence, bool closed, double inv_length, double omega1, double omega2,
-    TotalAbsoluteCurvature** functor = nullptr);
+// The functor after checking its input (CHECKs: valence ≥ 3 if closed, ≥ 2
+// otherwise; inv_length, omega1, omega2 finite and > 0).
+TotalAbsoluteCurvature CheckedTotalAbsoluteCurvature(int valence, bool closed, double inv_length,
+                                                     double omega1, double omega2);
 
 // Plain evaluation at given positions (for the metrics' discrete C(Φ) and for
 // the builder's previous-round λ⁰). Units of length throughout.

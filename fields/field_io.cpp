@@ -10,7 +10,7 @@
 #include <sstream>
 #include <vector>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/output_files.h"
 
 namespace archgeo {

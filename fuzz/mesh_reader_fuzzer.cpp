@@ -15,7 +15,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/io.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -16,7 +16,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "problems/spec.h"
 
 namespace {

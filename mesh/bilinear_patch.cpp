@@ -11,7 +11,7 @@
 #include <Eigen/Geometry>
 #include <glog/logging.h>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 
 namespace archgeo {
 namespace {

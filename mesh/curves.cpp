@@ -17,7 +17,7 @@
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <glog/logging.h>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/input_file.h"
 #include "mesh/text_scan.h"
 #include "mesh/vec3.h"

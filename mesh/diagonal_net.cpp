@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/topology.h"
 
 namespace archgeo {

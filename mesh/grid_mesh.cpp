@@ -12,7 +12,7 @@
 #include <CGAL/Surface_mesh/IO/PLY.h>
 #include <glog/logging.h>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 
 namespace archgeo {
 namespace {

@@ -17,7 +17,7 @@
 #include <Eigen/SparseCore>
 #include <glog/logging.h>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/topology.h"
 
 namespace archgeo {

@@ -11,7 +11,7 @@
 #include <cerrno>
 #include <cstring>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 
 namespace archgeo {
 namespace {

@@ -17,7 +17,7 @@
 #include <filesystem>
 #include <system_error>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 
 namespace archgeo {
 namespace {

@@ -8,7 +8,7 @@
 #include <cstring>
 #include <fstream>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 
 namespace archgeo {
 namespace {

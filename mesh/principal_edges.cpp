@@ -13,7 +13,7 @@
 #include <set>
 #include <sstream>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/input_file.h"
 #include "mesh/vec3.h"
 

@@ -10,7 +10,7 @@
 #include <cstdlib>
 #include <limits>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 
 namespace archgeo {
 

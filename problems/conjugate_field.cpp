@@ -47,7 +47,7 @@
 #include "energies/tcd_prescribed_direction.h"
 #include "fields/field_io.h"
 #include "fields/singularities.h"
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/topology.h"
 #include "problems/field_pipeline.h"
 #include "problems/model.h"

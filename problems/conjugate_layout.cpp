@@ -21,7 +21,7 @@
 // before the PQ step), output.field (fields/field_io.h), output.report.
 #include "core/problem.h"
 #include "fields/field_io.h"
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/io.h"
 #include "problems/field_pipeline.h"
 #include "problems/model.h"

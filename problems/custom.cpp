@@ -10,7 +10,7 @@
 #include "energies/registry.h"
 #include "mesh/curves.h"
 #include "mesh/elements.h"
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/reference.h"
 #include "mesh/similarity.h"
 #include "mesh/vec3.h"

@@ -9,7 +9,7 @@
 #include <filesystem>
 
 #include "mesh/hnet.h"
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/io.h"
 #include "mesh/output_files.h"
 #include "mesh/patchwork_io.h"

@@ -6,7 +6,7 @@
 
 #include <cctype>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/io.h"
 #include "problems/registry.h"
 #include "problems/schema.h"

@@ -9,7 +9,7 @@
 
 #include "mesh/asymptotic_nets.h"
 #include "mesh/generators.h"
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/io.h"
 #include "mesh/output_files.h"
 #include "mesh/smoothness_surfaces.h"

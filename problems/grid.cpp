@@ -65,7 +65,7 @@
 #include "core/problem.h"
 #include "mesh/grid_mesh.h"
 #include "mesh/grid_metrics.h"
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "problems/model.h"
 #include "surfaces/force_directed.h"
 #include "surfaces/grid.h"

@@ -8,7 +8,7 @@
 
 #include "mesh/diagonal_net.h"
 #include "mesh/hnet.h"
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 
 namespace archgeo {
 namespace {

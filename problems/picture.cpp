@@ -6,7 +6,7 @@
 #include <cctype>
 #include <filesystem>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/io.h"
 #include "mesh/output_files.h"
 

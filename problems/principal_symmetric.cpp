@@ -41,7 +41,7 @@
 #include <cmath>
 
 #include "core/problem.h"
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/io.h"
 #include "mesh/output_files.h"
 #include "mesh/principal_edges.h"

@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "problems/run.h"
+#include "problems/mesh_inputs.h"
 
 #include <glog/logging.h>
 
@@ -17,7 +18,7 @@
 #include <set>
 
 #include "core/solver_options.h"
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/io.h"
 #include "mesh/metrics.h"
 #include "mesh/output_files.h"

@@ -9,13 +9,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/loop.h"
-#include "mesh/surface_mesh.h"
+#include "core/progress.h"
 #include "problems/spec.h"
 
 namespace archgeo {
 
-// The version of the JSON report's layout (described in README.md):
+// The version of the JSON report's layout (docs/report.schema.json):
 // raised whenever a key changes meaning or moves.
 inline constexpr int kReportSchemaVersion = 1;
 
@@ -32,15 +31,8 @@ struct RunResult {
 RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress);
 
 // Meshes in memory instead of the spec's files (the public API, python/):
-// `mesh` (file units) replaces reading `mesh`, `reference` (may be null)
-// replaces reading `reference`; the spec's keys may then be missing. When
-// `output` is not null it receives the result (file units, the input's
-// vertex order) if one is usable and valid (exit 0 or 4).
-struct MeshInputs {
-  const Mesh* mesh = nullptr;
-  const Mesh* reference = nullptr;
-  Mesh* output = nullptr;
-};
+// problems/mesh_inputs.h.
+struct MeshInputs;
 RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const MeshInputs& meshes);
 
 // `archgeo measure`: metrics of `mesh_path`, against `reference_path` if not

@@ -10,7 +10,7 @@
 #include <set>
 
 #include "mesh/curves.h"
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/topology.h"
 
 namespace archgeo {

@@ -46,7 +46,7 @@
 #include <set>
 
 #include "core/problem.h"
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "problems/model.h"
 
 namespace archgeo::problems {

@@ -7,7 +7,7 @@
 #include <chrono>
 
 #include "core/solver_options.h"
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/similarity.h"
 #include "mesh/subdivision.h"
 #include "mesh/topology.h"

@@ -17,7 +17,7 @@
 
 #include "core/solver_options.h"
 #include "energies/registry.h"
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/input_file.h"
 #include "problems/custom.h"
 #include "problems/registry.h"

@@ -12,7 +12,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "render/colormap.h"
 #include "render/picture.h"
 

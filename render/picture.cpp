@@ -11,7 +11,7 @@
 #include <limits>
 #include <numeric>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "render/colormap.h"
 
 namespace archgeo {

@@ -4,7 +4,7 @@
 
 #include <glog/logging.h>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 
 namespace archgeo {
 namespace {

@@ -7,7 +7,7 @@
 #include <limits>
 #include <sstream>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 
 namespace archgeo {
 namespace {

@@ -24,7 +24,7 @@
 
 namespace archgeo {
 
-// Where the values came from, for InputError (mesh/input_error.h): the file
+// Where the values came from, for InputError (core/input_error.h): the file
 // and line of the spec, the key of the surface's name and the key prefix of
 // its parameters (a parameter's key is `parameter_key_prefix + "." + name`,
 // or `name` if the prefix is empty).

@@ -25,6 +25,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/energy_checks.h"
+#include "energies/autodiff.h"
 
 #include "energies/anet_planarity.h"
 #include "energies/fairness.h"
@@ -85,7 +86,7 @@ double MeanSpoke(const std::vector<Vec3>& star) {
 
 double NormalResidual(const Vec3& n, const Vec3& v, const Vec3& w,
                       double inv_length) {
-  std::unique_ptr<ceres::CostFunction> cost(MakeAnetVertexNormal(inv_length));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(AnetVertexNormal(inv_length)));
   return Evaluate(*cost, {ToBlock(n), ToBlock(v), ToBlock(w)})[0];
 }
 
@@ -98,7 +99,7 @@ TEST(AnetVertexNormal, GradientMatchesNumeric) {
     const Vec3 n = RandomVec(rng, 1.0).normalized();
     const Vec3 v = RandomVec(rng, 5.0);
     std::unique_ptr<ceres::CostFunction> cost(
-        MakeAnetVertexNormal(1.0 / (0.5 + 0.1 * i)));
+        MakeAutoDiff(AnetVertexNormal(1.0 / (0.5 + 0.1 * i))));
     const Blocks blocks = {ToBlock(n), ToBlock(v),
                            ToBlock(v + RandomVec(rng, 1.0))};
     SCOPED_TRACE(i);
@@ -108,7 +109,7 @@ TEST(AnetVertexNormal, GradientMatchesNumeric) {
 }
 
 TEST(AnetVertexNormal, DegenerateInputsAreFinite) {
-  std::unique_ptr<ceres::CostFunction> cost(MakeAnetVertexNormal(1.0));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(AnetVertexNormal(1.0)));
   ExpectFiniteEverywhere(*cost, {{0, 0, 0}, {1, 2, 3}, {4, 5, 6}});  // n = 0
   ExpectFiniteEverywhere(*cost, {{0, 0, 1}, {1, 2, 3}, {1, 2, 3}});  // w = v
   ExpectFiniteEverywhere(*cost, {{0, 3, 4}, {1, 2, 3}, {7, 2, 3}});  // |n| ≠ 1
@@ -186,7 +187,7 @@ TEST(AnetVertexNormal, ZeroOnPlanarStarsPositiveOtherwise) {
 
 double QuadResidual(const Vec3& b0, const Vec3& b1, const Vec3& b2,
                     const Vec3& b3, double inv_length) {
-  std::unique_ptr<ceres::CostFunction> cost(MakeAnetStarQuad(inv_length));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(AnetStarQuad(inv_length)));
   return Evaluate(*cost, ToBlocks({b0, b1, b2, b3}))[0];
 }
 
@@ -217,7 +218,7 @@ TEST(AnetStarQuad, IsMinusPqDiagonalAndMatchesTheDefinition) {
     const double inv_length = 1.0 / MeanSpoke(star);
     const Vec3 &b0 = star[0], &b1 = star[1], &b2 = star[2], &b3 = star[3];
     const double r = QuadResidual(b0, b1, b2, b3, inv_length);
-    std::unique_ptr<ceres::CostFunction> pq(MakePqDiagonal(inv_length));
+    std::unique_ptr<ceres::CostFunction> pq(MakeAutoDiff(PqDiagonal(inv_length)));
     EXPECT_NEAR(r, -Evaluate(*pq, ToBlocks({b0, b1, b2, b3}))[0], kTolerance);
     // Shi §3.2: n = unit(b02 × b13), d = (b0 + b2 − b1 − b3)/2, r = n·d / L.
     const Vec3 n = (b0 - b2).cross(b1 - b3).normalized();
@@ -231,7 +232,7 @@ TEST(AnetStarQuad, GradientMatchesNumeric) {
   for (int i = 0; i < kNumSamples; ++i) {
     const auto star = RandomStar(rng, 4, 0.3);
     std::unique_ptr<ceres::CostFunction> cost(
-        MakeAnetStarQuad(1.0 / MeanSpoke(star)));
+        MakeAutoDiff(AnetStarQuad(1.0 / MeanSpoke(star))));
     SCOPED_TRACE(i);
     ExpectGradientsMatch(*cost, ToBlocks({star[0], star[1], star[2], star[3]}));
     ExpectGradientsMatch(*cost, ToBlocks({star[0], star[2], star[3], star[4]}));
@@ -249,7 +250,7 @@ TEST(AnetStarQuad, DegenerateInputsAreFinite) {
       {o, y, x + y, x + 2 * y + 1e-13 * z},  // nearly parallel diagonals
   };
   for (double inv_length : {1.0, 1e-3, 1e3}) {
-    std::unique_ptr<ceres::CostFunction> cost(MakeAnetStarQuad(inv_length));
+    std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(AnetStarQuad(inv_length)));
     for (size_t i = 0; i < cases.size(); ++i) {
       SCOPED_TRACE(i);
       ExpectFiniteEverywhere(*cost, ToBlocks(cases[i]));
@@ -350,7 +351,7 @@ struct Join {
 
 double FrameResidual(const Join& j, double inv_length) {
   std::unique_ptr<ceres::CostFunction> cost(
-      MakeFrameCoplanarity(j.w1, j.w2, j.w4, j.w5, inv_length));
+      MakeAutoDiff(FrameCoplanarity(j.w1, j.w2, j.w4, j.w5, inv_length)));
   return Evaluate(*cost, ToBlocks(j.b))[0];
 }
 
@@ -428,8 +429,7 @@ TEST(FrameCoplanarity, GradientMatchesNumeric) {
   for (int i = 0; i < kNumSamples; ++i) {
     Join j = SmoothJoin(rng);
     for (Vec3& p : j.b) p += RandomVec(rng, 0.2);
-    std::unique_ptr<ceres::CostFunction> cost(MakeFrameCoplanarity(
-        weight(rng), weight(rng), weight(rng), weight(rng), 1.0));
+    std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(FrameCoplanarity(weight(rng), weight(rng), weight(rng), weight(rng), 1.0)));
     SCOPED_TRACE(i);
     ExpectGradientsMatch(*cost, ToBlocks(j.b));
   }
@@ -446,7 +446,7 @@ TEST(FrameCoplanarity, DegenerateInputsAreFinite) {
   };
   for (double inv_length : {1.0, 1e-3, 1e3}) {
     std::unique_ptr<ceres::CostFunction> cost(
-        MakeFrameCoplanarity(1.0, 1.0, 1.0, 1.0, inv_length));
+        MakeAutoDiff(FrameCoplanarity(1.0, 1.0, 1.0, 1.0, inv_length)));
     for (size_t i = 0; i < cases.size(); ++i) {
       SCOPED_TRACE(i);
       ExpectFiniteEverywhere(*cost, ToBlocks(cases[i]));
@@ -543,7 +543,7 @@ TEST(FrameCoplanarity, KnownValue) {
 std::vector<double> ThirdResidual(const Vec3& target, double inv_length,
                                   const std::vector<Vec3>& p) {
   std::unique_ptr<ceres::CostFunction> cost(
-      MakeFairnessThird(target.data(), inv_length));
+      MakeAutoDiff(FairnessThird(target.data(), inv_length)));
   return Evaluate(*cost, ToBlocks(p));
 }
 
@@ -552,7 +552,7 @@ TEST(FairnessThird, GradientMatchesNumeric) {
   for (int i = 0; i < kNumSamples; ++i) {
     const Vec3 target = RandomVec(rng, 0.3);
     std::unique_ptr<ceres::CostFunction> cost(
-        MakeFairnessThird(target.data(), 1.0 / (0.5 + 0.1 * i)));
+        MakeAutoDiff(FairnessThird(target.data(), 1.0 / (0.5 + 0.1 * i))));
     const Vec3 v = RandomVec(rng, 5.0);
     SCOPED_TRACE(i);
     ExpectGradientsMatch(*cost, ToBlocks({v, v + RandomVec(rng, 1.0),
@@ -563,7 +563,7 @@ TEST(FairnessThird, GradientMatchesNumeric) {
 
 TEST(FairnessThird, DegenerateInputsAreFinite) {
   const double zero[3] = {0, 0, 0};
-  std::unique_ptr<ceres::CostFunction> cost(MakeFairnessThird(zero, 1.0));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(FairnessThird(zero, 1.0)));
   const Vec3 a(1, 2, 3);
   ExpectFiniteEverywhere(*cost, ToBlocks({a, a, a, a}));  // coincident
   EXPECT_EQ(AsVec(Evaluate(*cost, ToBlocks({a, a, a, a}))).norm(), 0.0);

@@ -26,8 +26,9 @@
 #include <gtest/gtest.h>
 
 #include "energies/anet_planarity.h"
+#include "energies/autodiff.h"
 #include "mesh/asymptotic_nets.h"
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/surface_mesh.h"
 
 namespace archgeo {
@@ -82,7 +83,7 @@ struct NetQuality {
 // Quality measures over the interior vertices (all of valence 4 here).
 NetQuality Measure(const Mesh& mesh) {
   NetQuality q;
-  std::unique_ptr<ceres::CostFunction> unit_quad(MakeAnetStarQuad(1.0));
+  std::unique_ptr<ceres::CostFunction> unit_quad(MakeAutoDiff(AnetStarQuad(1.0)));
   double lap_max = 0.0, second_max = 0.0;
   for (VertexIndex v : mesh.vertices()) {
     if (mesh.is_border(v)) continue;

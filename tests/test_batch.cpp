@@ -1,9 +1,10 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Batches (core/batch.h): an element evaluates to the bits of its
-// ceres::AutoDiffCostFunction (inside a ToleranceBand when banded), and a
-// residual list of batch elements gives LeanSolve and Ceres (MakeProblem) the
-// same problem as one cost object per element.
+// archgeo's automatic differentiation (energies/autodiff.h) and batches
+// (core/batch.h): a functor's cost function and its batch element evaluate
+// to the bits of ceres::AutoDiffCostFunction (inside a ToleranceBand when
+// banded), and a residual list of batch elements gives LeanSolve and Ceres
+// (MakeProblem) the same problem as one cost object per element.
 #include <gtest/gtest.h>
 
 #include <ceres/ceres.h>
@@ -16,14 +17,17 @@
 #include "core/lean_solve.h"
 #include "core/residuals.h"
 #include "core/tolerance_band.h"
+#include "energies/autodiff_impl.h"
 #include "energies/convexity.h"
+#include "energies/dihedral_energy.h"
+#include "energies/fairness.h"
 #include "energies/pq_diagonal.h"
 
 namespace archgeo {
 namespace {
 
 using PqCost = ceres::AutoDiffCostFunction<PqDiagonal, 1, 3, 3, 3, 3>;
-using PqBatch = BatchOf<PqCost>::type;
+using PqBatch = autodiff::FunctorBatch<PqDiagonal>;
 
 // Residual and Jacobians of `cost` at `x` (four 3-blocks).
 std::vector<double> Evaluate(const ceres::CostFunction& cost, const std::vector<double>& x) {
@@ -43,7 +47,7 @@ TEST(Batch, AnElementGivesTheBitsOfItsCostFunction) {
     for (int k = 0; k < 20; ++k) {
       const double inv_length = 0.5 + 0.1 * k;
       EXPECT_EQ(batch.Push(PqDiagonal(inv_length)), k);
-      ceres::CostFunction* cost = MakePqDiagonal(inv_length);
+      ceres::CostFunction* cost = new PqCost(new PqDiagonal(inv_length));
       costs.emplace_back(band >= 0 ? new ToleranceBand(cost, band) : cost);
     }
     int zeroed = 0;
@@ -66,12 +70,74 @@ TEST(Batch, AnElementGivesTheBitsOfItsCostFunction) {
   }
 }
 
+// MakeAutoDiff's cost function gives the bits of Ceres' for functors of
+// several shapes (1 to 3 residuals, 3 to 4 blocks), Jacobians of some blocks
+// left out.
+TEST(AutoDiff, ACostFunctionGivesTheBitsOfCeres) {
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const double target[3] = {0.1, -0.2, 0.3};
+  const std::vector<std::pair<std::unique_ptr<ceres::CostFunction>,
+                              std::unique_ptr<ceres::CostFunction>>>
+      pairs = [&] {
+        std::vector<std::pair<std::unique_ptr<ceres::CostFunction>,
+                              std::unique_ptr<ceres::CostFunction>>>
+            p;
+        p.emplace_back(MakeAutoDiff(PqDiagonal(0.7)), new PqCost(new PqDiagonal(0.7)));
+        p.emplace_back(MakeAutoDiff(Fairness(target, 1.3)),
+                       new ceres::AutoDiffCostFunction<Fairness, 3, 3, 3, 3>(
+                           new Fairness(target, 1.3)));
+        p.emplace_back(MakeAutoDiff(DihedralTriTri(0.9, 0.4)),
+                       new ceres::AutoDiffCostFunction<DihedralTriTri, 3, 3, 3, 3, 3>(
+                           new DihedralTriTri(0.9, 0.4)));
+        return p;
+      }();
+  for (const auto& [mine, theirs] : pairs) {
+    ASSERT_EQ(mine->num_residuals(), theirs->num_residuals());
+    ASSERT_EQ(mine->parameter_block_sizes(), theirs->parameter_block_sizes());
+    const int rows = mine->num_residuals();
+    const std::vector<int32_t>& sizes = mine->parameter_block_sizes();
+    for (int trial = 0; trial < 10; ++trial) {
+      std::vector<std::vector<double>> x;
+      std::vector<const double*> blocks;
+      for (int32_t s : sizes) {
+        x.emplace_back(size_t(s));
+        for (double& v : x.back()) v = u(random);
+      }
+      for (const auto& b : x) blocks.push_back(b.data());
+      std::vector<std::vector<double>> jm, jt;
+      std::vector<double*> pm, pt;
+      for (size_t b = 0; b < sizes.size(); ++b) {
+        jm.emplace_back(size_t(rows * sizes[b]), 7.0);
+        jt.emplace_back(size_t(rows * sizes[b]), -7.0);
+        const bool skip = (trial + int(b)) % 3 == 0;  // a block without Jacobian
+        pm.push_back(skip ? nullptr : jm.back().data());
+        pt.push_back(skip ? nullptr : jt.back().data());
+      }
+      std::vector<double> rm(static_cast<size_t>(rows)), rt(static_cast<size_t>(rows));
+      ASSERT_TRUE(mine->Evaluate(blocks.data(), rm.data(), pm.data()));
+      ASSERT_TRUE(theirs->Evaluate(blocks.data(), rt.data(), pt.data()));
+      EXPECT_EQ(rm, rt);
+      EXPECT_EQ(jm.size(), jt.size());
+      for (size_t b = 0; b < sizes.size(); ++b) {
+        if (pm[b]) EXPECT_EQ(jm[b], jt[b]) << "block " << b;
+      }
+      // Without Jacobians: the functor on doubles, on both sides (its value
+      // may differ from the Jets' in the last bit: a Jet divides by
+      // multiplying with the inverse).
+      ASSERT_TRUE(mine->Evaluate(blocks.data(), rm.data(), nullptr));
+      ASSERT_TRUE(theirs->Evaluate(blocks.data(), rt.data(), nullptr));
+      EXPECT_EQ(rm, rt);
+    }
+  }
+}
+
 // A barrier (kFlatWhereZero) element is differentiated only where it is not
 // idle: bit-equal residual and Jacobians to its AutoDiffCostFunction on idle
 // corners (zero Jacobians written over garbage) and on violated ones.
 TEST(Batch, AnIdleBarrierElementGivesTheBitsOfItsCostFunction) {
   using ConvexityCost = ceres::AutoDiffCostFunction<Convexity, 1, 3, 3, 3>;
-  BatchOf<ConvexityCost>::type batch(-1.0);
+  autodiff::FunctorBatch<Convexity> batch(-1.0);
   const double normal[3] = {0, 0, 1};
   std::mt19937 random(11);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -79,7 +145,8 @@ TEST(Batch, AnIdleBarrierElementGivesTheBitsOfItsCostFunction) {
   for (int k = 0; k < 40; ++k) {
     const double threshold = 0.05 * (k % 7);
     const int element = batch.Push(Convexity(normal, threshold));
-    const std::unique_ptr<ceres::CostFunction> cost(MakeConvexity(normal, threshold));
+    const std::unique_ptr<ceres::CostFunction> cost(
+        new ConvexityCost(new Convexity(normal, threshold)));
     std::vector<double> x(9);
     for (double& v : x) v = u(random);
     const double* blocks[3] = {&x[0], &x[3], &x[6]};
@@ -121,7 +188,7 @@ struct Strip {
       if (batched) {
         r.Add(batch, batch->Push(PqDiagonal(1.0 + 0.01 * i)), loss, blocks, 4);
       } else {
-        r.Add(MakePqDiagonal(1.0 + 0.01 * i), loss, blocks, 4);
+        r.Add(MakeAutoDiff(PqDiagonal(1.0 + 0.01 * i)), loss, blocks, 4);
       }
     }
     for (size_t v = 0; v < x.size() / 3; ++v) {

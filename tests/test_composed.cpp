@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "energies/convexity.h"
+#include "energies/autodiff.h"
 #include "energies/min_edge_length.h"
 #include "problems/run.h"
 #include "problems/spec.h"
@@ -26,7 +27,7 @@ using energy_checks::Vec3;
 TEST(Convexity, ZeroInsideTheMarginAndTheTurnSineOutside) {
   const double n[3] = {0, 0, 1};
   const double threshold = std::sin(2.0 * M_PI / 180);
-  std::unique_ptr<ceres::CostFunction> cost(MakeConvexity(n, threshold));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(Convexity(n, threshold)));
   // A right-angle corner of a counter-clockwise square: s = 1, no residual.
   EXPECT_EQ(energy_checks::Evaluate(*cost, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}})[0], 0.0);
   // A reflex corner bent 30° inward: turn −30°, s = −1/2, r = t + 1/2.
@@ -43,7 +44,7 @@ TEST(Convexity, GradientAndInvariance) {
   const double n[3] = {0, 0, 1};
   // Active (reflex) corner, away from the hinge.
   const Blocks blocks = {{0, 0, 0.1}, {1, 0.05, -0.1}, {1.8, -0.4, 0.05}};
-  std::unique_ptr<ceres::CostFunction> cost(MakeConvexity(n, 0.05));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(Convexity(n, 0.05)));
   ASSERT_GT(energy_checks::Evaluate(*cost, blocks)[0], 0.1);
   energy_checks::ExpectGradientsMatch(*cost, blocks);
   for (int trial = 0; trial < 5; ++trial) {
@@ -53,14 +54,14 @@ TEST(Convexity, GradientAndInvariance) {
     Blocks moved;
     for (const auto& b : blocks) moved.push_back(energy_checks::ToBlock(scale * (R * energy_checks::AsVec(b)) + t));
     const Vec3 rn = R * Vec3(0, 0, 1);
-    std::unique_ptr<ceres::CostFunction> rotated(MakeConvexity(rn.data(), 0.05));
+    std::unique_ptr<ceres::CostFunction> rotated(MakeAutoDiff(Convexity(rn.data(), 0.05)));
     EXPECT_NEAR(energy_checks::Evaluate(*rotated, moved)[0],
                 energy_checks::Evaluate(*cost, blocks)[0], 1e-12);
   }
 }
 
 TEST(MinEdgeLength, HingeGradientAndInvariance) {
-  std::unique_ptr<ceres::CostFunction> cost(MakeMinEdgeLength(0.5));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(MinEdgeLength(0.5)));
   EXPECT_EQ(energy_checks::Evaluate(*cost, {{0, 0, 0}, {0.6, 0, 0}})[0], 0.0);
   EXPECT_NEAR(energy_checks::Evaluate(*cost, {{0, 0, 0}, {0.2, 0, 0}})[0], 0.6, 1e-12);
   const Blocks blocks = {{0.1, 0.2, 0.3}, {0.2, 0.1, 0.25}};
@@ -69,7 +70,7 @@ TEST(MinEdgeLength, HingeGradientAndInvariance) {
   const Eigen::Matrix3d R = energy_checks::RandomRotation(rng);
   Blocks moved;
   for (const auto& b : blocks) moved.push_back(energy_checks::ToBlock(3.0 * (R * energy_checks::AsVec(b))));
-  std::unique_ptr<ceres::CostFunction> scaled(MakeMinEdgeLength(1.5));
+  std::unique_ptr<ceres::CostFunction> scaled(MakeAutoDiff(MinEdgeLength(1.5)));
   EXPECT_NEAR(energy_checks::Evaluate(*scaled, moved)[0], energy_checks::Evaluate(*cost, blocks)[0],
               1e-12);
 }

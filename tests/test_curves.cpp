@@ -11,7 +11,7 @@
 
 #include "mesh/curves.h"
 #include "mesh/generators.h"
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/smoothness_surfaces.h"
 #include "mesh/vec3.h"
 #include "tests/make_mesh.h"

@@ -11,7 +11,7 @@
 #include "mesh/diagonal_net.h"
 #include "mesh/generators.h"
 #include "mesh/hnet.h"
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/io.h"
 #include "mesh/topology.h"
 

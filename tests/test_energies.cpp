@@ -21,6 +21,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/energy_checks.h"
+#include "energies/autodiff.h"
 
 #include "energies/anchor.h"
 #include "energies/boundary_proximity.h"
@@ -72,7 +73,7 @@ Blocks QuadBlocks(const std::vector<Vec3>& q) {
 }
 
 double PqResidual(const std::vector<Vec3>& q, double inv_length) {
-  std::unique_ptr<ceres::CostFunction> cost(MakePqDiagonal(inv_length));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(PqDiagonal(inv_length)));
   return Evaluate(*cost, QuadBlocks(q))[0];
 }
 
@@ -89,7 +90,7 @@ TEST(PqDiagonal, GradientMatchesNumeric) {
   for (int i = 0; i < kNumSamples; ++i) {
     const auto q = RandomQuad(rng);
     std::unique_ptr<ceres::CostFunction> cost(
-        MakePqDiagonal(1.0 / MeanDiagonal(q)));
+        MakeAutoDiff(PqDiagonal(1.0 / MeanDiagonal(q))));
     SCOPED_TRACE(i);
     ExpectGradientsMatch(*cost, QuadBlocks(q));
   }
@@ -107,7 +108,7 @@ TEST(PqDiagonal, DegenerateInputsAreFinite) {
       {o, y + z, 2 * x, y + z + 3 * x + 1e-12 * y},  // nearly parallel
   };
   for (double inv_length : {1.0, 1e-3, 1e3}) {
-    std::unique_ptr<ceres::CostFunction> cost(MakePqDiagonal(inv_length));
+    std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(PqDiagonal(inv_length)));
     for (size_t i = 0; i < cases.size(); ++i) {
       SCOPED_TRACE(i);
       ExpectFiniteEverywhere(*cost, QuadBlocks(cases[i]));
@@ -234,7 +235,7 @@ PlaneSample RandomPlaneSample(std::mt19937& rng) {
 
 double PlanarityResidual(const PlaneSample& s) {
   std::unique_ptr<ceres::CostFunction> cost(
-      MakeFacePlanarity(s.center.data(), s.inv_length));
+      MakeAutoDiff(FacePlanarity(s.center.data(), s.inv_length)));
   return Evaluate(*cost, {ToBlock(s.n), {s.d}, ToBlock(s.v)})[0];
 }
 
@@ -246,7 +247,7 @@ TEST(FacePlanarity, GradientMatchesNumeric) {
   for (int i = 0; i < kNumSamples; ++i) {
     const PlaneSample s = RandomPlaneSample(rng);
     std::unique_ptr<ceres::CostFunction> cost(
-        MakeFacePlanarity(s.center.data(), s.inv_length));
+        MakeAutoDiff(FacePlanarity(s.center.data(), s.inv_length)));
     const Blocks blocks = {ToBlock(s.n), {s.d}, ToBlock(s.v)};
     SCOPED_TRACE(i);
     ExpectGradientsMatch(*cost, blocks);
@@ -256,7 +257,7 @@ TEST(FacePlanarity, GradientMatchesNumeric) {
 
 TEST(FacePlanarity, DegenerateInputsAreFinite) {
   const double center[3] = {1, 2, 3};
-  std::unique_ptr<ceres::CostFunction> cost(MakeFacePlanarity(center, 1.0));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(FacePlanarity(center, 1.0)));
   ExpectFiniteEverywhere(*cost, {{0, 0, 0}, {0.5}, {1, 2, 3}});  // n = 0
   ExpectFiniteEverywhere(*cost, {{0, 0, 1}, {0}, {1, 2, 3}});    // v = c
   ExpectFiniteEverywhere(*cost, {{0, 3, 4}, {0}, {7, 2, 3}});    // non-unit n
@@ -325,7 +326,7 @@ std::vector<double> FairnessResidual(const Vec3& target, double inv_length,
                                      const Vec3& u, const Vec3& v,
                                      const Vec3& w) {
   std::unique_ptr<ceres::CostFunction> cost(
-      MakeFairness(target.data(), inv_length));
+      MakeAutoDiff(Fairness(target.data(), inv_length)));
   return Evaluate(*cost, {ToBlock(u), ToBlock(v), ToBlock(w)});
 }
 
@@ -334,7 +335,7 @@ TEST(Fairness, GradientMatchesNumeric) {
   for (int i = 0; i < kNumSamples; ++i) {
     const Vec3 target = RandomVec(rng, 0.3);
     std::unique_ptr<ceres::CostFunction> cost(
-        MakeFairness(target.data(), 1.0 / (0.5 + i * 0.1)));
+        MakeAutoDiff(Fairness(target.data(), 1.0 / (0.5 + i * 0.1))));
     const Vec3 v = RandomVec(rng, 5.0);
     SCOPED_TRACE(i);
     ExpectGradientsMatch(*cost, {ToBlock(v + RandomVec(rng, 1.0)), ToBlock(v),
@@ -344,7 +345,7 @@ TEST(Fairness, GradientMatchesNumeric) {
 
 TEST(Fairness, DegenerateInputsAreFinite) {
   const double zero[3] = {0, 0, 0};
-  std::unique_ptr<ceres::CostFunction> cost(MakeFairness(zero, 1.0));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(Fairness(zero, 1.0)));
   ExpectFiniteEverywhere(*cost, {{1, 2, 3}, {1, 2, 3}, {1, 2, 3}});  // coincident
   ExpectFiniteEverywhere(*cost, {{0, 0, 0}, {1, 1, 1}, {5, 5, 5}});  // collinear
   ExpectFiniteEverywhere(*cost, {{0, 0, 0}, {0, 0, 0}, {1, 0, 0}});
@@ -407,7 +408,7 @@ TEST(Fairness, KnownValues) {
 double ProximityResidual(const Vec3& p, const Vec3& n, double inv_length,
                          const Vec3& v) {
   std::unique_ptr<ceres::CostFunction> cost(
-      MakeProximity(p.data(), n.data(), inv_length));
+      MakeAutoDiff(Proximity(p.data(), n.data(), inv_length)));
   return Evaluate(*cost, {ToBlock(v)})[0];
 }
 
@@ -416,7 +417,7 @@ TEST(Proximity, GradientMatchesNumeric) {
   for (int i = 0; i < kNumSamples; ++i) {
     const Vec3 p = RandomVec(rng, 5.0), n = RandomVec(rng, 1.0).normalized();
     std::unique_ptr<ceres::CostFunction> cost(
-        MakeProximity(p.data(), n.data(), 1.0 / (0.5 + 0.1 * i)));
+        MakeAutoDiff(Proximity(p.data(), n.data(), 1.0 / (0.5 + 0.1 * i))));
     SCOPED_TRACE(i);
     ExpectGradientsMatch(*cost, {ToBlock(p + RandomVec(rng, 1.0))});
   }
@@ -425,16 +426,16 @@ TEST(Proximity, GradientMatchesNumeric) {
 TEST(Proximity, DegenerateInputsAreFinite) {
   const Vec3 p(1, 2, 3), zero(0, 0, 0);
   std::unique_ptr<ceres::CostFunction> zero_normal(
-      MakeProximity(p.data(), zero.data(), 1.0));
+      MakeAutoDiff(Proximity(p.data(), zero.data(), 1.0)));
   ExpectFiniteEverywhere(*zero_normal, {ToBlock(Vec3(4, 5, 6))});
   ExpectFiniteEverywhere(*zero_normal, {ToBlock(p)});
   EXPECT_EQ(Evaluate(*zero_normal, {ToBlock(Vec3(4, 5, 6))})[0], 0.0);
   const Vec3 tiny(0, 0, 1e-300);
   std::unique_ptr<ceres::CostFunction> tiny_normal(
-      MakeProximity(p.data(), tiny.data(), 1.0));
+      MakeAutoDiff(Proximity(p.data(), tiny.data(), 1.0)));
   ExpectFiniteEverywhere(*tiny_normal, {ToBlock(Vec3(4, 5, 6))});
   std::unique_ptr<ceres::CostFunction> unit(
-      MakeProximity(p.data(), Vec3(0, 0, 1).data(), 1.0));
+      MakeAutoDiff(Proximity(p.data(), Vec3(0, 0, 1).data(), 1.0)));
   ExpectFiniteEverywhere(*unit, {ToBlock(p)});  // v = p
 }
 
@@ -478,7 +479,7 @@ TEST(Proximity, KnownValues) {
 Vec3 BoundaryResidual(const Vec3& p, const Vec3& t, double inv_length,
                       const Vec3& v) {
   std::unique_ptr<ceres::CostFunction> cost(
-      MakeBoundaryProximity(p.data(), t.data(), inv_length));
+      MakeAutoDiff(BoundaryProximity(p.data(), t.data(), inv_length)));
   return AsVec(Evaluate(*cost, {ToBlock(v)}));
 }
 
@@ -487,7 +488,7 @@ TEST(BoundaryProximity, GradientMatchesNumeric) {
   for (int i = 0; i < kNumSamples; ++i) {
     const Vec3 p = RandomVec(rng, 5.0), t = RandomVec(rng, 1.0).normalized();
     std::unique_ptr<ceres::CostFunction> cost(
-        MakeBoundaryProximity(p.data(), t.data(), 1.0 / (0.5 + 0.1 * i)));
+        MakeAutoDiff(BoundaryProximity(p.data(), t.data(), 1.0 / (0.5 + 0.1 * i))));
     SCOPED_TRACE(i);
     ExpectGradientsMatch(*cost, {ToBlock(p + RandomVec(rng, 1.0))});
   }
@@ -496,7 +497,7 @@ TEST(BoundaryProximity, GradientMatchesNumeric) {
 TEST(BoundaryProximity, DegenerateInputsAreFinite) {
   const Vec3 p(1, 2, 3), zero(0, 0, 0);
   std::unique_ptr<ceres::CostFunction> zero_tangent(
-      MakeBoundaryProximity(p.data(), zero.data(), 2.0));
+      MakeAutoDiff(BoundaryProximity(p.data(), zero.data(), 2.0)));
   ExpectFiniteEverywhere(*zero_tangent, {ToBlock(Vec3(4, 5, 6))});
   ExpectFiniteEverywhere(*zero_tangent, {ToBlock(p)});
   // Zero tangent: distance to the closest point itself.
@@ -504,7 +505,7 @@ TEST(BoundaryProximity, DegenerateInputsAreFinite) {
                   .norm(),
               0.0, kTolerance);
   std::unique_ptr<ceres::CostFunction> unit(
-      MakeBoundaryProximity(p.data(), Vec3(1, 0, 0).data(), 1.0));
+      MakeAutoDiff(BoundaryProximity(p.data(), Vec3(1, 0, 0).data(), 1.0)));
   ExpectFiniteEverywhere(*unit, {ToBlock(p)});  // v = p
 }
 
@@ -550,7 +551,7 @@ TEST(BoundaryProximity, KnownValues) {
 // -------------------------------------------------------------------- anchor
 
 Vec3 AnchorResidual(const Vec3& a, double inv_length, const Vec3& v) {
-  std::unique_ptr<ceres::CostFunction> cost(MakeAnchor(a.data(), inv_length));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(Anchor(a.data(), inv_length)));
   return AsVec(Evaluate(*cost, {ToBlock(v)}));
 }
 
@@ -559,7 +560,7 @@ TEST(Anchor, GradientMatchesNumeric) {
   for (int i = 0; i < kNumSamples; ++i) {
     const Vec3 a = RandomVec(rng, 5.0);
     std::unique_ptr<ceres::CostFunction> cost(
-        MakeAnchor(a.data(), 1.0 / (0.5 + 0.1 * i)));
+        MakeAutoDiff(Anchor(a.data(), 1.0 / (0.5 + 0.1 * i))));
     SCOPED_TRACE(i);
     ExpectGradientsMatch(*cost, {ToBlock(a + RandomVec(rng, 1.0))});
   }
@@ -567,7 +568,7 @@ TEST(Anchor, GradientMatchesNumeric) {
 
 TEST(Anchor, DegenerateInputsAreFinite) {
   const Vec3 a(1, 2, 3);
-  std::unique_ptr<ceres::CostFunction> cost(MakeAnchor(a.data(), 1.0));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(Anchor(a.data(), 1.0)));
   ExpectFiniteEverywhere(*cost, {ToBlock(a)});  // v = a
   EXPECT_EQ(Norm(Evaluate(*cost, {ToBlock(a)})), 0.0);
 }

@@ -18,7 +18,7 @@
 #include "core/solver_options.h"
 #include "energies/registry.h"
 #include "mesh/generators.h"
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/io.h"
 #include "mesh/similarity.h"
 #include "problems/model.h"

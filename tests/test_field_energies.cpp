@@ -20,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/energy_checks.h"
+#include "energies/autodiff.h"
 
 #include "energies/level_set_alignment.h"
 #include "energies/level_set_branch_point.h"
@@ -82,14 +83,14 @@ TEST(TcdDirichlet, GradientsMatchNumericDifferences) {
   std::mt19937 rng(kSeed);
   std::uniform_real_distribution<double> angle(-M_PI, M_PI), weight(0.1, 3.0);
   for (int s = 0; s < kNumSamples; ++s) {
-    std::unique_ptr<ceres::CostFunction> cost(MakeTcdDirichlet(angle(rng), weight(rng)));
+    std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(TcdDirichlet(angle(rng), weight(rng))));
     ExpectGradientsMatch(*cost, {B2(RandomZ(rng)), B2(RandomZ(rng))});
   }
 }
 
 TEST(TcdDirichlet, VanishesForTheTransportedFieldAndHasTheAnalyticValue) {
   const double tau = 0.7, w = 2.5;
-  std::unique_ptr<ceres::CostFunction> cost(MakeTcdDirichlet(tau, w));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(TcdDirichlet(tau, w)));
   // ζ_f = R(2τ) ζ_g: the same conjugate pair seen from both frames.
   const Vec2 zeta_g(0.3, -0.2);
   const Vec2 z_g = Vec2(1, 0) + zeta_g, z_f = Vec2(1, 0) + Rot(2 * tau) * zeta_g;
@@ -107,13 +108,13 @@ TEST(TcdDirichlet, IndependentOfTheFaceFrames) {
   for (int s = 0; s < kNumSamples; ++s) {
     const double tau = angle(rng), w = weight(rng), phi_f = angle(rng), phi_g = angle(rng);
     const Vec2 z_f = RandomZ(rng), z_g = RandomZ(rng);
-    std::unique_ptr<ceres::CostFunction> a(MakeTcdDirichlet(tau, w));
-    std::unique_ptr<ceres::CostFunction> b(MakeTcdDirichlet(tau + phi_g - phi_f, w));
+    std::unique_ptr<ceres::CostFunction> a(MakeAutoDiff(TcdDirichlet(tau, w)));
+    std::unique_ptr<ceres::CostFunction> b(MakeAutoDiff(TcdDirichlet(tau + phi_g - phi_f, w)));
     const double before = Norm(Evaluate(*a, {B2(z_f), B2(z_g)}));
     const double after = Norm(Evaluate(*b, {B2(TurnZ(z_f, phi_f)), B2(TurnZ(z_g, phi_g))}));
     EXPECT_NEAR(before, after, kTolerance);
     // Swapping the faces (τ → −τ) keeps the norm.
-    std::unique_ptr<ceres::CostFunction> c(MakeTcdDirichlet(-tau, w));
+    std::unique_ptr<ceres::CostFunction> c(MakeAutoDiff(TcdDirichlet(-tau, w)));
     EXPECT_NEAR(before, Norm(Evaluate(*c, {B2(z_g), B2(z_f)})), kTolerance);
   }
 }
@@ -121,7 +122,7 @@ TEST(TcdDirichlet, IndependentOfTheFaceFrames) {
 // ------------------------------------------------------------ tcd_transversality
 
 TEST(TcdTransversality, FourthPowerOfTheDistanceToE1) {
-  std::unique_ptr<ceres::CostFunction> cost(MakeTcdTransversality());
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(TcdTransversality()));
   // ‖z − e1‖ = 0.5: r = 0.25, ½r² = ½ φ(0.5) = ½·0.0625.
   const double r = Evaluate(*cost, {B2(Vec2(1.3, 0.4))})[0];
   EXPECT_NEAR(r, 0.25, kTolerance);
@@ -145,7 +146,7 @@ TEST(TcdTransversality, FourthPowerOfTheDistanceToE1) {
 TEST(TcdTransversality, GradientsAndFrameInvariance) {
   std::mt19937 rng(kSeed + 3);
   std::uniform_real_distribution<double> angle(-M_PI, M_PI);
-  std::unique_ptr<ceres::CostFunction> cost(MakeTcdTransversality());
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(TcdTransversality()));
   for (int s = 0; s < kNumSamples; ++s) {
     const Vec2 z = RandomZ(rng);
     ExpectGradientsMatch(*cost, {B2(z)});
@@ -159,7 +160,7 @@ TEST(TcdTransversality, GradientsAndFrameInvariance) {
 
 TEST(TcdSingularityAvoidance, PsiOfThePaper) {
   const double z_m[2] = {0.5, 0.2};
-  std::unique_ptr<ceres::CostFunction> cost(MakeTcdSingularityAvoidance(z_m));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(TcdSingularityAvoidance(z_m, 1.0)));
   // t = 0.5: Ψ = (0.5 − 1)⁴ = 0.0625 = r².
   const double r = Evaluate(*cost, {B2(Vec2(0.8, 0.6))})[0];
   EXPECT_NEAR(r * r, 0.0625, 1e-10);
@@ -174,7 +175,7 @@ TEST(TcdSingularityAvoidance, PsiOfThePaper) {
   }
   EXPECT_NEAR(Evaluate(*cost, {B2(Vec2(0.5, 0.2))})[0], 1.0, 1e-5);
   // A smaller radius confines the term.
-  std::unique_ptr<ceres::CostFunction> narrow(MakeTcdSingularityAvoidance(z_m, 0.25));
+  std::unique_ptr<ceres::CostFunction> narrow(MakeAutoDiff(TcdSingularityAvoidance(z_m, 0.25)));
   EXPECT_EQ(Evaluate(*narrow, {B2(Vec2(0.8, 0.6))})[0], 0.0);
 }
 
@@ -187,18 +188,18 @@ TEST(TcdSingularityAvoidance, GradientsInvarianceAndTheSingularPoint) {
     // Inside the support, away from t = 1 where the second derivative jumps.
     const Vec2 z = zm + rad(rng) * Vec2(std::cos(a), std::sin(a));
     const double zm_b[2] = {zm.x(), zm.y()};
-    std::unique_ptr<ceres::CostFunction> cost(MakeTcdSingularityAvoidance(zm_b));
+    std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(TcdSingularityAvoidance(zm_b, 1.0)));
     ExpectGradientsMatch(*cost, {B2(z)});
     const double phi = angle(rng);
     const Vec2 zm2 = TurnZ(zm, phi);
     const double zm2_b[2] = {zm2.x(), zm2.y()};
-    std::unique_ptr<ceres::CostFunction> turned(MakeTcdSingularityAvoidance(zm2_b));
+    std::unique_ptr<ceres::CostFunction> turned(MakeAutoDiff(TcdSingularityAvoidance(zm2_b, 1.0)));
     EXPECT_NEAR(Evaluate(*cost, {B2(z)})[0], Evaluate(*turned, {B2(TurnZ(z, phi))})[0],
                 kTolerance);
   }
   // Exactly singular: finite, zero Jacobian (a stationary point).
   const double zm_b[2] = {0.7, 0.1};
-  std::unique_ptr<ceres::CostFunction> cost(MakeTcdSingularityAvoidance(zm_b));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(TcdSingularityAvoidance(zm_b, 1.0)));
   Blocks jac;
   Evaluate(*cost, {B2(Vec2(0.7, 0.1))}, &jac);
   EXPECT_EQ(jac[0][0], 0.0);
@@ -209,14 +210,14 @@ TEST(TcdSingularityAvoidance, GradientsInvarianceAndTheSingularPoint) {
 
 TEST(TcdSingularityPlacement, ValueGradientAndInvariance) {
   const double zm[2] = {0.6, -0.3};
-  std::unique_ptr<ceres::CostFunction> cost(MakeTcdSingularityPlacement(zm));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(TcdSingularityPlacement(zm)));
   const std::vector<double> r = Evaluate(*cost, {B2(Vec2(1.0, 0.0))});
   EXPECT_NEAR(r[0], 0.4, kTolerance);
   EXPECT_NEAR(r[1], 0.3, kTolerance);
   ExpectGradientsMatch(*cost, {B2(Vec2(0.9, 0.2))});
   const Vec2 zm2 = TurnZ(Vec2(0.6, -0.3), 0.4);
   const double zm2_b[2] = {zm2.x(), zm2.y()};
-  std::unique_ptr<ceres::CostFunction> turned(MakeTcdSingularityPlacement(zm2_b));
+  std::unique_ptr<ceres::CostFunction> turned(MakeAutoDiff(TcdSingularityPlacement(zm2_b)));
   EXPECT_NEAR(Norm(r), Norm(Evaluate(*turned, {B2(TurnZ(Vec2(1.0, 0.0), 0.4))})), kTolerance);
   // z_N = z_M makes the face singular: the pair is undetermined.
   Eigen::Matrix2d M;
@@ -233,7 +234,7 @@ TEST(TcdPrescribedDirection, DistanceFromTheLineOfProp1) {
   // M = diag(1, 2), d = e1: the conjugate of d is e2, the line through
   // p(e1) = (2, 0) and p(e2) = (0, 0) is the x-axis; z_M = (4/3, 0) is on it.
   const double m[3] = {1.0, 0.0, 2.0}, d[2] = {1.0, 0.0};
-  std::unique_ptr<ceres::CostFunction> cost(MakeTcdPrescribedDirection(m, d));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(CheckedTcdPrescribedDirection(m, d)));
   EXPECT_NEAR(std::abs(Evaluate(*cost, {B2(Vec2(1.0, 0.3))})[0]), 0.3, kTolerance);
   EXPECT_NEAR(Evaluate(*cost, {B2(Vec2(1.0, 0.0))})[0], 0.0, kTolerance);
   ExpectGradientsMatch(*cost, {B2(Vec2(0.8, 0.1))});
@@ -253,7 +254,7 @@ TEST(TcdPrescribedDirection, ZeroExactlyWhenThePairContainsTheDirection) {
     const double m[3] = {M(0, 0), M(0, 1), M(1, 1)};
     Vec2 point, dir;
     if (!TcdPrescribedLine(m, d, &point, &dir)) continue;
-    std::unique_ptr<ceres::CostFunction> cost(MakeTcdPrescribedDirection(m, d));
+    std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(CheckedTcdPrescribedDirection(m, d)));
     // A point of the line inside the circle: its pair contains d.
     const Vec2 z = point + t(rng) * dir;
     if ((z - Vec2(1, 0)).norm() > 0.95) continue;
@@ -293,8 +294,8 @@ TEST(TcdPrescribedDirection, FrameInvarianceAndVoidCondition) {
     const Eigen::Matrix2d Mt = Rot(phi).transpose() * M * Rot(phi);
     const Vec2 dt = Rot(-phi) * dv;
     const double mt[3] = {Mt(0, 0), Mt(0, 1), Mt(1, 1)}, dtb[2] = {dt.x(), dt.y()};
-    std::unique_ptr<ceres::CostFunction> a1(MakeTcdPrescribedDirection(m, d));
-    std::unique_ptr<ceres::CostFunction> a2(MakeTcdPrescribedDirection(mt, dtb));
+    std::unique_ptr<ceres::CostFunction> a1(MakeAutoDiff(CheckedTcdPrescribedDirection(m, d)));
+    std::unique_ptr<ceres::CostFunction> a2(MakeAutoDiff(CheckedTcdPrescribedDirection(mt, dtb)));
     EXPECT_NEAR(std::abs(Evaluate(*a1, {B2(z)})[0]),
                 std::abs(Evaluate(*a2, {B2(TurnZ(z, phi))})[0]), 1e-10);
     ExpectGradientsMatch(*a1, {B2(z)});
@@ -345,7 +346,7 @@ TEST(LevelSetAlignment, AnalyticValueAndGradients) {
     const std::vector<double> c6 = Corners6(p);
     const Vec2 v = Vec2(g(rng), g(rng)).normalized();
     const double v2[2] = {v.x(), v.y()}, inv_total = 1.0 / 7.0;
-    std::unique_ptr<ceres::CostFunction> cost(MakeLevelSetAlignment(c6.data(), v2, inv_total));
+    std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(LevelSetAlignment(c6.data(), v2, inv_total)));
     // g with ∇g = R v (R: +90°): zero.
     const Vec2 rv(-v.y(), v.x());
     EXPECT_LT(Norm(Evaluate(*cost, Linear(p, rv, g(rng)))), kTolerance);
@@ -356,7 +357,7 @@ TEST(LevelSetAlignment, AnalyticValueAndGradients) {
     ExpectGradientsMatch(*cost, {{g(rng)}, {g(rng)}, {g(rng)}});
     // v = 0: the Dirichlet term ‖r‖² = (A/A_Φ)‖∇g‖² of λ_even.
     const double zero[2] = {0.0, 0.0};
-    std::unique_ptr<ceres::CostFunction> even(MakeLevelSetAlignment(c6.data(), zero, inv_total));
+    std::unique_ptr<ceres::CostFunction> even(MakeAutoDiff(LevelSetAlignment(c6.data(), zero, inv_total)));
     EXPECT_NEAR(std::pow(Norm(Evaluate(*even, Linear(p, a, 0.3))), 2),
                 Area(p) * inv_total * a.squaredNorm(), 1e-10);
   }
@@ -373,7 +374,7 @@ TEST(LevelSetAlignment, RigidMotionAndScalingInvariance) {
     const double inv_total = 0.3, phi = angle(rng), k = scale(rng);
     const std::vector<double> c6 = Corners6(p);
     const double v2[2] = {v.x(), v.y()};
-    std::unique_ptr<ceres::CostFunction> a(MakeLevelSetAlignment(c6.data(), v2, inv_total));
+    std::unique_ptr<ceres::CostFunction> a(MakeAutoDiff(LevelSetAlignment(c6.data(), v2, inv_total)));
     const double before = Norm(Evaluate(*a, values));
     // Rotate + translate the frame: corners and v turn.
     std::vector<Vec2> q = p;
@@ -381,13 +382,13 @@ TEST(LevelSetAlignment, RigidMotionAndScalingInvariance) {
     const Vec2 vq = Rot(phi) * v;
     const std::vector<double> q6 = Corners6(q);
     const double vq2[2] = {vq.x(), vq.y()};
-    std::unique_ptr<ceres::CostFunction> b(MakeLevelSetAlignment(q6.data(), vq2, inv_total));
+    std::unique_ptr<ceres::CostFunction> b(MakeAutoDiff(LevelSetAlignment(q6.data(), vq2, inv_total)));
     EXPECT_NEAR(before, Norm(Evaluate(*b, values)), 1e-10);
     // Scale by k: g scales by k, 1/A_Φ by 1/k².
     std::vector<Vec2> r = p;
     for (Vec2& x : r) x *= k;
     const std::vector<double> r6 = Corners6(r);
-    std::unique_ptr<ceres::CostFunction> c(MakeLevelSetAlignment(r6.data(), v2, inv_total / (k * k)));
+    std::unique_ptr<ceres::CostFunction> c(MakeAutoDiff(LevelSetAlignment(r6.data(), v2, inv_total / (k * k))));
     EXPECT_NEAR(before,
                 Norm(Evaluate(*c, {{k * values[0][0]}, {k * values[1][0]}, {k * values[2][0]}})),
                 1e-10);
@@ -403,7 +404,7 @@ TEST(LevelSetNormalised, UnitGradientMinusRvAndInvariances) {
     const std::vector<double> c6 = Corners6(p);
     const Vec2 v = Vec2(g(rng), g(rng)) * 3.0;  // any length: normalised
     const double v2[2] = {v.x(), v.y()}, inv_total = 0.5;
-    std::unique_ptr<ceres::CostFunction> cost(MakeLevelSetNormalised(c6.data(), v2, inv_total));
+    std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(LevelSetNormalised(c6.data(), v2, inv_total, 1.0)));
     const double th = angle(rng);
     const Vec2 a = scale(rng) * Vec2(std::cos(th), std::sin(th));
     const Vec2 rv = Vec2(-v.y(), v.x()).normalized();
@@ -442,15 +443,15 @@ TEST(LevelSetNormalised, UnitGradientMinusRvAndInvariances) {
     const Vec2 vq = Rot(phi) * v;
     const std::vector<double> p6 = Corners6(p), q6 = Corners6(q);
     const double vp[2] = {v.x(), v.y()}, vqb[2] = {vq.x(), vq.y()};
-    std::unique_ptr<ceres::CostFunction> a(MakeLevelSetNormalised(p6.data(), vp, 0.5));
-    std::unique_ptr<ceres::CostFunction> b(MakeLevelSetNormalised(q6.data(), vqb, 0.5));
+    std::unique_ptr<ceres::CostFunction> a(MakeAutoDiff(LevelSetNormalised(p6.data(), vp, 0.5, 1.0)));
+    std::unique_ptr<ceres::CostFunction> b(MakeAutoDiff(LevelSetNormalised(q6.data(), vqb, 0.5, 1.0)));
     EXPECT_NEAR(Norm(Evaluate(*a, values)), Norm(Evaluate(*b, values)), 1e-10);
     EXPECT_GT(Norm(Evaluate(*a, values)), 1e-6);
   }
   // Constant g: finite (regularised), ‖r‖ = sqrt(A/A_Φ).
   const std::vector<double> c6 = {0, 0, 1, 0, 0, 1};
   const double v2[2] = {1, 0};
-  std::unique_ptr<ceres::CostFunction> cost(MakeLevelSetNormalised(c6.data(), v2, 1.0));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(LevelSetNormalised(c6.data(), v2, 1.0, 1.0)));
   ExpectFiniteEverywhere(*cost, {{2.0}, {2.0}, {2.0}});
   EXPECT_NEAR(Norm(Evaluate(*cost, {{2.0}, {2.0}, {2.0}})), std::sqrt(0.5), 1e-12);
 }
@@ -462,8 +463,8 @@ TEST(LevelSetConjugacy, PrincipalLevelSetsAreConjugateAndTheAnalyticValue) {
   const std::vector<double> c6 = Corners6(p);
   const Blocks g = Linear(p, Vec2(1, 0), 0.0), h = Linear(p, Vec2(0, 1), 0.0);
   const double diag[3] = {1.5, 0.0, -0.7}, off[3] = {1.5, 0.4, -0.7};
-  std::unique_ptr<ceres::CostFunction> c1(MakeLevelSetConjugacy(c6.data(), diag));
-  std::unique_ptr<ceres::CostFunction> c2(MakeLevelSetConjugacy(c6.data(), off));
+  std::unique_ptr<ceres::CostFunction> c1(MakeAutoDiff(LevelSetConjugacy(c6.data(), diag, 1.0)));
+  std::unique_ptr<ceres::CostFunction> c2(MakeAutoDiff(LevelSetConjugacy(c6.data(), off, 1.0)));
   const Blocks all = {g[0], g[1], g[2], h[0], h[1], h[2]};
   EXPECT_NEAR(Evaluate(*c1, all)[0], 0.0, kTolerance);
   EXPECT_NEAR(Evaluate(*c2, all)[0], -std::sqrt(0.5) * 0.4, 1e-10);
@@ -481,7 +482,7 @@ TEST(LevelSetConjugacy, GradientsAndInvariances) {
     const double m[3] = {M(0, 0), M(0, 1), M(1, 1)};
     const std::vector<double> c6 = Corners6(p);
     const Blocks vals = {{g(rng)}, {g(rng)}, {g(rng)}, {g(rng)}, {g(rng)}, {g(rng)}};
-    std::unique_ptr<ceres::CostFunction> cost(MakeLevelSetConjugacy(c6.data(), m));
+    std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(LevelSetConjugacy(c6.data(), m, 1.0)));
     ExpectGradientsMatch(*cost, vals);
     const double before = Evaluate(*cost, vals)[0];
     // Rotated frame: corners turn by φ, M → R M Rᵀ in the new coordinates.
@@ -491,14 +492,14 @@ TEST(LevelSetConjugacy, GradientsAndInvariances) {
     const Eigen::Matrix2d Mq = Rot(phi) * M * Rot(phi).transpose();
     const double mq[3] = {Mq(0, 0), Mq(0, 1), Mq(1, 1)};
     const std::vector<double> q6 = Corners6(q);
-    std::unique_ptr<ceres::CostFunction> turned(MakeLevelSetConjugacy(q6.data(), mq));
+    std::unique_ptr<ceres::CostFunction> turned(MakeAutoDiff(LevelSetConjugacy(q6.data(), mq, 1.0)));
     EXPECT_NEAR(before, Evaluate(*turned, vals)[0], 1e-10);
     // Scaled by k: M/k, g and h times k.
     std::vector<Vec2> r = p;
     for (Vec2& x : r) x *= k;
     const double mr[3] = {m[0] / k, m[1] / k, m[2] / k};
     const std::vector<double> r6 = Corners6(r);
-    std::unique_ptr<ceres::CostFunction> scaled(MakeLevelSetConjugacy(r6.data(), mr));
+    std::unique_ptr<ceres::CostFunction> scaled(MakeAutoDiff(LevelSetConjugacy(r6.data(), mr, 1.0)));
     Blocks kv = vals;
     for (auto& b : kv) b[0] *= k;
     EXPECT_NEAR(before, Evaluate(*scaled, kv)[0], 1e-8);
@@ -509,13 +510,13 @@ TEST(LevelSetConjugacy, GradientsAndInvariances) {
   // Constant g: finite.
   const std::vector<double> c6 = {0, 0, 1, 0, 0, 1};
   const double m[3] = {1, 0.2, 0.5};
-  std::unique_ptr<ceres::CostFunction> cost(MakeLevelSetConjugacy(c6.data(), m));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(LevelSetConjugacy(c6.data(), m, 1.0)));
   ExpectFiniteEverywhere(*cost, {{1.0}, {1.0}, {1.0}, {0.0}, {1.0}, {2.0}});
 }
 
 TEST(LevelSetJump, BothSignsValuesAndGradients) {
-  std::unique_ptr<ceres::CostFunction> minus(MakeLevelSetJump(-1, 0.5));
-  std::unique_ptr<ceres::CostFunction> plus(MakeLevelSetJump(+1, 0.5));
+  std::unique_ptr<ceres::CostFunction> minus(MakeAutoDiff(LevelSetJump(-1, 0.5)));
+  std::unique_ptr<ceres::CostFunction> plus(MakeAutoDiff(LevelSetJump(+1, 0.5)));
   // g_left = α − g_right: 3 = 5 − 2.
   EXPECT_NEAR(Evaluate(*minus, {{3.0}, {2.0}, {5.0}})[0], 0.0, kTolerance);
   EXPECT_NEAR(Evaluate(*minus, {{3.0}, {2.0}, {4.0}})[0], 0.5, kTolerance);
@@ -529,8 +530,8 @@ TEST(LevelSetJump, BothSignsValuesAndGradients) {
 }
 
 TEST(LevelSetBranchPoint, SourceVertexOfAHalfSingularityCut) {
-  std::unique_ptr<ceres::CostFunction> half(MakeLevelSetBranchPoint(-1, 2.0));
-  std::unique_ptr<ceres::CostFunction> whole(MakeLevelSetBranchPoint(+1, 2.0));
+  std::unique_ptr<ceres::CostFunction> half(MakeAutoDiff(LevelSetBranchPoint(-1, 2.0)));
+  std::unique_ptr<ceres::CostFunction> whole(MakeAutoDiff(LevelSetBranchPoint(+1, 2.0)));
   // g(v0) = α/2.
   EXPECT_NEAR(Evaluate(*half, {{1.5}, {3.0}})[0], 0.0, kTolerance);
   EXPECT_NEAR(Evaluate(*half, {{1.0}, {3.0}})[0], -2.0, kTolerance);

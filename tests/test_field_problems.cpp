@@ -31,7 +31,7 @@
 #include "fields/field_io.h"
 #include "fields/triangle_surfaces.h"
 #include "mesh/generators.h"
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/io.h"
 #include "problems/field_pipeline.h"
 #include "problems/run.h"

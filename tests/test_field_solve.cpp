@@ -26,6 +26,7 @@
 #include <gtest/gtest.h>
 
 #include "energies/level_set_alignment.h"
+#include "energies/autodiff.h"
 #include "energies/level_set_jump.h"
 #include "energies/tcd_dirichlet.h"
 #include "energies/tcd_prescribed_direction.h"
@@ -91,7 +92,7 @@ TEST(FieldSolve, DirichletContinuesAParallelFieldWithAnyFrames) {
     std::vector<std::array<double, 2>> z(mesh.number_of_faces(), {1.0, 0.0});
     ceres::Problem problem;
     for (const EdgeTransport& t : tr)
-      problem.AddResidualBlock(MakeTcdDirichlet(t.angle, t.weight), nullptr, z[t.f.idx()].data(),
+      problem.AddResidualBlock(MakeAutoDiff(TcdDirichlet(t.angle, t.weight)), nullptr, z[t.f.idx()].data(),
                                z[t.g.idx()].data());
     // Boundary faces hold the field (ρ = 0.4), the rest starts at e1.
     int fixed = 0;
@@ -135,10 +136,10 @@ TEST(FieldSolve, DirichletAndTransversalityReachThePrincipalDirections) {
   for (auto& x : z) x = {1 + u(rng), u(rng)};
   ceres::Problem problem;
   for (const EdgeTransport& t : tr)
-    problem.AddResidualBlock(MakeTcdDirichlet(t.angle, t.weight), nullptr, z[t.f.idx()].data(),
+    problem.AddResidualBlock(MakeAutoDiff(TcdDirichlet(t.angle, t.weight)), nullptr, z[t.f.idx()].data(),
                              z[t.g.idx()].data());
   for (auto& x : z)
-    problem.AddResidualBlock(MakeTcdTransversality(), new ceres::ScaledLoss(nullptr, 0.01, ceres::TAKE_OWNERSHIP),
+    problem.AddResidualBlock(MakeAutoDiff(TcdTransversality()), new ceres::ScaledLoss(nullptr, 0.01, ceres::TAKE_OWNERSHIP),
                              x.data());
   const ceres::Solver::Summary summary = Solve(&problem);
   std::vector<Vec2> zn;
@@ -193,12 +194,12 @@ TEST(FieldSolve, PrescribedDirectionIsMetAndTheFieldStaysSmooth) {
   std::vector<std::array<double, 2>> z(mesh.number_of_faces(), {1.0, 0.0});
   ceres::Problem problem;
   for (const EdgeTransport& t : tr)
-    problem.AddResidualBlock(MakeTcdDirichlet(t.angle, t.weight), nullptr, z[t.f.idx()].data(),
+    problem.AddResidualBlock(MakeAutoDiff(TcdDirichlet(t.angle, t.weight)), nullptr, z[t.f.idx()].data(),
                              z[t.g.idx()].data());
   for (auto& x : z)
-    problem.AddResidualBlock(MakeTcdTransversality(), new ceres::ScaledLoss(nullptr, 1e-3, ceres::TAKE_OWNERSHIP),
+    problem.AddResidualBlock(MakeAutoDiff(TcdTransversality()), new ceres::ScaledLoss(nullptr, 1e-3, ceres::TAKE_OWNERSHIP),
                              x.data());
-  problem.AddResidualBlock(MakeTcdPrescribedDirection(m, dir), new ceres::ScaledLoss(nullptr, 1e4, ceres::TAKE_OWNERSHIP),
+  problem.AddResidualBlock(MakeAutoDiff(CheckedTcdPrescribedDirection(m, dir)), new ceres::ScaledLoss(nullptr, 1e4, ceres::TAKE_OWNERSHIP),
                            z[target.idx()].data());
   Solve(&problem);
   const ConjugatePair pair = ConjugatePairOf(ct.M, Vec2(z[target.idx()][0], z[target.idx()][1]));
@@ -261,18 +262,18 @@ TEST(FieldSolve, LevelSetsAcrossASeamGiveTheCircumferenceAndTheGrid) {
     const HalfedgeIndex h0 = mesh.halfedge(f), h1 = mesh.next(h0), h2 = mesh.next(h1);
     const int k0 = cut.corner_wedge[h0.idx()], k1 = cut.corner_wedge[h1.idx()],
               k2 = cut.corner_wedge[h2.idx()];
-    problem.AddResidualBlock(MakeLevelSetAlignment(corners, vb, 1.0 / area), nullptr, &g[k0],
+    problem.AddResidualBlock(MakeAutoDiff(LevelSetAlignment(corners, vb, 1.0 / area)), nullptr, &g[k0],
                              &g[k1], &g[k2]);
-    problem.AddResidualBlock(MakeLevelSetAlignment(corners, wb, 1.0 / area), nullptr, &h[k0],
+    problem.AddResidualBlock(MakeAutoDiff(LevelSetAlignment(corners, wb, 1.0 / area)), nullptr, &h[k0],
                              &h[k1], &h[k2]);
   }
   for (const JumpRelation& r : cut.relations) {
     ASSERT_NE(r.left_wedge, r.right_wedge);
     auto* loss = new ceres::ScaledLoss(nullptr, 1e4, ceres::TAKE_OWNERSHIP);
-    problem.AddResidualBlock(MakeLevelSetJump(ov.chain_sign[r.chain], 1.0), loss, &g[r.left_wedge],
+    problem.AddResidualBlock(MakeAutoDiff(LevelSetJump(ov.chain_sign[r.chain], 1.0)), loss, &g[r.left_wedge],
                              &g[r.right_wedge], &alpha_g);
     auto* loss_h = new ceres::ScaledLoss(nullptr, 1e4, ceres::TAKE_OWNERSHIP);
-    problem.AddResidualBlock(MakeLevelSetJump(ow.chain_sign[r.chain], 1.0), loss_h,
+    problem.AddResidualBlock(MakeAutoDiff(LevelSetJump(ow.chain_sign[r.chain], 1.0)), loss_h,
                              &h[r.left_wedge], &h[r.right_wedge], &alpha_h);
   }
   problem.SetParameterBlockConstant(&g[0]);  // g and h up to constants

@@ -27,7 +27,7 @@
 
 #include "mesh/grid_mesh.h"
 #include "mesh/grid_metrics.h"
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "surfaces/force_directed.h"
 #include "surfaces/grid.h"
 #include "surfaces/grid_quality.h"

@@ -10,7 +10,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/io.h"
 #include "problems/spec.h"
 

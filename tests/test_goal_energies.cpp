@@ -24,6 +24,7 @@
 #include <gtest/gtest.h>
 
 #include "energies/bending.h"
+#include "energies/autodiff.h"
 #include "energies/conical.h"
 #include "energies/laplacian.h"
 #include "energies/load.h"
@@ -35,6 +36,13 @@
 
 namespace archgeo {
 namespace {
+
+// The spring term's residual (energies/spring.cpp): the zero-length spring
+// at rest length 0.
+ceres::CostFunction* MakeSpring(double rest_length, double inv_length) {
+  if (rest_length == 0.0) return MakeAutoDiff(ZeroLengthSpring(inv_length));
+  return MakeAutoDiff(Spring(rest_length, inv_length));
+}
 
 using namespace energy_checks;
 
@@ -155,7 +163,7 @@ TEST(Shear, GradientMatchesNumeric) {
   for (int i = 0; i < kNumSamples; ++i) {
     std::vector<Vec3> q = RandomStar(rng, 4);
     q.erase(q.begin());
-    std::unique_ptr<ceres::CostFunction> cost(MakeShear(0.7));
+    std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(Shear(0.7)));
     ExpectGradientsMatch(*cost, ToBlocks(q));
   }
 }
@@ -165,26 +173,26 @@ TEST(Shear, KnownValues) {
   std::mt19937 rng(kSeed + 11);
   const std::vector<Vec3> rectangle = {Vec3(0, 0, 0), Vec3(3, 0, 0), Vec3(3, 1, 0), Vec3(0, 1, 0)};
   EXPECT_NEAR(
-      Residual(MakeShear(1.0), Moved(rectangle, RandomRotation(rng), RandomVec(rng, 5.0)))[0], 0.0,
+      Residual(MakeAutoDiff(Shear(1.0)), Moved(rectangle, RandomRotation(rng), RandomVec(rng, 5.0)))[0], 0.0,
       kTolerance);
   // A rhombus with diagonals 2 (b0b2) and 1 (b1b3), L = 1.5 (their mean):
   // r = (4 − 1)/(2·2.25) = 2/3 = (2 − 1)/1.5, the relative difference.
   const std::vector<Vec3> rhombus = {Vec3(-1, 0, 0), Vec3(0, -0.5, 0), Vec3(1, 0, 0),
                                      Vec3(0, 0.5, 0)};
-  EXPECT_NEAR(Residual(MakeShear(1.0 / 1.5), rhombus)[0], 2.0 / 3.0, 1e-15);
+  EXPECT_NEAR(Residual(MakeAutoDiff(Shear(1.0 / 1.5)), rhombus)[0], 2.0 / 3.0, 1e-15);
   // Relabelling: shift by one flips the sign, by two keeps it, reversal keeps it.
   const auto& q = rhombus;
-  EXPECT_NEAR(Residual(MakeShear(1.0 / 1.5), {q[1], q[2], q[3], q[0]})[0], -2.0 / 3.0, 1e-15);
-  EXPECT_NEAR(Residual(MakeShear(1.0 / 1.5), {q[2], q[3], q[0], q[1]})[0], 2.0 / 3.0, 1e-15);
-  EXPECT_NEAR(Residual(MakeShear(1.0 / 1.5), {q[0], q[3], q[2], q[1]})[0], 2.0 / 3.0, 1e-15);
+  EXPECT_NEAR(Residual(MakeAutoDiff(Shear(1.0 / 1.5)), {q[1], q[2], q[3], q[0]})[0], -2.0 / 3.0, 1e-15);
+  EXPECT_NEAR(Residual(MakeAutoDiff(Shear(1.0 / 1.5)), {q[2], q[3], q[0], q[1]})[0], 2.0 / 3.0, 1e-15);
+  EXPECT_NEAR(Residual(MakeAutoDiff(Shear(1.0 / 1.5)), {q[0], q[3], q[2], q[1]})[0], 2.0 / 3.0, 1e-15);
 }
 
 TEST(Shear, DegenerateInputsAreFinite) {
   const Vec3 o(1, 2, 3), x(1, 0, 0);
-  std::unique_ptr<ceres::CostFunction> cost(MakeShear(1.0));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(Shear(1.0)));
   ExpectFiniteEverywhere(*cost, ToBlocks({o, o, o, o}));
   ExpectFiniteEverywhere(*cost, ToBlocks({o, o + x, o + 2 * x, o + 3 * x}));
-  EXPECT_EQ(Residual(MakeShear(1.0), {o, o, o, o})[0], 0.0);
+  EXPECT_EQ(Residual(MakeAutoDiff(Shear(1.0)), {o, o, o, o})[0], 0.0);
 }
 
 TEST(Shear, InvariantUnderRigidMotionAndScaling) {
@@ -192,11 +200,11 @@ TEST(Shear, InvariantUnderRigidMotionAndScaling) {
   for (int i = 0; i < kNumSamples; ++i) {
     std::vector<Vec3> q = RandomStar(rng, 4);
     q.erase(q.begin());
-    const double r = Residual(MakeShear(0.8), q)[0];
-    EXPECT_NEAR(Residual(MakeShear(0.8), Moved(q, RandomRotation(rng), RandomVec(rng, 10.0)))[0], r,
+    const double r = Residual(MakeAutoDiff(Shear(0.8)), q)[0];
+    EXPECT_NEAR(Residual(MakeAutoDiff(Shear(0.8)), Moved(q, RandomRotation(rng), RandomVec(rng, 10.0)))[0], r,
                 kTolerance);
     for (double s : {1e-3, 0.37, 1e3}) {
-      EXPECT_NEAR(Residual(MakeShear(0.8 / s), Scaled(q, s))[0], r, kTolerance);
+      EXPECT_NEAR(Residual(MakeAutoDiff(Shear(0.8 / s)), Scaled(q, s))[0], r, kTolerance);
     }
   }
 }
@@ -210,7 +218,7 @@ TEST(Bending, GradientMatchesNumeric) {
     const Vec3 v = RandomVec(rng, 5.0);
     const Vec3 u = v - Vec3(1, 0, 0) + RandomVec(rng, 0.6);
     const Vec3 w = v + Vec3(1, 0, 0) + RandomVec(rng, 0.6);
-    std::unique_ptr<ceres::CostFunction> cost(MakeBending(1.0));
+    std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(Bending(1.0)));
     ExpectGradientsMatch(*cost, ToBlocks({u, v, w}));
   }
 }
@@ -219,40 +227,40 @@ TEST(Bending, KnownValues) {
   const Vec3 v(1, 1, 1), x(1, 0, 0), y(0, 1, 0);
   // Straight, unequal edges: r = 0 (the term does not equalise lengths) up
   // to the regularisation, ½(εL/0.5)² = 2e-12 for the short edge.
-  EXPECT_NEAR(Norm(Residual(MakeBending(1.0), {v - 0.5 * x, v, v + 3 * x})), 0.0, 3e-12);
+  EXPECT_NEAR(Norm(Residual(MakeAutoDiff(Bending(1.0)), {v - 0.5 * x, v, v + 3 * x})), 0.0, 3e-12);
   // Turning angle θ: |r| = 2 sin(θ/2).
   for (double theta : {0.1, M_PI / 2, 2.0, 3.0}) {
     const Vec3 w = v + 2.0 * (std::cos(theta) * x + std::sin(theta) * y);
-    EXPECT_NEAR(Norm(Residual(MakeBending(1.0), {v - x, v, w})), 2 * std::sin(theta / 2), 1e-10)
+    EXPECT_NEAR(Norm(Residual(MakeAutoDiff(Bending(1.0)), {v - x, v, w})), 2 * std::sin(theta / 2), 1e-10)
         << theta;
   }
   // Folded back (θ = π): |r| = 2, the maximum — no false zero as with the
   // cross product of the edges.
-  EXPECT_NEAR(Norm(Residual(MakeBending(1.0), {v - x, v, v - 2 * x})), 2.0, 1e-10);
+  EXPECT_NEAR(Norm(Residual(MakeAutoDiff(Bending(1.0)), {v - x, v, v - 2 * x})), 2.0, 1e-10);
 }
 
 TEST(Bending, DegenerateInputsAreFinite) {
   const Vec3 v(1, 1, 1), x(1, 0, 0);
-  std::unique_ptr<ceres::CostFunction> cost(MakeBending(1.0));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(Bending(1.0)));
   ExpectFiniteEverywhere(*cost, ToBlocks({v, v, v + x}));
   ExpectFiniteEverywhere(*cost, ToBlocks({v - x, v, v}));
   ExpectFiniteEverywhere(*cost, ToBlocks({v, v, v}));
   // A collapsed edge has no direction: r = the other unit direction.
-  EXPECT_NEAR(Norm(Residual(MakeBending(1.0), {v, v, v + x})), 1.0, 1e-10);
+  EXPECT_NEAR(Norm(Residual(MakeAutoDiff(Bending(1.0)), {v, v, v + x})), 1.0, 1e-10);
 }
 
 TEST(Bending, InvariantUnderRigidMotionScalingAndReversal) {
   std::mt19937 rng(kSeed + 21);
   for (int i = 0; i < kNumSamples; ++i) {
     const std::vector<Vec3> t = {RandomVec(rng, 2.0), RandomVec(rng, 2.0), RandomVec(rng, 2.0)};
-    const double r = Norm(Residual(MakeBending(0.5), t));
-    EXPECT_NEAR(Norm(Residual(MakeBending(0.5), Moved(t, RandomRotation(rng), RandomVec(rng, 10)))),
+    const double r = Norm(Residual(MakeAutoDiff(Bending(0.5)), t));
+    EXPECT_NEAR(Norm(Residual(MakeAutoDiff(Bending(0.5)), Moved(t, RandomRotation(rng), RandomVec(rng, 10)))),
                 r, kTolerance);
     for (double s : {1e-3, 0.37, 1e3}) {
-      EXPECT_NEAR(Norm(Residual(MakeBending(0.5 / s), Scaled(t, s))), r, kTolerance);
+      EXPECT_NEAR(Norm(Residual(MakeAutoDiff(Bending(0.5 / s)), Scaled(t, s))), r, kTolerance);
     }
-    const auto forward = AsVec(Residual(MakeBending(0.5), t));
-    const auto reversed = AsVec(Residual(MakeBending(0.5), {t[2], t[1], t[0]}));
+    const auto forward = AsVec(Residual(MakeAutoDiff(Bending(0.5)), t));
+    const auto reversed = AsVec(Residual(MakeAutoDiff(Bending(0.5)), {t[2], t[1], t[0]}));
     EXPECT_NEAR((forward - reversed).norm(), 0.0, kTolerance);
   }
 }
@@ -273,7 +281,7 @@ double ConicalByAcos(const std::vector<Vec3>& s) {
 TEST(Conical, GradientMatchesNumeric) {
   std::mt19937 rng(kSeed + 30);
   for (int i = 0; i < kNumSamples; ++i) {
-    std::unique_ptr<ceres::CostFunction> cost(MakeConical(1.0));
+    std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(Conical(1.0)));
     ExpectGradientsMatch(*cost, ToBlocks(RandomStar(rng, 4)));
   }
 }
@@ -285,24 +293,24 @@ TEST(Conical, KnownValues) {
   for (double phi : {1.2 * M_PI, 1.5 * M_PI, 1.9 * M_PI}) {
     const std::vector<Vec3> s = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 2, 0), Vec3(-0.5, 0, 0),
                                  Vec3(std::cos(phi), std::sin(phi), 0)};
-    EXPECT_NEAR(Residual(MakeConical(inv_length), s)[0], 2 * phi - 3 * M_PI, 1e-12) << phi;
+    EXPECT_NEAR(Residual(MakeAutoDiff(Conical(inv_length)), s)[0], 2 * phi - 3 * M_PI, 1e-12) << phi;
   }
   // A star symmetric about the plane x = 0 through v, w2 and w4 (the star of
   // a surface of revolution's meridian/parallel net): ω1 = ω2, ω3 = ω4, r = 0.
   const std::vector<Vec3> symmetric = {Vec3(0, 0, 0), Vec3(1, 0.2, 0.3), Vec3(0, 1, -0.4),
                                        Vec3(-1, 0.2, 0.3), Vec3(0, -1.3, -0.2)};
-  EXPECT_NEAR(Residual(MakeConical(inv_length), symmetric)[0], 0.0, 1e-14);
+  EXPECT_NEAR(Residual(MakeAutoDiff(Conical(inv_length)), symmetric)[0], 0.0, 1e-14);
   // Random stars: equal to the acos formula.
   std::mt19937 rng(kSeed + 31);
   for (int i = 0; i < kNumSamples; ++i) {
     const auto s = RandomStar(rng, 4);
-    EXPECT_NEAR(Residual(MakeConical(inv_length), s)[0], ConicalByAcos(s), 1e-9);
+    EXPECT_NEAR(Residual(MakeAutoDiff(Conical(inv_length)), s)[0], ConicalByAcos(s), 1e-9);
   }
 }
 
 TEST(Conical, DegenerateInputsAreFinite) {
   const Vec3 o(0, 0, 0), x(1, 0, 0), y(0, 1, 0);
-  std::unique_ptr<ceres::CostFunction> cost(MakeConical(1.0));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(Conical(1.0)));
   ExpectFiniteEverywhere(*cost, ToBlocks({o, o, y, -x, -y}));      // w1 = v
   ExpectFiniteEverywhere(*cost, ToBlocks({o, x, 2 * x, -x, -y}));  // ω1 = 0
   ExpectFiniteEverywhere(*cost, ToBlocks({o, x, -x, x, -x}));      // all collinear
@@ -313,16 +321,16 @@ TEST(Conical, InvariantUnderRigidMotionScalingAndRelabelling) {
   std::mt19937 rng(kSeed + 32);
   for (int i = 0; i < kNumSamples; ++i) {
     const auto s = RandomStar(rng, 4);
-    const double r = Residual(MakeConical(1.0), s)[0];
-    EXPECT_NEAR(Residual(MakeConical(1.0), Moved(s, RandomRotation(rng), RandomVec(rng, 10)))[0], r,
+    const double r = Residual(MakeAutoDiff(Conical(1.0)), s)[0];
+    EXPECT_NEAR(Residual(MakeAutoDiff(Conical(1.0)), Moved(s, RandomRotation(rng), RandomVec(rng, 10)))[0], r,
                 1e-9);
     for (double scale : {1e-3, 0.37, 1e3}) {
-      EXPECT_NEAR(Residual(MakeConical(1.0 / scale), Scaled(s, scale))[0], r, 1e-9);
+      EXPECT_NEAR(Residual(MakeAutoDiff(Conical(1.0 / scale)), Scaled(s, scale))[0], r, 1e-9);
     }
-    EXPECT_NEAR(Residual(MakeConical(1.0), {s[0], s[2], s[3], s[4], s[1]})[0], -r, 1e-12);
-    EXPECT_NEAR(Residual(MakeConical(1.0), {s[0], s[3], s[4], s[1], s[2]})[0], r, 1e-12);
-    EXPECT_NEAR(Residual(MakeConical(1.0), {s[0], s[1], s[4], s[3], s[2]})[0], -r, 1e-12);
-    EXPECT_NEAR(Residual(MakeConical(1.0), {s[0], s[4], s[3], s[2], s[1]})[0], r, 1e-12);
+    EXPECT_NEAR(Residual(MakeAutoDiff(Conical(1.0)), {s[0], s[2], s[3], s[4], s[1]})[0], -r, 1e-12);
+    EXPECT_NEAR(Residual(MakeAutoDiff(Conical(1.0)), {s[0], s[3], s[4], s[1], s[2]})[0], r, 1e-12);
+    EXPECT_NEAR(Residual(MakeAutoDiff(Conical(1.0)), {s[0], s[1], s[4], s[3], s[2]})[0], -r, 1e-12);
+    EXPECT_NEAR(Residual(MakeAutoDiff(Conical(1.0)), {s[0], s[4], s[3], s[2], s[1]})[0], r, 1e-12);
   }
 }
 
@@ -340,7 +348,7 @@ TEST(LoadEquilibrium, GradientMatchesNumeric) {
       l0.push_back(j % 2 == 0 ? 0.0 : 0.8);  // zero-length and length springs
     }
     const double f[3] = {0.1, -0.2, 1.0};
-    std::unique_ptr<ceres::CostFunction> cost(MakeLoadEquilibrium(f, k, l0, 0.9));
+    std::unique_ptr<ceres::CostFunction> cost(MakeStarAutoDiff(LoadEquilibrium(f, k, l0, 0.9)));
     ExpectGradientsMatch(*cost, ToBlocks(star));
   }
 }
@@ -357,8 +365,8 @@ TEST(LoadEquilibrium, KnownValues) {
                              Vec3(0, -h, 0)};
   };
   const double z0 = -P / (4 * k);
-  EXPECT_NEAR(Norm(Residual(MakeLoadEquilibrium(f, stiff, zero, 1.0 / P), grid(z0))), 0.0, 1e-15);
-  const auto r = AsVec(Residual(MakeLoadEquilibrium(f, stiff, zero, 1.0 / P), grid(0.0)));
+  EXPECT_NEAR(Norm(Residual(MakeStarAutoDiff(LoadEquilibrium(f, stiff, zero, 1.0 / P)), grid(z0))), 0.0, 1e-15);
+  const auto r = AsVec(Residual(MakeStarAutoDiff(LoadEquilibrium(f, stiff, zero, 1.0 / P)), grid(0.0)));
   EXPECT_NEAR((r - Vec3(0, 0, -1)).norm(), 0.0, 1e-15);  // the whole load, over F = P
   // Length springs L0: vertical balance 4k(√(h² + z²) − L0) z/√(h² + z²) = P,
   // solved for z by bisection (the horizontal parts cancel by symmetry).
@@ -373,14 +381,14 @@ TEST(LoadEquilibrium, KnownValues) {
     const double mid = 0.5 * (lo + hi);
     (vertical(mid) > 0 ? lo : hi) = mid;
   }
-  EXPECT_NEAR(Norm(Residual(MakeLoadEquilibrium(f, stiff, rest, 1.0 / P), grid(lo))), 0.0, 1e-12);
+  EXPECT_NEAR(Norm(Residual(MakeStarAutoDiff(LoadEquilibrium(f, stiff, rest, 1.0 / P)), grid(lo))), 0.0, 1e-12);
 }
 
 TEST(LoadEquilibrium, DegenerateInputsAreFinite) {
   const Vec3 o(1, 1, 1), x(1, 0, 0);
   const double f[3] = {0, 0, 1};
   std::unique_ptr<ceres::CostFunction> cost(
-      MakeLoadEquilibrium(f, {1.0, 1.0, 2.0}, {1.0, 0.0, 0.5}, 1.0));
+      MakeStarAutoDiff(LoadEquilibrium(f, {1.0, 1.0, 2.0}, {1.0, 0.0, 0.5}, 1.0)));
   ExpectFiniteEverywhere(*cost, ToBlocks({o, o, o, o}));
   ExpectFiniteEverywhere(*cost, ToBlocks({o, o, o + x, o - x}));
 }
@@ -391,10 +399,10 @@ TEST(LoadEquilibrium, InvariantUnderRigidMotionScalingAndOrder) {
     const auto star = RandomStar(rng, 5);
     const std::vector<double> k = {1.0, 2.0, 0.5, 1.5, 3.0}, l0 = {0.0, 0.9, 0.0, 1.1, 0.7};
     const Vec3 force(0.2, 0.1, -1.0);
-    const double r = Norm(Residual(MakeLoadEquilibrium(force.data(), k, l0, 0.8), star));
+    const double r = Norm(Residual(MakeStarAutoDiff(LoadEquilibrium(force.data(), k, l0, 0.8)), star));
     const Eigen::Matrix3d rot = RandomRotation(rng);
     const Vec3 rotated = rot * force;
-    EXPECT_NEAR(Norm(Residual(MakeLoadEquilibrium(rotated.data(), k, l0, 0.8),
+    EXPECT_NEAR(Norm(Residual(MakeStarAutoDiff(LoadEquilibrium(rotated.data(), k, l0, 0.8)),
                               Moved(star, rot, RandomVec(rng, 10.0)))),
                 r, kTolerance);
     for (double s : {1e-3, 0.37, 1e3}) {
@@ -403,13 +411,12 @@ TEST(LoadEquilibrium, InvariantUnderRigidMotionScalingAndOrder) {
         ks.push_back(k[j] / s);
         ls.push_back(l0[j] * s);
       }
-      EXPECT_NEAR(Norm(Residual(MakeLoadEquilibrium(force.data(), ks, ls, 0.8), Scaled(star, s))),
+      EXPECT_NEAR(Norm(Residual(MakeStarAutoDiff(LoadEquilibrium(force.data(), ks, ls, 0.8)), Scaled(star, s))),
                   r, kTolerance);
     }
     // Neighbours (with their springs) in another order.
     const std::vector<Vec3> shuffled = {star[0], star[3], star[1], star[5], star[2], star[4]};
-    EXPECT_NEAR(Norm(Residual(MakeLoadEquilibrium(force.data(), {0.5, 1.0, 3.0, 2.0, 1.5},
-                                                  {0.0, 0.0, 0.7, 0.9, 1.1}, 0.8),
+    EXPECT_NEAR(Norm(Residual(MakeStarAutoDiff(LoadEquilibrium(force.data(), {0.5, 1.0, 3.0, 2.0, 1.5}, {0.0, 0.0, 0.7, 0.9, 1.1}, 0.8)),
                               shuffled)),
                 r, kTolerance);
   }
@@ -422,7 +429,7 @@ TEST(Laplacian, GradientMatchesNumeric) {
   std::mt19937 rng(kSeed + 50);
   for (int i = 0; i < kNumSamples; ++i) {
     const int n = 3 + i % 5;
-    std::unique_ptr<ceres::CostFunction> cost(MakeLaplacian(n, 0.6));
+    std::unique_ptr<ceres::CostFunction> cost(MakeStarAutoDiff(Laplacian(std::vector<double>(n, 1.0), 0.6)));
     ExpectGradientsMatch(*cost, ToBlocks(RandomStar(rng, n)));
   }
 }
@@ -430,19 +437,19 @@ TEST(Laplacian, GradientMatchesNumeric) {
 TEST(Laplacian, KnownValues) {
   // v = 0, neighbours (2,0,0), (0,2,0), (0,0,2): barycentre (2/3)(1,1,1).
   const std::vector<Vec3> s = {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 2, 0), Vec3(0, 0, 2)};
-  const auto r = AsVec(Residual(MakeLaplacian(3, 0.5), s));
+  const auto r = AsVec(Residual(MakeStarAutoDiff(Laplacian(std::vector<double>(3, 1.0), 0.5)), s));
   EXPECT_NEAR((r - Vec3(1, 1, 1) / 3).norm(), 0.0, 1e-15);
   // Weights 1, 1, 2: weighted barycentre (2, 2, 4)/4; their scale drops out.
-  const auto weighted = AsVec(Residual(MakeWeightedLaplacian({3, 3, 6}, 1.0), s));
+  const auto weighted = AsVec(Residual(MakeStarAutoDiff(Laplacian({3, 3, 6}, 1.0)), s));
   EXPECT_NEAR((weighted - Vec3(0.5, 0.5, 1.0)).norm(), 0.0, 1e-15);
   // v at the barycentre: r = 0.
-  EXPECT_NEAR(Norm(Residual(MakeLaplacian(3, 1.0), {Vec3(2, 2, 2) / 3, s[1], s[2], s[3]})), 0.0,
+  EXPECT_NEAR(Norm(Residual(MakeStarAutoDiff(Laplacian(std::vector<double>(3, 1.0), 1.0)), {Vec3(2, 2, 2) / 3, s[1], s[2], s[3]})), 0.0,
               1e-15);
 }
 
 TEST(Laplacian, DegenerateInputsAreFinite) {
   const Vec3 o(1, 1, 1);
-  std::unique_ptr<ceres::CostFunction> cost(MakeWeightedLaplacian({2.0, -0.5, 1.0}, 1.0));
+  std::unique_ptr<ceres::CostFunction> cost(MakeStarAutoDiff(Laplacian({2.0, -0.5, 1.0}, 1.0)));
   ExpectFiniteEverywhere(*cost, ToBlocks({o, o, o, o}));
 }
 
@@ -450,12 +457,12 @@ TEST(Laplacian, InvariantUnderRigidMotionAndScaling) {
   std::mt19937 rng(kSeed + 51);
   for (int i = 0; i < kNumSamples; ++i) {
     const auto s = RandomStar(rng, 6);
-    const double r = Norm(Residual(MakeLaplacian(6, 0.7), s));
+    const double r = Norm(Residual(MakeStarAutoDiff(Laplacian(std::vector<double>(6, 1.0), 0.7)), s));
     EXPECT_NEAR(
-        Norm(Residual(MakeLaplacian(6, 0.7), Moved(s, RandomRotation(rng), RandomVec(rng, 10.0)))),
+        Norm(Residual(MakeStarAutoDiff(Laplacian(std::vector<double>(6, 1.0), 0.7)), Moved(s, RandomRotation(rng), RandomVec(rng, 10.0)))),
         r, kTolerance);
     for (double scale : {1e-3, 0.37, 1e3}) {
-      EXPECT_NEAR(Norm(Residual(MakeLaplacian(6, 0.7 / scale), Scaled(s, scale))), r, kTolerance);
+      EXPECT_NEAR(Norm(Residual(MakeStarAutoDiff(Laplacian(std::vector<double>(6, 1.0), 0.7 / scale)), Scaled(s, scale))), r, kTolerance);
     }
   }
 }
@@ -474,7 +481,7 @@ TEST(MeanCurvatureFlow, GradientMatchesNumeric) {
   for (int i = 0; i < kNumSamples; ++i) {
     const int n = 4 + i % 4;
     const bool closed = i % 2 == 0;
-    std::unique_ptr<ceres::CostFunction> cost(MakeMeanCurvatureFlow(n, closed, 0.9));
+    std::unique_ptr<ceres::CostFunction> cost(MakeStarAutoDiff(MeanCurvatureFlow(n, closed, 0.9)));
     ExpectGradientsMatch(*cost, ToBlocks(RandomStar(rng, n)));
   }
 }
@@ -491,7 +498,7 @@ TEST(MeanCurvatureFlow, KnownValues) {
     }
     const double b = 2 * rho * std::sin(M_PI / n);
     const double s = std::hypot(h, rho * std::cos(M_PI / n));
-    const auto r = AsVec(Residual(MakeMeanCurvatureFlow(n, true, inv_length), star));
+    const auto r = AsVec(Residual(MakeStarAutoDiff(MeanCurvatureFlow(n, true, inv_length)), star));
     EXPECT_NEAR((r - Vec3(0, 0, -n * b * h / (2 * s)) * inv_length).norm(), 0.0, 1e-12) << n;
   }
   // The cotangent form ½ Σ (cot α + cot β)(w_j − v) / L is the same vector
@@ -504,7 +511,7 @@ TEST(MeanCurvatureFlow, KnownValues) {
     const std::vector<double> c = CotangentWeights(star[0].data(), RingPointers(star), closed);
     Vec3 expected = Vec3::Zero();
     for (int j = 0; j < n; ++j) expected += c[j] * (star[j + 1] - star[0]) * inv_length;
-    const auto r = AsVec(Residual(MakeMeanCurvatureFlow(n, closed, inv_length), star));
+    const auto r = AsVec(Residual(MakeStarAutoDiff(MeanCurvatureFlow(n, closed, inv_length)), star));
     EXPECT_NEAR((r - expected).norm(), 0.0, 1e-10) << i;
   }
   // A planar regular star with v at its centre: r = 0 (a critical point of
@@ -512,7 +519,7 @@ TEST(MeanCurvatureFlow, KnownValues) {
   std::vector<Vec3> hexagon = {Vec3(0, 0, 0)};
   for (int k = 0; k < 6; ++k)
     hexagon.push_back(Vec3(std::cos(M_PI * k / 3), std::sin(M_PI * k / 3), 0));
-  EXPECT_NEAR(Norm(Residual(MakeMeanCurvatureFlow(6, true, 1.0), hexagon)), 0.0, 1e-15);
+  EXPECT_NEAR(Norm(Residual(MakeStarAutoDiff(MeanCurvatureFlow(6, true, 1.0)), hexagon)), 0.0, 1e-15);
   for (double c : CotangentWeights(hexagon[0].data(), RingPointers(hexagon), true)) {
     EXPECT_NEAR(c, 1.0 / std::sqrt(3.0), 1e-15);
   }
@@ -520,7 +527,7 @@ TEST(MeanCurvatureFlow, KnownValues) {
 
 TEST(MeanCurvatureFlow, DegenerateInputsAreFinite) {
   const Vec3 o(0, 0, 0), x(1, 0, 0), y(0, 1, 0);
-  std::unique_ptr<ceres::CostFunction> cost(MakeMeanCurvatureFlow(4, true, 1.0));
+  std::unique_ptr<ceres::CostFunction> cost(MakeStarAutoDiff(MeanCurvatureFlow(4, true, 1.0)));
   ExpectFiniteEverywhere(*cost, ToBlocks({o, o, o, o, o}));
   ExpectFiniteEverywhere(*cost, ToBlocks({o, x, 2 * x, -x, y}));  // a needle triangle
   const std::vector<Vec3> collapsed = {o, o, o, o, o};
@@ -533,17 +540,17 @@ TEST(MeanCurvatureFlow, InvariantUnderRigidMotionScalingAndReversal) {
   std::mt19937 rng(kSeed + 62);
   for (int i = 0; i < kNumSamples; ++i) {
     const auto s = RandomStar(rng, 5);
-    const double r = Norm(Residual(MakeMeanCurvatureFlow(5, true, 0.7), s));
-    EXPECT_NEAR(Norm(Residual(MakeMeanCurvatureFlow(5, true, 0.7),
+    const double r = Norm(Residual(MakeStarAutoDiff(MeanCurvatureFlow(5, true, 0.7)), s));
+    EXPECT_NEAR(Norm(Residual(MakeStarAutoDiff(MeanCurvatureFlow(5, true, 0.7)),
                               Moved(s, RandomRotation(rng), RandomVec(rng, 10.0)))),
                 r, kTolerance);
     for (double scale : {1e-3, 0.37, 1e3}) {
-      EXPECT_NEAR(Norm(Residual(MakeMeanCurvatureFlow(5, true, 0.7 / scale), Scaled(s, scale))), r,
+      EXPECT_NEAR(Norm(Residual(MakeStarAutoDiff(MeanCurvatureFlow(5, true, 0.7 / scale)), Scaled(s, scale))), r,
                   kTolerance);
     }
-    const auto forward = AsVec(Residual(MakeMeanCurvatureFlow(5, true, 0.7), s));
+    const auto forward = AsVec(Residual(MakeStarAutoDiff(MeanCurvatureFlow(5, true, 0.7)), s));
     const auto reversed =
-        AsVec(Residual(MakeMeanCurvatureFlow(5, true, 0.7), {s[0], s[5], s[4], s[3], s[2], s[1]}));
+        AsVec(Residual(MakeStarAutoDiff(MeanCurvatureFlow(5, true, 0.7)), {s[0], s[5], s[4], s[3], s[2], s[1]}));
     EXPECT_NEAR((forward - reversed).norm(), 0.0, kTolerance);
   }
 }
@@ -558,7 +565,7 @@ std::shared_ptr<const CurvePolyline> LCurve(bool closed = false) {
 
 std::vector<double> OnCurveResidual(const std::shared_ptr<const CurvePolyline>& curve,
                                     double inv_length, const Vec3& v, double t) {
-  std::unique_ptr<ceres::CostFunction> cost(MakeOnCurve(curve, inv_length));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(OnCurve(curve, inv_length)));
   return Evaluate(*cost, {ToBlock(v), {t}});
 }
 
@@ -567,7 +574,7 @@ TEST(OnCurve, GradientMatchesNumeric) {
   std::uniform_real_distribution<double> along(0.1, 1.9);
   for (bool closed : {false, true}) {
     const auto curve = LCurve(closed);
-    std::unique_ptr<ceres::CostFunction> cost(MakeOnCurve(curve, 0.8));
+    std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(OnCurve(curve, 0.8)));
     for (int i = 0; i < kNumSamples; ++i) {
       // t inside a segment (away from the kinks at 2, 5 and, closed, 0 = Λ).
       const double t = along(rng) + (i % 2 == 0 ? 0.0 : 3.0);
@@ -628,7 +635,7 @@ TEST(OnCurve, InvariantUnderRigidMotionAndScaling) {
 TEST(OnCurve, DegenerateInputsAreFinite) {
   // Exactly at a kink and at the ends, and far outside an open curve.
   const auto curve = LCurve();
-  std::unique_ptr<ceres::CostFunction> cost(MakeOnCurve(curve, 1.0));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(OnCurve(curve, 1.0)));
   for (double t : {0.0, 2.0, 5.0, -100.0, 100.0}) {
     ExpectFiniteEverywhere(*cost, {ToBlock(Vec3(1, 1, 1)), {t}});
   }

@@ -23,6 +23,7 @@
 #include <gtest/gtest.h>
 
 #include "energies/anchor.h"
+#include "energies/autodiff.h"
 #include "energies/conical.h"
 #include "energies/load.h"
 #include "energies/on_curve.h"
@@ -105,8 +106,7 @@ void SolveNet(HangingNet* net, double k, double l0) {
     std::vector<double*> blocks = {PositionBlock(mesh, v)};
     for (VertexIndex w : ring) blocks.push_back(PositionBlock(mesh, w));
     problem.AddResidualBlock(
-        MakeLoadEquilibrium(net->loads[v.idx()].data(), std::vector<double>(ring.size(), k),
-                            std::vector<double>(ring.size(), l0), inv_force),
+        MakeStarAutoDiff(LoadEquilibrium(net->loads[v.idx()].data(), std::vector<double>(ring.size(), k), std::vector<double>(ring.size(), l0), inv_force)),
         nullptr, blocks);
   }
   for (VertexIndex v : mesh.vertices()) {
@@ -202,7 +202,7 @@ TEST(CurveSliding, SpringsSpreadVerticesEvenlyAndTheyStayOnTheCurve) {
     const double mean = SpreadOf(chords()).mean;
     ceres::Problem problem;
     for (int k = 0; k < m; ++k) {
-      problem.AddResidualBlock(MakeSpring(mean, 1.0 / mean), nullptr, x[k].data(),
+      problem.AddResidualBlock(MakeAutoDiff(Spring(mean, 1.0 / mean)), nullptr, x[k].data(),
                                x[(k + 1) % m].data());
     }
     for (int k = 0; k < m; ++k) problem.SetManifold(x[k].data(), MakeCurveManifold(curve));
@@ -234,9 +234,9 @@ TEST(ConicalTorus, NoisyPrincipalNetBecomesConicalPlanarWithConstantOffsets) {
     for (VertexIndex v : mesh.vertices()) {
       std::vector<double*> blocks = {PositionBlock(mesh, v)};
       for (VertexIndex w : Neighbours(mesh, v)) blocks.push_back(PositionBlock(mesh, w));
-      problem.AddResidualBlock(MakeConical(1.0 / edge), nullptr, blocks);
+      problem.AddResidualBlock(MakeAutoDiff(Conical(1.0 / edge)), nullptr, blocks);
       const Vec3 target = ToVec3(mesh.point(v));
-      problem.AddResidualBlock(MakeAnchor(target.data(), 1e-3 / edge), nullptr,
+      problem.AddResidualBlock(MakeAutoDiff(Anchor(target.data(), 1e-3 / edge)), nullptr,
                                PositionBlock(mesh, v));
     }
     for (FaceIndex f : mesh.faces()) {
@@ -244,7 +244,7 @@ TEST(ConicalTorus, NoisyPrincipalNetBecomesConicalPlanarWithConstantOffsets) {
       for (VertexIndex v : mesh.vertices_around_face(mesh.halfedge(f))) {
         quad.push_back(PositionBlock(mesh, v));
       }
-      problem.AddResidualBlock(MakePqDiagonal(1.0 / (1.4 * edge)), nullptr, quad);
+      problem.AddResidualBlock(MakeAutoDiff(PqDiagonal(1.0 / (1.4 * edge))), nullptr, quad);
     }
     Solve(&problem);
   }

@@ -21,7 +21,7 @@
 #include "mesh/elements.h"
 #include "mesh/generators.h"
 #include "mesh/goal_metrics.h"
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/io.h"
 #include "mesh/metrics.h"
 #include "mesh/reference.h"

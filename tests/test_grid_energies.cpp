@@ -27,6 +27,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/energy_checks.h"
+#include "energies/autodiff.h"
 
 #include "energies/grid_boundary.h"
 #include "energies/grid_equilaterality.h"
@@ -95,16 +96,16 @@ TEST(GridEnergies, GradientsMatchNumericDifferences) {
       const Stencil st = RandomStencil(s, rng);
       const double L = Length(s, st.l0, st.l1) / 2;
       SCOPED_TRACE(name + " sample " + std::to_string(sample));
-      std::unique_ptr<ceres::CostFunction> orthogonality(MakeGridOrthogonality(s, 1.0 / L));
+      std::unique_ptr<ceres::CostFunction> orthogonality(MakeAutoDiff(GridOrthogonality(s, 1.0 / L)));
       ExpectGridGradientsMatch(*orthogonality, {Block(st.l0), Block(st.l1), Block(st.t0), Block(st.t1)});
-      std::unique_ptr<ceres::CostFunction> equilaterality(MakeGridEquilaterality(s, L));
+      std::unique_ptr<ceres::CostFunction> equilaterality(MakeAutoDiff(GridEquilaterality(s, L)));
       ExpectGridGradientsMatch(*equilaterality, {Block(st.p), Block(st.l1)});
-      std::unique_ptr<ceres::CostFunction> quad(MakeGridQuadEquilaterality(s, 1.0 / L));
+      std::unique_ptr<ceres::CostFunction> quad(MakeAutoDiff(GridQuadEquilaterality(s, 1.0 / L)));
       ExpectGridGradientsMatch(*quad, {Block(st.p), Block(st.l1), Block(st.l1 + st.t1 - st.p),
                                        Block(st.t1)});
-      std::unique_ptr<ceres::CostFunction> boundary(MakeGridBoundary(s, 1.0 / L));
+      std::unique_ptr<ceres::CostFunction> boundary(MakeAutoDiff(GridBoundary(s, 1.0 / L)));
       ExpectGridGradientsMatch(*boundary, {Block(st.p), Block(st.l0), Block(st.l1), Block(st.t1)});
-      std::unique_ptr<ceres::CostFunction> fairness(MakeGridFairness(s, 1.0 / L));
+      std::unique_ptr<ceres::CostFunction> fairness(MakeAutoDiff(GridFairness(s, 1.0 / L)));
       ExpectGridGradientsMatch(*fairness, {Block(st.l0), Block(st.p), Block(st.l1)});
     }
   }
@@ -113,16 +114,16 @@ TEST(GridEnergies, GradientsMatchNumericDifferences) {
 TEST(GridEnergies, DegenerateStencilsStayFinite) {
   const Surface s = MakeSurface("torus");
   const Uv p(1.0, 2.0), q(1.2, 2.1);
-  std::unique_ptr<ceres::CostFunction> orthogonality(MakeGridOrthogonality(s, 1.0));
+  std::unique_ptr<ceres::CostFunction> orthogonality(MakeAutoDiff(GridOrthogonality(s, 1.0)));
   ExpectFiniteEverywhere(*orthogonality, {Block(p), Block(p), Block(q), Block(q)});  // a = b = 0
   ExpectFiniteEverywhere(*orthogonality, {Block(p), Block(p), Block(p), Block(q)});  // a = 0
-  std::unique_ptr<ceres::CostFunction> equilaterality(MakeGridEquilaterality(s, 1.0));
+  std::unique_ptr<ceres::CostFunction> equilaterality(MakeAutoDiff(GridEquilaterality(s, 1.0)));
   ExpectFiniteEverywhere(*equilaterality, {Block(p), Block(p)});
-  std::unique_ptr<ceres::CostFunction> quad(MakeGridQuadEquilaterality(s, 1.0));
+  std::unique_ptr<ceres::CostFunction> quad(MakeAutoDiff(GridQuadEquilaterality(s, 1.0)));
   ExpectFiniteEverywhere(*quad, {Block(p), Block(p), Block(p), Block(p)});  // a point
   for (double r : Evaluate(*quad, {Block(p), Block(p), Block(p), Block(p)})) EXPECT_EQ(r, 0.0);
   ExpectFiniteEverywhere(*quad, {Block(p), Block(p), Block(q), Block(q)});  // two sides 0
-  std::unique_ptr<ceres::CostFunction> boundary(MakeGridBoundary(s, 1.0));
+  std::unique_ptr<ceres::CostFunction> boundary(MakeAutoDiff(GridBoundary(s, 1.0)));
   ExpectFiniteEverywhere(*boundary, {Block(p), Block(q), Block(q), Block(p)});  // p1 = p2
   // At a = 0 the orthogonality residual is 0; at p1 = p2 the boundary one too.
   EXPECT_EQ(Evaluate(*orthogonality, {Block(p), Block(p), Block(p), Block(q)})[0], 0.0);
@@ -136,13 +137,13 @@ std::vector<double> AllResiduals(const Surface& s, const Stencil& st, double L) 
     std::unique_ptr<ceres::CostFunction> owned(cost);
     for (double x : Evaluate(*owned, blocks)) r.push_back(x);
   };
-  add(MakeGridOrthogonality(s, 1.0 / L), {Block(st.l0), Block(st.l1), Block(st.t0), Block(st.t1)});
-  add(MakeGridEquilaterality(s, L), {Block(st.p), Block(st.t1)});
-  add(MakeGridBoundary(s, 1.0 / L), {Block(st.p), Block(st.l0), Block(st.l1), Block(st.t1)});
-  add(MakeGridQuadEquilaterality(s, 1.0 / L), {Block(st.p), Block(st.l1), Block(st.t1 + st.l1 - st.p),
+  add(MakeAutoDiff(GridOrthogonality(s, 1.0 / L)), {Block(st.l0), Block(st.l1), Block(st.t0), Block(st.t1)});
+  add(MakeAutoDiff(GridEquilaterality(s, L)), {Block(st.p), Block(st.t1)});
+  add(MakeAutoDiff(GridBoundary(s, 1.0 / L)), {Block(st.p), Block(st.l0), Block(st.l1), Block(st.t1)});
+  add(MakeAutoDiff(GridQuadEquilaterality(s, 1.0 / L)), {Block(st.p), Block(st.l1), Block(st.t1 + st.l1 - st.p),
                                                Block(st.t1)});
   // Fairness: only its norm is invariant under rotation.
-  std::unique_ptr<ceres::CostFunction> fairness(MakeGridFairness(s, 1.0 / L));
+  std::unique_ptr<ceres::CostFunction> fairness(MakeAutoDiff(GridFairness(s, 1.0 / L)));
   r.push_back(AsVec(Evaluate(*fairness, {Block(st.t0), Block(st.p), Block(st.t1)})).norm());
   return r;
 }
@@ -195,11 +196,11 @@ TEST(GridEnergies, ShearedPlaneGridHasTheKnownAngle) {
   for (double degrees : {30.0, 60.0, 75.0, 90.0, 120.0}) {
     const double phi = degrees * M_PI / 180.0;
     const Uv p(2.0, 2.0), e(h * std::cos(phi), h * std::sin(phi));
-    std::unique_ptr<ceres::CostFunction> orthogonality(MakeGridOrthogonality(plane, 1.0 / L));
+    std::unique_ptr<ceres::CostFunction> orthogonality(MakeAutoDiff(GridOrthogonality(plane, 1.0 / L)));
     const double r = Evaluate(*orthogonality, {Block(p - Uv(h, 0)), Block(p + Uv(h, 0)),
                                                Block(p - e), Block(p + e)})[0];
     EXPECT_NEAR(r, std::cos(phi), 1e-10) << degrees;
-    std::unique_ptr<ceres::CostFunction> boundary(MakeGridBoundary(plane, 1.0 / L));
+    std::unique_ptr<ceres::CostFunction> boundary(MakeAutoDiff(GridBoundary(plane, 1.0 / L)));
     const double b = Evaluate(*boundary, {Block(p), Block(p - Uv(h, 0)), Block(p + Uv(h, 0)),
                                           Block(p + e)})[0];
     EXPECT_NEAR(b, h * std::cos(phi) / L, 1e-10) << degrees;
@@ -212,7 +213,7 @@ TEST(GridEnergies, ShearedPlaneGridHasTheKnownAngle) {
 
 TEST(GridEnergies, EdgeLengthDeviationIsRelative) {
   const Surface plane = MakeSurface("plane");
-  std::unique_ptr<ceres::CostFunction> equilaterality(MakeGridEquilaterality(plane, 2.0));
+  std::unique_ptr<ceres::CostFunction> equilaterality(MakeAutoDiff(GridEquilaterality(plane, 2.0)));
   EXPECT_NEAR(Evaluate(*equilaterality, {Block(Uv(1, 1)), Block(Uv(1, 3.2))})[0], 0.1, 1e-10);
   EXPECT_NEAR(Evaluate(*equilaterality, {Block(Uv(1, 1)), Block(Uv(2.2, 2.6))})[0], 0.0, 1e-10);
   EXPECT_NEAR(Evaluate(*equilaterality, {Block(Uv(1, 1)), Block(Uv(2, 1))})[0], -0.5, 1e-10);
@@ -222,7 +223,7 @@ TEST(GridEnergies, QuadSidesDeviateFromTheirMean) {
   // A 2 × 1 rectangle (sides 2, 1, 2, 1, mean 1.5): r = ±1/3 up to the
   // regularisation ε L (relative effect ≤ (ε L)² / 2 = 5e-13 with L = 1).
   const Surface plane = MakeSurface("plane");
-  std::unique_ptr<ceres::CostFunction> quad(MakeGridQuadEquilaterality(plane, 1.0));
+  std::unique_ptr<ceres::CostFunction> quad(MakeAutoDiff(GridQuadEquilaterality(plane, 1.0)));
   const std::vector<double> r =
       Evaluate(*quad, {Block(Uv(1, 1)), Block(Uv(3, 1)), Block(Uv(3, 2)), Block(Uv(1, 2))});
   const double expected[] = {1.0 / 3, -1.0 / 3, 1.0 / 3, -1.0 / 3};
@@ -239,7 +240,7 @@ TEST(GridEnergies, FairnessOfACircleOnACylinder) {
   // points to the axis with length 2R(1 − cos δ); a vertical line gives 0.
   const Surface cylinder = MakeSurface("cylinder", {{"R", 2.0}, {"H", 5.0}});
   constexpr double delta = 0.3, L = 0.5;
-  std::unique_ptr<ceres::CostFunction> fairness(MakeGridFairness(cylinder, 1.0 / L));
+  std::unique_ptr<ceres::CostFunction> fairness(MakeAutoDiff(GridFairness(cylinder, 1.0 / L)));
   const Vec3 r = AsVec(Evaluate(*fairness, {Block(Uv(1.0 - delta, 1.0)), Block(Uv(1.0, 1.0)),
                                             Block(Uv(1.0 + delta, 1.0))}));
   EXPECT_NEAR(r.norm(), 2.0 * 2.0 * (1.0 - std::cos(delta)) / L, 1e-12);

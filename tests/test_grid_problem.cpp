@@ -38,7 +38,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "problems/model.h"
 #include "problems/run.h"
 #include "problems/solve.h"

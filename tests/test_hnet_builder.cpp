@@ -19,7 +19,7 @@
 #include "mesh/diagonal_net.h"
 #include "mesh/generators.h"
 #include "mesh/hnet.h"
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/io.h"
 #include "mesh/metrics.h"
 #include "mesh/topology.h"

@@ -24,7 +24,7 @@
 
 #include "mesh/bilinear_patch.h"
 #include "mesh/hnet.h"
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "tests/scratch_dir.h"
 
 namespace archgeo {

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/io.h"
 #include "mesh/output_files.h"
 #include "mesh/surface_mesh.h"

@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/input_file.h"
 #include "mesh/io.h"
 #include "tests/scratch_dir.h"

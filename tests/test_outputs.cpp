@@ -19,7 +19,7 @@
 #include <sstream>
 #include <thread>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/output_files.h"
 #include "tests/scratch_dir.h"
 #include "tests/shell.h"

@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "core/tolerance_band.h"
+#include "energies/autodiff.h"
 #include "energies/pq_diagonal.h"
 #include "mesh/generators.h"
 #include "mesh/metrics.h"
@@ -149,8 +150,8 @@ TEST(PlanarQuads, LinearSolversReachTheSameFinalCost) {
 // The band removes ±b from the residual and zeroes the Jacobian inside it.
 TEST(ToleranceBand, ShiftsTheResidualAndZeroesTheJacobianInside) {
   const double kBand = 0.05;
-  ToleranceBand banded(MakePqDiagonal(1.0), kBand);
-  std::unique_ptr<ceres::CostFunction> plain(MakePqDiagonal(1.0));
+  ToleranceBand banded(MakeAutoDiff(PqDiagonal(1.0)), kBand);
+  std::unique_ptr<ceres::CostFunction> plain(MakeAutoDiff(PqDiagonal(1.0)));
   for (double h : {0.0, 0.03, 0.3, -0.3}) {
     double b0[3] = {0, 0, 0}, b1[3] = {1, 0, 0}, b2[3] = {1, 1, h}, b3[3] = {0, 1, 0};
     const double* params[4] = {b0, b1, b2, b3};

@@ -15,7 +15,7 @@
 #include <string>
 
 #include "mesh/generators.h"
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/io.h"
 #include "mesh/metrics.h"
 #include "mesh/smoothness_metrics.h"

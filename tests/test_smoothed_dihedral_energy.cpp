@@ -24,6 +24,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/energy_checks.h"
+#include "energies/autodiff.h"
 
 #include "energies/smoothed_dihedral_energy.h"
 
@@ -46,7 +47,7 @@ constexpr double kRiddersInitialStep = 1e-6;
 using namespace energy_checks;
 
 std::vector<double> TriTri(const Hinge& h, double inv_length, double epsilon) {
-  std::unique_ptr<ceres::CostFunction> cost(MakeSmoothedDihedralTriTri(inv_length, epsilon));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(SmoothedDihedralTriTri(inv_length, epsilon)));
   return Evaluate(*cost, TriTriBlocks(h));
 }
 
@@ -87,9 +88,9 @@ TEST(SmoothedDihedralEnergy, GradientMatchesNumeric) {
       SCOPED_TRACE(bend);
       const Hinge h = RandomHinge(rng, bend);
       const double inv_length = 1.0 / (h.w - h.v).norm();
-      std::unique_ptr<ceres::CostFunction> tt(MakeSmoothedDihedralTriTri(inv_length));
-      std::unique_ptr<ceres::CostFunction> tp(MakeSmoothedDihedralTriPoly(inv_length));
-      std::unique_ptr<ceres::CostFunction> pp(MakeSmoothedDihedralPolyPoly(inv_length));
+      std::unique_ptr<ceres::CostFunction> tt(MakeAutoDiff(SmoothedDihedralTriTri(inv_length, kSmoothedDihedralEpsilon)));
+      std::unique_ptr<ceres::CostFunction> tp(MakeAutoDiff(SmoothedDihedralTriPoly(inv_length, kSmoothedDihedralEpsilon)));
+      std::unique_ptr<ceres::CostFunction> pp(MakeAutoDiff(SmoothedDihedralPolyPoly(inv_length, kSmoothedDihedralEpsilon)));
       Blocks tp_blocks = TriPolyBlocks(h);
       Blocks pp_blocks = PolyPolyBlocks(h);
       if (bend > 0.5) {  // polygon normals off the exact face normals
@@ -114,9 +115,9 @@ TEST(SmoothedDihedralEnergy, SingularConfigurationsAreFinite) {
       {o, x, 0.5 * x + y, 0.5 * x + y},  // folded flat: n_f′ = −n_f
   };
   for (double inv_length : {1.0, 1e-3, 1e3}) {
-    std::unique_ptr<ceres::CostFunction> tt(MakeSmoothedDihedralTriTri(inv_length));
-    std::unique_ptr<ceres::CostFunction> tp(MakeSmoothedDihedralTriPoly(inv_length));
-    std::unique_ptr<ceres::CostFunction> pp(MakeSmoothedDihedralPolyPoly(inv_length));
+    std::unique_ptr<ceres::CostFunction> tt(MakeAutoDiff(SmoothedDihedralTriTri(inv_length, kSmoothedDihedralEpsilon)));
+    std::unique_ptr<ceres::CostFunction> tp(MakeAutoDiff(SmoothedDihedralTriPoly(inv_length, kSmoothedDihedralEpsilon)));
+    std::unique_ptr<ceres::CostFunction> pp(MakeAutoDiff(SmoothedDihedralPolyPoly(inv_length, kSmoothedDihedralEpsilon)));
     for (size_t i = 0; i < cases.size(); ++i) {
       SCOPED_TRACE(i);
       const Hinge& h = cases[i];
@@ -140,8 +141,8 @@ TEST(SmoothedDihedralEnergy, KnownDihedralAngle) {
           const double dual = 2.0 * std::sin(alpha / 2);
           const double expected = length * inv_length * std::sqrt(dual * dual + eps * eps);
           const double tolerance = kRegularisedTolerance * std::max(1.0, expected);
-          std::unique_ptr<ceres::CostFunction> tp(MakeSmoothedDihedralTriPoly(inv_length, eps));
-          std::unique_ptr<ceres::CostFunction> pp(MakeSmoothedDihedralPolyPoly(inv_length, eps));
+          std::unique_ptr<ceres::CostFunction> tp(MakeAutoDiff(SmoothedDihedralTriPoly(inv_length, eps)));
+          std::unique_ptr<ceres::CostFunction> pp(MakeAutoDiff(SmoothedDihedralPolyPoly(inv_length, eps)));
           EXPECT_NEAR(0.5 * SquaredNorm(TriTri(h, inv_length, eps)), expected, tolerance);
           EXPECT_NEAR(0.5 * SquaredNorm(Evaluate(*tp, TriPolyBlocks(h))), expected, tolerance);
           EXPECT_NEAR(0.5 * SquaredNorm(Evaluate(*pp, PolyPolyBlocks(h))), expected, tolerance);
@@ -161,7 +162,7 @@ TEST(SmoothedDihedralEnergy, GaussNewtonModelIsExactAtAFlatHinge) {
   const double eps = kSmoothedDihedralEpsilon;
   for (double length : {1.0, 2.0}) {
     const Hinge h = KnownHinge(0.0, length);
-    std::unique_ptr<ceres::CostFunction> cost(MakeSmoothedDihedralTriTri(1.0, eps));
+    std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(SmoothedDihedralTriTri(1.0, eps)));
     Blocks jacobians;
     Evaluate(*cost, TriTriBlocks(h), &jacobians);
     // Motion of b along z; J_b is 4×3 row-major.

@@ -24,6 +24,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/energy_checks.h"
+#include "energies/autodiff.h"
 
 #include "energies/dihedral_energy.h"
 #include "energies/co_spherical.h"
@@ -55,7 +56,7 @@ Vec3 RandomUnit(std::mt19937& rng) {
 
 Vec3 TriTriResidual(const Hinge& h, double inv_length, double omega) {
   std::unique_ptr<ceres::CostFunction> cost(
-      MakeDihedralTriTri(inv_length, omega));
+      MakeAutoDiff(DihedralTriTri(inv_length, omega)));
   return AsVec(Evaluate(*cost, TriTriBlocks(h)));
 }
 
@@ -77,11 +78,11 @@ TEST(DihedralEnergy, GradientMatchesNumeric) {
     const double inv_length = 1.0 / MeanEdge(h);
     const double omega = omega_dist(rng);
     std::unique_ptr<ceres::CostFunction> tt(
-        MakeDihedralTriTri(inv_length, omega));
+        MakeAutoDiff(DihedralTriTri(inv_length, omega)));
     std::unique_ptr<ceres::CostFunction> tp(
-        MakeDihedralTriPoly(inv_length, omega));
+        MakeAutoDiff(DihedralTriPoly(inv_length, omega)));
     std::unique_ptr<ceres::CostFunction> pp(
-        MakeDihedralPolyPoly(inv_length, omega));
+        MakeAutoDiff(DihedralPolyPoly(inv_length, omega)));
     ExpectGradientsMatch(*tt, TriTriBlocks(h));
     // Polygon normals off the exact face normals (as during a solve).
     Blocks tp_blocks = TriPolyBlocks(h);
@@ -108,10 +109,10 @@ TEST(DihedralEnergy, SingularConfigurationsAreFinite) {
       {o, x, 0.5 * x + y, 0.5 * x + y + 1e-13 * z},  // nearly folded
   };
   for (double inv_length : {1.0, 1e-3, 1e3}) {
-    std::unique_ptr<ceres::CostFunction> tt(MakeDihedralTriTri(inv_length, 1e-3));
-    std::unique_ptr<ceres::CostFunction> tp(MakeDihedralTriPoly(inv_length, 1e-3));
+    std::unique_ptr<ceres::CostFunction> tt(MakeAutoDiff(DihedralTriTri(inv_length, 1e-3)));
+    std::unique_ptr<ceres::CostFunction> tp(MakeAutoDiff(DihedralTriPoly(inv_length, 1e-3)));
     std::unique_ptr<ceres::CostFunction> pp(
-        MakeDihedralPolyPoly(inv_length, 1e-3));
+        MakeAutoDiff(DihedralPolyPoly(inv_length, 1e-3)));
     for (size_t i = 0; i < cases.size(); ++i) {
       SCOPED_TRACE(i);
       const Hinge& h = cases[i];
@@ -144,11 +145,11 @@ TEST(DihedralEnergy, KnownDihedralAngle) {
         const double tolerance =
             kRegularisedTolerance * std::max(1.0, expected);
         std::unique_ptr<ceres::CostFunction> tt(
-            MakeDihedralTriTri(inv_length, omega));
+            MakeAutoDiff(DihedralTriTri(inv_length, omega)));
         std::unique_ptr<ceres::CostFunction> tp(
-            MakeDihedralTriPoly(inv_length, omega));
+            MakeAutoDiff(DihedralTriPoly(inv_length, omega)));
         std::unique_ptr<ceres::CostFunction> pp(
-            MakeDihedralPolyPoly(inv_length, omega));
+            MakeAutoDiff(DihedralPolyPoly(inv_length, omega)));
         SCOPED_TRACE(alpha);
         EXPECT_NEAR(0.5 * SquaredNorm(Evaluate(*tt, TriTriBlocks(h))), expected,
                     tolerance);
@@ -188,14 +189,12 @@ TEST(DihedralEnergy, IrlsFixedPointGivesHalfTheEnergyTerm) {
   EXPECT_DOUBLE_EQ(DihedralIrlsWeight(0.0, 0.0, 1.0, 0.1), 0.1);
 }
 
-TEST(DihedralEnergy, OmegaCanBeUpdatedThroughTheFunctor) {
-  DihedralTriTri* functor = nullptr;
-  std::unique_ptr<ceres::CostFunction> cost(
-      MakeDihedralTriTri(1.0, 0.5, &functor));
-  ASSERT_NE(functor, nullptr);
+// The IRLS weight ω divides the residual by √ω.
+TEST(DihedralEnergy, OmegaScalesTheResidual) {
   const Hinge h = KnownHinge(0.8, 1.0);
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(DihedralTriTri(1.0, 0.5)));
   const Vec3 before = AsVec(Evaluate(*cost, TriTriBlocks(h)));
-  functor->omega = 2.0;  // 4× the weight's denominator: r halves
+  cost.reset(MakeAutoDiff(DihedralTriTri(1.0, 2.0)));  // 4× ω: r halves
   const Vec3 after = AsVec(Evaluate(*cost, TriTriBlocks(h)));
   EXPECT_GT(before.norm(), 0.1);
   EXPECT_NEAR((after - 0.5 * before).norm(), 0.0, kTolerance);
@@ -250,8 +249,7 @@ Star MovedStar(const Star& s, const Eigen::Matrix3d& rot, const Vec3& shift,
 // Residuals of the functor with the given weights.
 std::vector<double> TacResidual(const Star& s, double inv_length,
                                 double omega1 = 1.0, double omega2 = 1.0) {
-  std::unique_ptr<ceres::CostFunction> cost(MakeTotalAbsoluteCurvature(
-      static_cast<int>(s.ring.size()), s.closed, inv_length, omega1, omega2));
+  std::unique_ptr<ceres::CostFunction> cost(MakeStarAutoDiff(TotalAbsoluteCurvature(static_cast<int>(s.ring.size()), s.closed, inv_length, omega1, omega2)));
   return Evaluate(*cost, StarBlocks(s));
 }
 
@@ -348,9 +346,7 @@ TEST(TotalAbsoluteCurvature, GradientMatchesNumeric) {
     for (const auto& [k, closed] : shapes) {
       SCOPED_TRACE(testing::Message() << i << " k=" << k << " closed=" << closed);
       const Star s = RandomStar(rng, k, closed);
-      std::unique_ptr<ceres::CostFunction> cost(MakeTotalAbsoluteCurvature(
-          k, closed, 1.0 / MeanRingDistance(s), omega_dist(rng),
-          omega_dist(rng)));
+      std::unique_ptr<ceres::CostFunction> cost(MakeStarAutoDiff(TotalAbsoluteCurvature(k, closed, 1.0 / MeanRingDistance(s), omega_dist(rng), omega_dist(rng))));
       ExpectGradientsMatch(*cost, StarBlocks(s));
     }
   }
@@ -386,8 +382,7 @@ TEST(TotalAbsoluteCurvature, SingularConfigurationsAreFinite) {
     SCOPED_TRACE(i);
     const Star& s = cases[i];
     for (double inv_length : {1.0, 1e-3, 1e3}) {
-      std::unique_ptr<ceres::CostFunction> cost(MakeTotalAbsoluteCurvature(
-          static_cast<int>(s.ring.size()), s.closed, inv_length, 1e-3, 1e-3));
+      std::unique_ptr<ceres::CostFunction> cost(MakeStarAutoDiff(TotalAbsoluteCurvature(static_cast<int>(s.ring.size()), s.closed, inv_length, 1e-3, 1e-3)));
       ExpectFiniteEverywhere(*cost, StarBlocks(s));
     }
     const VertexShapeOperator plain = Plain(s);
@@ -481,10 +476,8 @@ TEST(TotalAbsoluteCurvature, IrlsWeightsAndFunctorUpdate) {
   const VertexShapeOperator w = Plain(s);
   const double omega1 = TotalAbsoluteCurvatureIrlsWeight(w.lambda1, inv_length);
   const double omega2 = TotalAbsoluteCurvatureIrlsWeight(w.lambda2, inv_length);
-  TotalAbsoluteCurvature* functor = nullptr;
-  std::unique_ptr<ceres::CostFunction> cost(MakeTotalAbsoluteCurvature(
-      6, true, inv_length, omega1, omega2, &functor));
-  ASSERT_NE(functor, nullptr);
+  std::unique_ptr<ceres::CostFunction> cost(
+      MakeStarAutoDiff(TotalAbsoluteCurvature(6, true, inv_length, omega1, omega2)));
   const std::vector<double> r = Evaluate(*cost, StarBlocks(s));
   const double y1 = std::abs(w.lambda1) * inv_length;
   const double y2 = std::abs(w.lambda2) * inv_length;
@@ -496,7 +489,7 @@ TEST(TotalAbsoluteCurvature, IrlsWeightsAndFunctorUpdate) {
               0.5 * (y1 * y1 / (y1 + eps) + y2 * y2 / (y2 + eps)),
               kGapTolerance);
   EXPECT_NEAR(0.5 * SquaredNorm(r), 0.5 * (y1 + y2), 0.5 * (y1 + y2) * 0.03);
-  functor->omega = {4.0 * omega1, omega2};
+  cost.reset(MakeStarAutoDiff(TotalAbsoluteCurvature(6, true, inv_length, 4.0 * omega1, omega2)));
   const std::vector<double> r2 = Evaluate(*cost, StarBlocks(s));
   EXPECT_NEAR(r2[0], 0.5 * r[0], kTolerance);
   EXPECT_NEAR(r2[1], r[1], kTolerance);
@@ -559,20 +552,20 @@ Vec3 PointOnSphere(const Sphere& s, const Vec3& u_raw, double t) {
 }
 
 double CoSphericalResidual(const Sphere& s, const Vec3& w, double inv_length) {
-  std::unique_ptr<ceres::CostFunction> cost(MakeCoSpherical(inv_length));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(CoSpherical(inv_length)));
   return Evaluate(*cost,
                   {ToBlock(s.v), ToBlock(s.n), {s.kappa}, ToBlock(w)})[0];
 }
 
 Vec3 StripResidual(const Vec3& n_e, const Vec3& v, const Vec3& w,
                    const Vec3& n_v, const Vec3& n_w, double inv_length) {
-  std::unique_ptr<ceres::CostFunction> cost(MakePrincipalStrip(inv_length));
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(PrincipalStrip(inv_length)));
   return AsVec(Evaluate(*cost, {ToBlock(n_e), ToBlock(v), ToBlock(w),
                                 ToBlock(n_v), ToBlock(n_w)}));
 }
 
 double SaddleResidual(const Sphere& s, const Vec3& w, double delta) {
-  std::unique_ptr<ceres::CostFunction> cost(MakeSaddleSign());
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(SaddleSign()));
   return Evaluate(*cost, {ToBlock(s.v), ToBlock(s.n), {s.kappa}, ToBlock(w),
                           {delta}})[0];
 }
@@ -593,17 +586,17 @@ TEST(PrincipalSymmetric, GradientMatchesNumeric) {
     const Sphere s = RandomSphere(rng);
     const Vec3 w = s.v + RandomVec(rng, 1.0);
     const double inv_length = 1.0 / (0.5 + 0.1 * i);
-    std::unique_ptr<ceres::CostFunction> cs(MakeCoSpherical(inv_length));
+    std::unique_ptr<ceres::CostFunction> cs(MakeAutoDiff(CoSpherical(inv_length)));
     const Blocks cs_blocks = {ToBlock(s.v), ToBlock(s.n), {s.kappa}, ToBlock(w)};
     ExpectGradientsMatch(*cs, cs_blocks);
     ExpectGradientsMatch(*cs, cs_blocks, &co_spherical);
-    std::unique_ptr<ceres::CostFunction> ps(MakePrincipalStrip(inv_length));
+    std::unique_ptr<ceres::CostFunction> ps(MakeAutoDiff(PrincipalStrip(inv_length)));
     const Blocks ps_blocks = {ToBlock(RandomUnit(rng)), ToBlock(s.v),
                               ToBlock(w), ToBlock(s.n),
                               ToBlock(RandomUnit(rng))};
     ExpectGradientsMatch(*ps, ps_blocks);
     ExpectGradientsMatch(*ps, ps_blocks, &strip);
-    std::unique_ptr<ceres::CostFunction> ss(MakeSaddleSign());
+    std::unique_ptr<ceres::CostFunction> ss(MakeAutoDiff(SaddleSign()));
     const Blocks ss_blocks = {ToBlock(s.v), ToBlock(s.n), {s.kappa}, ToBlock(w),
                               {0.3 + 0.05 * i}};
     ExpectGradientsMatch(*ss, ss_blocks);
@@ -613,9 +606,9 @@ TEST(PrincipalSymmetric, GradientMatchesNumeric) {
 
 TEST(PrincipalSymmetric, SingularConfigurationsAreFinite) {
   const Vec3 p(1, 2, 3), z(0, 0, 1), zero(0, 0, 0);
-  std::unique_ptr<ceres::CostFunction> cs(MakeCoSpherical(1.0));
-  std::unique_ptr<ceres::CostFunction> ps(MakePrincipalStrip(1.0));
-  std::unique_ptr<ceres::CostFunction> ss(MakeSaddleSign());
+  std::unique_ptr<ceres::CostFunction> cs(MakeAutoDiff(CoSpherical(1.0)));
+  std::unique_ptr<ceres::CostFunction> ps(MakeAutoDiff(PrincipalStrip(1.0)));
+  std::unique_ptr<ceres::CostFunction> ss(MakeAutoDiff(SaddleSign()));
   for (double kappa : {0.0, 1e-300, -2.0}) {
     for (const Vec3& n : {z, zero}) {
       for (const Vec3& w : {p, Vec3(p + Vec3(1, 0, 0))}) {  // w = v and w ≠ v

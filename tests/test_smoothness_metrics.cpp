@@ -9,7 +9,7 @@
 
 #include "make_mesh.h"
 #include "mesh/generators.h"
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/smoothness_metrics.h"
 #include "mesh/smoothness_surfaces.h"
 

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "problems/registry.h"
 #include "problems/schema.h"
 #include "problems/spec.h"

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "problems/generate.h"
 #include "problems/registry.h"
 #include "problems/run.h"

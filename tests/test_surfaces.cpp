@@ -22,7 +22,7 @@
 #include <ceres/jet.h>
 #include <gtest/gtest.h>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "surfaces/grid.h"
 #include "surfaces/surface.h"
 #include "surfaces/surface_factory.h"

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/io.h"
 #include "mesh/smoothness_metrics.h"
 #include "mesh/smoothness_surfaces.h"

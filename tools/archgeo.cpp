@@ -33,7 +33,7 @@
 #include <iostream>
 
 #include "bench/bench.h"
-#include "mesh/input_error.h"
+#include "core/input_error.h"
 #include "mesh/output_files.h"
 #include "problems/darboux.h"
 #include "problems/generate.h"
