@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The goal library's examples on the real meshes [Gebreiter 2012, §10, §11;
 // issue 18], in this process (ReadSpec + RunSpec, no output files), with the
-// figures the README quotes:
+// figures docs/results.md quotes:
 //
 //   conical.yaml   on libigl_inspired_mesh_quads_Smooth.off (acceptance:
 //                  conical residual and δ_PQ,n ≤ 1e-3, no non-convex quad,

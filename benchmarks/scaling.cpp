@@ -4,8 +4,8 @@
 // grow ~n^1.5"): examples/planar_quads.yaml on generated non-planar roof grids
 // (`archgeo generate --noise 0.05`) of 100x100 (10k quads) and 316x316 (~100k
 // quads), and 1000x1000 (1M quads) only with --include-1m (long: about 90 s
-// and 5.65 GiB with the defaults on 2026-11-28; add --defaults-only, Ceres'
-// Cholesky would need more memory than this machine has). Every size is
+// and 5.65 GiB with the defaults, docs/performance.md; add --defaults-only,
+// Ceres' Cholesky would need more memory than this machine has). Every size is
 // solved twice, by Ceres with one sparse Cholesky per
 // step (solver.pcg_above=0) and with the spec's defaults (Levenberg-Marquardt
 // with conjugate gradients on the assembled normal equations for large

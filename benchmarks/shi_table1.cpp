@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Shi, Wang, Pottmann 2014, Table 1 — A-nets to smooth H-nets, one command:
-//   build-xxx/shi_table1 [--quick] [--set KEY=VALUE ...]   (--set: added to every run,
+//   build/benchmarks/shi_table1 [--quick] [--set KEY=VALUE ...]   (--set: added to every run,
 //   e.g. --set terms.frame_coplanarity.weight=0, which makes it fail)
 // For each test surface (mesh/asymptotic_nets.h, written to a scratch OBJ with
 // its analytic reference) and the negshell A-net of ../shared/data, runs

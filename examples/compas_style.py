@@ -11,8 +11,8 @@ the result as JSON in the same form (plus the planarity reached):
     /usr/bin/python3 examples/compas_style.py [IN.json] [OUT.json]
 
 Without IN.json (or if it does not exist) it first writes one: a noisy roof
-from archgeo.generate. Needs the module on PYTHONPATH (build-py/python after
-the README's build commands, or an installed package).
+from archgeo.generate. Needs the module on PYTHONPATH (build/python after
+the README's two commands, or an installed package).
 """
 import json
 import os

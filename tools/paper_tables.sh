@@ -4,7 +4,7 @@
 # The papers' tables, fast variants (CI runs this from tools/test.sh): each
 # benchmark program prints the paper's rows beside ours and exits non-zero
 # when its acceptance fails; this script runs them all and fails if any does.
-# The full tables: README "Reproducing the papers". Extra arguments (e.g.
+# The full tables: docs/results.md. Extra arguments (e.g.
 # --set terms.dihedral_energy.weight=0) are passed to every program.
 #   bash tools/paper_tables.sh [--set KEY=VALUE ...]     (about 2-3 minutes on 2 cores)
 set -uo pipefail

@@ -12,10 +12,10 @@ cd "$(dirname "$0")/.."
 # The pinned figures of the suite (EngineBaselines) were measured with
 # OpenBLAS's SkylakeX kernels. OpenBLAS picks its kernels by CPU or by
 # OPENBLAS_CORETYPE (this machine kind sets Haswell), and other kernels round
-# differently: principal_symmetric's objective then ends 12% higher (README,
-# Determinism). Where the CPU can run them, the suite runs on the SkylakeX
-# kernels, so that it checks the code and not the kernel choice; the
-# Concerthall layout is also run with the Haswell kernels
+# differently: principal_symmetric's objective then ends 12% higher
+# (docs/methods/engine.md, Determinism). Where the CPU can run them, the
+# suite runs on the SkylakeX kernels, so that it checks the code and not the
+# kernel choice; the Concerthall layout is also run with the Haswell kernels
 # (LayoutConcerthallWithHaswellKernels, tests/CMakeLists.txt).
 if [[ $(grep -o -w -E 'avx512(f|bw|dq|vl|cd)' /proc/cpuinfo 2>/dev/null | sort -u | wc -l) -eq 5 ]]; then
   echo "test.sh: OPENBLAS_CORETYPE=SkylakeX (was ${OPENBLAS_CORETYPE:-unset}): the kernels the pinned figures were measured with"

@@ -1,17 +1,19 @@
 #!/usr/bin/env bash
 # SPDX-FileCopyrightText: The archgeo authors
 # SPDX-License-Identifier: GPL-3.0-or-later
-# Regenerates the key tables of README.md from the settings schema: every block
+# Regenerates the key tables of docs/keys.md from the settings schema: every
+# block
 #   <!-- keys: PROBLEM -->
 #   ...
 #   <!-- /keys -->
 # is replaced by `archgeo spec PROBLEM --keys` (PROBLEM `common`: the keys every
 # problem has, `archgeo spec planar_quads --keys --common`). tests/test_readme.cpp
 # fails when a table is out of date.
-#   bash tools/update_readme_keys.sh [build/archgeo]
+#   bash tools/update_keys.sh [build/archgeo]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 archgeo="${1:-build/archgeo}"
+keys=docs/keys.md
 tmp="$(mktemp)"
 trap 'rm -f "$tmp"' EXIT
 while IFS= read -r line; do
@@ -31,5 +33,5 @@ while IFS= read -r line; do
     skipping=0
   fi
   printf '%s\n' "$line" >> "$tmp"
-done < README.md
-cat "$tmp" > README.md
+done < "$keys"
+cat "$tmp" > "$keys"
