@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "energies/registry.h"
 
+#include <cstdlib>
+
 // One line per term: X(<name>) for the TermSpec terms::<name>() defined in
 // energies/<name>.cpp.
 #define ARCHGEO_TERMS(X)       \
@@ -62,6 +64,14 @@ const std::vector<const TermSpec*>& RegisteredTerms() {
   static const std::vector<const TermSpec*> all = {ARCHGEO_TERMS(ARCHGEO_LIST)};
 #undef ARCHGEO_LIST
   return all;
+}
+
+const std::string& ZeroedTerm() {
+  static const std::string name = [] {
+    const char* zeroed = std::getenv("ARCHGEO_ZERO_TERM");
+    return std::string(zeroed ? zeroed : "");
+  }();
+  return name;
 }
 
 const TermSpec* FindTerm(const std::string& name) {

@@ -18,4 +18,11 @@ const std::vector<const TermSpec*>& RegisteredTerms();
 // The term named `name`, or null.
 const TermSpec* FindTerm(const std::string& name);
 
+// Mutation testing (tools/mutation_check.sh): the term named by the
+// environment variable ARCHGEO_ZERO_TERM (read once; "" when unset)
+// contributes nothing: its residuals and Jacobians are zero and its
+// manifolds are not set, so a test that needs the term fails. A run with it
+// set says so in its summary.
+const std::string& ZeroedTerm();
+
 }  // namespace archgeo

@@ -46,7 +46,8 @@ ceres::LossFunction* Robust(const std::string& type, double scale) {
   return nullptr;  // "none"
 }
 
-#ifdef ARCHGEO_MUTATION_TESTING
+// A cost function whose residuals and Jacobians are zero (the zeroed term of
+// a mutation check, energies/registry.h ZeroedTerm).
 class ZeroedCost : public ceres::CostFunction {
  public:
   explicit ZeroedCost(ceres::CostFunction* inner) : inner_(inner) {
@@ -67,7 +68,6 @@ class ZeroedCost : public ceres::CostFunction {
  private:
   std::unique_ptr<ceres::CostFunction> inner_;
 };
-#endif
 
 }  // namespace
 
@@ -95,7 +95,7 @@ double HookContext::Measure(const std::string& name) {
 class MeshModel::View : public TermContext {
  public:
   View(MeshModel& model, const TermSpec& spec)
-      : model_(model), name_(spec.name) {}
+      : model_(model), name_(spec.name), zeroed_(name_ == ZeroedTerm()) {}
 
   void Prepare(Residuals* residuals, const std::string& loss, double loss_scale) {
     residuals_ = residuals;
@@ -163,13 +163,7 @@ class MeshModel::View : public TermContext {
       delete cost;
       return;
     }
-#ifdef ARCHGEO_MUTATION_TESTING
-    // tools/mutation_check.sh: the term named by ARCHGEO_ZERO_TERM contributes
-    // nothing (its residuals and Jacobians are zero), to find the tests that
-    // notice a missing energy.
-    const char* zeroed = std::getenv("ARCHGEO_ZERO_TERM");
-    if (zeroed && name_ == zeroed) cost = new ZeroedCost(cost);
-#endif
+    if (zeroed_) cost = new ZeroedCost(cost);
     const ceres::LossFunction* loss = Loss(weight);
     residuals_->Add(cost, loss, blocks.data(), int(blocks.size()), Part(part));
   }
@@ -182,29 +176,23 @@ class MeshModel::View : public TermContext {
   void AddElement(const Batch& batch, int element, double* const* blocks, int count,
                   const char* part, double weight) override {
     if (!Variable(blocks, count)) return;
-#ifdef ARCHGEO_MUTATION_TESTING
-    const char* zeroed = std::getenv("ARCHGEO_ZERO_TERM");
-    if (zeroed && name_ == zeroed) {
+    if (zeroed_) {
       residuals_->Add(new ZeroedCost(new BatchElement(batch, element)), Loss(weight), blocks, count,
                       Part(part));
       return;
     }
-#endif
     residuals_->Add(&batch, element, Loss(weight), blocks, count, Part(part));
   }
 
   void SetUnit(double* block) override { SetManifold(block, new ceres::SphereManifold<3>()); }
 
   void SetManifold(double* block, ceres::Manifold* manifold) override {
-#ifdef ARCHGEO_MUTATION_TESTING
     // The zeroed term's manifolds go too (on_curve has no residual, only its
     // manifold).
-    const char* zeroed = std::getenv("ARCHGEO_ZERO_TERM");
-    if (zeroed && name_ == zeroed) {
+    if (zeroed_) {
       delete manifold;
       return;
     }
-#endif
     residuals_->SetManifold(block, manifold);
   }
 
@@ -243,6 +231,7 @@ class MeshModel::View : public TermContext {
 
   MeshModel& model_;
   std::string name_;
+  bool zeroed_;  // the term of a mutation check (ZeroedTerm)
   std::map<std::string, std::vector<Curve>> curves_;  // per option, read once per solve
   Residuals* residuals_ = nullptr;
   std::vector<std::pair<const char*, int>> parts_;  // this round's parts by key address

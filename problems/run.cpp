@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "problems/run.h"
 #include "problems/mesh_inputs.h"
+#include "energies/registry.h"
 
 #include <glog/logging.h>
 
@@ -415,6 +416,10 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const M
   }
   if (run.exit_code == 4) {
     validity_lines += "WARNING: a tolerance was not met (exit 4): the result is valid and written\n";
+  }
+  if (!ZeroedTerm().empty()) {
+    validity_lines += "WARNING: ARCHGEO_ZERO_TERM=" + ZeroedTerm() +
+                      ": that term's residuals were zeroed (mutation testing)\n";
   }
   run.summary = head + net.headline + tolerance_lines + validity_lines + solution->headline +
                 MeasureHeadline(solved) +
