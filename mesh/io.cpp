@@ -14,11 +14,10 @@
 //     out-of-range or repeated indices, degenerate faces.
 //  4. PMP::orient_polygon_soup, refused if it had to duplicate a vertex or
 //     left an edge with one direction in both its faces
-//     (mesh/soup_halfedges.h); then the mesh is built as
-//     PMP::polygon_soup_to_polygon_mesh does (every point, isolated ones
-//     included, in file order, so vertex i is the file's i-th vertex; then
-//     Euler::add_face per face), without its precondition: CGAL's
-//     is_polygon_soup_a_polygon_mesh, which step 4 has established.
+//     (mesh/soup_halfedges.h); then PMP::polygon_soup_to_polygon_mesh
+//     builds the mesh (every point, isolated ones included, in file order,
+//     so vertex i is the file's i-th vertex), its precondition
+//     is_polygon_soup_a_polygon_mesh off in release: step 4 established it.
 // PMP::IO::read_polygon_mesh is not used: its soup repair merges duplicate
 // points and drops isolated ones, renumbering the vertices.
 // Messages number vertices and faces from 0, in file order.
@@ -28,7 +27,7 @@
 #include <CGAL/IO/OFF.h>
 #include <CGAL/IO/PLY.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
-#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <glog/logging.h>
 
 #include <algorithm>
@@ -334,21 +333,13 @@ Mesh ReadMeshFromMemory(const std::string& name, std::string_view data, ReadInfo
   const int flipped = Orient(name, &soup, lines);
   if (info != nullptr) *info = {FormatName(format), flipped};
 
-  // What PMP::polygon_soup_to_polygon_mesh does, without its precondition:
-  // CGAL's is_polygon_soup_a_polygon_mesh, which Orient has established.
+  // Every point (isolated ones included) in file order, then every face.
+  // CGAL's precondition here, is_polygon_soup_a_polygon_mesh, is off in
+  // release builds (NDEBUG): CheckSoup and Orient have established it.
   Mesh mesh;
-  std::size_t halfedges = 0;
-  for (const auto& polygon : soup.polygons) halfedges += polygon.size();
-  mesh.reserve(Mesh::size_type(soup.points.size()), Mesh::size_type(halfedges / 2 + 1),
-               Mesh::size_type(soup.polygons.size()));
-  for (const Point& p : soup.points) mesh.add_vertex(p);
-  std::vector<VertexIndex> corners;
-  for (const auto& polygon : soup.polygons) {
-    corners.clear();
-    for (std::size_t v : polygon) corners.push_back(VertexIndex(Mesh::size_type(v)));
-    CHECK(CGAL::Euler::add_face(corners, mesh) != Mesh::null_face());
-  }
+  PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, mesh);
   CHECK_EQ(mesh.number_of_vertices(), soup.points.size());
+  CHECK_EQ(mesh.number_of_faces(), soup.polygons.size());
   return mesh;
 }
 
