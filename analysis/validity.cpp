@@ -10,7 +10,7 @@
 #include <iterator>
 
 #include "core/solver_options.h"
-#include "mesh/reference.h"
+#include "geometry/reference.h"
 #include "mesh/vec3.h"
 
 namespace archgeo {

@@ -12,7 +12,7 @@
 #include <functional>
 
 #include "core/input_error.h"
-#include "mesh/io.h"
+#include "io/io.h"
 #include "problems/generate.h"
 #include "problems/registry.h"
 #include "problems/run.h"

@@ -17,7 +17,7 @@
 #include <sstream>
 
 #include "core/input_error.h"
-#include "mesh/output_files.h"
+#include "io/output_files.h"
 #include "problems/spec.h"
 
 extern char** environ;

@@ -7,7 +7,7 @@
 //
 //   ninja -C <build> pellis_fig11 && <build>/benchmarks/pellis_fig11
 //
-// Measure (mesh/smoothness_surfaces.h, LatticeEnergyPerArea): the rotated
+// Measure (generators/smoothness_surfaces.h, LatticeEnergyPerArea): the rotated
 // square lattice a = h(cos θ, sin θ), b = h(−sin θ, cos θ), lifted to the
 // paraboloid; energy of the origin's vertex star per cell area, h → 0.
 // Lifted quads are not planar unless θ = kπ/2, so the faces are triangles:
@@ -25,7 +25,7 @@
 
 #include <glog/logging.h>
 
-#include "mesh/smoothness_surfaces.h"
+#include "generators/smoothness_surfaces.h"
 
 namespace {
 

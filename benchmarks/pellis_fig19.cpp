@@ -29,8 +29,8 @@
 #include <vector>
 
 #include "benchmarks/bench_util.h"
-#include "mesh/io.h"
-#include "mesh/smoothness_surfaces.h"
+#include "io/io.h"
+#include "generators/smoothness_surfaces.h"
 
 namespace {
 

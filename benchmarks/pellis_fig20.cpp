@@ -34,8 +34,8 @@
 #include <vector>
 
 #include "benchmarks/bench_util.h"
-#include "mesh/io.h"
-#include "mesh/principal_edges.h"
+#include "io/io.h"
+#include "geometry/principal_edges.h"
 
 namespace {
 

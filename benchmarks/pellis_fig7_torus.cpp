@@ -8,7 +8,7 @@
 //
 // The paper's surface (Fig. 7d) is not public; a torus stands for it: its
 // parameter lines are curvature lines, so TorusPrincipalQuads is a principal
-// quad mesh, and C(Φ) = 4π²R + 8πr is known exactly (mesh/smoothness_surfaces.h).
+// quad mesh, and C(Φ) = 4π²R + 8πr is known exactly (generators/smoothness_surfaces.h).
 // Prints, per resolution, V, F, E, C(Φ), |E − C(Φ)|/C(Φ), E′ and the discrete
 // C of §5.3. Exit 1 if the error does not decrease or the finest is > 2%.
 #include <cmath>
@@ -16,8 +16,8 @@
 
 #include <glog/logging.h>
 
-#include "mesh/smoothness_metrics.h"
-#include "mesh/smoothness_surfaces.h"
+#include "analysis/smoothness_metrics.h"
+#include "generators/smoothness_surfaces.h"
 
 int main(int argc, char** argv) {
   google::InitGoogleLogging(argv[0]);

@@ -3,7 +3,7 @@
 // Shi, Wang, Pottmann 2014, Table 1 — A-nets to smooth H-nets, one command:
 //   build/benchmarks/shi_table1 [--quick] [--set KEY=VALUE ...]   (--set: added to every run,
 //   e.g. --set terms.frame_coplanarity.weight=0, which makes it fail)
-// For each test surface (mesh/asymptotic_nets.h, written to a scratch OBJ with
+// For each test surface (generators/asymptotic_nets.h, written to a scratch OBJ with
 // its analytic reference) and the negshell A-net of ../shared/data, runs
 // examples/hnet.yaml through ReadSpec + RunSpec with --set-style overrides and
 // prints |F|, |V|, λ1–λ3 (our fairness, proximity and frame-coplanarity
@@ -40,11 +40,11 @@
 #include <random>
 
 #include "bench_util.h"
-#include "mesh/asymptotic_nets.h"
-#include "mesh/hnet.h"
-#include "mesh/io.h"
-#include "mesh/metrics.h"
-#include "mesh/reference.h"
+#include "generators/asymptotic_nets.h"
+#include "geometry/hnet.h"
+#include "io/io.h"
+#include "analysis/metrics.h"
+#include "geometry/reference.h"
 
 namespace {
 

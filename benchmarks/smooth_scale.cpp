@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "benchmarks/bench_util.h"
-#include "mesh/io.h"
+#include "io/io.h"
 #include "mesh/subdivision.h"
 
 namespace {

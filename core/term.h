@@ -105,7 +105,7 @@ class TermContext {
   // the input's mean edge length, kVector does both, ...).
   virtual void FromFile(FrameMap map, double* values, int width) const = 0;
   // Polylines in the canonical frame: those of the OBJ file (`l` records,
-  // mesh/curves.h ReadPolylines) named by the term's option `option` (a
+  // geometry/curves.h ReadPolylines) named by the term's option `option` (a
   // kInputPath), or, when that option is empty, the boundary loops of the
   // reference surface (longest first). Read once per solve; throws
   // InputError naming the option when there is no curve.

@@ -18,7 +18,7 @@
 // corner angle at v. For a mesh with planar faces, r = 0 iff the four face
 // planes at v are tangent to a common right circular cone with apex v — the
 // condition for offset faces at constant distance (the offset planes of the
-// four faces meet in one point, mesh/goal_metrics.h FaceOffsetCheck). The
+// four faces meet in one point, analysis/goal_metrics.h FaceOffsetCheck). The
 // angle criterion alone does not make faces planar: combine with
 // pq_diagonal. Only valence 4: at other valences the criterion is different.
 // At a flat vertex (four coplanar faces) every offset works, yet r = 0 still

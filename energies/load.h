@@ -34,13 +34,13 @@
 // this term already contains the springs of the net — do not add `spring`
 // terms on the same edges (they would pull the net towards zero length and
 // bias the equilibrium); other terms added with it trade force imbalance
-// against their own residuals (report the imbalance, mesh/goal_metrics.h
+// against their own residuals (report the imbalance, analysis/goal_metrics.h
 // MeasureForceBalance). Only free vertices get this residual: fixed vertices
 // take reactions; a vertex bound to a curve or surface would need the
 // tangential part of r only (not provided here).
 //
 // Load: f is a constant chosen by the builder, e.g. gravity by tributary area
-// f_v = A_v q (A_v = v's share of its faces' area, mesh/goal_metrics.h
+// f_v = A_v q (A_v = v's share of its faces' area, analysis/goal_metrics.h
 // TributaryAreas, from the positions at build time; q = load per area,
 // pointing up for a compression vault found as an inverted hanging net).
 //

@@ -49,7 +49,7 @@
 // a vertex is still evaluated exactly on the polyline, only the linear model
 // is off, which the trust region absorbs. A vertex whose optimum is a corner
 // of the polyline (a corner of the perimeter) stays there. A smooth design
-// curve given by few points should be resampled first (mesh/curves.h
+// curve given by few points should be resampled first (geometry/curves.h
 // SampleCatmullRom): the turning angle per sample then shrinks with the
 // sample spacing.
 //
@@ -87,7 +87,7 @@ double ScalarPart(const ceres::Jet<T, N>& x) {
   return ScalarPart(x.a);
 }
 
-// A polyline parametrised by arc length (no CGAL; mesh/curves.h reads and
+// A polyline parametrised by arc length (no CGAL; geometry/curves.h reads and
 // validates polylines and converts them).
 class CurvePolyline {
  public:

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/input_error.h"
-#include "mesh/output_files.h"
+#include "io/output_files.h"
 
 namespace archgeo {
 namespace {

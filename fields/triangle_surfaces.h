@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — triangle meshes of analytic surfaces for the field tests and
-// benchmarks (mesh/generators.h makes quad grids; the field pipeline starts
+// benchmarks (generators/generators.h makes quad grids; the field pipeline starts
 // from triangle meshes).
 #pragma once
 

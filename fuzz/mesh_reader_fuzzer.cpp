@@ -16,7 +16,7 @@
 #include <string_view>
 
 #include "core/input_error.h"
-#include "mesh/io.h"
+#include "io/io.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);

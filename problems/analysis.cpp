@@ -6,10 +6,10 @@
 #include <cstdio>
 
 #include "analysis/validity.h"
-#include "mesh/goal_metrics.h"
-#include "mesh/grid_metrics.h"
-#include "mesh/hnet.h"
-#include "mesh/smoothness_metrics.h"
+#include "analysis/goal_metrics.h"
+#include "analysis/grid_metrics.h"
+#include "geometry/hnet.h"
+#include "analysis/smoothness_metrics.h"
 #include "problems/hnet_net.h"
 
 namespace archgeo {

@@ -1,14 +1,14 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the analyses a report shows besides the planarity/proximity
-// metrics (mesh/metrics.h): visual smoothness [Pellis 2019], A-net / H-net
+// metrics (analysis/metrics.h): visual smoothness [Pellis 2019], A-net / H-net
 // quality [Shi 2014], conical meshes and length spreads [Gebreiter 2012, §10,
-// §11; mesh/goal_metrics.h] and grid quality [force-directed grids paper, §4].
+// §11; analysis/goal_metrics.h] and grid quality [force-directed grids paper, §4].
 // `archgeo solve` shows the ones its problem names (ProblemDecl::analyses),
 // `archgeo measure` every one that applies to the mesh.
 //
 // "grid" (any pure quad mesh whose interior vertices have valence 4 and whose
-// boundary vertices valence 2 or 3: a grid; mesh/grid_metrics.h): keys
+// boundary vertices valence 2 or 3: a grid; analysis/grid_metrics.h): keys
 //   mdo, ado   MDO, ADO (eqs. 4–5, degrees) on the grid-interpolating splines
 //              (the paper's evaluation)
 //   mde, ade   MDE, ADE (eq. 6, percent) on the quad sides (edges)
@@ -22,7 +22,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "mesh/hnet.h"
+#include "geometry/hnet.h"
 #include "mesh/surface_mesh.h"
 
 namespace archgeo {

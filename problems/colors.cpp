@@ -7,9 +7,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "mesh/hnet.h"
-#include "mesh/metrics.h"
-#include "mesh/smoothness_metrics.h"
+#include "geometry/hnet.h"
+#include "analysis/metrics.h"
+#include "analysis/smoothness_metrics.h"
 #include "problems/hnet_net.h"
 
 namespace archgeo {

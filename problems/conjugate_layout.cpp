@@ -22,7 +22,7 @@
 #include "core/problem.h"
 #include "fields/field_io.h"
 #include "core/input_error.h"
-#include "mesh/io.h"
+#include "io/io.h"
 #include "problems/field_pipeline.h"
 #include "problems/model.h"
 

@@ -8,10 +8,10 @@
 #include <limits>
 
 #include "energies/registry.h"
-#include "mesh/curves.h"
+#include "geometry/curves.h"
 #include "mesh/elements.h"
 #include "core/input_error.h"
-#include "mesh/reference.h"
+#include "geometry/reference.h"
 #include "mesh/similarity.h"
 #include "mesh/vec3.h"
 #include "problems/model.h"

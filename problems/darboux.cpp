@@ -8,11 +8,11 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "mesh/hnet.h"
+#include "geometry/hnet.h"
 #include "core/input_error.h"
-#include "mesh/io.h"
-#include "mesh/output_files.h"
-#include "mesh/patchwork_io.h"
+#include "io/io.h"
+#include "io/output_files.h"
+#include "geometry/patchwork_io.h"
 
 namespace archgeo {
 namespace {

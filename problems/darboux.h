@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — `archgeo darboux`: smooth Darboux-cyclide patchworks from an
-// H-net [Shi 2014, §4]. The quad net is extended to its H-net (mesh/hnet.h:
+// H-net [Shi 2014, §4]. The quad net is extended to its H-net (geometry/hnet.h:
 // shape parameters by eq. 7 and the optimal λ of eq. 11), every patch is
 // sampled, and the samples are mapped by the Darboux transformation δ of
 // eq. 12, optionally after a projective map. Rational bilinear patches map to

@@ -7,7 +7,7 @@
 #include <cctype>
 
 #include "core/input_error.h"
-#include "mesh/io.h"
+#include "io/io.h"
 #include "problems/registry.h"
 #include "problems/schema.h"
 #include "problems/solve.h"

@@ -7,12 +7,12 @@
 #include <random>
 #include <sstream>
 
-#include "mesh/asymptotic_nets.h"
-#include "mesh/generators.h"
+#include "generators/asymptotic_nets.h"
+#include "generators/generators.h"
 #include "core/input_error.h"
-#include "mesh/io.h"
-#include "mesh/output_files.h"
-#include "mesh/smoothness_surfaces.h"
+#include "io/io.h"
+#include "io/output_files.h"
+#include "generators/smoothness_surfaces.h"
 
 namespace archgeo {
 namespace {

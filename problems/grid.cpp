@@ -6,7 +6,7 @@
 // The problem makes its own input (no `mesh` file): the uniform n_u × n_v
 // grid of `grid.type` on the surface named by `surface:` (surfaces/
 // surface_factory.h), as a quad mesh whose vertex k is grid vertex k
-// (j·n_u + i; mesh/grid_mesh.h GridToMesh: a grid whose u-seam reflects v,
+// (j·n_u + i; generators/grid_mesh.h GridToMesh: a grid whose u-seam reflects v,
 // the Klein bottle's, is cut open along that seam, as a Surface_mesh must be
 // orientable). The variables are the vertices' surface parameters, the
 // per-vertex block "uv" (output); positions are derived: after every round
@@ -63,8 +63,8 @@
 #include <cstdio>
 
 #include "core/problem.h"
-#include "mesh/grid_mesh.h"
-#include "mesh/grid_metrics.h"
+#include "generators/grid_mesh.h"
+#include "analysis/grid_metrics.h"
 #include "core/input_error.h"
 #include "problems/model.h"
 #include "surfaces/force_directed.h"

@@ -14,7 +14,7 @@
 //          hnet.star_planarity, at most schedule.outer_iterations; a round
 //          above it multiplies the planarity weights by
 //          hnet.continuation_factor;
-//  step 2  the H-net of the current vertices (mesh/hnet.h BuildHNet): W by
+//  step 2  the H-net of the current vertices (geometry/hnet.h BuildHNet): W by
 //          eq. 7 (hnet.shape_parameters: least squares over every edge, or
 //          the paper's propagation from hnet.start_face), the common scale λ
 //          from the quartic of eq. 11, the kink angles α (hnet.kink_samples
@@ -49,7 +49,7 @@
 // output.patchwork (the patches sampled n × n with normals and isophote
 // bands, PLY) and output.rulings (OBJ polylines), in file units.
 //
-// Weights were chosen by experiment on the test nets of mesh/asymptotic_nets.h
+// Weights were chosen by experiment on the test nets of generators/asymptotic_nets.h
 // and the negshell A-net of ../shared/data (benchmarks/shi_table1.cpp). The
 // paper's Table 1 uses λ1 ≈ 0.4–0.86, λ2 ≈ 0.02–0.12, λ3 ≈ 0.6 in its own
 // (unstated) normalisation; here the planarity terms are normalised by the
@@ -59,8 +59,8 @@
 #include <limits>
 
 #include "core/problem.h"
-#include "mesh/hnet.h"
-#include "mesh/patchwork_io.h"
+#include "geometry/hnet.h"
+#include "geometry/patchwork_io.h"
 #include "problems/hnet_net.h"
 #include "problems/model.h"
 #include "problems/suitability.h"

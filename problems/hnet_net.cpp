@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <optional>
 
-#include "mesh/diagonal_net.h"
-#include "mesh/hnet.h"
+#include "geometry/diagonal_net.h"
+#include "geometry/hnet.h"
 #include "core/input_error.h"
 
 namespace archgeo {

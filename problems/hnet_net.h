@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — which net the hnet builder optimises: the input quad mesh or one
-// of its diagonal nets (mesh/diagonal_net.h).
+// of its diagonal nets (geometry/diagonal_net.h).
 //
 // An A-net candidate may come as the quad mesh whose *diagonals* follow the
 // asymptotic directions (the way ArchGeo stores A-nets, e.g.
@@ -15,12 +15,12 @@
 //   diagonal_0   the diagonal net on the vertices of colour 0 (the colour of
 //   diagonal_1   vertex 0, see TwoColouring in mesh/topology.h), or colour 1;
 //   auto         (default) a diagonal net whose mean interior star planarity
-//                (mesh/hnet.h) is below 1/kDiagonalGain of the input's, else
+//                (geometry/hnet.h) is below 1/kDiagonalGain of the input's, else
 //                the input. Of two such nets, the flatter one: the net that
 //                already is an A-net. Holes do not count against a net (a
 //                hole is an other-colour vertex of valence ≠ 4): the shape
 //                parameters are found by least squares over every edge
-//                (mesh/hnet.h HNetShape), so W need not close around a hole.
+//                (geometry/hnet.h HNetShape), so W need not close around a hole.
 //                On the negshell the colour-1 net (mean 5.4e-7, 9 holes)
 //                wins over the colour-0 net (1.7e-4, no holes). (The mean,
 //                not the max: the few stars at irregular vertices start
@@ -31,7 +31,7 @@
 
 #include <string>
 
-#include "mesh/hnet.h"
+#include "geometry/hnet.h"
 #include "mesh/surface_mesh.h"
 #include "problems/model.h"
 

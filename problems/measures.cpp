@@ -9,10 +9,10 @@
 
 #include "energies/total_absolute_curvature.h"
 #include "mesh/elements.h"
-#include "mesh/goal_metrics.h"
-#include "mesh/hnet.h"
-#include "mesh/metrics.h"
-#include "mesh/smoothness_metrics.h"
+#include "analysis/goal_metrics.h"
+#include "geometry/hnet.h"
+#include "analysis/metrics.h"
+#include "analysis/smoothness_metrics.h"
 
 namespace archgeo {
 namespace {

@@ -4,19 +4,19 @@
 // current state of the store (canonical frame: lengths in input mean edge
 // lengths). Measures computed together form a group (one pass):
 //
-//   pq_normalized_max          max over faces of δ_PQ,n (mesh/metrics.h)
+//   pq_normalized_max          max over faces of δ_PQ,n (analysis/metrics.h)
 //   E, E_prime,                Pellis §3: Σ ℓ ℓ*, Σ ℓ|α|; normal pyramids
-//   self_intersecting_pyramids,  and bad saddles (mesh/smoothness_metrics.h)
+//   self_intersecting_pyramids,  and bad saddles (analysis/smoothness_metrics.h)
 //   bad_saddles
 //   C                          Σ_v |λ1| + |λ2| of W′_v (Pellis §5.3; triangle
 //                              meshes; DiscreteTotalAbsoluteCurvature)
 //   displacement_max           largest distance of a vertex from its position
 //                              at the start of the solve
-//   star_planarity_max, _mean  vertex-star planarity (A-nets; mesh/hnet.h
+//   star_planarity_max, _mean  vertex-star planarity (A-nets; geometry/hnet.h
 //                              InteriorStarPlanarity)
 //   conical_max, _mean         |(ω1 + ω3) − (ω2 + ω4)| (radians) over interior
 //                              valence-4 vertices [Liu 2006, §3]
-//                              (mesh/goal_metrics.h MeasureConical)
+//                              (analysis/goal_metrics.h MeasureConical)
 //   face_offset_miss           how far the face planes at an interior vertex,
 //                              offset by the mean edge length, miss a common
 //                              point, max over vertices / mean edge length

@@ -33,7 +33,7 @@ class ReferenceSurface;
 class MeshModel;
 
 // The net a problem optimises when that is not the input mesh itself (hnet:
-// a diagonal net of the input, mesh/diagonal_net.h; principal_symmetric: the
+// a diagonal net of the input, geometry/diagonal_net.h; principal_symmetric: the
 // input with its quads split). The run then measures, solves and writes this
 // net; displacements are measured from its vertices' input positions, and
 // without a `reference` the net is its own reference surface.

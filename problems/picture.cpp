@@ -7,8 +7,8 @@
 #include <filesystem>
 
 #include "core/input_error.h"
-#include "mesh/io.h"
-#include "mesh/output_files.h"
+#include "io/io.h"
+#include "io/output_files.h"
 
 namespace archgeo {
 

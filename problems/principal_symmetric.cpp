@@ -6,7 +6,7 @@
 // Principal edges: exactly two opposite edges of each valence-6 vertex follow
 // a principal curvature direction (one third of all edges of a regular mesh).
 // They are given (a) by `principal_edges: FILE`, an edge-label file for a
-// triangle mesh (mesh/principal_edges.h), or (b) by `split:`, which
+// triangle mesh (geometry/principal_edges.h), or (b) by `split:`, which
 // triangulates a quad mesh by one diagonal per quad and labels one of its
 // three edge families:
 //   split.diagonal: first | second     v0–v2 or v1–v3 of each quad (file order)
@@ -42,10 +42,10 @@
 
 #include "core/problem.h"
 #include "core/input_error.h"
-#include "mesh/io.h"
-#include "mesh/output_files.h"
-#include "mesh/principal_edges.h"
-#include "mesh/smoothness_metrics.h"
+#include "io/io.h"
+#include "io/output_files.h"
+#include "geometry/principal_edges.h"
+#include "analysis/smoothness_metrics.h"
 #include "mesh/vec3.h"
 #include "problems/model.h"
 #include "problems/suitability.h"

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "mesh/metrics.h"
+#include "analysis/metrics.h"
 
 namespace archgeo {
 

@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <set>
 
-#include "mesh/curves.h"
+#include "geometry/curves.h"
 #include "core/input_error.h"
 #include "mesh/topology.h"
 

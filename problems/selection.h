@@ -15,7 +15,7 @@
 //   select: [0, 5, 17]          site ids (vertex, face or edge indices)
 //   select: {loop: 0}           the boundary part (as `boundary`) that belongs
 //                               to boundary loop k, loops numbered by vertex
-//                               count, longest first (mesh/curves.h
+//                               count, longest first (geometry/curves.h
 //                               BoundaryLoops): a vertex on the loop; a face or
 //                               edge with a vertex on it
 //   select: {degree: 4}         faces with that many sides (vertex sites: that
@@ -40,7 +40,7 @@
 
 #include "core/elements.h"
 #include "core/settings.h"
-#include "mesh/curves.h"
+#include "geometry/curves.h"
 #include "mesh/similarity.h"
 #include "mesh/surface_mesh.h"
 

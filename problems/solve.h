@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/loop.h"
-#include "mesh/reference.h"
+#include "geometry/reference.h"
 #include "mesh/store.h"
 #include "mesh/surface_mesh.h"
 #include "problems/model.h"

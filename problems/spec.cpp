@@ -18,7 +18,7 @@
 #include "core/solver_options.h"
 #include "energies/registry.h"
 #include "core/input_error.h"
-#include "mesh/input_file.h"
+#include "io/input_file.h"
 #include "problems/custom.h"
 #include "problems/registry.h"
 #include "problems/schema.h"

@@ -32,7 +32,7 @@
 // vertex keeps its input position), held by the tangent_plane term, or both.
 // Triangle meshes only.
 #include "core/problem.h"
-#include "mesh/smoothness_metrics.h"
+#include "analysis/smoothness_metrics.h"
 #include "mesh/topology.h"
 #include "problems/model.h"
 

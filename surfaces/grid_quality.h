@@ -5,7 +5,7 @@
 //
 // Works on a GridNetwork — points, grid lines, crossings and quads — so the
 // same code measures a Grid on a surface (NetworkOfGrid, here) and any quad
-// mesh that is a grid (mesh/grid_metrics.h).
+// mesh that is a grid (analysis/grid_metrics.h).
 //
 // Orthogonality at a crossing (a vertex interior to both grid lines through
 // it: eq. 5 sums over i = 2..n_u−1, j = 2..n_v−1 of an open grid, every index

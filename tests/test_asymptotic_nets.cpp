@@ -27,7 +27,7 @@
 
 #include "energies/anet_planarity.h"
 #include "energies/autodiff.h"
-#include "mesh/asymptotic_nets.h"
+#include "generators/asymptotic_nets.h"
 #include "core/input_error.h"
 #include "mesh/surface_mesh.h"
 

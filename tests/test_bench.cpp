@@ -20,8 +20,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "mesh/generators.h"
-#include "mesh/io.h"
+#include "generators/generators.h"
+#include "io/io.h"
 #include "tests/scratch_dir.h"
 
 namespace archgeo {

@@ -22,7 +22,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "mesh/io.h"
+#include "io/io.h"
 #include "tests/scratch_dir.h"
 
 namespace archgeo {

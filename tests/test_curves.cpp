@@ -9,10 +9,10 @@
 
 #include <gtest/gtest.h>
 
-#include "mesh/curves.h"
-#include "mesh/generators.h"
+#include "geometry/curves.h"
+#include "generators/generators.h"
 #include "core/input_error.h"
-#include "mesh/smoothness_surfaces.h"
+#include "generators/smoothness_surfaces.h"
 #include "mesh/vec3.h"
 #include "tests/make_mesh.h"
 #include "tests/scratch_dir.h"

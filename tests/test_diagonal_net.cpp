@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Diagonal nets (mesh/diagonal_net.h): combinatorics and orientation on a
+// Diagonal nets (geometry/diagonal_net.h): combinatorics and orientation on a
 // grid, the exact A-net among the diagonals of a hyperbolic paraboloid
 // sampled along its principal-like directions, the two nets of the negshell
 // A-net of ../shared/data (holes at its valence-6 vertices), and the errors.
@@ -8,11 +8,11 @@
 
 #include <set>
 
-#include "mesh/diagonal_net.h"
-#include "mesh/generators.h"
-#include "mesh/hnet.h"
+#include "geometry/diagonal_net.h"
+#include "generators/generators.h"
+#include "geometry/hnet.h"
 #include "core/input_error.h"
-#include "mesh/io.h"
+#include "io/io.h"
 #include "mesh/topology.h"
 
 namespace archgeo {

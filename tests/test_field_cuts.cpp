@@ -19,7 +19,7 @@
 #include "fields/extract.h"
 #include "fields/face_frames.h"
 #include "fields/triangle_surfaces.h"
-#include "mesh/io.h"
+#include "io/io.h"
 #include "tests/make_mesh.h"
 
 namespace archgeo {

@@ -30,9 +30,9 @@
 
 #include "fields/field_io.h"
 #include "fields/triangle_surfaces.h"
-#include "mesh/generators.h"
+#include "generators/generators.h"
 #include "core/input_error.h"
-#include "mesh/io.h"
+#include "io/io.h"
 #include "problems/field_pipeline.h"
 #include "problems/run.h"
 #include "problems/solve.h"

@@ -25,8 +25,8 @@
 #include <CGAL/Surface_mesh/IO/PLY.h>
 #include <gtest/gtest.h>
 
-#include "mesh/grid_mesh.h"
-#include "mesh/grid_metrics.h"
+#include "generators/grid_mesh.h"
+#include "analysis/grid_metrics.h"
 #include "core/input_error.h"
 #include "surfaces/force_directed.h"
 #include "surfaces/grid.h"

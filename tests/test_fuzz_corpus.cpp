@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "core/input_error.h"
-#include "mesh/io.h"
+#include "io/io.h"
 #include "problems/spec.h"
 
 namespace archgeo {

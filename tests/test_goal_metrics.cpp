@@ -9,9 +9,9 @@
 #include <Eigen/Core>
 #include <gtest/gtest.h>
 
-#include "mesh/generators.h"
-#include "mesh/goal_metrics.h"
-#include "mesh/smoothness_surfaces.h"
+#include "generators/generators.h"
+#include "analysis/goal_metrics.h"
+#include "generators/smoothness_surfaces.h"
 #include "mesh/vec3.h"
 #include "tests/make_mesh.h"
 

@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Tests for the bounded Hausdorff sample grid (mesh/hausdorff_sampling.h):
+// Tests for the bounded Hausdorff sample grid (geometry/hausdorff_sampling.h):
 // the sample count is CGAL's own, the spacing keeps it under the cap even
 // when one vertex is moved far away (issue 17: 147 s on a 2,000-vertex mesh),
 // and it is the plain 0.25 mean edge lengths when the cap does not apply.
@@ -10,9 +10,9 @@
 #include <cmath>
 #include <vector>
 
-#include "mesh/generators.h"
-#include "mesh/hausdorff_sampling.h"
-#include "mesh/reference.h"
+#include "generators/generators.h"
+#include "geometry/hausdorff_sampling.h"
+#include "geometry/reference.h"
 
 namespace archgeo {
 namespace {

@@ -15,13 +15,13 @@
 #include <sstream>
 #include <string>
 
-#include "mesh/asymptotic_nets.h"
-#include "mesh/diagonal_net.h"
-#include "mesh/generators.h"
-#include "mesh/hnet.h"
+#include "generators/asymptotic_nets.h"
+#include "geometry/diagonal_net.h"
+#include "generators/generators.h"
+#include "geometry/hnet.h"
 #include "core/input_error.h"
-#include "mesh/io.h"
-#include "mesh/metrics.h"
+#include "io/io.h"
+#include "analysis/metrics.h"
 #include "mesh/topology.h"
 #include "problems/hnet_net.h"
 #include "problems/run.h"

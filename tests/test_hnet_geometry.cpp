@@ -22,8 +22,8 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
-#include "mesh/bilinear_patch.h"
-#include "mesh/hnet.h"
+#include "geometry/bilinear_patch.h"
+#include "geometry/hnet.h"
 #include "core/input_error.h"
 #include "tests/scratch_dir.h"
 

@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "core/input_error.h"
-#include "mesh/io.h"
-#include "mesh/output_files.h"
+#include "io/io.h"
+#include "io/output_files.h"
 #include "mesh/surface_mesh.h"
 
 namespace archgeo {

@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Tests for the mesh readers' bounds (mesh/io.h, mesh/soup_readers.h,
-// mesh/input_file.h): no silent misreading (OBJ indices beyond 2^31, relative
+// Tests for the mesh readers' bounds (io/io.h, io/soup_readers.h,
+// io/input_file.h): no silent misreading (OBJ indices beyond 2^31, relative
 // indices, files holding more or fewer records than their header declares),
 // declared counts checked against the file size and ReadLimits before any
 // allocation (each case names the check that caught it, which only exists
@@ -24,8 +24,8 @@
 #include <vector>
 
 #include "core/input_error.h"
-#include "mesh/input_file.h"
-#include "mesh/io.h"
+#include "io/input_file.h"
+#include "io/io.h"
 #include "tests/scratch_dir.h"
 
 namespace archgeo {

@@ -30,7 +30,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "mesh/io.h"
+#include "io/io.h"
 #include "problems/run.h"
 #include "problems/spec.h"
 #include "scratch_dir.h"

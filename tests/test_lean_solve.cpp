@@ -19,8 +19,8 @@
 
 #include "core/lean_solve.h"
 #include "core/normal_equations.h"
-#include "mesh/generators.h"
-#include "mesh/metrics.h"
+#include "generators/generators.h"
+#include "analysis/metrics.h"
 #include "mesh/similarity.h"
 #include "problems/solve.h"
 

@@ -10,9 +10,9 @@
 #include <gtest/gtest.h>
 
 #include "make_mesh.h"
-#include "mesh/generators.h"
-#include "mesh/metrics.h"
-#include "mesh/reference.h"
+#include "generators/generators.h"
+#include "analysis/metrics.h"
+#include "geometry/reference.h"
 #include "mesh/topology.h"
 #include "mesh/vec3.h"
 

@@ -12,9 +12,9 @@
 #include <iostream>
 
 #include "fields/net_curvature.h"
-#include "mesh/generators.h"
-#include "mesh/io.h"
-#include "mesh/reference.h"
+#include "generators/generators.h"
+#include "io/io.h"
+#include "geometry/reference.h"
 #include "tests/make_mesh.h"
 
 namespace archgeo {

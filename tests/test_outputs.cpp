@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The output protocol of mesh/output_files.h: regular files only, nothing
+// The output protocol of io/output_files.h: regular files only, nothing
 // replaced before everything is written, all old or all new when a rename
 // fails or a signal arrives, checked writes on a full disk — as a unit and
 // end to end through the `archgeo` binary.
@@ -20,7 +20,7 @@
 #include <thread>
 
 #include "core/input_error.h"
-#include "mesh/output_files.h"
+#include "io/output_files.h"
 #include "tests/scratch_dir.h"
 #include "tests/shell.h"
 

@@ -18,7 +18,7 @@
 #include <sstream>
 #include <string>
 
-#include "mesh/io.h"
+#include "io/io.h"
 #include "tests/scratch_dir.h"
 #include "tests/shell.h"
 

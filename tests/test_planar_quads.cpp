@@ -12,9 +12,9 @@
 #include "core/tolerance_band.h"
 #include "energies/autodiff.h"
 #include "energies/pq_diagonal.h"
-#include "mesh/generators.h"
-#include "mesh/metrics.h"
-#include "mesh/reference.h"
+#include "generators/generators.h"
+#include "analysis/metrics.h"
+#include "geometry/reference.h"
 #include "mesh/similarity.h"
 #include "problems/solve.h"
 

@@ -18,8 +18,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "mesh/io.h"
-#include "mesh/metrics.h"
+#include "io/io.h"
+#include "analysis/metrics.h"
 #include "problems/colors.h"
 #include "problems/spec.h"
 #include "tests/scratch_dir.h"

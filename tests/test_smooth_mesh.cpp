@@ -14,12 +14,12 @@
 #include <set>
 #include <string>
 
-#include "mesh/generators.h"
+#include "generators/generators.h"
 #include "core/input_error.h"
-#include "mesh/io.h"
-#include "mesh/metrics.h"
-#include "mesh/smoothness_metrics.h"
-#include "mesh/principal_edges.h"
+#include "io/io.h"
+#include "analysis/metrics.h"
+#include "analysis/smoothness_metrics.h"
+#include "geometry/principal_edges.h"
 #include "problems/run.h"
 #include "mesh/elements.h"
 #include "problems/spec.h"

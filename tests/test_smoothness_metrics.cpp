@@ -8,10 +8,10 @@
 #include <gtest/gtest.h>
 
 #include "make_mesh.h"
-#include "mesh/generators.h"
+#include "generators/generators.h"
 #include "core/input_error.h"
-#include "mesh/smoothness_metrics.h"
-#include "mesh/smoothness_surfaces.h"
+#include "analysis/smoothness_metrics.h"
+#include "generators/smoothness_surfaces.h"
 
 namespace archgeo {
 namespace {

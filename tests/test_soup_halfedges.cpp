@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// EachOrderedEdgeOnce (mesh/soup_halfedges.h) against CGAL's
+// EachOrderedEdgeOnce (io/soup_halfedges.h) against CGAL's
 // is_polygon_soup_a_polygon_mesh: after orient_polygon_soup has succeeded
 // without a report, the two give the same verdict (ReadMesh relies on it);
 // on any soup, a repeated ordered edge fails both.
@@ -12,7 +12,7 @@
 #include <random>
 #include <vector>
 
-#include "mesh/soup_halfedges.h"
+#include "io/soup_halfedges.h"
 #include "mesh/surface_mesh.h"
 
 namespace archgeo {

@@ -8,9 +8,9 @@
 
 #include <cmath>
 
-#include "mesh/generators.h"
-#include "mesh/io.h"
-#include "mesh/smoothness_surfaces.h"
+#include "generators/generators.h"
+#include "io/io.h"
+#include "generators/smoothness_surfaces.h"
 #include "mesh/subdivision.h"
 #include "mesh/topology.h"
 #include "problems/run.h"

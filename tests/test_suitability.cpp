@@ -16,8 +16,8 @@
 #include <cmath>
 #include <string>
 
-#include "mesh/generators.h"
-#include "mesh/io.h"
+#include "generators/generators.h"
+#include "io/io.h"
 #include "problems/run.h"
 #include "problems/spec.h"
 #include "scratch_dir.h"

@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "core/input_error.h"
-#include "mesh/io.h"
-#include "mesh/smoothness_metrics.h"
-#include "mesh/smoothness_surfaces.h"
+#include "io/io.h"
+#include "analysis/smoothness_metrics.h"
+#include "generators/smoothness_surfaces.h"
 #include "mesh/topology.h"
 #include "problems/run.h"
 #include "problems/spec.h"

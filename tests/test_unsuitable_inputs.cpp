@@ -19,10 +19,10 @@
 #include <functional>
 #include <string>
 
-#include "mesh/asymptotic_nets.h"
-#include "mesh/generators.h"
-#include "mesh/io.h"
-#include "mesh/reference.h"
+#include "generators/asymptotic_nets.h"
+#include "generators/generators.h"
+#include "io/io.h"
+#include "geometry/reference.h"
 #include "problems/run.h"
 #include "problems/spec.h"
 #include "scratch_dir.h"

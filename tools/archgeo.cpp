@@ -34,7 +34,7 @@
 
 #include "bench/bench.h"
 #include "core/input_error.h"
-#include "mesh/output_files.h"
+#include "io/output_files.h"
 #include "problems/darboux.h"
 #include "problems/generate.h"
 #include "problems/picture.h"
@@ -121,7 +121,7 @@ int main(int argc, char** argv) {
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
   google::InitGoogleLogging(argv[0]);
   // A signal removes the staged temporaries and leaves existing outputs as
-  // they were (mesh/output_files.h).
+  // they were (io/output_files.h).
   archgeo::InstallOutputSignalCleanup();
   FLAGS_minloglevel = google::GLOG_ERROR;
   FLAGS_logtostderr = true;
