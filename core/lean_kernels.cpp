@@ -181,12 +181,15 @@ int NormalSystem::Solve(const Vector& damping, const Vector& gradient, double et
   return k;
 }
 
-double NormalSystem::ModelChange(const Vector& gradient, const Vector& delta,
-                                 Vector* model_gradient) const {
+double NormalSystem::ModelChange(const Vector& gradient, const Vector& delta, double* max_norm,
+                                 double* norm) const {
   Vector Hd(s_.tangent);
   Multiply(Vector::Zero(s_.tangent), delta, &Hd);
-  if (model_gradient) *model_gradient = gradient + Hd;
-  return gradient.dot(delta) + 0.5 * delta.dot(Hd);
+  const double change = gradient.dot(delta) + 0.5 * delta.dot(Hd);
+  Hd += gradient;  // the model's gradient
+  if (max_norm) *max_norm = Hd.lpNorm<Eigen::Infinity>();
+  if (norm) *norm = Hd.norm();
+  return change;
 }
 
 }  // namespace archgeo

@@ -168,10 +168,10 @@ class NormalSystem {
   int Solve(const Eigen::VectorXd& damping, const Eigen::VectorXd& gradient, double eta,
             int min_iterations, int max_iterations, Eigen::VectorXd* delta) const;
 
-  // The model's change ½ δᵀHδ + gᵀδ, and in `model_gradient`, if given,
-  // the model's gradient at δ, g + Hδ.
+  // The model's change ½ δᵀHδ + gᵀδ, and in `max_norm` and `norm`, if
+  // given, the max norm and the 2-norm of the model's gradient at δ, g + Hδ.
   double ModelChange(const Eigen::VectorXd& gradient, const Eigen::VectorXd& delta,
-                     Eigen::VectorXd* model_gradient = nullptr) const;
+                     double* max_norm = nullptr, double* norm = nullptr) const;
 
  private:
   const NormalPattern& s_;

@@ -338,13 +338,16 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
   out.initial_cost = out.final_cost = cost;
   double radius = options.initial_trust_region_radius, decrease_factor = 2.0;
   double last_change = 0;  // the cost change of the last accepted step
-  Vector delta, model_gradient;
+  Vector delta;
+  double model_max_norm = 0, model_norm = 0;  // of the model's gradient at the step
   // The report of an iteration (see lean_solve.h for its fields): `it` holds
-  // what the step filled in; the gradient is `g`'s.
-  auto report = [&](ceres::IterationSummary it, const Vector& g) {
+  // what the step filled in, the gradient norms included unless `g` is given.
+  auto report = [&](ceres::IterationSummary it, const Vector* g) {
     it.cost = cost;
-    it.gradient_max_norm = g.lpNorm<Eigen::Infinity>();
-    it.gradient_norm = g.norm();
+    if (g) {
+      it.gradient_max_norm = g->lpNorm<Eigen::Infinity>();
+      it.gradient_norm = g->norm();
+    }
     it.trust_region_radius = radius;
     it.cumulative_time_in_seconds = Since(start);
     for (ceres::IterationCallback* callback : options.callbacks) {
@@ -364,7 +367,7 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
   {
     ceres::IterationSummary zero;
     zero.iteration_time_in_seconds = Since(start);
-    if (report(zero, gradient)) {
+    if (report(zero, &gradient)) {
       out.seconds = Since(start);
       return out;
     }
@@ -388,7 +391,8 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
         system.Solve(damping, gradient, options.eta, options.min_linear_solver_iterations,
                      options.max_linear_solver_iterations, &delta);
     out.cg_iterations += it.linear_solver_iterations;
-    const double model_change = system.ModelChange(gradient, delta, &model_gradient);
+    const double model_change =
+        system.ModelChange(gradient, delta, &model_max_norm, &model_norm);
     it.step_solver_time_in_seconds = Since(t);
     out.linear_solver_seconds += it.step_solver_time_in_seconds;
     it.step_norm = delta.norm();
@@ -424,8 +428,10 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
       }
       if (ends) {
         // Reported with the model's gradient at the step, g + JᵀJ δ.
+        it.gradient_max_norm = model_max_norm;
+        it.gradient_norm = model_norm;
         it.iteration_time_in_seconds = Since(iteration_start);
-        report(it, model_gradient);
+        report(it, nullptr);
         break;
       }
       t = Clock::now();
@@ -436,14 +442,14 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
       }
       out.jacobian_seconds += Since(t);
       it.iteration_time_in_seconds = Since(iteration_start);
-      if (report(it, gradient)) break;
+      if (report(it, &gradient)) break;
       if (gradient.lpNorm<Eigen::Infinity>() <= options.gradient_tolerance) break;
     } else {
       lean.Restore(before);
       radius /= decrease_factor;
       decrease_factor *= 2.0;
       it.iteration_time_in_seconds = Since(iteration_start);
-      if (report(it, gradient)) break;
+      if (report(it, &gradient)) break;
       if (radius < options.min_trust_region_radius) break;
       if (small_step) break;
     }
