@@ -2,144 +2,32 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/lean_solve.h"
 
-#include "core/halves.h"
+#include "core/lean_kernels.h"
 #include "core/normal_equations.h"
+#include "core/parallel_parts.h"
 #include "core/solver_options.h"
 
 #include <algorithm>
-#include <array>
+#include <cctype>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <memory>
 #include <utility>
 #include <vector>
 
-#include <omp.h>
-
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <ceres/cost_function.h>
 #include <ceres/loss_function.h>
 #include <ceres/manifold.h>
 #include <ceres/problem.h>
+#include <ceres/types.h>
 
 namespace archgeo {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 double Since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 using Vector = Eigen::VectorXd;
-
-// y += M x (or Mᵀ x) for a row-major rows × cols block; 3 × 3 unrolled.
-template <bool kTranspose>
-inline void AddProduct(const double* M, int rows, int cols, const double* x, double* y) {
-  if (rows == 3 && cols == 3) {
-    using M3 = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
-    Eigen::Map<const M3> m(M);
-    if (kTranspose) {
-      Eigen::Map<Eigen::Vector3d>(y).noalias() += m.transpose() * Eigen::Map<const Eigen::Vector3d>(x);
-    } else {
-      Eigen::Map<Eigen::Vector3d>(y).noalias() += m * Eigen::Map<const Eigen::Vector3d>(x);
-    }
-    return;
-  }
-  for (int r = 0; r < rows; ++r) {
-    for (int c = 0; c < cols; ++c) {
-      if (kTranspose) {
-        y[c] += M[r * cols + c] * x[r];
-      } else {
-        y[r] += M[r * cols + c] * x[c];
-      }
-    }
-  }
-}
-
-// C += Aᵀ B for row-major A (rows × a) and B (rows × b), C a × b: the tiny
-// products of one residual's Jacobians. Each entry sums its rows first, then
-// adds to C (so C is read and written once).
-inline void AddTransposeProductAny(const double* A, const double* B, int rows, int a, int b,
-                                   double* C) {
-#pragma GCC unroll 4
-  for (int i = 0; i < a; ++i) {
-#pragma GCC unroll 4
-    for (int j = 0; j < b; ++j) {
-      double sum = 0;
-#pragma GCC unroll 4
-      for (int r = 0; r < rows; ++r) sum += A[r * a + i] * B[r * b + j];
-      C[i * b + j] += sum;
-    }
-  }
-}
-template <int kRows, int kA, int kB>
-void AddTransposeProductFixed(const double* A, const double* B, double* C) {
-  AddTransposeProductAny(A, B, kRows, kA, kB, C);  // inlined with the sizes known
-}
-// T = J P for row-major J (rows × a) and P (a × t): a block's tangent
-// Jacobian through its manifold's Plus Jacobian.
-inline void TangentProductAny(const double* J, const double* P, int rows, int a, int t,
-                              double* T) {
-#pragma GCC unroll 4
-  for (int r = 0; r < rows; ++r) {
-#pragma GCC unroll 4
-    for (int j = 0; j < t; ++j) {
-      double sum = 0;
-#pragma GCC unroll 4
-      for (int k = 0; k < a; ++k) sum += J[r * a + k] * P[k * t + j];
-      T[r * t + j] = sum;
-    }
-  }
-}
-template <int kRows, int kA, int kT>
-void TangentProductFixed(const double* J, const double* P, double* T) {
-  TangentProductAny(J, P, kRows, kA, kT, T);  // inlined with the sizes known
-}
-
-// The kernels above of every size up to kMax (rows and columns), indexed
-// [rows − 1][a − 1][b − 1], so that a residual's products run unrolled
-// (with the same sums as the loops: each entry over its rows in order).
-constexpr int kMax = 4;
-using Kernel = void (*)(const double*, const double*, double*);
-template <template <int, int, int> class Of, int... I>
-constexpr std::array<Kernel, sizeof...(I)> KernelTable(std::integer_sequence<int, I...>) {
-  return {Of<I / (kMax * kMax) + 1, I / kMax % kMax + 1, I % kMax + 1>::kernel...};
-}
-template <int R, int A, int B>
-struct TransposeProductOf {
-  static constexpr Kernel kernel = &AddTransposeProductFixed<R, A, B>;
-};
-template <int R, int A, int T>
-struct TangentProductOf {
-  static constexpr Kernel kernel = &TangentProductFixed<R, A, T>;
-};
-constexpr auto kTransposeProducts =
-    KernelTable<TransposeProductOf>(std::make_integer_sequence<int, kMax * kMax * kMax>());
-constexpr auto kTangentProducts =
-    KernelTable<TangentProductOf>(std::make_integer_sequence<int, kMax * kMax * kMax>());
-inline bool Fits(int rows, int a, int b) { return rows <= kMax && a <= kMax && b <= kMax; }
-inline int KernelIndex(int rows, int a, int b) { return ((rows - 1) * kMax + a - 1) * kMax + b - 1; }
-
-// C += Aᵀ B (see AddTransposeProductAny), unrolled where the sizes fit the table.
-inline void AddTransposeProduct(const double* A, const double* B, int rows, int a, int b,
-                                double* C) {
-  if (Fits(rows, a, b)) return kTransposeProducts[size_t(KernelIndex(rows, a, b))](A, B, C);
-  AddTransposeProductAny(A, B, rows, a, b, C);
-}
-// T = J P (see TangentProductAny), unrolled where the sizes fit the table.
-inline void TangentProduct(const double* J, const double* P, int rows, int a, int t, double* T) {
-  if (Fits(rows, a, t)) return kTangentProducts[size_t(KernelIndex(rows, a, t))](J, P, T);
-  TangentProductAny(J, P, rows, a, t, T);
-}
-
-// The sums {a, b} of body(first, end) over the two fixed halves of [0, n),
-// each half's then added (ForHalves: the same sums on one thread).
-template <class Body>
-std::array<double, 2> SumHalves(size_t split, size_t n, const Body& body) {
-  std::array<double, 2> half[2] = {{0, 0}, {0, 0}};
-  ForHalves(split, n, [&](int t, size_t first, size_t end) { half[t] = body(first, end); });
-  return {half[0][0] + half[1][0], half[0][1] + half[1][1]};
-}
 
 // Ceres' loss corrector (Triggs et al. 1999, "Bundle adjustment — a modern
 // synthesis", §4.3): scales r and J so that ½‖r̃‖² matches ρ to second order.
@@ -158,27 +46,9 @@ struct Corrector {
   }
 };
 
-// out = (H + diag(D))⁻¹ for one n × n diagonal block H (row-major) of the
-// normal equations, by Cholesky; the identity where H + diag(D) is not
-// positive definite. Square: a dynamic-size matrix type, with room for at
-// most kMax rows on the stack where the block fits (no heap allocation; the
-// same arithmetic as on the heap, to the last bit).
-template <class Square>
-void InvertDamped(const double* H, const double* D, double* out, int n) {
-  using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor,
-                             Square::MaxRowsAtCompileTime, Square::MaxColsAtCompileTime>;
-  Square Hii = Eigen::Map<const Rows>(H, n, n);
-  Hii.diagonal() += Eigen::Map<const Eigen::VectorXd>(D, n);
-  const Eigen::LLT<Square> llt(Hii);
-  Square inv = Square::Identity(n, n);
-  if (llt.info() == Eigen::Success) inv = llt.solve(inv);
-  Eigen::Map<Rows>(out, n, n) = inv;
-}
-
 // One thread's linearisation scratch and its sum Σ ρ, on cache lines of its
-// own: the other thread's writes to its sum must not evict this one's
-// scratch pointers (false sharing, which cost up to 70% of the linearisation
-// depending on where the stack happened to put the two).
+// own: another thread's writes to its sum must not evict this one's scratch
+// pointers (false sharing).
 struct alignas(64) Work {
   std::vector<double> residual, ambient, tangent;
   std::vector<double*> jacobians, tangents;
@@ -188,8 +58,10 @@ struct alignas(64) Work {
 
 class Lean {
  public:
-  Lean(const Residuals& residuals, NormalPattern& pattern) : in_(residuals), s_(pattern) {
-    ReadNormalPattern(residuals, &s_);
+  Lean(const Residuals& residuals, NormalPattern& pattern, int threads)
+      : in_(residuals), s_(pattern), threads_(std::clamp(threads, 1, 256)),
+        work_(size_t(threads_)) {
+    ReadNormalPattern(residuals, threads_, &s_);
     size_t rows = 0, scratch = 0, parameters = 0;
     for (size_t i = 0; i < residuals.residuals().size(); ++i) {
       const Residuals::Residual& r = residuals.residuals()[i];
@@ -212,21 +84,18 @@ class Lean {
     // Each buffer with 16 spare entries (≥ 64 bytes) at its end, so that no
     // two threads' buffers share a cache line.
     constexpr size_t kSpare = 16;
-    for (int t = 0; t < 2; ++t) {
-      Work* w = t == 0 ? &work_ : &second_;
-      w->residual.resize(rows + kSpare);
-      w->ambient.resize(scratch + kSpare);
-      w->tangent.resize(scratch + kSpare);
-      w->jacobians.resize(parameters + kSpare);
-      w->tangents.resize(parameters + kSpare);
-      w->free.resize(parameters + kSpare);
+    for (Work& w : work_) {
+      w.residual.resize(rows + kSpare);
+      w.ambient.resize(scratch + kSpare);
+      w.tangent.resize(scratch + kSpare);
+      w.jacobians.resize(parameters + kSpare);
+      w.tangents.resize(parameters + kSpare);
+      w.free.resize(parameters + kSpare);
     }
-    // The product's halves: the first block row past half the off-diagonal slots.
-    const int n = int(s_.blocks.size());
-    split_ = int(std::lower_bound(s_.row_start.begin(), s_.row_start.end(), s_.row_start[n] / 2) -
-                 s_.row_start.begin());
-    split_ = std::min(split_, n);
+    system_ = std::make_unique<NormalSystem>(s_, threads_);
   }
+
+  const NormalSystem& system() const { return *system_; }
 
   // The free blocks' values, concatenated (to undo a rejected step).
   std::vector<double> Save() const {
@@ -258,28 +127,28 @@ class Lean {
   }
 
   // ½ Σ ρ(‖r‖²) at the current values; false if a block fails to evaluate.
-  // The two halves of the visiting order (each a part of the mesh with
-  // every term), each summed on its own, then added: two threads where there
-  // are, and the same sum on one.
+  // The T parts of the visiting order (each a part of the mesh with every
+  // term), each summed on its own, then added in order.
   bool Cost(double* cost) {
     const size_t n = s_.visit.size();
-    double sum[2] = {0, 0};
-    bool good[2] = {true, true};
-    ForHalves(n / 2, n, [&](int t, size_t first, size_t end) {
-      double* scratch = (t == 0 ? work_ : second_).residual.data();
+    std::vector<char> good(size_t(threads_), 1);
+    *cost = SumParts(threads_, [&](int t) {
+      double* scratch = work_[size_t(t)].residual.data();
       double total = 0;
-      for (size_t p = first; p < end; ++p) {
+      for (size_t p = PartStart(n, threads_, t), end = PartStart(n, threads_, t + 1); p < end;
+           ++p) {
         const double c = in_.Cost(s_.visit[p], scratch);
         if (std::isnan(c)) {
-          good[t] = false;
-          return;
+          good[size_t(t)] = 0;
+          return 0.0;
         }
         total += c;
       }
-      sum[t] = total;
+      return total;
     });
-    if (!good[0] || !good[1]) return false;
-    *cost = sum[0] + sum[1];
+    for (char g : good) {
+      if (!g) return false;
+    }
     return std::isfinite(*cost);
   }
 
@@ -290,168 +159,39 @@ class Lean {
       if (!b.manifold) continue;
       if (!b.manifold->PlusJacobian(b.values, s_.plus_jacobians.data() + b.plus)) return false;
     }
-    // H and g in one copy: the pattern's first two runs of residuals read
-    // no block in common (two threads where there are, and the same sums on
-    // one), then its third run.
+    // H and g in one copy: the pattern's first T runs of residuals read no
+    // block in common (a thread each), then its last run.
     double* H = s_.hessian.data();
-    ForHalves(s_.slots / 2, s_.slots, [&](int, size_t first, size_t end) {
-      std::fill(H + first, H + end, 0.0);
+    const size_t slots = size_t(s_.slots);
+    ForParts(threads_, [&](int t) {
+      std::fill(H + PartStart(slots, threads_, t), H + PartStart(slots, threads_, t + 1), 0.0);
     });
     gradient_.setZero(s_.tangent);
-    bool good[2] = {true, true};
-    work_.total = second_.total = 0;
-    ForHalves(size_t(s_.split[0]), size_t(s_.split[1]), [&](int t, size_t first, size_t end) {
-      Work& w = t == 0 ? work_ : second_;
-      bool ok = true;  // written to good[t] once: the two share a cache line
-      for (size_t p = first; p < end && ok; ++p) ok = Accumulate(s_.visit[p], &w);
-      good[t] = ok;
+    std::vector<char> good(size_t(threads_), 1);
+    for (Work& w : work_) w.total = 0;
+    ForParts(threads_, [&](int t) {
+      Work& w = work_[size_t(t)];
+      bool ok = true;  // written to good[t] once: they share a cache line
+      for (int p = s_.RunStart(t); p < s_.run_end[size_t(t)] && ok; ++p) {
+        ok = Accumulate(size_t(s_.visit[size_t(p)]), &w);
+      }
+      good[size_t(t)] = ok;
     });
-    if (!good[0] || !good[1]) return false;
-    const double halves = work_.total + second_.total;
-    work_.total = 0;
-    for (size_t p = size_t(s_.split[1]); p < s_.visit.size() && good[0]; ++p) {
-      good[0] = Accumulate(s_.visit[p], &work_);
+    for (char g : good) {
+      if (!g) return false;
     }
-    if (!good[0]) return false;
+    double runs = work_[0].total;
+    for (int t = 1; t < threads_; ++t) runs += work_[size_t(t)].total;
+    Work& last = work_[0];
+    last.total = 0;
+    bool ok = true;
+    for (int p = s_.RunStart(threads_); p < s_.run_end[size_t(threads_)] && ok; ++p) {
+      ok = Accumulate(size_t(s_.visit[size_t(p)]), &last);
+    }
+    if (!ok) return false;
     *gradient = gradient_;
-    *cost = 0.5 * (halves + work_.total);
+    *cost = 0.5 * (runs + last.total);
     return std::isfinite(*cost) && gradient->allFinite();
-  }
-
-  // y = (H + diag(damping)) x. One pass over the stored upper triangle, in
-  // slot order: each off-diagonal slot H_ij adds H_ij x_j to y_i and
-  // H_ijᵀ x_i to y_j, so H streams from memory once (the product is bound
-  // by that traffic, not by arithmetic). Two fixed halves of the block rows
-  // (by slots), each into its own y, then summed: two threads where there
-  // are, and the same sums on one.
-  void Multiply(const Vector& damping, const Vector& x, Vector* y) const {
-    const int n = int(s_.blocks.size());
-    const double* H = s_.hessian.data();
-    spare_.resize(s_.tangent);
-    ForHalves(size_t(split_), size_t(n), [&](int t, size_t first, size_t end) {
-      double* out = t == 0 ? y->data() : spare_.data();
-      if (t == 0) {
-        y->noalias() = damping.cwiseProduct(x);
-      } else {
-        spare_.setZero();
-      }
-      for (size_t i = first; i < end; ++i) {
-        const PatternBlock& bi = s_.blocks[i];
-        double* yi = out + bi.offset;
-        const double* xi = x.data() + bi.offset;
-        AddProduct<false>(H + s_.diagonal[i], bi.tangent, bi.tangent, xi, yi);
-        for (int k = s_.row_start[i]; k < s_.row_start[i + 1]; ++k) {
-          const PatternBlock& bj = s_.blocks[s_.column[k]];
-          AddProduct<false>(H + s_.slot[k], bi.tangent, bj.tangent, x.data() + bj.offset, yi);
-          AddProduct<true>(H + s_.slot[k], bi.tangent, bj.tangent, xi, out + bj.offset);
-        }
-      }
-    });
-    ForHalves(size_t(s_.tangent) / 2, size_t(s_.tangent), [&](int, size_t first, size_t end) {
-      y->segment(first, end - first) += spare_.segment(first, end - first);
-    });
-  }
-
-  // The diagonal of H.
-  Vector Diagonal() const {
-    Vector d(s_.tangent);
-    for (size_t i = 0; i < s_.blocks.size(); ++i) {
-      const PatternBlock& b = s_.blocks[i];
-      d.segment(b.offset, b.tangent) = Slot(s_.diagonal[i], b.tangent, b.tangent).diagonal();
-    }
-    return d;
-  }
-
-  // Solves (H + diag(damping)) δ = −g by block-Jacobi PCG, from δ = 0, for
-  // at least `min_iterations` and at most `max_iterations` steps; returns the
-  // steps taken. It stops as Ceres' conjugate gradients do inside its
-  // Levenberg–Marquardt (Nash & Sofer 1990, "Assessing a search direction
-  // within a truncated-Newton method"): at step k once
-  // k (Q_k − Q_(k−1)) / Q_k < eta, Q the quadratic model δᵀAδ − 2bᵀδ
-  // (A = H + diag(damping), b = −g), which each step lowers by α rᵀz. The
-  // residual ‖b − Aδ‖, the test used before, keeps falling slowly long after
-  // the model's decrease has stalled: on 100k-quad roofs the last steps of a
-  // round took 76–185 CG steps each for a cost change of 1e-4.
-  int Solve(const Vector& damping, const Vector& gradient, double eta, int min_iterations,
-            int max_iterations, Vector* delta) const {
-    // PatternBlock-Jacobi preconditioner: every block's (H_ii + D_i)⁻¹ (the identity
-    // where that is not positive definite). Heap-allocated matrices for
-    // every block (three each) cost 0.10–0.14 s of the 100k roof's 2.2 s of CG.
-    const int blocks = int(s_.blocks.size());
-    std::vector<double> inverse(s_.diagonal_slots);
-#pragma omp parallel for schedule(static, 256)
-    for (int i = 0; i < blocks; ++i) {
-      const PatternBlock& b = s_.blocks[i];
-      const double* H = s_.hessian.data() + s_.diagonal[i];
-      const double* D = damping.data() + b.offset;
-      double* out = inverse.data() + s_.diagonal[i];
-      if (b.tangent <= kMax) {
-        InvertDamped<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMax, kMax>>(
-            H, D, out, b.tangent);
-      } else {
-        InvertDamped<Eigen::MatrixXd>(H, D, out, b.tangent);
-      }
-    }
-    // The vector work of a step in three passes over the two fixed halves
-    // of the blocks (two threads where there are, and the same sums on one),
-    // fused so that each vector streams from memory once per pass.
-    const int n = s_.tangent;
-    const size_t half = size_t(blocks / 2);
-    const auto offset = [&](size_t i) { return i < size_t(blocks) ? size_t(s_.blocks[i].offset) : size_t(n); };
-    delta->setZero(n);
-    Vector r = -gradient, z(n), p(n), q(n);
-    // z = M⁻¹ r on blocks [first, end); returns their r·z (M⁻¹ is positive
-    // definite: r·z > 0 unless r = 0).
-    const auto precondition = [&](size_t first, size_t end) {
-      std::array<double, 2> sum = {0, 0};
-      for (size_t i = first; i < end; ++i) {
-        const PatternBlock& b = s_.blocks[i];
-        const double* ri = r.data() + b.offset;
-        double* zi = z.data() + b.offset;
-        std::fill(zi, zi + b.tangent, 0.0);
-        AddProduct<false>(inverse.data() + s_.diagonal[i], b.tangent, b.tangent, ri, zi);
-        for (int c = 0; c < b.tangent; ++c) sum[0] += ri[c] * zi[c];
-      }
-      return sum;
-    };
-    std::array<double, 2> sums = SumHalves(half, size_t(blocks), precondition);
-    p = z;
-    double rz = sums[0];
-    double model = 0;  // Q at δ
-    int k = 0;
-    while (k < max_iterations && rz > 0) {
-      Multiply(damping, p, &q);
-      const double pq = SumHalves(half, size_t(blocks), [&](size_t first, size_t end) {
-        const size_t a = offset(first), e = offset(end);
-        return std::array<double, 2>{p.segment(a, e - a).dot(q.segment(a, e - a)), 0.0};
-      })[0];
-      if (!(pq > 0.0)) break;
-      const double alpha = rz / pq;
-      sums = SumHalves(half, size_t(blocks), [&](size_t first, size_t end) {
-        const size_t a = offset(first), e = offset(end);
-        delta->segment(a, e - a) += alpha * p.segment(a, e - a);
-        r.segment(a, e - a) -= alpha * q.segment(a, e - a);
-        return precondition(first, end);
-      });
-      ++k;
-      const double next = model - alpha * rz;
-      if (k >= min_iterations && k * (next - model) / next < eta) break;
-      model = next;
-      const double beta = sums[0] / rz;
-      rz = sums[0];
-      ForHalves(half, size_t(blocks), [&](int, size_t first, size_t end) {
-        const size_t a = offset(first), e = offset(end);
-        p.segment(a, e - a) = z.segment(a, e - a) + beta * p.segment(a, e - a);
-      });
-    }
-    return k;
-  }
-
-  // ½ δᵀ H δ + gᵀ δ (the model's change).
-  double ModelChange(const Vector& gradient, const Vector& delta) const {
-    Vector Hd(s_.tangent);
-    Multiply(Vector::Zero(s_.tangent), delta, &Hd);
-    return gradient.dot(delta) + 0.5 * delta.dot(Hd);
   }
 
   double ParameterNorm() const {
@@ -559,16 +299,13 @@ class Lean {
     return true;
   }
   int Rows(size_t i) const { return in_.residuals()[i].rows(); }
-  Eigen::Map<const RowMatrix> Slot(int offset, int rows, int cols) const {
-    return Eigen::Map<const RowMatrix>(s_.hessian.data() + offset, rows, cols);
-  }
 
   const Residuals& in_;
   NormalPattern& s_;
-  Work work_, second_;
+  int threads_;
+  std::vector<Work> work_;  // one per thread
   Vector gradient_;  // g = J^T r
-  int split_ = 0;
-  mutable Vector spare_;  // the product's second half
+  std::unique_ptr<NormalSystem> system_;
 };
 
 }  // namespace
@@ -579,8 +316,16 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
   const auto start = Clock::now();
   SolveSummary out;
   out.pcg = true;
+  std::string why;
+  const std::string refused = LeanSolveRefuses(options, &why);
+  if (!refused.empty()) {
+    out.usable = false;
+    out.message = refused + ": " + why;
+    return out;
+  }
   NormalPattern own;
-  Lean lean(residuals, pattern ? *pattern : own);
+  Lean lean(residuals, pattern ? *pattern : own, options.num_threads);
+  const NormalSystem& system = lean.system();
   double cost = 0;
   Vector gradient;
   auto t = Clock::now();
@@ -594,15 +339,15 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
   double radius = options.initial_trust_region_radius, decrease_factor = 2.0;
   double last_change = 0;  // the cost change of the last accepted step
   Vector delta;
-  auto report = [&](int iteration, double step_norm, bool success, double change) {
-    ceres::IterationSummary it;
-    it.iteration = iteration;
+  double model_max_norm = 0, model_norm = 0;  // of the model's gradient at the step
+  // The report of an iteration (see lean_solve.h for its fields): `it` holds
+  // what the step filled in, the gradient norms included unless `g` is given.
+  auto report = [&](ceres::IterationSummary it, const Vector* g) {
     it.cost = cost;
-    it.cost_change = change;
-    it.gradient_max_norm = gradient.lpNorm<Eigen::Infinity>();
-    it.gradient_norm = gradient.norm();
-    it.step_norm = step_norm;
-    it.step_is_valid = it.step_is_successful = success;
+    if (g) {
+      it.gradient_max_norm = g->lpNorm<Eigen::Infinity>();
+      it.gradient_norm = g->norm();
+    }
     it.trust_region_radius = radius;
     it.cumulative_time_in_seconds = Since(start);
     for (ceres::IterationCallback* callback : options.callbacks) {
@@ -619,9 +364,13 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
     }
     return false;
   };
-  if (report(0, 0.0, true, 0.0)) {
-    out.seconds = Since(start);
-    return out;
+  {
+    ceres::IterationSummary zero;
+    zero.iteration_time_in_seconds = Since(start);
+    if (report(zero, &gradient)) {
+      out.seconds = Since(start);
+      return out;
+    }
   }
   if (gradient.lpNorm<Eigen::Infinity>() <= options.gradient_tolerance) {
     out.seconds = Since(start);
@@ -629,27 +378,37 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
   }
   for (int iteration = 1; iteration <= options.max_num_iterations; ++iteration) {
     if (Since(start) >= options.max_solver_time_in_seconds) break;
+    const auto iteration_start = Clock::now();
     out.iterations = iteration;
+    ceres::IterationSummary it;
+    it.iteration = iteration;
+    it.eta = options.eta;
     t = Clock::now();
-    const Vector diagonal = lean.Diagonal().cwiseMax(options.min_lm_diagonal).cwiseMin(
+    const Vector diagonal = system.Diagonal().cwiseMax(options.min_lm_diagonal).cwiseMin(
         options.max_lm_diagonal);
     const Vector damping = diagonal / radius;
-    out.cg_iterations += lean.Solve(damping, gradient, options.eta,
-                                    options.min_linear_solver_iterations,
-                                    options.max_linear_solver_iterations, &delta);
-    const double model_change = lean.ModelChange(gradient, delta);
-    out.linear_solver_seconds += Since(t);
+    it.linear_solver_iterations =
+        system.Solve(damping, gradient, options.eta, options.min_linear_solver_iterations,
+                     options.max_linear_solver_iterations, &delta);
+    out.cg_iterations += it.linear_solver_iterations;
+    const double model_change =
+        system.ModelChange(gradient, delta, &model_max_norm, &model_norm);
+    it.step_solver_time_in_seconds = Since(t);
+    out.linear_solver_seconds += it.step_solver_time_in_seconds;
+    it.step_norm = delta.norm();
     const std::vector<double> before = lean.Save();
     const double x_norm = lean.ParameterNorm();
     double new_cost = 0;
     t = Clock::now();
-    const bool valid = model_change < 0.0 && lean.Step(delta) && lean.Cost(&new_cost);
+    it.step_is_valid = model_change < 0.0 && lean.Step(delta) && lean.Cost(&new_cost);
     out.residual_seconds += Since(t);
-    const double rho = valid ? (cost - new_cost) / -model_change : -1.0;
+    const double rho = it.step_is_valid ? (cost - new_cost) / -model_change : -1.0;
+    if (it.step_is_valid) it.relative_decrease = rho;
     const bool small_step =
         delta.norm() <= options.parameter_tolerance * (x_norm + options.parameter_tolerance);
-    if (valid && rho > options.min_relative_decrease) {
-      const double change = cost - new_cost;
+    if (it.step_is_valid && rho > options.min_relative_decrease) {
+      it.step_is_successful = true;
+      it.cost_change = cost - new_cost;
       cost = new_cost;
       radius = std::min(options.max_trust_region_radius,
                         radius / std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * rho - 1.0, 3)));
@@ -658,6 +417,7 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
       // its change, or the next one extrapolated from the last two (Δ_k² /
       // Δ_(k−1): the changes falling geometrically), is below the function
       // tolerance: the iteration that would only confirm it is not taken.
+      const double change = it.cost_change;
       const double next_change = last_change > 0 ? change * change / last_change : change;
       bool ends = change <= options.function_tolerance * (cost + change) ||
                   next_change <= options.function_tolerance * cost || small_step;
@@ -667,8 +427,11 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
         ends = ends || (ending && ending->Ends());
       }
       if (ends) {
-        gradient.setConstant(std::numeric_limits<double>::quiet_NaN());
-        report(iteration, delta.norm(), true, change);
+        // Reported with the model's gradient at the step, g + JᵀJ δ.
+        it.gradient_max_norm = model_max_norm;
+        it.gradient_norm = model_norm;
+        it.iteration_time_in_seconds = Since(iteration_start);
+        report(it, nullptr);
         break;
       }
       t = Clock::now();
@@ -678,13 +441,15 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
         break;
       }
       out.jacobian_seconds += Since(t);
-      if (report(iteration, delta.norm(), true, change)) break;
+      it.iteration_time_in_seconds = Since(iteration_start);
+      if (report(it, &gradient)) break;
       if (gradient.lpNorm<Eigen::Infinity>() <= options.gradient_tolerance) break;
     } else {
       lean.Restore(before);
       radius /= decrease_factor;
       decrease_factor *= 2.0;
-      if (report(iteration, delta.norm(), false, 0.0)) break;
+      it.iteration_time_in_seconds = Since(iteration_start);
+      if (report(it, &gradient)) break;
       if (radius < options.min_trust_region_radius) break;
       if (small_step) break;
     }
@@ -694,18 +459,66 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
   return out;
 }
 
-SolveSummary SolveRound(const ceres::Solver::Options& options, int pcg_above,
-                        double pcg_function_tolerance, const Residuals& residuals,
-                        NormalPattern* pattern) {
-  if (pcg_above > 0 && residuals.FreeTangentSize() > pcg_above) {
+std::string LeanSolveRefuses(const ceres::Solver::Options& o, std::string* why) {
+  std::string name, reason;
+  if (o.minimizer_type != ceres::TRUST_REGION) {
+    name = "minimizer_type";
+    reason = "LeanSolve is a trust-region (Levenberg-Marquardt) solver, not a line search";
+  } else if (o.trust_region_strategy_type != ceres::LEVENBERG_MARQUARDT) {
+    name = "trust_region_strategy_type";
+    reason = "LeanSolve steps by Levenberg-Marquardt only, not by dogleg";
+  } else if (o.use_nonmonotonic_steps) {
+    name = "use_nonmonotonic_steps";
+    reason = "LeanSolve accepts only steps that lower the cost";
+  } else if (o.use_inner_iterations) {
+    name = "use_inner_iterations";
+    reason = "LeanSolve has no inner iterations";
+  } else if (o.preconditioner_type != ceres::JACOBI) {
+    name = "preconditioner_type";
+    std::string type = ceres::PreconditionerTypeToString(o.preconditioner_type);
+    for (char& c : type) c = char(std::tolower(static_cast<unsigned char>(c)));
+    reason = "LeanSolve's conjugate gradients are preconditioned by block Jacobi (jacobi) only, "
+             "not " + type;
+  }
+  if (why) *why = reason;
+  return name;
+}
+
+bool UsesLeanSolve(int pcg_above, const Residuals& residuals) {
+  return pcg_above > 0 && residuals.FreeTangentSize() > pcg_above;
+}
+
+SolveSummary SolveRound(const ceres::Solver::Options& options, const RoundSolver& how,
+                        const Residuals& residuals, NormalPattern* pattern) {
+  if (UsesLeanSolve(how.pcg_above, residuals)) {
     ceres::Solver::Options lean = options;
-    lean.function_tolerance = std::max(options.function_tolerance, pcg_function_tolerance);
+    lean.function_tolerance = std::max(options.function_tolerance, how.pcg_function_tolerance);
     return LeanSolve(lean, residuals, pattern);
   }
-  const std::unique_ptr<ceres::Problem> problem = residuals.MakeProblem();
-  ceres::Solver::Summary summary;
-  ceres::Solve(options, problem.get(), &summary);
   SolveSummary out;
+  std::vector<ceres::ResidualBlockId> ids;
+  const std::unique_ptr<ceres::Problem> problem = residuals.MakeProblem(&ids);
+  ceres::Solver::Options ceres_options = options;
+  if (options.preconditioner_type == ceres::SUBSET) {
+    // Ceres' SUBSET preconditioner: the residual blocks of the named parts.
+    std::vector<bool> in_subset(residuals.parts().size(), false);
+    for (size_t k = 0; k < in_subset.size(); ++k) {
+      in_subset[k] = std::find(how.subset_parts.begin(), how.subset_parts.end(),
+                               residuals.parts()[k]) != how.subset_parts.end();
+    }
+    auto& subset = ceres_options.residual_blocks_for_subset_preconditioner;
+    subset.clear();
+    for (size_t i = 0; i < ids.size(); ++i) {
+      if (in_subset[size_t(residuals.residuals()[i].part())]) subset.insert(ids[i]);
+    }
+    if (subset.empty()) {
+      out.usable = false;
+      out.message = "preconditioner_type subset: no residual block of the subset's parts";
+      return out;
+    }
+  }
+  ceres::Solver::Summary summary;
+  ceres::Solve(ceres_options, problem.get(), &summary);
   out.iterations = std::max(0, int(summary.iterations.size()) - 1);
   out.seconds = std::max(0.0, summary.total_time_in_seconds);
   out.linear_solver_seconds = std::max(0.0, summary.linear_solver_time_in_seconds);

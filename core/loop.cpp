@@ -54,12 +54,9 @@ class IterationWatch : public EndingCallback {
     const bool met = Met(&values);
     measured_ = false;
     if (sink_) {
-      // NaN: LeanSolve did not linearise at a step that ends the solve.
-      const std::string gradient =
-          std::isnan(s.gradient_max_norm) ? "-" : Format("%.2e", s.gradient_max_norm);
       char line[256];
-      std::snprintf(line, sizeof line, "%s  iter %3d  cost %.6e%s  |gradient| %s  |step| %.2e  %.3f s",
-                    label_.c_str(), s.iteration, s.cost, values.c_str(), gradient.c_str(),
+      std::snprintf(line, sizeof line, "%s  iter %3d  cost %.6e%s  |gradient| %.2e  |step| %.2e  %.3f s",
+                    label_.c_str(), s.iteration, s.cost, values.c_str(), s.gradient_max_norm,
                     s.step_norm, s.cumulative_time_in_seconds);
       sink_(line);
     }
@@ -112,6 +109,18 @@ std::map<std::string, double> Objective(const Residuals& residuals) {
 
 double Bound(const Settings& s, const Tolerance& t) { return s.Number(t.key); }
 
+// Whether a residual of `residuals` counts under one of the parts `names`.
+bool AnyPart(const Residuals& residuals, const std::vector<std::string>& names) {
+  std::vector<bool> named(residuals.parts().size(), false);
+  for (size_t k = 0; k < named.size(); ++k) {
+    named[k] = std::find(names.begin(), names.end(), residuals.parts()[k]) != names.end();
+  }
+  for (const Residuals::Residual& r : residuals.residuals()) {
+    if (named[size_t(r.part())]) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 nlohmann::json RoundJson(const RoundLog& r) {
@@ -129,6 +138,10 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
   CHECK(options.settings) << "RunLoop: no settings";
   const Settings& s = *options.settings;
   const ceres::Solver::Options base = SolverOptions(s);
+  RoundSolver how;
+  how.pcg_above = int(s.Integer("solver.pcg_above"));
+  how.pcg_function_tolerance = s.Number("solver.pcg_function_tolerance");
+  how.subset_parts = SubsetParts(s);
   const std::vector<Stage> stages = declaration.stages(s);
   const double time_limit = s.Number("schedule.max_seconds");
   const auto start = Clock::now();
@@ -259,8 +272,28 @@ LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, M
         }
         SolveSummary summary;
         if (residuals.NumResiduals() > 0) {
-          summary = SolveRound(solver, int(s.Integer("solver.pcg_above")),
-                               s.Number("solver.pcg_function_tolerance"), residuals, &pattern);
+          // A round LeanSolve solves refuses the options it does not
+          // implement: an input error, before any output is written.
+          if (UsesLeanSolve(how.pcg_above, residuals)) {
+            std::string why;
+            const std::string option = LeanSolveRefuses(solver, &why);
+            if (!option.empty()) {
+              throw s.Error("solver." + option,
+                            why + " (this round has " +
+                                std::to_string(residuals.FreeTangentSize()) +
+                                " variables, more than solver.pcg_above = " +
+                                std::to_string(how.pcg_above) +
+                                ": set solver.pcg_above: 0 to solve every round with Ceres)");
+            }
+          }
+          if (!UsesLeanSolve(how.pcg_above, residuals) &&
+              solver.preconditioner_type == ceres::SUBSET &&
+              !AnyPart(residuals, how.subset_parts)) {
+            throw s.Error("solver.subset_preconditioner_parts",
+                          "no residual of this round is in these parts (preconditioner_type: "
+                          "subset needs them)");
+          }
+          summary = SolveRound(solver, how, residuals, &pattern);
         }
         model.StateChanged();
 

@@ -7,7 +7,7 @@
 
 #include <ceres/manifold.h>
 
-#include "core/halves.h"
+#include "core/parallel_parts.h"
 
 namespace archgeo {
 
@@ -61,13 +61,14 @@ bool Renew(const Residuals& in, NormalPattern& s) {
   return Structure(in) == s.structure;
 }
 
-// The residuals' visiting order and its runs (NormalPattern::visit): cut
-// by their first free block at the block below which half of them start
-// (the blocks are numbered by first use, so the cut runs across the mesh);
-// a residual reading a block that residuals of both sides read goes to the
-// run after them. Each run goes chunk by chunk of the mesh, and keeps the
-// residuals' order (term by term) within a chunk.
-void Partition(const Residuals& in, NormalPattern& s) {
+// The residuals' visiting order and its runs for `threads` threads
+// (NormalPattern::visit): the residuals cut into `threads` ranges by their
+// first free block, at the blocks below which 1/T, 2/T, … of them start (the
+// blocks are numbered by first use, so each cut runs across the mesh); a
+// residual reading a block that residuals of two ranges read goes to the
+// last run, after them. Each run goes chunk by chunk of the mesh, and keeps
+// the residuals' order (term by term) within a chunk.
+void Partition(const Residuals& in, int threads, NormalPattern& s) {
   const int n = int(in.residuals().size());
   const int blocks = int(s.blocks.size());
   const auto each_block = [&](int k, auto&& f) {
@@ -77,8 +78,9 @@ void Partition(const Residuals& in, NormalPattern& s) {
       if (b >= 0) f(b);
     }
   };
-  // The first free block of each residual, and the block below which half
-  // of them start.
+  // The first free block of each residual (`blocks`: none), and the cuts:
+  // cut[t] the first block of range t, below which at most t/T of the
+  // residuals start.
   std::vector<int> key(n, 0), count(blocks + 1, 0);
   for (int k = 0; k < n; ++k) {
     int first = blocks;
@@ -86,37 +88,50 @@ void Partition(const Residuals& in, NormalPattern& s) {
     key[k] = first;
     ++count[first];
   }
-  int cut = 0;
-  for (int below = 0; cut < blocks && 2 * (below + count[cut]) <= n; ++cut) below += count[cut];
-  // Which half reads each block: bit 1 the first, bit 2 the second.
-  std::vector<unsigned char> read_by(blocks, 0);
-  for (int k = 0; k < n; ++k) {
-    each_block(k, [&](int b) { read_by[b] |= key[k] < cut ? 1 : 2; });
+  std::vector<int> cut(size_t(threads), 0);
+  long long below = 0;
+  for (int t = 1, c = 0; t < threads; ++t) {
+    for (; c < blocks && threads * (below + count[c]) <= (long long)(t) * n; ++c) below += count[c];
+    cut[size_t(t)] = c;
   }
-  // Runs: the first half's residuals that read no block of both halves, the
-  // second half's, then those that do, each in the residuals' order.
-  std::vector<unsigned char> run(n);
+  const auto range = [&](int k) {
+    return int(std::upper_bound(cut.begin() + 1, cut.end(), key[k]) - cut.begin()) - 1;
+  };
+  // Which range's residuals read each block: -1 none yet, -2 two or more.
+  std::vector<int> owner(blocks, -1);
+  for (int k = 0; k < n; ++k) {
+    const int r = range(k);
+    each_block(k, [&](int b) { owner[b] = owner[b] == -1 || owner[b] == r ? r : -2; });
+  }
+  // Runs: each range's residuals that read no block of another range, then
+  // those that do (run `threads`), each in the residuals' order.
+  std::vector<uint16_t> run(n);  // threads ≤ 256 (solver.num_threads)
   for (int k = 0; k < n; ++k) {
     bool shared = false;
-    each_block(k, [&](int b) { shared = shared || read_by[b] == 3; });
-    run[k] = shared ? 2 : key[k] < cut ? 0 : 1;
+    each_block(k, [&](int b) { shared = shared || owner[b] == -2; });
+    run[k] = uint16_t(shared ? threads : range(k));
   }
   // Within a run, chunk by chunk (kVisitChunk), each in the residuals' order.
   const int chunks = blocks / kVisitChunk + 1;
-  std::vector<int> start(size_t(3 * chunks) + 1, 0);
+  std::vector<int> start(size_t((threads + 1) * chunks) + 1, 0);
   const auto bucket = [&](int k) { return run[k] * chunks + key[k] / kVisitChunk; };
   for (int k = 0; k < n; ++k) ++start[size_t(bucket(k)) + 1];
   for (size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
   s.visit.assign(n, 0);
   for (int k = 0; k < n; ++k) s.visit[size_t(start[size_t(bucket(k))]++)] = k;
-  s.split[0] = start[size_t(chunks) - 1];
-  s.split[1] = start[size_t(2 * chunks) - 1];
+  s.threads = threads;
+  s.run_end.assign(size_t(threads) + 1, n);
+  for (int t = 0; t < threads; ++t) s.run_end[size_t(t)] = start[size_t((t + 1) * chunks) - 1];
 }
 
 }  // namespace
 
-bool ReadNormalPattern(const Residuals& in, NormalPattern* pattern) {
-  if (!pattern->pairs.empty() && Renew(in, *pattern)) return true;
+bool ReadNormalPattern(const Residuals& in, int threads, NormalPattern* pattern) {
+  threads = std::clamp(threads, 1, 256);
+  if (!pattern->pairs.empty() && Renew(in, *pattern)) {
+    if (pattern->threads != threads) Partition(in, threads, *pattern);
+    return true;
+  }
   *pattern = NormalPattern();
   NormalPattern& s = *pattern;
   // Free blocks in order of first use (as Residuals keeps them); -1: constant.
@@ -153,9 +168,12 @@ bool ReadNormalPattern(const Residuals& in, NormalPattern* pattern) {
   // Free pairs per residual (the order Linearise walks them), numbered, and
   // each under its lower block: (upper block, pair number) in the order
   // Linearise walks them, so a row's columns come in order of first use.
-  // Two halves of the residuals, one per thread where there are two: the
-  // second's pairs go after the first's, under each block.
-  const size_t middle = residuals.size() / 2;
+  // The residuals in `parts` parts, a thread each: a part's pairs go after
+  // the earlier parts' under each block, so the layout is that of one part,
+  // whatever their number (at most 16: each holds a count per block).
+  const int parts = std::min(threads, 16);
+  const size_t m = residuals.size();
+  const auto part_start = [&](int t) { return PartStart(m, parts, t); };
   // start(k) for each residual k in [from, to), then f(p, q) for each of its
   // free pairs.
   const auto each_pair = [&](size_t from, size_t to, auto&& start, auto&& f) {
@@ -172,47 +190,63 @@ bool ReadNormalPattern(const Residuals& in, NormalPattern* pattern) {
       }
     }
   };
-  s.pairs.resize(residuals.size());
-  std::vector<int> count[2] = {std::vector<int>(n + 1, 0), std::vector<int>(n + 1, 0)};
-  int half_pairs[2] = {0, 0};
-  ForHalves(middle, residuals.size(), [&](int t, size_t from, size_t to) {
+  s.pairs.resize(m);
+  std::vector<std::vector<int>> count(static_cast<size_t>(parts), std::vector<int>(n + 1, 0));
+  std::vector<int> part_pairs(static_cast<size_t>(parts) + 1, 0);  // then: each part's first pair
+  ForParts(parts, [&](int t) {
     int pairs = 0;
-    std::vector<int>& c = count[t];
-    each_pair(from, to, [](size_t) {}, [&](int p, int q) {
+    std::vector<int>& c = count[size_t(t)];
+    each_pair(part_start(t), part_start(t + 1), [](size_t) {}, [&](int p, int q) {
       ++c[std::min(p, q)];
       ++pairs;
     });
-    half_pairs[t] = pairs;
+    part_pairs[size_t(t) + 1] = pairs;
   });
-  const int pair_count = half_pairs[0] + half_pairs[1];
+  for (int t = 0; t < parts; ++t) part_pairs[size_t(t) + 1] += part_pairs[size_t(t)];
+  const int pair_count = part_pairs[size_t(parts)];
   std::vector<int> lower_start(n + 1, 0);
   for (int b = 0; b < n; ++b) {
-    const int first = count[0][b], second = count[1][b];
-    count[0][b] = lower_start[b];          // where the first half's pairs under b go
-    count[1][b] = lower_start[b] + first;  // and the second's
-    lower_start[b + 1] = lower_start[b] + first + second;
+    int at = lower_start[b];
+    for (std::vector<int>& c : count) {  // where each part's pairs under b go
+      const int mine = c[b];
+      c[b] = at;
+      at += mine;
+    }
+    lower_start[b + 1] = at;
   }
   std::vector<std::pair<int, int>> upper(static_cast<size_t>(pair_count));  // (upper, pair)
-  ForHalves(middle, residuals.size(), [&](int t, size_t from, size_t to) {
-    std::vector<int>& fill = count[t];
-    int at = t == 0 ? 0 : half_pairs[0];
-    each_pair(from, to, [&](size_t k) { s.pairs[k] = at; }, [&](int p, int q) {
-      upper[size_t(fill[std::min(p, q)]++)] = {std::max(p, q), at++};
-    });
+  ForParts(parts, [&](int t) {
+    std::vector<int>& fill = count[size_t(t)];
+    int at = part_pairs[size_t(t)];
+    each_pair(part_start(t), part_start(t + 1), [&](size_t k) { s.pairs[k] = at; },
+              [&](int p, int q) {
+                upper[size_t(fill[std::min(p, q)]++)] = {std::max(p, q), at++};
+              });
   });
+  count.clear();
   // Slots, row by row: a row's distinct upper blocks, in order of first use.
-  // The rows in two halves (by pairs), one per thread where there are two;
-  // the second half's slots and columns are numbered from 0, then moved past
-  // the first's.
+  // The rows in `parts` parts (by pairs), a thread each; each part's slots
+  // are numbered from 0, then moved past the earlier parts'.
   s.pair_slot.assign(size_t(pair_count), -1);
-  const int half = int(std::upper_bound(lower_start.begin(), lower_start.end(), pair_count / 2) -
-                       lower_start.begin()) - 1;
   struct Rows {
-    int from, to, slots;
+    int from = 0, to = 0, slots = 0;
     std::vector<int> row_start, column, slot;
-  } rows[2] = {{0, std::max(half, 0), s.slots, {}, {}, {}},
-               {std::max(half, 0), n, 0, {}, {}, {}}};
-  const auto lay_out = [&](Rows& part) {
+  };
+  std::vector<Rows> rows(static_cast<size_t>(parts));
+  // The first row of part t: the row of the pair t/T of the way through.
+  const auto row_at = [&](int t) {
+    if (t == parts) return n;
+    const int pairs = int(PartStart(size_t(pair_count), parts, t));
+    return std::max(int(std::upper_bound(lower_start.begin(), lower_start.end(), pairs) -
+                        lower_start.begin()) - 1, 0);
+  };
+  for (int t = 0; t < parts; ++t) {
+    rows[size_t(t)].from = t == 0 ? 0 : row_at(t);
+    rows[size_t(t)].to = row_at(t + 1);
+  }
+  rows[0].slots = s.slots;  // after the diagonal
+  ForParts(parts, [&](int t) {
+    Rows& part = rows[size_t(t)];
     std::vector<int> mark(n, -1), position(n, 0);
     for (int i = part.from; i < part.to; ++i) {
       for (int e = lower_start[i]; e < lower_start[i + 1]; ++e) {
@@ -228,26 +262,30 @@ bool ReadNormalPattern(const Residuals& in, NormalPattern* pattern) {
       }
       part.row_start.push_back(int(part.column.size()));
     }
-  };
-  ForHalves(0, 0, [&](int t, size_t, size_t) { lay_out(rows[t]); });
-  const int moved = rows[0].slots;
-  for (int i = rows[1].from; i < rows[1].to; ++i) {
-    for (int e = lower_start[i]; e < lower_start[i + 1]; ++e) {
-      s.pair_slot[size_t(upper[size_t(e)].second)] += moved;
-    }
-  }
-  s.slots = rows[0].slots + rows[1].slots;
+  });
   s.row_start.assign(1, 0);
-  s.row_start.insert(s.row_start.end(), rows[0].row_start.begin(), rows[0].row_start.end());
-  const int columns = int(rows[0].column.size());
-  for (int r : rows[1].row_start) s.row_start.push_back(columns + r);
-  s.column = std::move(rows[0].column);
-  s.column.insert(s.column.end(), rows[1].column.begin(), rows[1].column.end());
-  s.slot = std::move(rows[0].slot);
-  for (int slot : rows[1].slot) s.slot.push_back(slot + moved);
+  s.column.clear();
+  s.slot.clear();
+  int moved = 0;
+  for (int t = 0; t < parts; ++t) {
+    const Rows& part = rows[size_t(t)];
+    if (t > 0) {
+      for (int i = part.from; i < part.to; ++i) {
+        for (int e = lower_start[i]; e < lower_start[i + 1]; ++e) {
+          s.pair_slot[size_t(upper[size_t(e)].second)] += moved;
+        }
+      }
+    }
+    const int columns = int(s.column.size());
+    for (int r : part.row_start) s.row_start.push_back(columns + r);
+    s.column.insert(s.column.end(), part.column.begin(), part.column.end());
+    for (int slot : part.slot) s.slot.push_back(slot + moved);
+    moved = t == 0 ? part.slots : moved + part.slots;
+  }
+  s.slots = moved;
   s.column.shrink_to_fit();
   s.slot.shrink_to_fit();
-  Partition(in, s);
+  Partition(in, threads, s);
   return false;
 }
 

@@ -25,11 +25,7 @@ struct PatternBlock {
 // The residuals are visited a chunk of this many blocks at a time (by their
 // first free block), in their own order (term by term) within a chunk: the
 // chunk's slots of H stay in cache while each term adds to them, and each
-// term's code runs over many residuals at once. 100k quads: with the
-// fixed-size products of core/lean_solve.cpp, a linearisation 12–25% faster
-// than term by term over the whole mesh (either change alone ≤ 5%; chunks
-// of 512 to 4,096 blocks alike); residual by residual in block order it was
-// 40–60% slower.
+// term's code runs over many residuals at once.
 constexpr int kVisitChunk = 1024;
 
 // The structure of a round's residuals as the PCG solver reads it (their
@@ -52,17 +48,23 @@ struct NormalPattern {
   // residuals must have for ReadNormalPattern to reuse this one.
   uint64_t structure = 0;
   // The order the solver visits the residuals in to assemble H and g, in
-  // three runs: visit[0, split[0]) and visit[split[0], split[1]) read no free
-  // block in common, so two threads write H and g at once without a second
-  // copy; visit[split[1], end) reads blocks of both and goes after them.
-  // Each run visits a chunk of kVisitChunk blocks at a time (by the
-  // residuals' first free block), term by term within it.
+  // `threads` + 1 runs. The residuals are cut into `threads` ranges by their
+  // first free block (about as many residuals in each); run t < threads
+  // holds the residuals of range t that read only blocks no other range's
+  // residuals read, so the runs write disjoint parts of H and g, one thread
+  // each, without a second copy; the last run holds the residuals that
+  // straddle two ranges and goes after them, in its fixed order. Run t is
+  // visit[RunStart(t), run_end[t]). Each run visits a chunk of kVisitChunk
+  // blocks at a time (by the residuals' first free block), term by term
+  // within it.
   std::vector<int> visit;
-  int split[2] = {0, 0};
+  int threads = 0;
+  std::vector<int> run_end;  // threads + 1 entries
+  int RunStart(int t) const { return t == 0 ? 0 : run_end[size_t(t) - 1]; }
   // H, kept with the pattern, so that a round of the same structure reuses
-  // the pages instead of faulting in 8·slots fresh bytes (920 MB at 1M
-  // quads; mapped, so that the first linearisation's zeroing on two threads
-  // faults them in, not a serial value-initialisation before it).
+  // the pages instead of faulting in 8·slots fresh bytes (mapped, so that
+  // the first linearisation's zeroing, on every thread, faults them in, not
+  // a serial value-initialisation before it).
   MappedList<double> hessian;
   // The manifold blocks' Plus Jacobians (ambient × tangent, row-major) at the
   // current values.
@@ -70,12 +72,13 @@ struct NormalPattern {
 };
 
 // Reads `residuals` into `pattern` (constant blocks stay out of the
-// pattern). When `pattern` holds the pattern of residuals of the same
-// structure — the same number of residual blocks, reading the same parameter
+// pattern), with the visiting order for `threads` ≥ 1 threads (at most
+// 256). When `pattern` holds the pattern of residuals of the same structure — the same number of residual blocks, reading the same parameter
 // blocks (by hash, NormalPattern::structure), the same blocks free and
 // constant in the same order, of the same sizes — only the manifolds are read
-// anew; the loop builds its residuals every round with that structure.
-// Returns whether it was reused.
-bool ReadNormalPattern(const Residuals& residuals, NormalPattern* pattern);
+// anew (and the visiting order, if for another number of threads); the loop
+// builds its residuals every round with that structure. Returns whether it
+// was reused. The slots' layout does not depend on `threads`.
+bool ReadNormalPattern(const Residuals& residuals, int threads, NormalPattern* pattern);
 
 }  // namespace archgeo

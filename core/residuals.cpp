@@ -203,7 +203,8 @@ double Residuals::Cost(int i, double* scratch) const {
   return 0.5 * rho[0];
 }
 
-std::unique_ptr<ceres::Problem> Residuals::MakeProblem() const {
+std::unique_ptr<ceres::Problem> Residuals::MakeProblem(
+    std::vector<ceres::ResidualBlockId>* ids) const {
   ceres::Problem::Options options;
   options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
@@ -211,6 +212,7 @@ std::unique_ptr<ceres::Problem> Residuals::MakeProblem() const {
   options.enable_fast_removal = false;
   auto problem = std::make_unique<ceres::Problem>(options);
   std::vector<double*> read;
+  if (ids) ids->clear();
   for (const Residual& r : residuals_) {
     read.assign(values_.data() + r.first, values_.data() + r.end);
     ceres::CostFunction* cost = r.element < 0 ? r.cost : nullptr;
@@ -218,7 +220,9 @@ std::unique_ptr<ceres::Problem> Residuals::MakeProblem() const {
       views_.push_back(std::make_unique<BatchElement>(*r.batch, r.element));
       cost = views_.back().get();
     }
-    problem->AddResidualBlock(cost, const_cast<ceres::LossFunction*>(Loss(r.loss())), read);
+    const ceres::ResidualBlockId id =
+        problem->AddResidualBlock(cost, const_cast<ceres::LossFunction*>(Loss(r.loss())), read);
+    if (ids) ids->push_back(id);
   }
   for (const Block& b : blocks_) {
     if (b.manifold) problem->SetManifold(b.values, const_cast<ceres::Manifold*>(b.manifold));

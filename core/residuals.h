@@ -6,9 +6,9 @@
 // the objective part each residual counts under.
 //
 // Both solvers read it. LeanSolve (core/lean_solve.h) reads it directly, so a
-// large round never builds a ceres::Problem (at 100k quads, building and
-// freeing one every round took 11 of 46 s); a small round hands Ceres the
-// equivalent problem (MakeProblem), which borrows everything from here.
+// large round never builds a ceres::Problem (building and freeing one every
+// round is a large share of a large round's time); a small round hands Ceres
+// the equivalent problem (MakeProblem), which borrows everything from here.
 // It owns every cost, loss and manifold added to it.
 #pragma once
 
@@ -19,6 +19,7 @@
 #include <vector>
 
 #include <ceres/cost_function.h>
+#include <ceres/problem.h>
 
 #include "core/batch.h"
 #include "core/mapped_list.h"
@@ -26,7 +27,6 @@
 namespace ceres {
 class LossFunction;
 class Manifold;
-class Problem;
 }  // namespace ceres
 
 namespace archgeo {
@@ -116,8 +116,10 @@ class Residuals {
   // The same problem for ceres::Solve: the residuals in this order, then the
   // manifolds and constant blocks. It borrows costs, losses and manifolds
   // (and views of batch elements kept here until Clear); this list must
-  // outlive it.
-  std::unique_ptr<ceres::Problem> MakeProblem() const;
+  // outlive it. `ids`, if given, receives each residual's block id in the
+  // problem (e.g. for Ceres' SUBSET preconditioner).
+  std::unique_ptr<ceres::Problem> MakeProblem(
+      std::vector<ceres::ResidualBlockId>* ids = nullptr) const;
 
  private:
   struct Range {

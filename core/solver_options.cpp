@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <functional>
 
+#include <ceres/problem.h>
 #include <ceres/types.h>
 
 namespace archgeo {
@@ -81,37 +82,60 @@ std::vector<Key> SolverKeys() {
   auto flag = [](std::string name, bool fallback, std::string doc) {
     return BoolKey("solver." + std::move(name), fallback, std::move(doc));
   };
+  // What LeanSolve (solver.pcg_above, core/lean_solve.h) does with a key.
+  const std::string kLeanIgnores = " (LeanSolve rounds, above pcg_above: ignored)";
+  const std::string kLeanLinear =
+      " (LeanSolve rounds, above pcg_above: ignored, their steps are LeanSolve's block-Jacobi "
+      "conjugate gradients; pcg_above: 0 for this solver on every round)";
+  const std::string kLeanWithRefused =
+      " (LeanSolve rounds, above pcg_above: ignored, applies only to a choice LeanSolve refuses)";
+  const std::string kLeanRefusesTrue =
+      " (LeanSolve rounds, above pcg_above: true is refused, exit 2)";
+  const auto kLeanRefusesOther = [](const std::string& only) {
+    return " (LeanSolve rounds, above pcg_above: any but " + only + " is refused, exit 2)";
+  };
+  Key subset;
+  subset.name = "solver.subset_preconditioner_parts";
+  subset.type = Type::kString;
+  subset.fallback = std::string("");
+  subset.doc =
+      "with preconditioner_type: subset (Ceres): the objective parts (term names, comma-separated) "
+      "whose residual blocks form the SUBSET preconditioner (planar_quads: the planarity terms "
+      "and the barriers)";
   return {
       choice("linear_solver_type", "sparse_normal_cholesky",
              Names<ceres::LinearSolverType>(&ceres::LinearSolverTypeToString, ceres::CGNR),
-             "linear solver of each step (Ceres LinearSolverType)"),
+             "linear solver of each step (Ceres LinearSolverType)" + kLeanLinear),
       choice("sparse_linear_algebra_library_type", "suite_sparse", SparseLibraries(),
-             "sparse factorisation library (suite_sparse: CHOLMOD)"),
+             "sparse factorisation library (suite_sparse: CHOLMOD)" + kLeanIgnores),
       choice("dense_linear_algebra_library_type", "eigen", DenseLibraries(),
-             "dense linear algebra for the dense solvers"),
+             "dense linear algebra for the dense solvers" + kLeanIgnores),
       choice("preconditioner_type", "jacobi",
              Names<ceres::PreconditionerType>(&ceres::PreconditionerTypeToString, ceres::SUBSET),
-             "preconditioner of the iterative solvers (cgnr, iterative_schur)"),
+             "preconditioner of the iterative solvers (cgnr, iterative_schur; subset: with "
+             "subset_preconditioner_parts)" + kLeanRefusesOther("jacobi")),
       choice("trust_region_strategy_type", "levenberg_marquardt",
              Names<ceres::TrustRegionStrategyType>(&ceres::TrustRegionStrategyTypeToString,
                                                    ceres::DOGLEG),
-             "trust-region strategy"),
+             "trust-region strategy" + kLeanRefusesOther("levenberg_marquardt")),
       choice("dogleg_type", "traditional_dogleg",
              Names<ceres::DoglegType>(&ceres::DoglegTypeToString, ceres::SUBSPACE_DOGLEG),
-             "dogleg variant (with trust_region_strategy_type: dogleg)"),
+             "dogleg variant (with trust_region_strategy_type: dogleg)" + kLeanWithRefused),
       choice("minimizer_type", "trust_region",
              Names<ceres::MinimizerType>(&ceres::MinimizerTypeToString, ceres::TRUST_REGION),
-             "trust_region, or line_search (then the line_search_* keys apply)"),
+             "trust_region, or line_search (then the line_search_* keys apply)" +
+                 kLeanRefusesOther("trust_region")),
       choice("line_search_direction_type", "lbfgs",
              Names<ceres::LineSearchDirectionType>(&ceres::LineSearchDirectionTypeToString,
                                                    ceres::BFGS),
-             "direction of the line-search minimizer"),
+             "direction of the line-search minimizer" + kLeanWithRefused),
       choice("line_search_type", "wolfe",
              Names<ceres::LineSearchType>(&ceres::LineSearchTypeToString, ceres::WOLFE),
-             "line search of the line-search minimizer"),
+             "line search of the line-search minimizer" + kLeanWithRefused),
       integer("max_num_iterations", 50, 0, 1000000, "solver iterations per round at most (Ceres or PCG)"),
       number("max_solver_time_in_seconds", 1e9, 0, 1e9, "wall time per round at most"),
-      integer("num_threads", 2, 1, 256, "threads for Jacobian evaluation and linear algebra"),
+      integer("num_threads", 2, 1, 256, "threads for Jacobian evaluation and linear algebra (LeanSolve: T fixed parts of the "
+              "work, the same bits run to run for the same number)"),
       number("function_tolerance", 1e-10, 0, 1, "stop when |Δcost|/cost falls below this"),
       number("gradient_tolerance", 1e-14, 0, 1, "stop when the max-norm gradient falls below this"),
       number("parameter_tolerance", 1e-10, 0, 1, "stop when |Δx| falls below this × (|x| + this)"),
@@ -121,26 +145,32 @@ std::vector<Key> SolverKeys() {
       number("min_relative_decrease", 1e-3, 0, 1, "smallest accepted ratio of actual to model decrease"),
       number("min_lm_diagonal", 1e-6, 0, 1e32, "Levenberg-Marquardt diagonal lower bound"),
       number("max_lm_diagonal", 1e32, 0, 1e32, "Levenberg-Marquardt diagonal upper bound"),
-      integer("max_num_consecutive_invalid_steps", 5, 0, 1000000, "invalid steps tolerated in a row"),
-      flag("use_nonmonotonic_steps", false, "allow steps that raise the cost (non-monotonic)"),
-      integer("max_consecutive_nonmonotonic_steps", 5, 0, 1000000, "with use_nonmonotonic_steps"),
-      flag("jacobi_scaling", true, "scale the columns of the Jacobian"),
-      flag("use_inner_iterations", false, "inner iterations (non-linear block coordinate descent)"),
-      number("inner_iteration_tolerance", 1e-3, 0, 1, "relative decrease that stops inner iterations"),
+      integer("max_num_consecutive_invalid_steps", 5, 0, 1000000, "invalid steps tolerated in a row" +
+                  std::string(" (LeanSolve rounds, above pcg_above: ignored; a step whose cost fails "
+                              "to evaluate is rejected and the trust region shrinks)")),
+      flag("use_nonmonotonic_steps", false, "allow steps that raise the cost (non-monotonic)" + kLeanRefusesTrue),
+      integer("max_consecutive_nonmonotonic_steps", 5, 0, 1000000, "with use_nonmonotonic_steps" + kLeanWithRefused),
+      flag("jacobi_scaling", true, "scale the columns of the Jacobian" +
+                std::string(" (LeanSolve rounds, above pcg_above: ignored; its damped step and "
+                            "block-Jacobi preconditioner do not change with the columns' scale)")),
+      flag("use_inner_iterations", false, "inner iterations (non-linear block coordinate descent)" + kLeanRefusesTrue),
+      number("inner_iteration_tolerance", 1e-3, 0, 1, "relative decrease that stops inner iterations" + kLeanWithRefused),
       integer("min_linear_solver_iterations", 0, 0, 1000000, "iterative solvers: at least"),
       integer("max_linear_solver_iterations", 500, 1, 1000000, "iterative solvers: at most"),
       number("eta", 0.1, 0, 1, "iterative solvers: forcing sequence (relative accuracy)"),
-      flag("use_postordering", false, "sparse Cholesky: postorder the elimination tree"),
-      flag("dynamic_sparsity", false, "re-analyse the Jacobian's sparsity every iteration"),
-      flag("use_mixed_precision_solves", false, "single-precision factorisation + refinement"),
-      integer("max_num_refinement_iterations", 0, 0, 1000, "iterative refinement steps"),
-      flag("use_explicit_schur_complement", false, "iterative_schur: form the Schur complement"),
+      flag("use_postordering", false, "sparse Cholesky: postorder the elimination tree" + kLeanIgnores),
+      flag("dynamic_sparsity", false, "re-analyse the Jacobian's sparsity every iteration" + kLeanIgnores),
+      flag("use_mixed_precision_solves", false, "single-precision factorisation + refinement" + kLeanIgnores),
+      integer("max_num_refinement_iterations", 0, 0, 1000, "iterative refinement steps" + kLeanIgnores),
+      flag("use_explicit_schur_complement", false, "iterative_schur: form the Schur complement" + kLeanIgnores),
       integer("pcg_above", 0, 0, 1000000000,
               "a round with more than this many variables is solved by archgeo's own "
               "Levenberg-Marquardt: normal equations assembled once per iteration, each step by "
               "block-Jacobi conjugate gradients, ended by eta as Ceres ends its own (the "
               "quadratic model's relative decrease), at most max_linear_solver_iterations "
-              "(core/lean_solve.h); 0 = never, always Ceres (planar_quads: 100000)"),
+              "(core/lean_solve.h; it refuses or ignores the solver keys it does not implement, as each "
+              "key says); 0 = never, always Ceres (planar_quads: 100000)"),
+      subset,
       number("pcg_function_tolerance", 1e-3, 0, 1,
              "with pcg_above: such a solve stops when the relative cost change, or the next one "
              "extrapolated from the last two, falls below this (or function_tolerance, if "
@@ -193,8 +223,21 @@ ceres::Solver::Options SolverOptions(const Settings& s) {
   o.logging_type = ceres::SILENT;
   o.minimizer_progress_to_stdout = false;
 
+  // Ceres' SUBSET preconditioner needs its residual blocks, which exist only
+  // once a round is built (SolveRound adds them): a stand-in for the check.
+  const bool subset = o.preconditioner_type == ceres::SUBSET;
+  if (subset && SubsetParts(s).empty()) {
+    throw s.Error("solver.subset_preconditioner_parts",
+                  "preconditioner_type: subset needs the objective parts that form it");
+  }
+  if (subset) {
+    o.residual_blocks_for_subset_preconditioner.insert(
+        reinterpret_cast<ceres::ResidualBlockId>(&o));  // never dereferenced
+  }
   std::string error;
-  if (!o.IsValid(&error)) {
+  const bool valid = o.IsValid(&error);
+  o.residual_blocks_for_subset_preconditioner.clear();
+  if (!valid) {
     // Name the keys Ceres' message is about: those whose option name or
     // (upper-case) value it mentions, given in the spec first.
     std::vector<std::string> keys;
@@ -214,6 +257,20 @@ ceres::Solver::Options SolverOptions(const Settings& s) {
                       error);
   }
   return o;
+}
+
+std::vector<std::string> SubsetParts(const Settings& s) {
+  std::vector<std::string> parts;
+  std::string part;
+  for (const char c : s.String("solver.subset_preconditioner_parts") + ",") {
+    if (c == ',') {
+      if (!part.empty()) parts.push_back(part);
+      part.clear();
+    } else if (!std::isspace(static_cast<unsigned char>(c))) {
+      part += c;
+    }
+  }
+  return parts;
 }
 
 void ConfigureThreading() {

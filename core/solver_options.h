@@ -24,21 +24,23 @@ std::vector<Key> SolverKeys();
 // Throws InputError naming the offending key(s) for an invalid combination.
 ceres::Solver::Options SolverOptions(const Settings& settings);
 
+// The objective parts of solver.subset_preconditioner_parts (comma-separated
+// names, blanks dropped).
+std::vector<std::string> SubsetParts(const Settings& settings);
+
 // Configures OpenMP and BLAS threading once per process: Debian's CHOLMOD
 // hard-codes 4 OpenMP threads, which on 2 cores is ~3x slower than letting
 // the runtime adapt (omp_set_dynamic(1)). OpenBLAS (pthreads build) runs
 // on one thread: its spinning worker threads compete with Ceres' and
-// CHOLMOD's on 2 cores, and a planar_quads iteration on 10k quads took
-// 0.96 s of linear solve against 0.10 s with one BLAS thread (loaded
-// machine; README "Speed"). OMP_DYNAMIC and OPENBLAS_NUM_THREADS, if set,
+// CHOLMOD's for the cores. OMP_DYNAMIC and OPENBLAS_NUM_THREADS, if set,
 // are left in charge.
 void ConfigureThreading();
 
-// In its scope archgeo's own OpenMP loops get a thread per core: libgomp's
-// dynamic adjustment (above) subtracts the load average, which counts this
-// process itself, and so left them one thread on 2 cores (the 32k-quad PCG
-// linearisation: 5.3 s on one thread, 3.0 s on two). Not for scopes that
-// call CHOLMOD. OMP_DYNAMIC, if set, stays in charge.
+// In its scope archgeo's own OpenMP loops get the threads they ask for:
+// libgomp's dynamic adjustment (above) subtracts the load average, which
+// counts this process itself, and so would leave LeanSolve one thread on 2
+// cores. Not for scopes that call CHOLMOD. OMP_DYNAMIC, if set, stays in
+// charge.
 class FullTeams {
  public:
   FullTeams();

@@ -57,8 +57,12 @@ ProblemDecl planar_quads() {
              {"min_edge_length", 1000, {}, "", true}};
   // Rounds of more than 100k variables (~15k quads) by Levenberg–Marquardt
   // with block-Jacobi conjugate gradients on the assembled normal equations
-  // (core/lean_solve.h); README, Speed, has the measurements.
-  d.defaults = {{"solver.pcg_above", 100000LL}};
+  // (core/lean_solve.h); README, Speed, has the measurements. Ceres' SUBSET
+  // preconditioner, if chosen, from the planarity terms and the barriers
+  // (the terms the continuation stiffens).
+  d.defaults = {{"solver.pcg_above", 100000LL},
+                {"solver.subset_preconditioner_parts",
+                 std::string("pq_diagonal,face_planarity,convexity,min_edge_length")}};
   d.keys = {
       NumberKey("tolerance.pq_normalized_max", 1e-3, 0, 1,
                 "stop as soon as every quad has δ_PQ,n at most this; 0 = fixed weights, "

@@ -3,26 +3,35 @@
 // LeanSolve (core/lean_solve.h): Levenberg–Marquardt with block-Jacobi PCG on
 // the assembled normal equations reaches Ceres' optimum on a linear and on a
 // non-linear problem with a manifold and a robust loss, keeps constant blocks,
-// obeys callbacks, and planar_quads solved with it meets its tolerance with
-// the displacement of Ceres' direct solve.
+// obeys callbacks (with finite gradient norms), gives the same bits for the
+// same number of threads, refuses the options it does not implement, and
+// planar_quads solved with it meets its tolerance with the displacement of
+// Ceres' direct solve.
 #include <gtest/gtest.h>
 
 #include <ceres/ceres.h>
-#include <omp.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <filesystem>
+#include <fstream>
+#include <string>
 #include <memory>
 #include <type_traits>
 #include <vector>
 
 #include "core/lean_solve.h"
+#include "core/lean_kernels.h"
 #include "core/normal_equations.h"
 #include "generators/generators.h"
 #include "analysis/metrics.h"
 #include "mesh/similarity.h"
 #include "problems/solve.h"
+#include "tests/scratch_dir.h"
+#include "tests/shell.h"
 
 namespace archgeo {
 namespace {
@@ -306,9 +315,10 @@ struct EndAt : EndingCallback {
   }
 };
 
-// A step that ends the solve is not linearised again: its report carries no
-// gradient, and the result is that of a callback that ends it after the
-// linearisation; so is a step that meets the function tolerance.
+// A step that ends the solve is not linearised again: its report carries the
+// model's gradient there (finite), and the result is that of a callback that
+// ends it after the linearisation; so is a step that meets the function
+// tolerance.
 TEST(LeanSolve, AStepThatEndsTheSolveIsNotLinearisedAgain) {
   PlaneFit ended, stopped;
   EndAt end(2);
@@ -321,8 +331,7 @@ TEST(LeanSolve, AStepThatEndsTheSolveIsNotLinearisedAgain) {
   EXPECT_TRUE(a.terminated_by_callback);
   EXPECT_EQ(a.iterations, 2);
   ASSERT_EQ(end.gradient.size(), 3u);
-  EXPECT_TRUE(std::isfinite(end.gradient[0]) && std::isfinite(end.gradient[1]));
-  EXPECT_TRUE(std::isnan(end.gradient[2]));
+  for (double g : end.gradient) EXPECT_TRUE(std::isfinite(g)) << g;
   EXPECT_EQ(b.iterations, 2);
   for (int k = 0; k < 3; ++k) EXPECT_EQ(ended.normal[k], stopped.normal[k]);
   EXPECT_EQ(ended.offset, stopped.offset);
@@ -336,8 +345,79 @@ TEST(LeanSolve, AStepThatEndsTheSolveIsNotLinearisedAgain) {
   const SolveSummary c = LeanSolve(o, loose.residuals);
   EXPECT_FALSE(c.terminated_by_callback);
   ASSERT_GE(never.gradient.size(), 2u);
-  EXPECT_TRUE(std::isnan(never.gradient.back()));  // ended by the function tolerance
+  for (double g : never.gradient) EXPECT_TRUE(std::isfinite(g)) << g;
   EXPECT_LT(c.final_cost, c.initial_cost);
+}
+
+// Records every report.
+struct Reports : EndingCallback {
+  int end_at;
+  std::vector<ceres::IterationSummary> seen;
+  explicit Reports(int at = 1000) : end_at(at) {}
+  bool Ends() override { return int(seen.size()) >= end_at; }
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    seen.push_back(s);
+    return ceres::SOLVER_CONTINUE;
+  }
+};
+
+// The gradient at the current values, ∇ ½Σρ, by Ceres (max norm, 2-norm).
+std::pair<double, double> CeresGradient(const Residuals& residuals) {
+  const std::unique_ptr<ceres::Problem> problem = residuals.MakeProblem();
+  std::vector<double> g;
+  double cost = 0;
+  EXPECT_TRUE(problem->Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, &g, nullptr));
+  const Eigen::Map<const Eigen::VectorXd> v(g.data(), long(g.size()));
+  return {v.lpNorm<Eigen::Infinity>(), v.norm()};
+}
+
+// Callbacks see finite gradient norms at every report, the gradient at the
+// iteration's point: after an accepted step that LeanSolve linearises, the
+// gradient there; at a step that ends the solve, the model's, which on a
+// linear problem is the gradient there too. Also the rest of the summary
+// (lean_solve.h lists it).
+TEST(LeanSolve, CallbacksSeeTheGradientAtEveryReport) {
+  Membrane m(20);
+  Reports reports(2);  // ends at the second step
+  ceres::Solver::Options o = Tight();
+  o.eta = 1e-3;
+  o.initial_trust_region_radius = 10;  // damped: the first steps are not the optimum
+  o.callbacks.push_back(&reports);
+  const SolveSummary s = LeanSolve(o, m.residuals);
+  ASSERT_TRUE(s.usable) << s.message;
+  ASSERT_EQ(reports.seen.size(), 3u);
+  const ceres::IterationSummary& last = reports.seen.back();
+  const auto [max_norm, norm] = CeresGradient(m.residuals);
+  EXPECT_GT(norm, 1e-6);  // not at the optimum: a gradient to compare
+  EXPECT_NEAR(last.gradient_max_norm, max_norm, 1e-9 * max_norm);
+  EXPECT_NEAR(last.gradient_norm, norm, 1e-9 * norm);
+  int cg = 0;
+  for (const ceres::IterationSummary& it : reports.seen) {
+    EXPECT_TRUE(std::isfinite(it.gradient_max_norm) && std::isfinite(it.gradient_norm));
+    EXPECT_GT(it.gradient_norm, 0.0);
+    EXPECT_GE(it.cumulative_time_in_seconds, it.iteration_time_in_seconds);
+    cg += it.linear_solver_iterations;
+    if (it.iteration == 0) continue;
+    EXPECT_TRUE(it.step_is_valid && it.step_is_successful);
+    EXPECT_GT(it.relative_decrease, o.min_relative_decrease);
+    EXPECT_GT(it.step_norm, 0.0);
+    EXPECT_GT(it.cost_change, 0.0);
+    EXPECT_EQ(it.eta, o.eta);
+    EXPECT_GT(it.linear_solver_iterations, 0);
+  }
+  EXPECT_EQ(cg, s.cg_iterations);
+  EXPECT_DOUBLE_EQ(last.cost, s.final_cost);
+
+  // After a step LeanSolve linearises: the gradient there, by Ceres.
+  Membrane n(20);
+  Reports one(1000);
+  StopAfter stop(1);
+  o.callbacks = {&one, &stop};
+  LeanSolve(o, n.residuals);
+  ASSERT_EQ(one.seen.size(), 2u);
+  const auto [max_1, norm_1] = CeresGradient(n.residuals);
+  EXPECT_NEAR(one.seen[1].gradient_max_norm, max_1, 1e-9 * max_1);
+  EXPECT_NEAR(one.seen[1].gradient_norm, norm_1, 1e-9 * norm_1);
 }
 
 // The loop builds its residuals every round: the pattern of J^T J is kept
@@ -346,13 +426,13 @@ TEST(LeanSolve, AStepThatEndsTheSolveIsNotLinearisedAgain) {
 TEST(LeanSolve, ThePatternIsReusedWhileTheStructureStays) {
   Membrane fresh(12), kept(12);
   NormalPattern pattern;
-  EXPECT_FALSE(ReadNormalPattern(kept.residuals, &pattern));
+  EXPECT_FALSE(ReadNormalPattern(kept.residuals, 2, &pattern));
   const int first_slots = pattern.slots;
   const std::vector<int> first_pair_slot = pattern.pair_slot;
   const size_t first_blocks = pattern.blocks.size();
   Residuals again;
   kept.AddTo(again);
-  EXPECT_TRUE(ReadNormalPattern(again, &pattern));
+  EXPECT_TRUE(ReadNormalPattern(again, 2, &pattern));
   EXPECT_EQ(pattern.slots, first_slots);
   EXPECT_EQ(pattern.pair_slot, first_pair_slot);
 
@@ -363,7 +443,7 @@ TEST(LeanSolve, ThePatternIsReusedWhileTheStructureStays) {
   Residuals changed;  // one block held constant: another structure
   kept.AddTo(changed);
   changed.SetConstant(&kept.x[5]);
-  EXPECT_FALSE(ReadNormalPattern(changed, &pattern));
+  EXPECT_FALSE(ReadNormalPattern(changed, 2, &pattern));
   EXPECT_EQ(pattern.blocks.size() + 1, first_blocks);
   EXPECT_EQ(pattern.constant.size(), 1u);
 
@@ -379,42 +459,68 @@ TEST(LeanSolve, ThePatternIsReusedWhileTheStructureStays) {
   Residuals straight, swapped;
   two(straight, false);
   two(swapped, true);
-  EXPECT_FALSE(ReadNormalPattern(straight, &pattern));
-  EXPECT_FALSE(ReadNormalPattern(swapped, &pattern));
-  EXPECT_TRUE(ReadNormalPattern(swapped, &pattern));
+  EXPECT_FALSE(ReadNormalPattern(straight, 2, &pattern));
+  EXPECT_FALSE(ReadNormalPattern(swapped, 2, &pattern));
+  EXPECT_TRUE(ReadNormalPattern(swapped, 2, &pattern));
 }
 
-// The residuals' visiting order: every residual once; the first two runs
-// (one thread each) read no free block in common; the run after them only
-// holds the residuals along the cut.
-TEST(LeanSolve, TheTwoThreadsRunsShareNoBlock) {
+// The residuals' visiting order for T threads: every residual once; the
+// first T runs (a thread each) read no free block in common; the last run,
+// after them, holds the residuals that straddle the cuts, few of them.
+TEST(LeanSolve, TheThreadsRunsShareNoBlock) {
   Membrane m(40);
-  NormalPattern pattern;
-  ReadNormalPattern(m.residuals, &pattern);
-  const int n = int(pattern.pairs.size());
-  std::vector<int> sorted = pattern.visit;
-  std::sort(sorted.begin(), sorted.end());
-  std::vector<int> all(n);
-  for (int k = 0; k < n; ++k) all[k] = k;
-  EXPECT_EQ(sorted, all);
-  std::vector<int> run_of(pattern.blocks.size(), -1);
-  int shared = 0;
-  for (int p = 0; p < pattern.split[1]; ++p) {
-    const int run = p < pattern.split[0] ? 0 : 1;
-    const Residuals::Residual& r = m.residuals.residuals()[size_t(pattern.visit[p])];
-    for (int a = r.first; a < r.end; ++a) {
-      const int b = pattern.free[size_t(m.residuals.block_of()[size_t(a)])];
-      if (b < 0) continue;
-      shared += run_of[b] >= 0 && run_of[b] != run;
-      run_of[b] = run;
+  for (int threads : {1, 2, 3, 4}) {
+    SCOPED_TRACE("threads " + std::to_string(threads));
+    NormalPattern pattern;
+    ReadNormalPattern(m.residuals, threads, &pattern);
+    const int n = int(pattern.pairs.size());
+    ASSERT_EQ(pattern.threads, threads);
+    ASSERT_EQ(pattern.run_end.size(), size_t(threads) + 1);
+    ASSERT_EQ(pattern.run_end.back(), n);
+    std::vector<int> sorted = pattern.visit;
+    std::sort(sorted.begin(), sorted.end());
+    std::vector<int> all(n);
+    for (int k = 0; k < n; ++k) all[k] = k;
+    EXPECT_EQ(sorted, all);
+    std::vector<int> run_of(pattern.blocks.size(), -1);
+    int shared = 0;
+    for (int run = 0; run < threads; ++run) {
+      for (int p = pattern.RunStart(run); p < pattern.run_end[size_t(run)]; ++p) {
+        const Residuals::Residual& r = m.residuals.residuals()[size_t(pattern.visit[p])];
+        for (int a = r.first; a < r.end; ++a) {
+          const int b = pattern.free[size_t(m.residuals.block_of()[size_t(a)])];
+          if (b < 0) continue;
+          shared += run_of[b] >= 0 && run_of[b] != run;
+          run_of[b] = run;
+        }
+      }
+    }
+    EXPECT_EQ(shared, 0);
+    // 40 × 40 values, 4,720 residuals: each thread's run about 1/T of them,
+    // the rows along the T − 1 cuts after them.
+    for (int run = 0; run < threads; ++run) {
+      EXPECT_NEAR(pattern.run_end[size_t(run)] - pattern.RunStart(run), n / threads, n / 20);
+    }
+    EXPECT_LE(n - pattern.run_end[size_t(threads) - 1], (threads - 1) * n / 20);
+    if (threads > 1) {
+      EXPECT_GT(n - pattern.run_end[size_t(threads) - 1], 0);
     }
   }
-  EXPECT_EQ(shared, 0);
-  // 40 × 40 values, 4,720 residuals: each thread's run about half of them,
-  // the rows along the cut after them.
-  EXPECT_NEAR(pattern.split[0], n / 2, n / 20);
-  EXPECT_NEAR(pattern.split[1] - pattern.split[0], n / 2, n / 20);
-  EXPECT_LT(n - pattern.split[1], n / 20);
+  // Another thread count on a kept pattern: the same slots, another order.
+  NormalPattern kept;
+  ReadNormalPattern(m.residuals, 2, &kept);
+  const std::vector<int> slots = kept.pair_slot;
+  EXPECT_TRUE(ReadNormalPattern(m.residuals, 4, &kept));
+  EXPECT_EQ(kept.threads, 4);
+  EXPECT_EQ(kept.run_end.size(), 5u);
+  EXPECT_EQ(kept.pair_slot, slots);
+  NormalPattern fresh;
+  ReadNormalPattern(m.residuals, 4, &fresh);
+  EXPECT_EQ(kept.visit, fresh.visit);
+  EXPECT_EQ(fresh.pair_slot, slots);  // the layout does not depend on the threads
+  EXPECT_EQ(fresh.slot, kept.slot);
+  EXPECT_EQ(fresh.column, kept.column);
+  EXPECT_EQ(fresh.row_start, kept.row_start);
 }
 
 // Within each run the residuals go chunk by chunk of kVisitChunk blocks (by
@@ -422,7 +528,7 @@ TEST(LeanSolve, TheTwoThreadsRunsShareNoBlock) {
 TEST(LeanSolve, EachRunVisitsTheMeshChunkByChunkTermByTerm) {
   Membrane m(100, /*by_term=*/true);  // 10,000 blocks: 10 chunks
   NormalPattern pattern;
-  ReadNormalPattern(m.residuals, &pattern);
+  ReadNormalPattern(m.residuals, 2, &pattern);
   const auto chunk = [&](int k) {
     const Residuals::Residual& r = m.residuals.residuals()[size_t(k)];
     int first = int(pattern.blocks.size());
@@ -431,10 +537,9 @@ TEST(LeanSolve, EachRunVisitsTheMeshChunkByChunkTermByTerm) {
     }
     return first / kVisitChunk;
   };
-  const int ends[3] = {pattern.split[0], pattern.split[1], int(pattern.visit.size())};
   int chunks_seen = 0;
   for (int run = 0, p = 0; run < 3; ++run) {
-    for (int begin = p; p < ends[run]; ++p) {
+    for (int begin = p; p < pattern.run_end[size_t(run)]; ++p) {
       if (p == begin) continue;
       const int a = pattern.visit[size_t(p - 1)], b = pattern.visit[size_t(p)];
       ASSERT_LE(chunk(a), chunk(b)) << "run " << run << " position " << p;
@@ -610,28 +715,203 @@ TEST(LeanSolve, TheFunctionToleranceEndsWhereTheNextChangeWouldMeetIt) {
   EXPECT_LT(further.change[k + 1], 1e-2 * further.cost[k]);
 }
 
-// The linearisation and the product sum two fixed halves: one thread gives
-// the same bits as two.
-TEST(LeanSolve, OneThreadGivesTheBitsOfTwo) {
-  PlaneFit two, one;
-  Membrane two_m(15), one_m(15);
-  ASSERT_TRUE(LeanSolve(Tight(), two.residuals).usable);
-  ASSERT_TRUE(LeanSolve(Tight(), two_m.residuals).usable);
-  const int threads = omp_get_max_threads();
-  omp_set_num_threads(1);
-  ASSERT_TRUE(LeanSolve(Tight(), one.residuals).usable);
-  ASSERT_TRUE(LeanSolve(Tight(), one_m.residuals).usable);
-  omp_set_num_threads(threads);
-  for (int k = 0; k < 3; ++k) EXPECT_EQ(one.normal[k], two.normal[k]);
-  EXPECT_EQ(one.offset, two.offset);
-  EXPECT_EQ(one_m.x, two_m.x);
+ceres::Solver::Options Threads(ceres::Solver::Options o, int threads) {
+  o.num_threads = threads;
+  return o;
+}
+
+// The same number of threads gives the same bits, run to run: each of 1, 2
+// and 4 threads twice (OpenMP runs 4 threads on any number of cores, so the
+// parallel assembly, products and sums run here), on a membrane large enough
+// for residuals along every cut and on the plane fit (a manifold, a loss).
+TEST(LeanSolve, EachThreadCountGivesTheSameBitsEveryRun) {
+  for (int threads : {1, 2, 4}) {
+    SCOPED_TRACE("threads " + std::to_string(threads));
+    Membrane first(40, false, 0.03), second(40, false, 0.03);
+    ceres::Solver::Options o = Threads(Tight(), threads);
+    o.eta = 0.1;  // inexact steps: the sums' order shows in the result
+    o.max_num_iterations = 10;
+    const SolveSummary a = LeanSolve(o, first.residuals);
+    const SolveSummary b = LeanSolve(o, second.residuals);
+    ASSERT_TRUE(a.usable && b.usable);
+    EXPECT_EQ(first.x, second.x);
+    EXPECT_EQ(a.final_cost, b.final_cost);
+    EXPECT_EQ(a.cg_iterations, b.cg_iterations);
+    PlaneFit one, two;
+    ASSERT_TRUE(LeanSolve(o, one.residuals).usable);
+    ASSERT_TRUE(LeanSolve(o, two.residuals).usable);
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(one.normal[k], two.normal[k]);
+    EXPECT_EQ(one.offset, two.offset);
+  }
+}
+
+// 1, 2 and 4 threads sum in different orders, to the same optimum: within a
+// tight tolerance of each other and of Ceres' direct solve.
+TEST(LeanSolve, ThreadCountsReachCeresOptimum) {
+  Membrane reference(40, false, 0.03);
+  ceres::Solver::Summary direct;
+  ceres::Solve(Tight(), reference.residuals.MakeProblem().get(), &direct);
+  ASSERT_TRUE(direct.IsSolutionUsable());
+  std::vector<std::vector<double>> x;
+  for (int threads : {1, 2, 4}) {
+    Membrane m(40, false, 0.03);
+    const SolveSummary s = LeanSolve(Threads(Tight(), threads), m.residuals);
+    ASSERT_TRUE(s.usable) << s.message;
+    EXPECT_NEAR(s.final_cost, direct.final_cost, 1e-10 * direct.final_cost) << threads;
+    double worst = 0;
+    for (size_t k = 0; k < m.x.size(); ++k) {
+      worst = std::max(worst, std::abs(m.x[k] - reference.x[k]));
+    }
+    EXPECT_LT(worst, 1e-7) << threads;
+    x.push_back(m.x);
+  }
+  for (size_t t = 1; t < x.size(); ++t) {
+    double worst = 0;
+    for (size_t k = 0; k < x[0].size(); ++k) worst = std::max(worst, std::abs(x[t][k] - x[0][k]));
+    EXPECT_LT(worst, 1e-7) << t;
+  }
+}
+
+// The product (H + D) x in T parts, each into a vector of its own, equals
+// the dense product, for every T (each part's rows and their transposed
+// columns counted once).
+TEST(LeanSolve, TheProductInPartsIsTheDenseProduct) {
+  Membrane m(30);
+  for (int threads : {1, 2, 3, 4, 7}) {
+    SCOPED_TRACE("threads " + std::to_string(threads));
+    NormalPattern pattern;
+    ceres::Solver::Options o = Threads(Tight(), threads);
+    o.max_num_iterations = 0;
+    ASSERT_TRUE(LeanSolve(o, m.residuals, &pattern).usable);  // H at the start
+    const int n = pattern.tangent;
+    Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(n, n);
+    for (size_t i = 0; i < pattern.blocks.size(); ++i) {
+      const PatternBlock& b = pattern.blocks[i];
+      dense(b.offset, b.offset) = pattern.hessian[size_t(pattern.diagonal[i])];
+      for (int k = pattern.row_start[i]; k < pattern.row_start[i + 1]; ++k) {
+        const PatternBlock& c = pattern.blocks[size_t(pattern.column[size_t(k)])];
+        dense(b.offset, c.offset) = dense(c.offset, b.offset) =
+            pattern.hessian[size_t(pattern.slot[size_t(k)])];
+      }
+    }
+    Eigen::VectorXd x(n), damping(n), y;
+    for (int k = 0; k < n; ++k) {
+      x[k] = std::sin(0.3 * k + 1.0);
+      damping[k] = 0.1 + 0.01 * k;
+    }
+    NormalSystem(pattern, threads).Multiply(damping, x, &y);
+    const Eigen::VectorXd expected = dense * x + damping.cwiseProduct(x);
+    EXPECT_LT((y - expected).lpNorm<Eigen::Infinity>(), 1e-12 * expected.lpNorm<Eigen::Infinity>());
+  }
 }
 
 TEST(LeanSolve, SolveRoundUsesPcgOnlyAboveTheThreshold) {
   Membrane a(10), b(10), c(10);
-  EXPECT_FALSE(SolveRound(Tight(), 0, 1e-4, a.residuals).pcg);
-  EXPECT_FALSE(SolveRound(Tight(), 100, 1e-4, b.residuals).pcg);  // 100 variables: not above
-  EXPECT_TRUE(SolveRound(Tight(), 99, 1e-4, c.residuals).pcg);
+  RoundSolver how;
+  how.pcg_function_tolerance = 1e-4;
+  EXPECT_FALSE(SolveRound(Tight(), how, a.residuals).pcg);
+  how.pcg_above = 100;
+  EXPECT_FALSE(UsesLeanSolve(how.pcg_above, b.residuals));
+  EXPECT_FALSE(SolveRound(Tight(), how, b.residuals).pcg);  // 100 variables: not above
+  how.pcg_above = 99;
+  EXPECT_TRUE(UsesLeanSolve(how.pcg_above, c.residuals));
+  EXPECT_TRUE(SolveRound(Tight(), how, c.residuals).pcg);
+}
+
+// LeanSolve refuses the options that ask for another algorithm: it solves
+// nothing and names the option; it solves with every other.
+TEST(LeanSolve, RefusesOptionsItDoesNotImplement) {
+  const auto refused = [](const std::function<void(ceres::Solver::Options&)>& set,
+                          const std::string& option) {
+    SCOPED_TRACE(option);
+    Membrane m(10);
+    ceres::Solver::Options o = Tight();
+    set(o);
+    EXPECT_EQ(LeanSolveRefuses(o), option);
+    const SolveSummary s = LeanSolve(o, m.residuals);
+    EXPECT_FALSE(s.usable);
+    EXPECT_EQ(s.message.rfind(option + ": ", 0), 0u) << s.message;
+    EXPECT_EQ(s.iterations, 0);
+    for (double v : m.x) EXPECT_EQ(v, 0.0);
+  };
+  refused([](auto& o) { o.trust_region_strategy_type = ceres::DOGLEG; },
+          "trust_region_strategy_type");
+  refused([](auto& o) { o.minimizer_type = ceres::LINE_SEARCH; }, "minimizer_type");
+  refused([](auto& o) { o.use_nonmonotonic_steps = true; }, "use_nonmonotonic_steps");
+  refused([](auto& o) { o.use_inner_iterations = true; }, "use_inner_iterations");
+  refused([](auto& o) { o.preconditioner_type = ceres::IDENTITY; }, "preconditioner_type");
+  refused([](auto& o) { o.preconditioner_type = ceres::SUBSET; }, "preconditioner_type");
+  // Ignored (documented): another linear solver, no Jacobi scaling.
+  Membrane m(10);
+  ceres::Solver::Options o = Tight();
+  o.linear_solver_type = ceres::CGNR;
+  o.jacobi_scaling = false;
+  EXPECT_EQ(LeanSolveRefuses(o), "");
+  EXPECT_TRUE(LeanSolve(o, m.residuals).usable);
+}
+
+class LeanSolveCli : public ScratchDirTest {};
+
+// Through the tool: a round that LeanSolve solves (solver.pcg_above=1)
+// with an option it refuses is bad input: exit 2, the key named, no output
+// written. The same options on a round Ceres solves are fine.
+TEST_F(LeanSolveCli, RefusalIsExitTwoNamingTheKey) {
+  const std::string tool = ARCHGEO_BINARY;
+  const std::string roof = Path("roof.obj");
+  ASSERT_EQ(Shell(tool + " generate " + roof + " --nu 8 --nv 6 --noise 0.05").code, 0);
+  const std::string spec = std::string(ARCHGEO_SOURCE_DIR) + "/examples/planar_quads.yaml";
+  const std::string run = tool + " solve " + spec + " --quiet --set mesh=" + roof +
+                          " --set output.mesh=" + Path("out.ply") + " --set output.report=" +
+                          Path("out.json") + " --set output.image=" + Path("out.png");
+  for (const auto& [key, value] :
+       {std::pair<std::string, std::string>{"trust_region_strategy_type", "dogleg"},
+        {"minimizer_type", "line_search"},
+        {"use_nonmonotonic_steps", "true"},
+        {"use_inner_iterations", "true"},
+        {"preconditioner_type", "identity"}}) {
+    SCOPED_TRACE(key);
+    const std::string set = " --set solver." + key + "=" + value;
+    const Outcome lean = Shell(run + " --set solver.pcg_above=1" + set);
+    EXPECT_EQ(lean.code, 2) << lean.output;
+    EXPECT_NE(lean.output.find("solver." + key), std::string::npos) << lean.output;
+    for (const char* out : {"out.ply", "out.json", "out.png"}) {
+      EXPECT_FALSE(std::filesystem::exists(Path(out))) << out;
+    }
+    for (const auto& entry : std::filesystem::directory_iterator(dir_)) {
+      EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos) << entry.path();
+    }
+  }
+  // Ceres' rounds (pcg_above=0): dogleg is Ceres' to take.
+  const Outcome ceres = Shell(run + " --set solver.pcg_above=0 --set "
+                              "solver.trust_region_strategy_type=dogleg");
+  EXPECT_NE(ceres.code, 2) << ceres.output;
+  EXPECT_TRUE(std::filesystem::exists(Path("out.ply")));
+}
+
+// Ceres' SUBSET preconditioner gets the residual blocks of the parts named
+// in solver.subset_preconditioner_parts (planar_quads: the planarity terms
+// and the barriers), and solves with them; a preconditioner with no block is
+// refused before any work.
+TEST_F(LeanSolveCli, CeresSubsetPreconditionerGetsTheNamedParts) {
+  const std::string tool = ARCHGEO_BINARY;
+  const std::string roof = Path("roof.obj");
+  ASSERT_EQ(Shell(tool + " generate " + roof + " --nu 8 --nv 6 --noise 0.05").code, 0);
+  const std::string spec = std::string(ARCHGEO_SOURCE_DIR) + "/examples/planar_quads.yaml";
+  const std::string run = tool + " solve " + spec + " --quiet --set mesh=" + roof +
+                          " --set output.mesh=" + Path("out.ply") + " --set output.report=" +
+                          Path("out.json") + " --set output.image= --set solver.pcg_above=0" +
+                          " --set solver.linear_solver_type=cgnr" +
+                          " --set solver.preconditioner_type=subset";
+  const Outcome subset = Shell(run);
+  EXPECT_EQ(subset.code, 0) << subset.output;
+  std::ifstream report(Path("out.json"));
+  const nlohmann::json r = nlohmann::json::parse(report);
+  EXPECT_LE(r["after"]["pq_normalized_max"].get<double>(), 1e-3);
+  std::filesystem::remove(Path("out.ply"));
+  const Outcome none = Shell(run + " --set solver.subset_preconditioner_parts=");
+  EXPECT_EQ(none.code, 2) << none.output;
+  EXPECT_NE(none.output.find("solver.subset_preconditioner_parts"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(Path("out.ply")));
 }
 
 double MaxDisplacement(const Mesh& a, const Mesh& b) {
