@@ -1,0 +1,508 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Every registered term in a small solve through the real machinery (spec,
+// model, loop), one test per term, named after it, asserting what the term
+// is for with a bound from its paper or an analytic value. Each test fails
+// when its term's residuals are zeroed (ARCHGEO_ZERO_TERM=<term>,
+// tools/mutation_check.sh runs the tests whose names contain the term).
+// Terms that act only together with others (anchor, step, the guard, the
+// barriers, the conditions of principal_symmetric, hnet, conjugate_field and
+// level_sets) run in a situation where they decide the result.
+// (The grid terms' tests are in test_grid_problem.cpp, GridProblem.Grid*.)
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <CGAL/boost/graph/Euler_operations.h>
+
+#include "fields/triangle_surfaces.h"
+#include "mesh/asymptotic_nets.h"
+#include "mesh/generators.h"
+#include "mesh/goal_metrics.h"
+#include "mesh/metrics.h"
+#include "mesh/principal_edges.h"
+#include "mesh/smoothness_metrics.h"
+#include "mesh/topology.h"
+#include "mesh/vec3.h"
+#include "problems/solve.h"
+#include "problems/spec.h"
+#include "tests/make_mesh.h"
+#include "tests/scratch_dir.h"
+
+namespace archgeo {
+namespace {
+
+std::unique_ptr<Solution> SolveYaml(const std::string& yaml, const Mesh& mesh,
+                                    const Mesh* reference = nullptr) {
+  std::unique_ptr<Solution> s =
+      Solve(ParseSpec(yaml, "/in-memory/terms.yaml"), mesh, reference, {});
+  EXPECT_TRUE(s->loop.usable) << s->loop.message;
+  return s;
+}
+
+double MaxDisplacement(const Mesh& a, const Mesh& b) {
+  double m = 0;
+  for (VertexIndex v : a.vertices()) m = std::max(m, Norm(Sub(ToVec3(a.point(v)), ToVec3(b.point(v)))));
+  return m;
+}
+
+// A flat square grid of n × n unit quads in z = 0.
+Mesh FlatGrid(int n) {
+  return QuadGrid(n, n, [n](double u, double v) { return Vec3{n * u, n * v, 0.0}; });
+}
+
+// A polar disc of radius 1 in z = 0: a centre vertex, `rings` rings of
+// `around` vertices at radii k / rings (vertex 1 + (k − 1)·around + i at
+// angle 2π i / around), triangles at the centre, quads between the rings.
+Mesh PolarDisc(int around, int rings) {
+  std::vector<Vec3> points = {{0, 0, 0}};
+  for (int k = 1; k <= rings; ++k) {
+    for (int i = 0; i < around; ++i) {
+      const double a = 2 * M_PI * i / around, r = double(k) / rings;
+      points.push_back({r * std::cos(a), r * std::sin(a), 0});
+    }
+  }
+  auto id = [around](int k, int i) { return 1 + (k - 1) * around + (i % around); };
+  std::vector<std::vector<int>> faces;
+  for (int i = 0; i < around; ++i) faces.push_back({0, id(1, i), id(1, i + 1)});
+  for (int k = 1; k < rings; ++k) {
+    for (int i = 0; i < around; ++i) faces.push_back({id(k, i), id(k + 1, i), id(k + 1, i + 1), id(k, i + 1)});
+  }
+  return MakeMesh(points, faces);
+}
+
+// ---------------------------------------------------------------------------
+// Planarity
+
+// A noisy roof of quads (RoofSurface is a translational surface: its grid
+// quads are exactly planar, the noise of 5% of the edge length makes them
+// non-planar) becomes planar to Zadravec's δ_PQ,n tolerance 1e-3 (Fig. 10),
+// with vertices moving no more than the noise did.
+TEST(Terms, PqDiagonalMakesNoisyRoofQuadsPlanar) {
+  const Mesh roof = QuadGrid(10, 8, RoofSurface, 0.05, 3);
+  const Metrics before = ComputeMetrics(roof, nullptr, nullptr);
+  ASSERT_GT(before.pq_normalized_max, 1e-2);
+  const auto s = SolveYaml("problem: custom\ntolerance: {pq_normalized_max: 1.0e-3}\n"
+                           "terms: {pq_diagonal: 1, anchor: 0.01}\n"
+                           "schedule: {outer_iterations: 8}\n", roof);
+  const Metrics after = ComputeMetrics(s->output, nullptr, nullptr);
+  std::printf("pq_diagonal: δ_PQ,n max %.3e -> %.3e, moved %.3f mean edges\n",
+              before.pq_normalized_max, after.pq_normalized_max,
+              MaxDisplacement(roof, s->output) / before.mean_edge_length);
+  EXPECT_LE(after.pq_normalized_max, 1e-3);
+  EXPECT_TRUE(s->loop.tolerances.at("tolerance.pq_normalized_max"));
+  EXPECT_LE(MaxDisplacement(roof, s->output), 0.05 * before.mean_edge_length);
+}
+
+// ---------------------------------------------------------------------------
+// Fairness and smoothing
+
+// A flat 6 × 6 grid with its boundary fixed and every interior vertex moved
+// in a zig-zag (±0.3 in z and ±0.2 in x, alternating): absolute fairness (second
+// differences towards 0) has the straight, evenly spaced grid lines as its
+// unique minimum, the original unit grid.
+TEST(Terms, FairnessStraightensAZigzagGrid) {
+  const Mesh grid = FlatGrid(6);
+  Mesh zigzag = grid;
+  for (VertexIndex v : zigzag.vertices()) {
+    const Point& p = zigzag.point(v);
+    if (p.x() == 0 || p.y() == 0 || p.x() == 6 || p.y() == 6) continue;
+    const double s = (int(p.x()) + int(p.y())) % 2 ? 1 : -1;
+    zigzag.point(v) = Point(p.x() + 0.2 * s, p.y(), 0.3 * s);
+  }
+  const auto s = SolveYaml("problem: custom\nfixed: boundary\nterms: {fairness: 1}\n", zigzag);
+  const double off = MaxDisplacement(grid, s->output);
+  std::printf("fairness: largest distance from the unit grid %.3e (start 0.36)\n", off);
+  EXPECT_LE(off, 1e-6);
+}
+
+// Laplacian smoothing with the boundary fixed: the discrete harmonic map of
+// a noisy flat grid (noise 20% of the edge length, in every direction) is the
+// regular grid itself (every vertex the barycentre of its four neighbours).
+TEST(Terms, LaplacianSmoothsANoisyGridBackToTheRegularGrid) {
+  const Mesh grid = FlatGrid(6);
+  Mesh noisy = grid;
+  AddNoise(noisy, 0.2, 11);
+  const std::vector<bool> boundary = BoundaryVertices(grid);
+  for (VertexIndex v : grid.vertices()) {
+    if (boundary[v.idx()]) noisy.point(v) = grid.point(v);
+  }
+  ASSERT_GT(MaxDisplacement(grid, noisy), 0.05);
+  const auto s = SolveYaml("problem: custom\nfixed: boundary\nterms: {laplacian: 1}\n", noisy);
+  const double off = MaxDisplacement(grid, s->output);
+  std::printf("laplacian: largest distance from the regular grid %.3e\n", off);
+  EXPECT_LE(off, 1e-6);
+}
+
+// Hexagons (pairs of noisy roof quads merged) and the remaining quads: every
+// face on the plane of its unit normal and offset, to δ_PQ,n ≤ 1e-3.
+TEST(Terms, FacePlanarityMakesHexagonsPlanar) {
+  Mesh mesh = QuadGrid(8, 6, RoofSurface, 0.05, 3);
+  for (int j = 1; j < 6; j += 2) {
+    for (int i = 1; i + 1 < 8; i += 3) {
+      const HalfedgeIndex h = mesh.halfedge(VertexIndex(j * 9 + i + 1), VertexIndex((j + 1) * 9 + i + 1));
+      ASSERT_NE(h, Mesh::null_halfedge());
+      CGAL::Euler::join_face(h, mesh);
+    }
+  }
+  mesh.collect_garbage();
+  const Metrics before = ComputeMetrics(mesh, nullptr, nullptr);
+  ASSERT_EQ(before.polygons, 6);
+  ASSERT_GT(before.pq_normalized_max, 1e-2);
+  const auto s = SolveYaml("problem: custom\ntolerance: {pq_normalized_max: 1.0e-3}\n"
+                           "terms: {face_planarity: {weight: 1, on: non_triangles}, anchor: 0.01}\n"
+                           "schedule: {outer_iterations: 8}\n", mesh);
+  const PlanarityMeasure p = MeasureFacePlanarity(s->output);
+  double worst = 0;
+  for (FaceIndex f : s->output.faces()) worst = std::max(worst, p.normalized[f.idx()]);
+  std::printf("face_planarity: δ_PQ,n max %.3e -> %.3e\n", before.pq_normalized_max, worst);
+  EXPECT_LE(worst, 1e-3);
+}
+
+// ---------------------------------------------------------------------------
+// Proximity
+
+// A cylinder of radius 1 whose vertices are moved radially by up to ±5%:
+// tangent-plane proximity to a finely triangulated cylinder (192 sides)
+// brings every vertex onto it, within the reference's own chord error
+// 1 − cos(π/192) = 1.3e-4 of the analytic cylinder.
+TEST(Terms, ProximityPutsANoisyCylinderOnItsReference) {
+  Mesh noisy = QuadCylinder(1, 2, 24, 6);
+  for (VertexIndex v : noisy.vertices()) {
+    const Point& p = noisy.point(v);
+    const double f = 1 + 0.05 * std::sin(7.0 * v.idx());
+    noisy.point(v) = Point(f * p.x(), f * p.y(), p.z());
+  }
+  // Taller than the net, so that no vertex projects onto its rim.
+  Mesh reference = QuadCylinder(1, 3, 192, 6);
+  for (VertexIndex v : reference.vertices()) {
+    const Point& p = reference.point(v);
+    reference.point(v) = Point(p.x(), p.y(), p.z() - 0.5);
+  }
+  const double chord = 1 - std::cos(M_PI / 192);
+  const auto radial = [](const Mesh& m) {
+    double worst = 0;
+    for (VertexIndex v : m.vertices()) {
+      worst = std::max(worst, std::abs(std::hypot(m.point(v).x(), m.point(v).y()) - 1));
+    }
+    return worst;
+  };
+  ASSERT_GT(radial(noisy), 0.04);
+  const auto s = SolveYaml("problem: custom\nterms: {proximity: {weight: 1, point_weight: 0.01}}\nschedule: {outer_iterations: 6}\n",
+                           noisy, &reference);
+  std::printf("proximity: off the cylinder %.3e -> %.3e (chord error %.3e)\n", radial(noisy),
+              radial(s->output), chord);
+  EXPECT_LE(radial(s->output), chord);
+}
+
+// The boundary of a flat polar disc pushed out and in radially by up to ±5%;
+// the reference is the unit disc with a 720-gon boundary. The boundary term
+// puts every boundary vertex on the reference's boundary, within its chord
+// error 1 − cos(π/720) = 9.5e-6 of the unit circle (the interior is held in
+// its plane by proximity).
+TEST(Terms, BoundaryProximityPutsTheBoundaryOnTheReferenceCircle) {
+  Mesh disc = PolarDisc(24, 4);
+  const std::vector<bool> boundary = BoundaryVertices(disc);
+  for (VertexIndex v : disc.vertices()) {
+    if (!boundary[v.idx()]) continue;
+    const Point& p = disc.point(v);
+    const double f = 1 + 0.05 * std::sin(5.0 * v.idx());
+    disc.point(v) = Point(f * p.x(), f * p.y(), 0);
+  }
+  const Mesh reference = PolarDisc(720, 2);
+  const double chord = 1 - std::cos(M_PI / 720);
+  const auto off_circle = [&boundary](const Mesh& m) {
+    double worst = 0;
+    for (VertexIndex v : m.vertices()) {
+      if (boundary[v.idx()]) worst = std::max(worst, std::abs(std::hypot(m.point(v).x(), m.point(v).y()) - 1));
+    }
+    return worst;
+  };
+  ASSERT_GT(off_circle(disc), 0.04);
+  const auto s = SolveYaml("problem: custom\nterms: {boundary_proximity: 1, proximity: 1, step: 0.01}\n"
+                           "schedule: {outer_iterations: 6}\n", disc, &reference);
+  std::printf("boundary_proximity: boundary off the circle %.3e -> %.3e (chord error %.3e)\n",
+              off_circle(disc), off_circle(s->output), chord);
+  EXPECT_LE(off_circle(s->output), chord);
+}
+
+// ---------------------------------------------------------------------------
+// Anchor and step: a flat grid in z = 0 and a reference plane at z = h.
+// Per vertex the proximity residual is z − h (weight w_p), the anchor's
+// z − z⁰ and the step's z − z_prev (weight w), each over the canonical unit.
+
+Mesh Lifted(const Mesh& mesh, double h) {
+  Mesh out = mesh;
+  for (VertexIndex v : out.vertices()) {
+    const Point& p = out.point(v);
+    out.point(v) = Point(p.x(), p.y(), p.z() + h);
+  }
+  return out;
+}
+
+// With equal weights the anchor holds every vertex at the weighted mean of
+// its start and its projection, z = h/2, round after round (x, y kept).
+TEST(Terms, AnchorHoldsTheMeshHalfwayToAnEquallyWeightedPlane) {
+  const Mesh grid = FlatGrid(4);
+  const double h = 0.5;
+  const Mesh plane = Lifted(FlatGrid(4), h);
+  const auto s = SolveYaml("problem: custom\nterms: {proximity: 1, anchor: 1}\n"
+                           "schedule: {outer_iterations: 5}\n", grid, &plane);
+  const Mesh expected = Lifted(grid, h / 2);
+  std::printf("anchor: largest distance from z = h/2: %.3e (rounds %d)\n",
+              MaxDisplacement(expected, s->output), s->loop.rounds);
+  EXPECT_LE(MaxDisplacement(expected, s->output), 1e-6 * h);
+}
+
+// The step term damps each round towards the previous round's positions
+// without pulling back to the input: with equal weights each round goes half
+// the remaining way, so after three rounds z = h (1 − 2⁻³) = 7h/8.
+TEST(Terms, StepHalvesEachRoundsMoveTowardsAnEquallyWeightedPlane) {
+  const Mesh grid = FlatGrid(4);
+  const double h = 0.5;
+  const Mesh plane = Lifted(FlatGrid(4), h);
+  const auto s = SolveYaml("problem: custom\nterms: {proximity: 1, step: 1}\n"
+                           "schedule: {outer_iterations: 3}\n", grid, &plane);
+  const Mesh expected = Lifted(grid, 7 * h / 8);
+  std::printf("step: largest distance from z = 7h/8: %.3e (rounds %d)\n",
+              MaxDisplacement(expected, s->output), s->loop.rounds);
+  EXPECT_EQ(s->loop.rounds, 3);
+  EXPECT_LE(MaxDisplacement(expected, s->output), 1e-6 * h);
+}
+
+// ---------------------------------------------------------------------------
+// Curves and barriers
+
+// Laplacian smoothing of every vertex of a disc (boundary included) shrinks
+// it; with on_curve its boundary vertices slide on the disc's own boundary
+// polygon (the default curve) and stay on it to rounding, 1e-9 of the radius.
+TEST(Terms, OnCurveKeepsTheBoundaryOnItsPolygonUnderLaplacianShrinking) {
+  Mesh disc = PolarDisc(24, 4);
+  const std::vector<bool> boundary = BoundaryVertices(disc);
+  // Uneven boundary spacing, so that the vertices also slide along the curve.
+  std::vector<Vec3> polygon;
+  for (int i = 0; i < 24; ++i) {
+    const double a = 2 * M_PI * (i + 0.3 * std::sin(3.0 * i)) / 24;
+    polygon.push_back({std::cos(a), std::sin(a), 0});
+    disc.point(VertexIndex(1 + 3 * 24 + i)) = ToPoint(polygon.back());
+  }
+  const auto off_polygon = [&](const Mesh& m) {
+    double worst = 0;
+    for (VertexIndex v : m.vertices()) {
+      if (!boundary[v.idx()]) continue;
+      const Vec3 x = ToVec3(m.point(v));
+      double best = INFINITY;
+      for (size_t i = 0; i < polygon.size(); ++i) {
+        const Vec3 a = polygon[i], b = polygon[(i + 1) % polygon.size()];
+        const Vec3 d = Sub(b, a);
+        const double t = std::clamp(Dot(Sub(x, a), d) / Dot(d, d), 0.0, 1.0);
+        best = std::min(best, Norm(Sub(x, Add(a, Scale(t, d)))));
+      }
+      worst = std::max(worst, best);
+    }
+    return worst;
+  };
+  const auto s = SolveYaml("problem: custom\nterms: {on_curve: 1, laplacian: 1}\n"
+                           "schedule: {outer_iterations: 3}\n", disc);
+  std::printf("on_curve: boundary off its polygon %.3e, moved %.3e\n", off_polygon(s->output),
+              MaxDisplacement(disc, s->output));
+  EXPECT_GT(MaxDisplacement(disc, s->output), 0.01);  // the Laplacian acted
+  EXPECT_LE(off_polygon(s->output), 1e-9);
+}
+
+// Zero-length springs on every edge of a free flat grid collapse it; the
+// min_edge_length barrier (fraction 0.2) stops every edge at 0.2 of the
+// input's mean edge length (unit here). Bound: the barrier's ℓ_min less 1%;
+// and the springs did shrink the grid (every edge at most half its length).
+TEST(Terms, MinEdgeLengthStopsCollapsingSpringsAtAFifthOfTheEdgeLength) {
+  const Mesh grid = FlatGrid(5);
+  const auto s = SolveYaml("problem: custom\nterms: {spring: {rest: zero}, min_edge_length: 1000}\n"
+                           "schedule: {outer_iterations: 4}\n", grid);
+  const LengthSpread lengths = EdgeLengthSpread(s->output);
+  std::printf("min_edge_length: edges %.4f – %.4f, output round %d of %d, restored %d\n",
+              lengths.min, lengths.max, s->loop.output_round, s->loop.rounds,
+              int(s->loop.restored_valid));
+  EXPECT_TRUE(s->loop.log.back().valid) << s->loop.log.back().invalid;
+  EXPECT_GE(lengths.min, 0.2 * 0.99);
+  EXPECT_LE(lengths.max, 0.5);
+}
+
+// ---------------------------------------------------------------------------
+// Visual smoothness [Pellis 2019, §3]: a flat triangulated 8 × 8 square whose
+// interior vertices are lifted by up to ±0.2 edge lengths, its (planar)
+// boundary fixed. E = Σ ℓ ℓ* ≥ 0 is 0 only where every dihedral angle is 0,
+// so E's minimum is the plane of the boundary: the noise flattens out to
+// 1e-3 of the edge length and E drops by a factor 1000.
+
+Mesh NoisyFlatPatch() {
+  Mesh m = TriangulatedGrid(8, 8, [](double u, double v) { return Vec3{8 * u, 8 * v, 0.0}; });
+  const std::vector<bool> boundary = BoundaryVertices(m);
+  for (VertexIndex v : m.vertices()) {
+    if (boundary[v.idx()]) continue;
+    m.point(v) = Point(m.point(v).x(), m.point(v).y(), 0.2 * std::sin(3.0 * v.idx()));
+  }
+  return m;
+}
+
+double Height(const Mesh& m) {
+  double h = 0;
+  for (VertexIndex v : m.vertices()) h = std::max(h, std::abs(m.point(v).z()));
+  return h;
+}
+
+TEST(Terms, DihedralEnergyFlattensANoisyPatchToThePlaneOfItsBoundary) {
+  const Mesh noisy = NoisyFlatPatch();
+  const auto s = SolveYaml("problem: custom\nfixed: boundary\nterms: {dihedral_energy: 1}\n"
+                           "schedule: {outer_iterations: 10}\n", noisy);
+  const double E0 = ComputeSmoothnessMetrics(noisy).E, E1 = ComputeSmoothnessMetrics(s->output).E;
+  std::printf("dihedral_energy: height %.3e -> %.3e, E %.4g -> %.4g, rounds %d\n", Height(noisy),
+              Height(s->output), E0, E1, s->loop.rounds);
+  EXPECT_LE(Height(s->output), 1e-3);
+  EXPECT_LE(E1, 1e-3 * E0);
+}
+
+// The direct form of E, with smooth_mesh's step regulariser R(X) (§5.1;
+// without it, in a free design, E shrinks bent edges to nothing first:
+// docs/methods/smoothness.md).
+TEST(Terms, SmoothedDihedralEnergyFlattensANoisyPatchToThePlaneOfItsBoundary) {
+  const Mesh noisy = NoisyFlatPatch();
+  const auto s = SolveYaml("problem: custom\nfixed: boundary\n"
+                           "terms: {smoothed_dihedral_energy: 1, step: 0.1}\n"
+                           "schedule: {outer_iterations: 10}\n", noisy);
+  const double E0 = ComputeSmoothnessMetrics(noisy).E, E1 = ComputeSmoothnessMetrics(s->output).E;
+  std::printf("smoothed_dihedral_energy: height %.3e -> %.3e, E %.4g -> %.4g, rounds %d\n",
+              Height(noisy), Height(s->output), E0, E1, s->loop.rounds);
+  EXPECT_LE(Height(s->output), 1e-3);
+  EXPECT_LE(E1, 1e-3 * E0);
+}
+
+// ---------------------------------------------------------------------------
+// Per-face directions: each face starts at its unit normal (a noisy roof, so
+// they differ by up to ~30°); the Dirichlet energy Σ‖d_f − d_g‖² is 0 only
+// for one direction on every face.
+TEST(Terms, DirectionDirichletMakesTheFaceDirectionsOne) {
+  const Mesh roof = QuadGrid(8, 6, RoofSurface, 0.02, 5);
+  const auto s = SolveYaml("problem: custom\nterms: {direction_dirichlet: 1}\n"
+                           "schedule: {outer_iterations: 3}\n", roof);
+  const double* d0 = s->store->At("face_direction", 0);
+  double spread = 0;
+  for (FaceIndex f : s->output.faces()) {
+    const double* d = s->store->At("face_direction", int(f.idx()));
+    spread = std::max(spread, std::hypot(d[0] - d0[0], d[1] - d0[1], d[2] - d0[2]));
+    EXPECT_NEAR(std::hypot(d[0], d[1], d[2]), 1.0, 1e-9);
+  }
+  std::printf("direction_dirichlet: largest difference from face 0's direction %.3e\n", spread);
+  EXPECT_LE(spread, 1e-6);
+}
+
+// ---------------------------------------------------------------------------
+// A-nets [Shi 2014, §3.2 step 1]: the asymptotic net of the hyperbolic
+// paraboloid z = xy (its rulings: every vertex star planar, in the tangent
+// plane), shaken by 2% of the edge length; vertex-star planarity with
+// proximity to the exact net brings the stars back to planar, to the
+// relative tolerance 1e-6 of the hnet builder (hnet.star_planarity).
+TEST(Terms, AnetPlanarityFlattensTheStarsOfAShakenAsymptoticNet) {
+  const Mesh net = HyperbolicParaboloidNet(8, 8, 0.25);
+  Mesh shaken = net;
+  AddNoise(shaken, 0.02, 7);
+  const auto s = SolveYaml("problem: custom\ntolerance: {star_planarity_max: 1.0e-6}\n"
+                           "terms: {anet_planarity: 1, proximity: {weight: 0.1, point_weight: 0.01}}\n"
+                           "schedule: {outer_iterations: 10}\n", shaken, &net);
+  const double before = s->loop.log.front().measures.at("star_planarity_max");
+  const double after = s->hooks.Measure("star_planarity_max");
+  std::printf("anet_planarity: star planarity %.3e -> %.3e\n", before, after);
+  EXPECT_GT(before, 1e-3);
+  EXPECT_LE(after, 1e-6);
+}
+
+// ---------------------------------------------------------------------------
+// smooth_mesh's displacement bound (tolerance.displacement_relative, 0.5% of
+// the diagonal, the default): a dome of planar quads (a translational surface,
+// z = 0.15 (x² + y²)/8 over [−4, 4]²) with nothing holding it to its
+// reference, so that the smoothness energy flattens it round after round. A
+// vertex of a polygon is never clamped back (that would break its plane), so
+// only the guard's anchors keep the quads' vertices within the bound. The
+// rounds are damped (step 100) so that no single round jumps past the bound
+// before the guard's weights have grown (they start after a round that
+// passes half the bound). With smooth_mesh's default step 0.1 the first
+// rounds run 6× past the bound, and the output, the round of lowest E, is
+// one of them (moved 0.34, bound 0.057).
+TEST(Terms, DisplacementGuardKeepsAFlatteningDomeWithinTheBound) {
+  const Mesh dome = QuadGrid(8, 8, [](double u, double v) {
+    const double x = 8 * u - 4, y = 8 * v - 4;
+    return Vec3{x, y, 0.15 * (x * x + y * y) / 8};
+  });
+  const double bound = 0.005 * ComputeMetrics(dome, nullptr, nullptr).bbox_diagonal;
+  const auto s = SolveYaml("problem: smooth_mesh\ntolerance: {displacement_relative: 0.005, energy_change: 0, energy_relative: 0}\n"
+                           "terms: {face_planarity: {weight: 1.0e6, on: non_triangles}, "
+                           "smoothed_dihedral_energy: 1, displacement_guard: 1, step: 100}\n"
+                           "schedule: {outer_iterations: 8}\n", dome);
+  const double moved = MaxDisplacement(dome, s->output);
+  const double E0 = ComputeSmoothnessMetrics(dome).E, E1 = ComputeSmoothnessMetrics(s->output).E;
+  std::printf("displacement_guard: moved %.4f (bound %.4f), E %.4g -> %.4g, rounds %d, output %d\n", moved,
+              bound, E0, E1, s->loop.rounds, s->loop.output_round);
+  EXPECT_LT(E1, E0);
+  EXPECT_LE(moved, bound);
+}
+
+// ---------------------------------------------------------------------------
+// principal_symmetric [Pellis 2019, §2.3, §5.2]: a principal-symmetric torus
+// (R 3, r 1, 16 × 8; its ring edges are principal, the other four
+// neighbours of each vertex symmetric to them) with every vertex moved by up
+// to 3% of the edge length (seed 4: three principal neighbours of saddles on
+// the wrong side of their tangent plane). Each condition of §2.3 must hold to
+// the problem's tolerance.residual_max (1e-5) in the output.
+
+class PrincipalSymmetricTerms : public ScratchDirTest {
+ protected:
+  std::unique_ptr<Solution> SolveTorus(double noise) {
+    std::vector<VertexPair> principal;
+    const Mesh torus = PrincipalSymmetricTorus(3, 1, 16, 8, noise, 4, &principal);
+    std::string edges;
+    for (const VertexPair& e : principal) edges += std::to_string(e.first) + " " + std::to_string(e.second) + "\n";
+    WriteFile("edges.txt", edges);
+    const ProblemSpec spec = ParseSpec(
+        "problem: principal_symmetric\nprincipal_edges: edges.txt\n"
+        "schedule: {outer_iterations: 10}\n", Path("spec.yaml"));
+    std::unique_ptr<Solution> s = Solve(spec, torus, nullptr, {});
+    EXPECT_TRUE(s->loop.usable) << s->loop.message;
+    std::printf("principal_symmetric: before %s\n  after %s\n",
+                s->details.at("conditions_before").dump().c_str(),
+                s->details.at("conditions_after").dump().c_str());
+    return s;
+  }
+  static constexpr double kResidualMax = 1e-5;
+};
+
+TEST_F(PrincipalSymmetricTerms, CoSphericalPutsTheOtherNeighboursOnTheVertexSphere) {
+  const auto s = SolveTorus(0.03);
+  const nlohmann::json& before = s->details.at("conditions_before");
+  const nlohmann::json& after = s->details.at("conditions_after");
+  EXPECT_GT(before.at("co_spherical_max").get<double>(), 100 * kResidualMax);
+  EXPECT_LE(after.at("co_spherical_max").get<double>(), kResidualMax);
+}
+
+TEST_F(PrincipalSymmetricTerms, PrincipalStripMakesTheNormalStripsDevelopable) {
+  const auto s = SolveTorus(0.03);
+  const nlohmann::json& before = s->details.at("conditions_before");
+  const nlohmann::json& after = s->details.at("conditions_after");
+  EXPECT_GT(before.at("strip_coplanarity_max").get<double>(), 100 * kResidualMax);
+  EXPECT_LE(after.at("strip_coplanarity_max").get<double>(), kResidualMax);
+}
+
+TEST_F(PrincipalSymmetricTerms, SaddleSignPutsThePrincipalNeighboursAcrossTheTangentPlane) {
+  const auto s = SolveTorus(0.03);
+  const nlohmann::json& before = s->details.at("conditions_before");
+  const nlohmann::json& after = s->details.at("conditions_after");
+  EXPECT_GT(before.at("saddle_violations").get<int>(), 0);
+  EXPECT_EQ(after.at("saddle_violations").get<int>(), 0);
+  EXPECT_LE(after.at("saddle_excess_max").get<double>(), kResidualMax);
+}
+
+}  // namespace
+}  // namespace archgeo
