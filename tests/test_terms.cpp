@@ -58,7 +58,9 @@ std::unique_ptr<Solution> SolveYaml(const std::string& yaml, const Mesh& mesh,
 
 double MaxDisplacement(const Mesh& a, const Mesh& b) {
   double m = 0;
-  for (VertexIndex v : a.vertices()) m = std::max(m, Norm(Sub(ToVec3(a.point(v)), ToVec3(b.point(v)))));
+  for (VertexIndex v : a.vertices()) {
+    m = std::max(m, Norm(Sub(ToVec3(a.point(v)), ToVec3(b.point(v)))));
+  }
   return m;
 }
 
@@ -82,7 +84,9 @@ Mesh PolarDisc(int around, int rings) {
   std::vector<std::vector<int>> faces;
   for (int i = 0; i < around; ++i) faces.push_back({0, id(1, i), id(1, i + 1)});
   for (int k = 1; k < rings; ++k) {
-    for (int i = 0; i < around; ++i) faces.push_back({id(k, i), id(k + 1, i), id(k + 1, i + 1), id(k, i + 1)});
+    for (int i = 0; i < around; ++i) {
+      faces.push_back({id(k, i), id(k + 1, i), id(k + 1, i + 1), id(k, i + 1)});
+    }
   }
   return MakeMesh(points, faces);
 }
@@ -156,7 +160,8 @@ TEST(Terms, FacePlanarityMakesHexagonsPlanar) {
   Mesh mesh = QuadGrid(8, 6, RoofSurface, 0.05, 3);
   for (int j = 1; j < 6; j += 2) {
     for (int i = 1; i + 1 < 8; i += 3) {
-      const HalfedgeIndex h = mesh.halfedge(VertexIndex(j * 9 + i + 1), VertexIndex((j + 1) * 9 + i + 1));
+      const HalfedgeIndex h =
+          mesh.halfedge(VertexIndex(j * 9 + i + 1), VertexIndex((j + 1) * 9 + i + 1));
       ASSERT_NE(h, Mesh::null_halfedge());
       CGAL::Euler::join_face(h, mesh);
     }
@@ -179,9 +184,11 @@ TEST(Terms, FacePlanarityMakesHexagonsPlanar) {
 // Proximity
 
 // A cylinder of radius 1 whose vertices are moved radially by up to ±5%:
-// tangent-plane proximity to a finely triangulated cylinder (192 sides)
-// brings every vertex onto it, within the reference's own chord error
-// 1 − cos(π/192) = 1.3e-4 of the analytic cylinder.
+// proximity to a finely triangulated cylinder (192 sides) — the tangent plane
+// and, at point_weight 0.01, the closest point itself (Shi's F_prox; the
+// plane alone leaves a vertex free to slide along it) — brings every vertex
+// onto it, within the reference's own chord error 1 − cos(π/192) = 1.3e-4 of
+// the analytic cylinder.
 TEST(Terms, ProximityPutsANoisyCylinderOnItsReference) {
   Mesh noisy = QuadCylinder(1, 2, 24, 6);
   for (VertexIndex v : noisy.vertices()) {
@@ -204,8 +211,8 @@ TEST(Terms, ProximityPutsANoisyCylinderOnItsReference) {
     return worst;
   };
   ASSERT_GT(radial(noisy), 0.04);
-  const auto s = SolveYaml("problem: custom\nterms: {proximity: {weight: 1, point_weight: 0.01}}\nschedule: {outer_iterations: 6}\n",
-                           noisy, &reference);
+  const auto s = SolveYaml("problem: custom\nterms: {proximity: {weight: 1, point_weight: 0.01}}\n"
+                           "schedule: {outer_iterations: 6}\n", noisy, &reference);
   std::printf("proximity: off the cylinder %.3e -> %.3e (chord error %.3e)\n", radial(noisy),
               radial(s->output), chord);
   EXPECT_LE(radial(s->output), chord);
@@ -215,7 +222,8 @@ TEST(Terms, ProximityPutsANoisyCylinderOnItsReference) {
 // the reference is the unit disc with a 720-gon boundary. The boundary term
 // puts every boundary vertex on the reference's boundary, within its chord
 // error 1 − cos(π/720) = 9.5e-6 of the unit circle (the interior is held in
-// its plane by proximity).
+// its plane by proximity; a weak step term damps each round, since the
+// tangent line leaves a boundary vertex free to slide along it).
 TEST(Terms, BoundaryProximityPutsTheBoundaryOnTheReferenceCircle) {
   Mesh disc = PolarDisc(24, 4);
   const std::vector<bool> boundary = BoundaryVertices(disc);
@@ -230,13 +238,17 @@ TEST(Terms, BoundaryProximityPutsTheBoundaryOnTheReferenceCircle) {
   const auto off_circle = [&boundary](const Mesh& m) {
     double worst = 0;
     for (VertexIndex v : m.vertices()) {
-      if (boundary[v.idx()]) worst = std::max(worst, std::abs(std::hypot(m.point(v).x(), m.point(v).y()) - 1));
+      if (boundary[v.idx()]) {
+        worst = std::max(worst, std::abs(std::hypot(m.point(v).x(), m.point(v).y()) - 1));
+      }
     }
     return worst;
   };
   ASSERT_GT(off_circle(disc), 0.04);
-  const auto s = SolveYaml("problem: custom\nterms: {boundary_proximity: 1, proximity: 1, step: 0.01}\n"
-                           "schedule: {outer_iterations: 6}\n", disc, &reference);
+  const auto s = SolveYaml(
+      "problem: custom\nterms: {boundary_proximity: 1, proximity: 1, step: 0.01}\n"
+      "schedule: {outer_iterations: 6}\n",
+      disc, &reference);
   std::printf("boundary_proximity: boundary off the circle %.3e -> %.3e (chord error %.3e)\n",
               off_circle(disc), off_circle(s->output), chord);
   EXPECT_LE(off_circle(s->output), chord);
@@ -421,9 +433,11 @@ TEST(Terms, AnetPlanarityFlattensTheStarsOfAShakenAsymptoticNet) {
   const Mesh net = HyperbolicParaboloidNet(8, 8, 0.25);
   Mesh shaken = net;
   AddNoise(shaken, 0.02, 7);
-  const auto s = SolveYaml("problem: custom\ntolerance: {star_planarity_max: 1.0e-6}\n"
-                           "terms: {anet_planarity: 1, proximity: {weight: 0.1, point_weight: 0.01}}\n"
-                           "schedule: {outer_iterations: 10}\n", shaken, &net);
+  const auto s = SolveYaml(
+      "problem: custom\ntolerance: {star_planarity_max: 1.0e-6}\n"
+      "terms: {anet_planarity: 1, proximity: {weight: 0.1, point_weight: 0.01}}\n"
+      "schedule: {outer_iterations: 10}\n",
+      shaken, &net);
   const double before = s->loop.log.front().measures.at("star_planarity_max");
   const double after = s->hooks.Measure("star_planarity_max");
   std::printf("anet_planarity: star planarity %.3e -> %.3e\n", before, after);
@@ -449,14 +463,17 @@ TEST(Terms, DisplacementGuardKeepsAFlatteningDomeWithinTheBound) {
     return Vec3{x, y, 0.15 * (x * x + y * y) / 8};
   });
   const double bound = 0.005 * ComputeMetrics(dome, nullptr, nullptr).bbox_diagonal;
-  const auto s = SolveYaml("problem: smooth_mesh\ntolerance: {displacement_relative: 0.005, energy_change: 0, energy_relative: 0}\n"
-                           "terms: {face_planarity: {weight: 1.0e6, on: non_triangles}, "
-                           "smoothed_dihedral_energy: 1, displacement_guard: 1, step: 100}\n"
-                           "schedule: {outer_iterations: 8}\n", dome);
+  const auto s = SolveYaml(
+      "problem: smooth_mesh\ntolerance: {displacement_relative: 0.005, energy_change: 0, "
+      "energy_relative: 0}\n"
+      "terms: {face_planarity: {weight: 1.0e6, on: non_triangles}, "
+      "smoothed_dihedral_energy: 1, displacement_guard: 1, step: 100}\n"
+      "schedule: {outer_iterations: 8}\n",
+      dome);
   const double moved = MaxDisplacement(dome, s->output);
   const double E0 = ComputeSmoothnessMetrics(dome).E, E1 = ComputeSmoothnessMetrics(s->output).E;
-  std::printf("displacement_guard: moved %.4f (bound %.4f), E %.4g -> %.4g, rounds %d, output %d\n", moved,
-              bound, E0, E1, s->loop.rounds, s->loop.output_round);
+  std::printf("displacement_guard: moved %.4f (bound %.4f), E %.4g -> %.4g, rounds %d, output %d\n",
+              moved, bound, E0, E1, s->loop.rounds, s->loop.output_round);
   EXPECT_LT(E1, E0);
   EXPECT_LE(moved, bound);
 }
@@ -475,7 +492,9 @@ class PrincipalSymmetricTerms : public ScratchDirTest {
     std::vector<VertexPair> principal;
     const Mesh torus = PrincipalSymmetricTorus(3, 1, 16, 8, noise, 4, &principal);
     std::string edges;
-    for (const VertexPair& e : principal) edges += std::to_string(e.first) + " " + std::to_string(e.second) + "\n";
+    for (const VertexPair& e : principal) {
+      edges += std::to_string(e.first) + " " + std::to_string(e.second) + "\n";
+    }
     WriteFile("edges.txt", edges);
     const ProblemSpec spec = ParseSpec(
         "problem: principal_symmetric\nprincipal_edges: edges.txt\n"
@@ -542,8 +561,8 @@ TEST_F(HNetTerms, FrameCoplanarityJoinsThePatchesAroundTheHolesSmoothly) {
   const double alpha_max = s->details.at("alpha_max").get<double>();
   const double alpha_mean = s->details.at("alpha_mean").get<double>();
   const double stars = s->details.at("star_planarity_max").get<double>();
-  const double moved =
-      MaxDisplacement(s->input, s->output) / ComputeMetrics(s->input, nullptr, nullptr).bbox_diagonal;
+  const double moved = MaxDisplacement(s->input, s->output) /
+                       ComputeMetrics(s->input, nullptr, nullptr).bbox_diagonal;
   std::printf("frame_coplanarity: α_max after step 1 %.4f°, after %d frame rounds %.4f° (mean "
               "%.4f°), stars %.2e, moved %.3f%% of the diagonal\n",
               step1, frame_rounds, alpha_max, alpha_mean, stars, 100 * moved);
@@ -607,14 +626,12 @@ double PairAngle(const FieldResult& r, size_t f) {
 // The face centroid (canonical frame).
 V3 FaceCentroid(const FieldResult& r, size_t f) { return r.geometry.frames.centroid[f]; }
 
-// A canonical point (or direction) in file units.
-V3 ToFile(const FieldResult& r, const V3& x, bool point) {
-  if (point) {
-    const Vec3 p = r.frame.FromCanonical(Vec3{x.x(), x.y(), x.z()});
-    return V3(p[0], p[1], p[2]);
-  }
+// A canonical direction in the file's axes.
+V3 DirectionToFile(const FieldResult& r, const V3& x) {
   V3 out = V3::Zero();
-  for (int k = 0; k < 3; ++k) out += x[k] * V3(r.frame.axes[k][0], r.frame.axes[k][1], r.frame.axes[k][2]);
+  for (int k = 0; k < 3; ++k) {
+    out += x[k] * V3(r.frame.axes[k][0], r.frame.axes[k][1], r.frame.axes[k][2]);
+  }
   return out;
 }
 
@@ -651,7 +668,8 @@ TEST(Terms, TcdSingularityPlacementPutsZNOntoZM) {
   ASSERT_TRUE(k.z_m_finite);
   const double principal = (V2(1, 0) - k.z_m).norm();
   const double after = (r.field.z_n[size_t(placed)] - k.z_m).norm();
-  std::printf("tcd_singularity_placement: ‖z_N − z_M‖ %.3e (principal field: %.3e)\n", after, principal);
+  std::printf("tcd_singularity_placement: ‖z_N − z_M‖ %.3e (principal field: %.3e)\n", after,
+              principal);
   EXPECT_GT(principal, 0.1);
   EXPECT_LE(after, 1e-9);
   EXPECT_FALSE(r.field.pairs[size_t(placed)].valid);  // the pair is undetermined there
@@ -674,7 +692,9 @@ TEST(Terms, TcdDirichletCarriesAPrescribedHelixOverACylinder) {
   // The helix direction of a face (file units): its plane's circumferential
   // direction plus the axis.
   const V3 axis(0, 0, 1);
-  const auto helix = [&axis](const V3& normal) -> V3 { return normal.cross(axis).normalized() + axis; };
+  const auto helix = [&axis](const V3& normal) -> V3 {
+    return normal.cross(axis).normalized() + axis;
+  };
   const int face = 100;
   std::vector<V3> corners;
   for (VertexIndex v : mesh.vertices_around_face(mesh.halfedge(FaceIndex(face)))) {
@@ -692,9 +712,9 @@ TEST(Terms, TcdDirichletCarriesAPrescribedHelixOverACylinder) {
   double worst = 0;
   for (FaceIndex f : r.mesh.faces()) {
     const ConjugatePair& p = r.field.pairs[f.idx()];
-    const V3 h = helix(ToFile(r, r.geometry.frames.normal[f.idx()], false));
-    const V3 v = ToFile(r, FromFrame(r.geometry.frames, f, p.v), false);
-    const V3 w = ToFile(r, FromFrame(r.geometry.frames, f, p.w), false);
+    const V3 h = helix(DirectionToFile(r, r.geometry.frames.normal[f.idx()]));
+    const V3 v = DirectionToFile(r, FromFrame(r.geometry.frames, f, p.v));
+    const V3 w = DirectionToFile(r, FromFrame(r.geometry.frames, f, p.w));
     worst = std::max(worst, std::min(LineDegrees(v, h), LineDegrees(w, h)));
   }
   std::printf("tcd_dirichlet: every face's pair contains its helix within %.3f°\n", worst);
@@ -719,7 +739,9 @@ TEST(Terms, TcdTransversalityKeepsThePairOrthogonalAwayFromAPrescription) {
     const V3 c0 = FaceCentroid(r, size_t(center));
     double worst = 0;
     for (size_t f = 0; f < r.field.pairs.size(); ++f) {
-      if ((FaceCentroid(r, f) - c0).norm() * r.frame.scale >= 0.5) worst = std::max(worst, 90 - PairAngle(r, f));
+      if ((FaceCentroid(r, f) - c0).norm() * r.frame.scale >= 0.5) {
+        worst = std::max(worst, 90 - PairAngle(r, f));
+      }
     }
     EXPECT_LE(r.details.at("prescribed").at("deviation_max_deg").get<double>(), 3.0);
     return worst;
@@ -744,13 +766,16 @@ TEST(Terms, TcdSingularityAvoidanceKeepsZNAwayFromZM) {
     const FieldResult& r = *FieldOf(*s);
     double d = INFINITY;
     for (size_t f = 0; f < r.field.z_n.size(); ++f) {
-      if (r.geometry.curvature[f].z_m_finite) d = std::min(d, (r.field.z_n[f] - r.geometry.curvature[f].z_m).norm());
+      if (r.geometry.curvature[f].z_m_finite) {
+        d = std::min(d, (r.field.z_n[f] - r.geometry.curvature[f].z_m).norm());
+      }
     }
     EXPECT_EQ(r.field.index_sum, 2.0);
     return d;
   };
   const double with = nearest("1"), without = nearest("0");
-  std::printf("tcd_singularity_avoidance: min ‖z_N − z_M‖ %.3f with Ψ, %.3f without\n", with, without);
+  std::printf("tcd_singularity_avoidance: min ‖z_N − z_M‖ %.3f with Ψ, %.3f without\n", with,
+              without);
   EXPECT_GE(with, 10 * without);
 }
 
@@ -868,9 +893,10 @@ TEST(Terms, LevelSetConjugacyMakesTheLevelSetsOfAConeConjugate) {
     const V2 tg = V2(-g[f].y(), g[f].x()).normalized(), th = V2(-h[f].y(), h[f].x()).normalized();
     worst = std::max(worst, std::abs(tg.dot(k.M * th)) / std::max(std::abs(k.k1), std::abs(k.k2)));
   }
-  std::printf("level_set_conjugacy: |t_g M t_h| / max|κ| at most %.4f (sin of the strip angle "
-              "%.4f); ∇g vs R v at most %.3f°\n", worst, std::sin(kConeStripDegrees * M_PI / 180),
-              LargestGradientAngle(r, false));
+  std::printf(
+      "level_set_conjugacy: |t_g M t_h| / max|κ| at most %.4f (sin of the strip angle "
+      "%.4f); ∇g vs R v at most %.3f°\n",
+      worst, std::sin(kConeStripDegrees * M_PI / 180), LargestGradientAngle(r, false));
   EXPECT_LE(worst, std::sin(kConeStripDegrees * M_PI / 180));
   EXPECT_TRUE(r.layout.ok) << r.layout.error;  // g and h are not constant
 }
