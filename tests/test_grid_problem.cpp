@@ -9,7 +9,8 @@
 //      orthogonal grid of squares exists; issue 12's bound);
 //  (c) each of grid_orthogonality, grid_equilaterality,
 //      grid_quad_equilaterality, grid_boundary and grid_fairness does its job
-//      (each test fails when its term is off);
+//      (each test is named after its term and fails when ARCHGEO_ZERO_TERM
+//      zeroes that term: tools/mutation_check.sh);
 //  (d) every vertex lies on its surface to 1e-12 (file units), in the output
 //      mesh and in the output.grid file;
 //  (e) an open grid's least-squares result stays on its patch (L fitted);
@@ -162,7 +163,7 @@ TEST(GridProblem, ACylinderGridClosedInUBecomesOrthogonalAndSquare) {
   EXPECT_LT(MaxOffSurface(*s), kOnSurface);
 }
 
-TEST(GridProblem, TheOrthogonalityTermStraightensTheShearedCylinder) {
+TEST(GridProblem, GridOrthogonalityStraightensTheShearedCylinder) {
   // Edge lengths alone cannot undo the shear (it hardly changes them).
   const auto s = SolveGrid(std::string(kCylinder) +
                                "terms: {grid_orthogonality: 1, grid_equilaterality: 0.01}\n",
@@ -176,7 +177,7 @@ TEST(GridProblem, TheOrthogonalityTermStraightensTheShearedCylinder) {
 const char* kRectangles =
     "surface: {name: plane, a: 20, b: 10}\ngrid: {nu: 11, nv: 11, type: open}\n";
 
-TEST(GridProblem, TheEquilateralityTermMakesSquares) {
+TEST(GridProblem, GridEquilateralityMakesSquares) {
   const auto s =
       SolveGrid(std::string(kRectangles) + "terms: {grid_orthogonality: 1, grid_equilaterality: 1}\n");
   ASSERT_TRUE(s->loop.usable) << s->loop.message;
@@ -185,7 +186,7 @@ TEST(GridProblem, TheEquilateralityTermMakesSquares) {
   EXPECT_LT(Measure(*s, "mdo"), kCylinderMdo);
 }
 
-TEST(GridProblem, TheQuadEquilateralityTermMakesSquares) {
+TEST(GridProblem, GridQuadEquilateralityMakesSquares) {
   const auto s = SolveGrid(std::string(kRectangles) +
                            "terms: {grid_orthogonality: 1, grid_quad_equilaterality: 1}\n");
   ASSERT_TRUE(s->loop.usable) << s->loop.message;
@@ -202,7 +203,7 @@ void ShearPlane(HookContext& c) {
   });
 }
 
-TEST(GridProblem, TheBoundaryTermSquaresTheBoundaryCrossings) {
+TEST(GridProblem, GridBoundarySquaresTheBoundaryCrossings) {
   // Fairness keeps the lines straight and evenly spaced (the sheared grid is
   // already fair); only the boundary term (eq. 2) turns the transversal lines
   // at the boundary, and the straight lines carry that inwards.
@@ -215,7 +216,7 @@ TEST(GridProblem, TheBoundaryTermSquaresTheBoundaryCrossings) {
   EXPECT_LT(Measure(*s, "ado"), kCylinderMdo);
 }
 
-TEST(GridProblem, TheFairnessTermRemovesAZigzag) {
+TEST(GridProblem, GridFairnessRemovesAZigzag) {
   // Every other interior vertex of each u-line moved by 0.2 in u: a zigzag
   // whose central differences are those of the square grid (the orthogonality
   // term does not see it) but whose quads are 0.8 × 1 and 1.2 × 1 (MDE =
