@@ -33,7 +33,7 @@
 #include "energies/pq_diagonal.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 constexpr unsigned kSeed = 20140301;
 constexpr int kNumSamples = 25;

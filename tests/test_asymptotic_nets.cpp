@@ -32,7 +32,7 @@
 #include "mesh/surface_mesh.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 // The ODE route against closed forms, relative to the size of the piece.
 constexpr double kOdeRelativeTolerance = 1e-8;

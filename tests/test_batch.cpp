@@ -24,7 +24,7 @@
 #include "energies/pq_diagonal.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 using PqCost = ceres::AutoDiffCostFunction<PqDiagonal, 1, 3, 3, 3, 3>;
 using PqBatch = autodiff::FunctorBatch<PqDiagonal>;

@@ -25,7 +25,7 @@
 #include "tests/scratch_dir.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;

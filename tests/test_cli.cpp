@@ -18,7 +18,7 @@
 #include "tests/scratch_dir.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -256,7 +256,7 @@ TEST_F(CliTest, BadCommandLine) {
 }  // namespace archgeo
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 // `archgeo measure` recognises the hyperbolic paraboloid sampled on its
 // rulings as an exact A-net whose H-net is the surface itself [Shi 2014].

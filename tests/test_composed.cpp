@@ -19,7 +19,7 @@
 #include "tests/scratch_dir.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 using energy_checks::Blocks;
 using energy_checks::Vec3;

@@ -16,7 +16,7 @@
 #include "mesh/topology.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 constexpr double kExact = 1e-12;
 

@@ -31,7 +31,7 @@
 #include "energies/proximity.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 constexpr unsigned kSeed = 20100501;
 constexpr int kNumSamples = 25;

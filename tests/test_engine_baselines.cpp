@@ -13,12 +13,13 @@
 // principal_symmetric's figure is with OpenBLAS on one thread, archgeo's
 // default since core/solver_options.cpp ConfigureThreading pins it:
 // 0.0071170901102163. Its 11-round run amplifies the last bits that the BLAS
-// thread count changes (README "Guarantees", determinism): with
+// thread count changes (docs/methods/engine.md, Determinism): with
 // OPENBLAS_NUM_THREADS=2 the same code gives the value of before,
 // 0.007114199572022 (checked; 4e-4 apart). The other four are unchanged.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <ostream>
 
 #include <string>
 #include <vector>
@@ -30,16 +31,19 @@
 #include "tests/scratch_dir.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 struct Baseline {
   const char* example;
   double objective;
   std::vector<std::string> then;  // settings that restore the example of then
   // The same run's objective with other OpenBLAS kernels (OPENBLAS_CORETYPE),
-  // where rounding takes a long run elsewhere (README, Determinism).
+  // where rounding takes a long run elsewhere (docs/methods/engine.md, Determinism).
   std::vector<double> other_kernels = {};
 };
+
+// The example's name, not the struct's bytes, in ctest's test name.
+void PrintTo(const Baseline& b, std::ostream* out) { *out << b.example; }
 
 class EngineBaselines : public ScratchDirTest, public ::testing::WithParamInterface<Baseline> {};
 

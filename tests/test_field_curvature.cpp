@@ -25,7 +25,7 @@
 #include "tests/make_mesh.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 using Vec2 = Eigen::Vector2d;
 using V3 = Eigen::Vector3d;

@@ -35,7 +35,7 @@
 #include "fields/conjugate.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 using energy_checks::Blocks;
 using energy_checks::Evaluate;

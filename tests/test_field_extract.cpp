@@ -31,7 +31,7 @@
 #include "tests/make_mesh.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 using V3 = Eigen::Vector3d;
 

@@ -40,7 +40,7 @@
 #include "scratch_dir.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 namespace fs = std::filesystem;
 using V2 = Eigen::Vector2d;

@@ -41,7 +41,7 @@
 #include "fields/triangle_surfaces.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 using V3 = Eigen::Vector3d;
 using Vec2 = Eigen::Vector2d;

@@ -35,7 +35,7 @@
 #include "tests/scratch_dir.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 // Agreement of quantities equal in exact arithmetic (degrees or percent).
 constexpr double kTolerance = 1e-9;

@@ -15,7 +15,7 @@
 #include "problems/spec.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 namespace fs = std::filesystem;
 

@@ -35,7 +35,7 @@
 #include "tests/energy_checks.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 // The spring term's residual (energies/spring.cpp): the zero-length spring
 // at rest length 0.

@@ -38,7 +38,7 @@
 #include "mesh/vec3.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 ceres::Solver::Options TightOptions() {
   ceres::Solver::Options options;

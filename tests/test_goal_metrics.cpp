@@ -16,7 +16,7 @@
 #include "tests/make_mesh.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 // Rounding on coordinates of order 1–4.
 constexpr double kRounding = 1e-12;

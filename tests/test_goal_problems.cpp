@@ -35,7 +35,7 @@
 #include "tests/scratch_dir.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 const std::string kExamples = std::string(ARCHGEO_SOURCE_DIR) + "/examples/";
 // No output files from the examples' specs.

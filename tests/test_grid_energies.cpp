@@ -37,7 +37,7 @@
 #include "surfaces/surface_factory.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 constexpr unsigned kSeed = 20260512;
 constexpr int kNumSamples = 20;

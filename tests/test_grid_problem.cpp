@@ -49,7 +49,7 @@
 #include "tests/scratch_dir.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 namespace fs = std::filesystem;
 

@@ -15,7 +15,7 @@
 #include "geometry/reference.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 namespace PMP = CGAL::Polygon_mesh_processing;
 

@@ -29,7 +29,7 @@
 #include "scratch_dir.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 constexpr double kExactStarPlanarity = 1e-12;  // relative, hyperbolic paraboloid
 constexpr double kExactW = 1e-9;

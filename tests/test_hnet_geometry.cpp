@@ -28,7 +28,7 @@
 #include "tests/scratch_dir.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 constexpr unsigned kSeed = 20140301;
 // Agreement of quantities equal in exact arithmetic (coordinates of order 1).

@@ -22,7 +22,7 @@
 #include "mesh/surface_mesh.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 namespace fs = std::filesystem;
 using Faces = std::vector<std::vector<std::size_t>>;

@@ -37,7 +37,7 @@
 #include "make_mesh.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 using V3 = Eigen::Vector3d;
 

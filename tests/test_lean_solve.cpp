@@ -34,7 +34,7 @@
 #include "tests/shell.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 // r = w (x − y), or w (x − target).
 struct Difference {

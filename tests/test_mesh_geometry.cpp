@@ -17,7 +17,7 @@
 #include "mesh/vec3.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 constexpr double kExact = 1e-12;
 const double kDegree = M_PI / 180.0;

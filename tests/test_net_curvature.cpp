@@ -18,7 +18,7 @@
 #include "tests/make_mesh.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 Vec3 HyperbolicParaboloid(double u, double v) {
   const double x = 2 * u - 1, y = 2 * v - 1;

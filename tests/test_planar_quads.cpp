@@ -19,7 +19,7 @@
 #include "problems/solve.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 constexpr double kTolerance = 1e-3;
 

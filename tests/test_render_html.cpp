@@ -20,7 +20,7 @@
 #include "tests/shell.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 namespace fs = std::filesystem;
 

@@ -26,7 +26,7 @@
 #include "tests/scratch_dir.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 // δ_PQ,n of the quads of the hybrid mesh after the solve.
 constexpr double kPlanarityTolerance = 1e-3;

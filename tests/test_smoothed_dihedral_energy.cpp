@@ -29,7 +29,7 @@
 #include "energies/smoothed_dihedral_energy.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 constexpr unsigned kSeed = 20190731;
 constexpr int kNumSamples = 20;

@@ -33,7 +33,7 @@
 #include "energies/total_absolute_curvature.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 constexpr unsigned kSeed = 20190731;
 constexpr int kNumSamples = 20;

@@ -14,7 +14,7 @@
 #include "generators/smoothness_surfaces.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 constexpr double kExact = 1e-12;       // relative, closed-form values
 constexpr double kLatticeLimit = 1e-5;  // relative, Fig. 11 values at h = kLatticeStep/κ

@@ -16,7 +16,7 @@
 #include "mesh/surface_mesh.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 namespace PMP = CGAL::Polygon_mesh_processing;
 using Polygons = std::vector<std::vector<std::size_t>>;

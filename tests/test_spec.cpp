@@ -13,7 +13,7 @@
 #include "tests/scratch_dir.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -157,7 +157,7 @@ TEST_F(SpecTest, BadOverridesNameTheOption) {
 }  // namespace archgeo
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 // A --set that would create the `terms:` section (and so switch every
 // unlisted default term off) is refused; with a `terms:` section it works.

@@ -21,7 +21,7 @@
 #include "tests/scratch_dir.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 class SpecRoundTrip : public ScratchDirTest {
  protected:

@@ -18,7 +18,7 @@
 #include "tests/scratch_dir.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 Vec3 Flat(double u, double v) { return {2 * u, 1.5 * v, 0.0}; }
 

@@ -23,7 +23,7 @@
 #include "scratch_dir.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 const std::string kData = ARCHGEO_DATA_DIR;
 const std::string kExamples = ARCHGEO_SOURCE_DIR "/examples/";

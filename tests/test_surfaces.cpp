@@ -28,7 +28,7 @@
 #include "surfaces/surface_factory.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 // Central differences of a smooth map: error O(h²) ≈ 1e-10 relative at h = 1e-5.
 constexpr double kDifferenceStep = 1e-5;

@@ -46,7 +46,7 @@
 #include "tests/scratch_dir.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 std::unique_ptr<Solution> SolveYaml(const std::string& yaml, const Mesh& mesh,
                                     const Mesh* reference = nullptr) {

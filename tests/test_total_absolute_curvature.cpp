@@ -23,7 +23,7 @@
 #include "tests/scratch_dir.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 // Max radial deviation from the straight generator / height, measured after
 // the default solve on 24 × 11 vertices: cone 0.0024, cylinder 0.0056.

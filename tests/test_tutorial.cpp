@@ -19,7 +19,7 @@
 
 #include "tests/shell.h"
 
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 using archgeo::Outcome;
 using archgeo::Shell;

@@ -28,7 +28,7 @@
 #include "scratch_dir.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 const std::string kData = ARCHGEO_DATA_DIR;
 
@@ -57,6 +57,9 @@ struct Case {
   std::function<std::string(const std::string& dir)> input;  // writes it, returns the path
   std::vector<std::string> sets = {};
 };
+// The case's name, not its bytes, in ctest's test name (gtest_discover_tests
+// appends what GoogleTest prints of the parameter).
+void PrintTo(const Case& c, std::ostream* out) { *out << c.name; }
 
 class Unsuitable : public ScratchDirTest, public ::testing::WithParamInterface<Case> {};
 

@@ -11,6 +11,7 @@
 # the folder printed at the end and fuzz/README.md says how to replay it.
 #
 #   tools/fuzz_smoke.sh                 # 10 s per harness (4 harnesses)
+#   tools/fuzz_smoke.sh obj off ply     # the mesh readers only (tools/test.sh)
 #   ARCHGEO_FUZZ_SECONDS=600 tools/fuzz_smoke.sh obj   # a longer run of one
 set -euo pipefail
 cd "$(dirname "$0")/.."
