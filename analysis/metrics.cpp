@@ -119,12 +119,10 @@ double MeanEdgeLength(const Mesh& mesh) {
 // other surface is 1-Lipschitz and every point of a triangle lies within
 // about one spacing of a sample, so the true distance exceeds the result by
 // at most about one spacing (0.25 mean edge lengths unless the cap applied).
-// Deterministic and invariant under similarity transforms. Measured on a
-// 45x45 roof grid against copies with noise 0.02 / 0.1 / 0.3 (2 cores,
-// loaded): CGAL's bounded_error_symmetric_Hausdorff_distance (error 1e-4 of
-// the diagonal) took 1.0 / 0.32 / 0.15 s CPU, slowest when the surfaces are
-// close, as after an optimisation; this grid took 0.11 s each and was 9% low
-// / exact / exact.
+// Deterministic and invariant under similarity transforms. CGAL's
+// bounded_error_symmetric_Hausdorff_distance is exact to its error bound but
+// slowest when the two surfaces are close, as after an optimisation; the grid
+// costs the same at every distance.
 //
 // Pruned: the vertices of both surfaces are samples and are queried first,
 // each with the triangle of the other surface it is closest to; L is their
@@ -138,16 +136,12 @@ double MeanEdgeLength(const Mesh& mesh) {
 // others get their grid (CGAL's sample_triangle_mesh with the spacing of the
 // whole surface, on a copy of just those triangles), queried on every core.
 // So the result is at least the full grid's and keeps its density
-// guarantee. A 100k-quad roof after planar_quads: 2 × 1.1M queries → 2 ×
-// ~0.2M, the after-metrics 3.1 → ~1.7 s; the six data meshes: the same
-// distances to the last bit.
+// guarantee, and on a mesh that barely moved most triangles are pruned.
 //
 // Queries: the reference's own tree answers for the reference side, and the
 // vertices' distances to it are those the proximity metrics measured; the
 // other surface gets a tree with CGAL's search tree for the first bound
-// (geometry/triangle_tree.h). On that 100k roof a query so started took
-// 0.6 of one started from the previous query's answer in spatial order (the
-// hints used before): the after-metrics 1.6 → 1.05 s, the same distance.
+// (geometry/triangle_tree.h), which starts each query near its answer.
 
 Kernel::Triangle_3 Triangle(const Mesh& mesh, FaceIndex f) {
   const HalfedgeIndex h = mesh.halfedge(f);

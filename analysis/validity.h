@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — is a result buildable? The checks every output passes before
-// `archgeo solve` may exit 0 (README "Guarantees"), measured against the
+// `archgeo solve` may exit 0 (README, "Exit codes and guarantees"), measured against the
 // input it came from, so a defect the input already had is not blamed on
 // the optimisation:
 //

@@ -4,8 +4,8 @@
 // evaluated by one object: a term adds its elements to a batch instead of
 // allocating a ceres::CostFunction per element. At 100k quads a planar_quads
 // round has ~1.7M residual blocks; one cost object each (the functor, the
-// CostFunction with its vector of block sizes, a band wrapper) took ~300 MB
-// and most of each round's build in allocations.
+// CostFunction with its vector of block sizes, a band wrapper) would be
+// ~300 MB of small allocations, most of the round's build.
 //
 // The batches of autodiff functors are energies/autodiff.h's; a batch
 // element evaluates to exactly what the functor's cost function (wrapped in

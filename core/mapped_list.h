@@ -3,10 +3,10 @@
 // archgeo — MappedList<T>: a list of trivially copyable values in its own
 // memory mapping, for the loop's lists of hundreds of MB (core/residuals.h:
 // ~30 residual blocks and ~100 parameter entries per quad). It grows by
-// mremap, which moves the pages instead of copying them: at 1M quads,
-// growing std::vectors and shrinking them to fit copied and faulted in
-// ~2 GB in the first round. (Transparent huge pages for these lists were
-// tried: the serial trial cost, which streams them, took twice as long.)
+// mremap, which moves the pages instead of copying them (a growing
+// std::vector copies and faults in every page again at each growth step).
+// The mapping uses normal pages: the serial trial cost streams these lists,
+// and it is slower over transparent huge pages.
 //
 // Clear keeps the pages (the next round writes the same amount again); Fit
 // returns the pages past the end to the system without moving anything.

@@ -70,8 +70,8 @@ class Residuals {
   // the capacity (the loop's next round has the same size).
   void Clear();
   // A hint: the blocks of `width` doubles at base + k·width (k < count),
-  // e.g. every vertex position, are found by their address, not hashed (the
-  // hash took a third of a 100k-quad round's build). Until Clear.
+  // e.g. every vertex position, are found by their address, not hashed
+  // (hashing them is a large share of a round's build). Until Clear.
   void AddressRange(const double* base, int count, int width);
   // Takes ownership of `loss` (nullptr stays nullptr) and returns it, for
   // any number of residuals to share.

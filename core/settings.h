@@ -3,7 +3,7 @@
 // archgeo — settings declared once: every key of a problem spec is a Key
 // (name, type, default, range or choices, one-line doc) in a Schema. Reading
 // and validation (problems/spec_reader.h), the report's settings, `archgeo
-// spec PROBLEM` and the README key tables all come from these declarations.
+// spec PROBLEM` and the key tables (docs/keys.md) all come from these declarations.
 //
 // No CGAL and no YAML here: a Settings object holds plain values, and where
 // each came from (file and line, or "--set"), so any later check can name
@@ -60,7 +60,7 @@ Key BoolKey(std::string name, bool fallback, std::string doc);
 Key ChoiceKey(std::string name, std::string fallback, std::vector<std::string> choices,
               std::string doc);
 
-// An ordered set of keys (the order of `archgeo spec` and the README tables).
+// An ordered set of keys (the order of `archgeo spec` and docs/keys.md).
 class Schema {
  public:
   void Add(Key key);  // CHECKs that the name is new
@@ -126,7 +126,7 @@ class Settings {
   std::string spec_file_;
 };
 
-// A value as text (for messages, `archgeo spec` and the README tables).
+// A value as text (for messages, `archgeo spec` and docs/keys.md).
 std::string ToText(const Value& value);
 nlohmann::json ToJson(const Value& value);
 

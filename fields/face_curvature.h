@@ -60,8 +60,7 @@ struct JetOptions {
   // monomials by products instead of std::pow: the same fit for a full-rank
   // system (a rank-deficient one gets QR's basic solution, not the
   // minimum-norm one), the same tensors to ~1e-14 relative
-  // (tests/test_field_curvature.cpp), and faster (a 100k-quad net's
-  // suitability check: ~1.7 → ~0.7 s on 2 cores). The net measures
+  // (tests/test_field_curvature.cpp), at a fraction of the cost. The net measures
   // (fields/net_curvature.h) use it; the conjugate-field pipeline keeps the
   // SVD, because its layouts move with the last bits of the curvature (QR
   // changed Concerthall's enough to miss its tolerance).

@@ -25,8 +25,7 @@
 // sample's: the mean within about 1/√20,000 ≈ 0.7% of the figure's spread
 // (the 317² roof of `archgeo generate --noise 0.05`: conjugacy mean 0.3528
 // sampled against 0.3538 on every quad; 1,000²: 0.4139 and 0.4111), the max
-// the sample's max. On every quad a 1M-quad net's check took ~14 s; sampled,
-// its work no longer grows with the net.
+// the sample's max. Sampled, its work does not grow with the net.
 //
 // Per quad with corners p0..p3 the two edge directions are the means of
 // opposite edges, u = (p1 − p0 + p2 − p3)/2 and v = (p3 − p0 + p2 − p1)/2:

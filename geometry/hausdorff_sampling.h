@@ -7,9 +7,9 @@
 // approximate_symmetric_Hausdorff_distance on a regular grid per triangle
 // (use_grid_sampling, grid_spacing). CGAL's grid puts about n²/2 samples on a
 // triangle whose two edges from its first vertex are up to n spacings long,
-// however small its area: one vertex moved 300 units on a 2,000-vertex mesh
-// made a few long slivers and took 147 s. The spacing chosen here keeps the
-// grid under a fixed number of samples per surface.
+// however small its area, so a few long slivers (one vertex moved far) can
+// ask for billions of samples. The spacing chosen here keeps the grid under a
+// fixed number of samples per surface.
 #pragma once
 
 #include "mesh/surface_mesh.h"
@@ -20,10 +20,7 @@ namespace archgeo {
 // the cap below does not apply: ~14 samples per triangle, vertices included.
 constexpr double kHausdorffGridSpacing = 0.25;
 // At most this many grid samples per surface (on edges and inside
-// triangles; every vertex is sampled besides), ~24 MB of points. Worst case
-// measured (samples far from the other surface, where closest-point queries
-// are slowest): one vertex of a 2,025-vertex grid moved 300 units, `archgeo
-// measure --reference` 3.6 s in all, 60 MB (147 s before the cap).
+// triangles; every vertex is sampled besides), ~24 MB of points.
 constexpr double kHausdorffMaxGridSamples = 1e6;
 
 // The number of grid samples CGAL 5.5's sample_triangle_mesh (grid sampling

@@ -22,7 +22,7 @@ using TriangleTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, TrianglePrimitive
 // triangle, the target of its halfedge) at once, each build serial on a
 // thread of its own. The two write disjoint members of the tree (CGAL 5.5's
 // build() its nodes and primitives, accelerate_distance_queries(first,
-// beyond) its search tree). 100k-quad roof: 0.20 → 0.12 s.
+// beyond) its search tree).
 void BuildTriangleTree(const Mesh& triangles, TriangleTree* tree);
 
 }  // namespace archgeo

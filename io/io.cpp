@@ -260,8 +260,8 @@ bool WritePly(std::ostream& out, const Soup& soup, const std::vector<Rgb>* color
     out.write(reinterpret_cast<const char*>(&value), sizeof value);
   };
   // ASCII: each number by std::to_chars, as printf's %.17g (coordinates),
-  // %.9g (float properties) and %d, the text std::ostream wrote before at
-  // about a quarter of its cost (100k quads: 0.35 → ~0.1 s), into blocks.
+  // %.9g (float properties) and %d (the same text as std::ostream, without
+  // its per-number locale work), into blocks.
   std::string text;
   const auto number = [&](auto value, int digits) {
     char buffer[64];

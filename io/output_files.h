@@ -6,7 +6,7 @@
 // target (same folder, so the same file system), named
 // <stem>.tmp-<pid>-<n><extension>, and only Commit() puts them in place.
 //
-// What the protocol promises (README "Guarantees"):
+// What the protocol promises (README, "Exit codes and guarantees"):
 //  - Outputs are regular files. A target that exists and is not a regular
 //    file (a device such as /dev/null, a FIFO, a socket, a folder) is refused
 //    by Stage(), as is a target that names an input (`protected_paths`, also

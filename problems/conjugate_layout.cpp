@@ -64,7 +64,7 @@ ProblemDecl conjugate_layout() {
   ProblemDecl d = planar_quads();
   // Ceres' direct solve in every round, as every problem but planar_quads: the
   // field stages on Concerthall have more than 100k variables, and their
-  // figures (README, conjugate layout) were measured with it.
+  // figures (docs/methods/conjugate_layout.md) were measured with it.
   d.defaults.erase("solver.pcg_above");
   std::vector<std::string> planar;
   for (TermUse& t : d.terms) {

@@ -633,7 +633,7 @@ ProblemDecl grid() {
   surface.type = Type::kCustom;
   surface.doc = "the surface: {name: " + Join(SurfaceNames()) +
                 ", <parameter>: value, ...} (surfaces/surface_factory.h; `archgeo spec grid` "
-                "and the README list the parameters)";
+                "and docs/keys.md list the parameters)";
   surface.example = "{name: function_graph, a: 10, b: 10, h: 2, s: 3}";
   d.keys = {
       surface,

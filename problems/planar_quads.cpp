@@ -20,7 +20,7 @@
 // pushes a few quads against them); fairness relative to the input spreads
 // the change over the net so that no quad has to fold: 9.7e-4 with every
 // quad convex, and the dihedral energy keeps E at or below the input's on
-// all six meshes (README, "planar_quads").
+// all six meshes (docs/methods/planar_quads.md).
 // Rounds: project every vertex onto the reference (closest point and tangent
 // plane, or boundary tangent line), rebuild, solve. The tolerance τ on max
 // δ_PQ,n drives the run, not the weights:
@@ -57,7 +57,7 @@ ProblemDecl planar_quads() {
              {"min_edge_length", 1000, {}, "", true}};
   // Rounds of more than 100k variables (~15k quads) by Levenberg–Marquardt
   // with block-Jacobi conjugate gradients on the assembled normal equations
-  // (core/lean_solve.h); README, Speed, has the measurements. Ceres' SUBSET
+  // (core/lean_solve.h); docs/performance.md has the measurements. Ceres' SUBSET
   // preconditioner, if chosen, from the planarity terms and the barriers
   // (the terms the continuation stiffens).
   d.defaults = {{"solver.pcg_above", 100000LL},

@@ -22,7 +22,7 @@ Schema ProblemSchema(const ProblemDecl& declaration);
 // a user can start from (it reads back with ReadSpec once `mesh` is set).
 std::string SpecTemplate(const ProblemDecl& declaration);
 
-// The README's key table of a problem (Markdown: key | default | meaning),
+// The key table of a problem (docs/keys.md) (Markdown: key | default | meaning),
 // without the common and solver keys unless `common`.
 std::string KeyTable(const ProblemDecl& declaration, bool common);
 

@@ -58,8 +58,8 @@ void CheckAsymptoticNet(HookContext& c, const Mesh& net) {
 // On a thread of its own (one core), recorded at the start of the first
 // round after it ends (HookContext::RecordChecks): the solve's first round
 // begins with serial work (the reference's tree, the residuals and their
-// pattern) that leaves the other core idle. It took 0.36 s of the 100k-quad
-// roof's wall time before; its figures and warning are the same.
+// pattern) that leaves the other core idle; its figures and warning are
+// those of a serial check.
 void CheckConjugateNet(HookContext& c, const Mesh& net) {
   c.checks.push_back(std::async(std::launch::async, [&net] {
     omp_set_num_threads(1);  // this thread's parallel regions (the jet fits)

@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Outputs are byte-identical run to run at a fixed thread count (README,
-// Guarantees): the same spec, mesh and `solver.num_threads` give the same
+// "Exit codes and guarantees"): the same spec, mesh and `solver.num_threads` give the same
 // output mesh and the same report figures, with Ceres' rounds and with
 // LeanSolve's (solver.pcg_above=1), for 1, 2 and 4 threads. (Thread counts
 // may differ in the last bits: each sums in its own order.) OpenMP runs the
@@ -22,7 +22,7 @@
 #include "tests/scratch_dir.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 class Determinism : public ScratchDirTest {
  protected:

@@ -89,7 +89,7 @@ int Spec(const std::string& name, bool keys, bool common) {
     }
     throw archgeo::InputError("", 0, "PROBLEM",
                               "'" + name + "' is not a problem (" + list +
-                                  "; `problem: custom` composes terms: see README)");
+                                  "; `problem: custom` composes terms: see docs/methods/engine.md)");
   }
   if (keys) {
     std::cout << archgeo::KeyTable(*problem, common);
@@ -114,9 +114,9 @@ int Measure(const std::string& mesh, const std::string& reference, bool json) {
 int main(int argc, char** argv) {
   // The loop rebuilds lists of hundreds of MB every round (core/residuals.h).
   // glibc maps every block above 32 MB afresh and unmaps it when freed, so
-  // each growth step and each round faulted its pages in again: at 100k
-  // quads 1.7 of the 4.3 s spent building the rounds. Blocks up to 1 GiB
-  // come from the heap instead, and the heap keeps what is freed.
+  // each growth step and each round would fault its pages in again (a large
+  // share of the time spent building the rounds). Blocks up to 1 GiB come
+  // from the heap instead, and the heap keeps what is freed.
   mallopt(M_MMAP_THRESHOLD, 1 << 30);
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
   google::InitGoogleLogging(argv[0]);
@@ -144,7 +144,7 @@ int main(int argc, char** argv) {
   bool quiet = false;
   CLI::App* solve = app.add_subcommand(
       "solve", "Solve the problem declared in a YAML spec; writes output.mesh and output.report");
-  solve->add_option("spec", spec_path, "YAML problem spec (keys: see examples/ and README)")
+  solve->add_option("spec", spec_path, "YAML problem spec (keys: `archgeo spec PROBLEM --keys`, docs/keys.md)")
       ->required();
   solve->add_option("--set", overrides,
                     "Override a spec key by dotted path, e.g. --set mesh=roof.obj "
@@ -157,9 +157,11 @@ int main(int argc, char** argv) {
   CLI::App* spec = app.add_subcommand(
       "spec", "Print a problem's spec with every key, its default and doc (valid YAML to "
               "start from: set `mesh`)");
-  spec->add_option("problem", problem_name, "planar_quads, smooth_mesh, total_absolute_curvature, "
-                                            "principal_symmetric, hnet")
-      ->required();
+  std::string problem_list;
+  for (const std::string& n : archgeo::ProblemNames()) {
+    problem_list += (problem_list.empty() ? "" : ", ") + n;
+  }
+  spec->add_option("problem", problem_name, problem_list)->required();
   spec->add_flag("--keys", keys_only, "Print the problem's own keys as a Markdown table instead");
   bool common_keys = false;
   spec->add_flag("--common", common_keys,
