@@ -29,7 +29,7 @@
 #include "tests/scratch_dir.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 // The scripted model's state, kept in its hooks' state.
 struct Script {
@@ -198,8 +198,11 @@ TEST(Registry, EveryTermIsItsEnergyFile) {
   }
 }
 
-// Every problem's schema is valid: the keys of its terms exist, each term is
-// registered, and its README table is non-empty.
+// Every problem's declaration is consistent: each term it uses is
+// registered and each option default it gives a term is one of that term's
+// declared options; each of its own defaults overrides a key its schema has
+// (a misspelt default would silently not apply); it has stages and a key
+// table (docs/keys.md).
 TEST(Registry, EveryProblemDeclarationIsComplete) {
   for (const std::string& name : ProblemNames()) {
     if (name == "custom") continue;
@@ -207,8 +210,16 @@ TEST(Registry, EveryProblemDeclarationIsComplete) {
     ASSERT_NE(d, nullptr);
     const Schema schema = ProblemSchema(*d);
     for (const TermUse& use : d->terms) {
-      EXPECT_NE(FindTerm(use.term), nullptr) << name << ": " << use.term;
-      EXPECT_NE(schema.Find("terms." + use.term + ".weight"), nullptr);
+      const TermSpec* term = FindTerm(use.term);
+      ASSERT_NE(term, nullptr) << name << ": " << use.term;
+      for (const auto& [option, value] : use.options) {
+        bool declared = false;
+        for (const Key& k : term->options) declared |= k.name == option;
+        EXPECT_TRUE(declared) << name << ": " << use.term << " has no option " << option;
+      }
+    }
+    for (const auto& [key, value] : d->defaults) {
+      EXPECT_NE(schema.Find(key), nullptr) << name << ": default for unknown key " << key;
     }
     EXPECT_FALSE(d->stages(Settings(schema)).empty()) << name;
     EXPECT_NE(KeyTable(*d, false).find("| `"), std::string::npos) << name;
