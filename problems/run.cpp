@@ -118,6 +118,406 @@ nlohmann::json ArraysJson(const FaceValues& values, const Mesh& output, const Me
   return arrays;
 }
 
+// Outputs written in one format only: another name would hide the content
+// (a PLY patchwork named .stl), so it is refused before any work.
+void CheckOutputName(const Settings& s, const std::string& key) {
+  const std::string& path = s.String(key);
+  if (key == "output.mesh" || key == "output.layout" || key == "output.grid") {
+    try {
+      CheckMeshExtension(path);
+    } catch (const InputError& e) {
+      throw s.Error(key, "'" + path + "': " + e.message());
+    }
+  }
+  static const std::map<std::string, std::vector<std::string>> kFormats = {
+      {"output.image", {".png", ".html"}},
+      {"output.patchwork", {".ply"}},
+      {"output.rulings", {".obj"}},
+      {"output.field", {".ply"}}};
+  const auto format = kFormats.find(key);
+  if (format == kFormats.end()) return;
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  const std::vector<std::string>& allowed = format->second;
+  if (std::find(allowed.begin(), allowed.end(), extension) != allowed.end()) return;
+  std::string names;
+  for (const std::string& a : allowed) names += (names.empty() ? "" : " or ") + a;
+  throw s.Error(key, "'" + path + "': this output is written as " + names + " only: use a " +
+                         names + " name");
+}
+
+ReadLimits LimitsOfSpec(const Settings& s) {
+  ReadLimits limits;
+  limits.max_vertices = size_t(s.Integer("limits.max_vertices"));
+  limits.max_faces = size_t(s.Integer("limits.max_faces"));
+  limits.max_face_degree = size_t(s.Integer("limits.max_face_degree"));
+  limits.max_file_bytes = std::uint64_t(s.Integer("limits.max_file_bytes"));
+  return limits;
+}
+
+// The report's units section.
+nlohmann::json UnitsJson(bool derived, double scale) {
+  return {{"lengths", "file units"},
+          {"relative", derived ? "file units / bounding-box diagonal of the net "
+                                 "solved (before solving)"
+                               : "file units / bounding-box diagonal of the input"},
+          {"bbox_diagonal", scale},
+          {"angles", "degrees"},
+          {"rounds", "measures and max_move in the canonical frame (input mean edge "
+                     "length = 1); round 0 = the input"},
+          {"objective", "0.5 * sum_terms w * sum r^2, in the canonical frame (unit mean "
+                        "edge length), at the last linearisation"}};
+}
+
+// The per-vertex displacement from the input (file units) as a PLY
+// property, when the output has the input's vertices.
+std::vector<PlyValues> DisplacementValues(const Mesh& output, const Mesh& input) {
+  std::vector<PlyValues> values;
+  if (output.number_of_vertices() != input.number_of_vertices()) return values;
+  PlyValues& d = values.emplace_back();
+  d.name = "displacement";
+  d.values.assign(output.num_vertices(), 0.0);
+  for (VertexIndex v : output.vertices()) {
+    d.values[v.idx()] = std::sqrt(CGAL::squared_distance(output.point(v), input.point(v)));
+  }
+  return values;
+}
+
+// One `archgeo solve` run, stage by stage: stage the outputs, read the
+// inputs, solve, measure the input, report the solve, check validity, write
+// and measure the output, summarise. Each stage's wall time goes to the
+// report's `seconds`.
+class SpecRun {
+ public:
+  SpecRun(const ProblemSpec& spec, const ProgressSink& progress, const MeshInputs& meshes)
+      : spec_(spec), s_(spec.settings), d_(*spec.declaration), progress_(progress),
+        meshes_(meshes) {}
+
+  RunResult Run() {
+    StageOutputs();
+    ReadInputs();
+    SolveAndMeasureInput();
+    ReportSolve();
+    if (!solution_->loop.usable) return NotUsable();
+    if (!Valid()) return run_;
+    WriteAndMeasureOutput();
+    run_.summary = Summary();
+    return run_;
+  }
+
+ private:
+  // Outputs are checked and staged before any work; no output may name an
+  // input (the spec, the mesh, the reference, files the problem reads).
+  void StageOutputs() {
+    for (const Key& k : s_.schema().keys()) {
+      if (k.type != Type::kOutputPath || s_.String(k.name).empty()) continue;
+      CheckOutputName(s_, k.name);
+      temporaries_[k.name] = staged_.Stage(s_.String(k.name), k.name);
+    }
+  }
+
+  static std::vector<std::string> Inputs(const ProblemSpec& spec) {
+    std::vector<std::string> inputs = spec.InputFiles();
+    inputs.push_back(spec.spec_path);
+    return inputs;
+  }
+
+  // Calls `write`; an error a writer reports about a temporary names the
+  // user's path.
+  void Writing(const std::function<void()>& write) const {
+    try {
+      write();
+    } catch (const InputError& e) {
+      for (const auto& [key, temporary] : temporaries_) {
+        if (e.file() == temporary) throw InputError(s_.String(key), e.line(), key, e.message());
+      }
+      throw;
+    }
+  }
+
+  void ReadInputs() {
+    const ReadLimits limits = LimitsOfSpec(s_);
+    read_ = d_.makes_input ? Mesh()
+            : meshes_.mesh ? *meshes_.mesh
+                           : ReadMesh(spec_.mesh(), &info_, limits);
+    if (meshes_.mesh) info_.format = "memory";
+    if (meshes_.reference) {
+      reference_mesh_ = std::make_unique<Mesh>(*meshes_.reference);
+    } else if (!spec_.reference().empty()) {
+      reference_mesh_ = std::make_unique<Mesh>(ReadMesh(spec_.reference(), nullptr, limits));
+    }
+    seconds_["read"] = Since(start_);
+  }
+
+  // The result's validity against the net it came from (analysis/validity.h)
+  // needs no reference: it is checked on a second thread while the
+  // reference's trees are built and the input is measured (mostly serial).
+  void SolveAndMeasureInput() {
+    const auto solve_start = Clock::now();
+    solution_ = Solve(spec_, read_, reference_mesh_.get(), progress_);
+    solve_seconds_ = Since(solve_start);
+    seconds_["solve"] = solve_seconds_;
+    const Mesh& input = solution_->input;
+    if (solution_->loop.usable) {
+      validity_check_ = std::async(std::launch::async, [this] {
+        return CheckValidity(solution_->output, &solution_->input, LimitsOf(s_), true);
+      });
+    }
+    const auto setup_start = Clock::now();
+    reference_ = std::make_unique<ReferenceSurface>(reference_mesh_ ? *reference_mesh_ : input);
+    // Without a separate reference the input is its own reference surface:
+    // every vertex lies on it, so its distances to it are 0 and need not be
+    // measured.
+    before_ = ComputeMetrics(input, reference_mesh_ ? reference_.get() : nullptr, &input);
+    if (!reference_mesh_) {
+      before_.prox_max = before_.surface_distance_max = before_.surface_distance_mean = 0;
+      before_.boundary_prox_max = reference_->HasBoundary() ? 0 : -1;
+      before_.hausdorff = 0;
+    }
+    scale_ = before_.bbox_diagonal;
+    extra_before_ = Analyse(input, d_.analyses, HNetOptionsOf(s_));
+    seconds_["reference_and_metrics_before"] = Since(setup_start);
+  }
+
+  void ReportSolve() {
+    const LoopResult& solved = solution_->loop;
+    const WorkingNet& net = solution_->net;
+    nlohmann::json& rep = run_.report;
+    rep["schema_version"] = kReportSchemaVersion;
+    rep["archgeo"] = "solve";
+    rep["spec"] = spec_.spec_path;
+    rep["mesh"] = spec_.mesh();
+    rep["reference"] = spec_.reference().empty() ? spec_.mesh() : spec_.reference();
+    rep["problem"] = d_.name;
+    rep["input"] = {{"format", info_.format}, {"reoriented_faces", info_.reoriented_faces}};
+    rep["units"] = UnitsJson(net.derived, scale_);
+    rep["settings"] = s_.ToJson();
+    rep["blas"] = BlasLibrary();
+    rep["details"] = solution_->details;
+    if (!net.details.empty()) rep["details"]["net"] = net.details;  // a net the problem made
+    if (s_.Bool("output.blocks")) rep["blocks"] = BlocksJson(*solution_->store, solution_->frame);
+    if (s_.Integer("multiresolution.levels") > 0) {
+      rep["multiresolution"] = {{"scheme", s_.String("multiresolution.scheme")},
+                                {"levels", solution_->levels}};
+    }
+    rep["rounds"] = RoundsJson(solution_->rounds);
+    rep["output_round"] = solved.output_round;
+    rep["stop"] = solved.stop;
+    rep["usable"] = solved.usable;
+    rep["variables"] = solved.variables;
+    rep["residuals"] = solved.residuals;
+    rep["pcg"] = {{"rounds", solved.pcg_rounds}, {"cg_iterations", solved.cg_iterations}};
+    rep["iterations"] = {{"outer", solved.rounds}, {"inner", solved.iterations}};
+    rep["objective"] = solved.objective;
+    nlohmann::json tolerances = nlohmann::json::object();
+    for (const auto& [key, met] : solved.tolerances) {
+      tolerances[key] = {{"bound", s_.Number(key)}, {"met", met}};
+    }
+    rep["tolerances"] = tolerances;
+    rep["before"] = MetricsToJson(before_, scale_);
+    AnalysisToJson(extra_before_, scale_, rep["before"]);
+  }
+
+  RunResult NotUsable() {
+    const std::string& message = solution_->loop.message;
+    run_.exit_code = 3;
+    run_.report["message"] = message;
+    run_.summary = "archgeo: the solver found no usable solution: " + message +
+                   "\nnothing was written.\n";
+    return run_;
+  }
+
+  // The checks of analysis/validity.h and the problem's own
+  // (ProblemDecl::invalid), on the state written. False: exit 3, with the
+  // reasons in the summary.
+  bool Valid() {
+    validity_ = validity_check_.get();
+    nlohmann::json& v = run_.report["validity"];
+    v = validity_.ToJson();
+    v["restored_round"] = solution_->loop.restored_valid
+                              ? nlohmann::json(solution_->loop.output_round)
+                              : nlohmann::json(nullptr);
+    const std::string own = d_.invalid ? d_.invalid(solution_->hooks) : std::string();
+    v["problem"] = own.empty() ? nlohmann::json(nullptr) : nlohmann::json(own);
+    if (!own.empty()) v["valid"] = false;
+    if (validity_.valid() && own.empty()) return true;
+    run_.exit_code = 3;
+    run_.report["message"] = "the result is not valid";
+    run_.summary = "archgeo: the result is not valid (nothing was written):\n" +
+                   validity_.Reason() + own +
+                   "(limits: validity.* keys; the report's validity section lists every check)\n";
+    const nlohmann::json& details = solution_->details;
+    if (details.contains("suitability") && details["suitability"].contains("warning")) {
+      run_.summary += "WARNING (input suitability): " +
+                      details["suitability"]["warning"].get<std::string>() + "\n";
+    }
+    return false;
+  }
+
+  // The mesh file is written on a second thread while the output is
+  // measured (its staged temporary is committed only at the end).
+  std::future<void> StartMeshWrite(const FaceValues& face_values) {
+    if (!temporaries_.count("output.mesh")) return {};
+    return std::async(std::launch::async, [this, &face_values] {
+      const auto mesh_start = Clock::now();
+      const FaceColors colors = ColorsOf(face_values);
+      const std::vector<PlyValues> properties = {{face_values.name, face_values.values}};
+      const std::vector<PlyValues> vertex_values =
+          DisplacementValues(solution_->output, solution_->input);
+      Writing([&] {
+        WriteMesh(temporaries_.at("output.mesh"), solution_->output, &colors,
+                           s_.Bool("output.ascii_ply"), &properties, &vertex_values);
+      });
+      mesh_write_seconds_ = Since(mesh_start);
+    });
+  }
+
+  void MeasureOutput() {
+    const auto metrics_start = Clock::now();
+    const Mesh& output = solution_->output;
+    const Mesh& input = solution_->input;
+    const bool same_vertices = output.number_of_vertices() == input.number_of_vertices();
+    after_ = ComputeMetrics(output, reference_.get(), same_vertices ? &input : nullptr);
+    extra_after_ = Analyse(output, d_.analyses, HNetOptionsOf(s_));
+    run_.report["after"] = MetricsToJson(after_, scale_);
+    AnalysisToJson(extra_after_, scale_, run_.report["after"]);
+    seconds_["metrics_after"] = Since(metrics_start);
+  }
+
+  // The picture and the problem's own outputs (ProblemDecl::write).
+  void WriteOtherOutputs(const FaceValues& face_values) {
+    const Mesh& input = solution_->input;
+    if (temporaries_.count("output.image")) {
+      const FaceValues before = ComputeFaceValues(d_.colors, input, &input, &s_);
+      std::vector<PicturePanel> panels = {PanelOf(input, before.values, "input"),
+                                          PanelOf(solution_->output, face_values.values, "output")};
+      Writing([&] {
+        WriteView(temporaries_.at("output.image"), panels, ScaleOf(face_values), {},
+                  "output.image");
+      });
+    }
+    HookContext& hooks = solution_->hooks;
+    for (const auto& [key, temporary] : temporaries_) {
+      if (key != "output.mesh" && key != "output.report" && key != "output.image") {
+        hooks.temporaries[key.substr(std::string("output.").size())] = temporary;
+      }
+    }
+    if (d_.write && !hooks.temporaries.empty()) Writing([&] { d_.write(hooks); });
+  }
+
+  // The per-face value of the colours, the PLY properties and the picture;
+  // the input gives the scale where the problem has no tolerance for it.
+  void WriteAndMeasureOutput() {
+    bool tolerances_met = true;
+    for (const auto& [key, met] : solution_->loop.tolerances) tolerances_met &= met;
+    run_.exit_code = tolerances_met ? 0 : 4;
+    const Mesh& output = solution_->output;
+    const auto write_start = Clock::now();
+    const FaceValues face_values = ComputeFaceValues(d_.colors, output, &solution_->input, &s_);
+    std::future<void> mesh_written = StartMeshWrite(face_values);
+    const double write_seconds = Since(write_start);
+    MeasureOutput();
+
+    const auto rest_start = Clock::now();
+    nlohmann::json& rep = run_.report;
+    rep["colors"] = {{"value", face_values.name},  {"label", face_values.label},
+                     {"units", face_values.units}, {"red_at", face_values.red_at},
+                     {"red_from", face_values.red_from}};
+    if (s_.Bool("output.arrays")) rep["arrays"] = ArraysJson(face_values, output, solution_->input);
+    WriteOtherOutputs(face_values);
+    if (mesh_written.valid()) mesh_written.get();
+    rep["details"] = solution_->hooks.details;
+    const WorkingNet& net = solution_->net;
+    if (!net.details.empty()) rep["details"]["net"] = net.details;  // a net the problem made
+    seconds_["write"] = write_seconds + Since(rest_start);
+    seconds_["write_mesh"] = mesh_write_seconds_;
+    seconds_["total"] = Since(start_);
+    for (const auto& [k, v] : solution_->loop.seconds) seconds_[k] = v;
+    rep["seconds"] = seconds_;
+    if (temporaries_.count("output.report")) {
+      Writing([&] {
+        WriteTextFile(temporaries_.at("output.report"), rep.dump(2) + "\n", "output.report");
+      });
+    }
+    staged_.Commit();
+    if (meshes_.output) *meshes_.output = output;
+  }
+
+  std::string Summary() const {
+    const LoopResult& solved = solution_->loop;
+    char head[512];
+    std::snprintf(head, sizeof head,
+                  "%s: %d variables, %d residuals, %d rounds / %d iterations%s, %.2f s (solve "
+                  "%.2f s); stop: %s\n",
+                  d_.name.c_str(), solved.variables, solved.residuals, solved.rounds,
+                  solved.iterations,
+                  solved.pcg_rounds > 0
+                      ? (" (" + std::to_string(solved.pcg_rounds) + " rounds by PCG, " +
+                         std::to_string(solved.cg_iterations) + " CG steps)").c_str()
+                      : "",
+                  Since(start_), solve_seconds_, solved.stop.c_str());
+    char objective[128];
+    std::snprintf(objective, sizeof objective, "objective (canonical frame): %.6e\n",
+                  solved.objective.count("total") ? solved.objective.at("total") : 0.0);
+    return head + solution_->net.headline + ToleranceLines() + ValidityLines() +
+           solution_->headline + MeasureHeadline(solved) + objective +
+           FormatMetrics(before_, &after_, scale_) +
+           FormatAnalysis(extra_before_, &extra_after_, scale_);
+  }
+
+  std::string ToleranceLines() const {
+    std::string lines;
+    for (const auto& [key, met] : solution_->loop.tolerances) {
+      char line[200];
+      std::snprintf(line, sizeof line, "tolerance %s <= %g: %s\n", key.c_str(), s_.Number(key),
+                    s_.Number(key) <= 0 ? "off" : met ? "met" : "NOT met");
+      lines += line;
+    }
+    return lines;
+  }
+
+  std::string ValidityLines() const {
+    const LoopResult& solved = solution_->loop;
+    std::string lines = "validity: every check passed\n";
+    if (!validity_.Warnings().empty()) lines = "validity: valid; warnings:\n" + validity_.Warnings();
+    if (solved.restored_valid) {
+      lines += "the last round was not valid: the output is round " +
+               std::to_string(solved.output_round) + ", the last valid one\n";
+    }
+    if (run_.exit_code == 4) {
+      lines += "WARNING: a tolerance was not met (exit 4): the result is valid and written\n";
+    }
+    if (!ZeroedTerm().empty()) {
+      lines += "WARNING: ARCHGEO_ZERO_TERM=" + ZeroedTerm() +
+               ": that term's residuals were zeroed (mutation testing)\n";
+    }
+    return lines;
+  }
+
+  const Clock::time_point start_ = Clock::now();
+  const ProblemSpec& spec_;
+  const Settings& s_;
+  const ProblemDecl& d_;
+  const ProgressSink& progress_;
+  const MeshInputs& meshes_;
+  StagedOutputs staged_{Inputs(spec_)};
+  std::map<std::string, std::string> temporaries_;  // output key -> staged file
+  ReadInfo info_;
+  Mesh read_;
+  std::unique_ptr<Mesh> reference_mesh_;
+  std::unique_ptr<Solution> solution_;
+  std::future<Validity> validity_check_;
+  Validity validity_;
+  std::unique_ptr<ReferenceSurface> reference_;
+  Metrics before_, after_;
+  AnalysisRows extra_before_, extra_after_;
+  double scale_ = 0;
+  double solve_seconds_ = 0;
+  double mesh_write_seconds_ = 0;
+  nlohmann::json seconds_ = nlohmann::json::object();
+  RunResult run_;
+};
+
 }  // namespace
 
 RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
@@ -125,307 +525,10 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
 }
 
 RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const MeshInputs& meshes) {
-  const auto start = Clock::now();
   ConfigureThreading();
   CHECK(spec.declaration) << "RunSpec: the spec has no problem (use ReadSpec)";
-  const ProblemDecl& d = *spec.declaration;
-  const Settings& s = spec.settings;
-  SolverOptions(s);  // a combination Ceres rejects fails before any work
-
-  // Outputs are checked and staged before any work; no output may name an
-  // input (the spec, the mesh, the reference, files the problem reads).
-  std::vector<std::string> inputs = spec.InputFiles();
-  inputs.push_back(spec.spec_path);
-  StagedOutputs staged(inputs);
-  std::map<std::string, std::string> temporaries;  // output key -> staged file
-  for (const Key& k : s.schema().keys()) {
-    if (k.type != Type::kOutputPath || s.String(k.name).empty()) continue;
-    const std::string& path = s.String(k.name);
-    if (k.name == "output.mesh" || k.name == "output.layout" || k.name == "output.grid") {
-      try {
-        CheckMeshExtension(path);
-      } catch (const InputError& e) {
-        throw s.Error(k.name, "'" + path + "': " + e.message());
-      }
-    }
-    // Outputs written in one format only: another name would hide the
-    // content (a PLY patchwork named .stl), so it is refused before any work.
-    static const std::map<std::string, std::vector<std::string>> kFormats = {
-        {"output.image", {".png", ".html"}},
-        {"output.patchwork", {".ply"}},
-        {"output.rulings", {".obj"}},
-        {"output.field", {".ply"}}};
-    if (const auto format = kFormats.find(k.name); format != kFormats.end()) {
-      std::string extension = std::filesystem::path(path).extension().string();
-      for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
-      const std::vector<std::string>& allowed = format->second;
-      if (std::find(allowed.begin(), allowed.end(), extension) == allowed.end()) {
-        std::string names;
-        for (const std::string& a : allowed) names += (names.empty() ? "" : " or ") + a;
-        throw s.Error(k.name, "'" + path + "': this output is written as " + names +
-                                  " only: use a " + names + " name");
-      }
-    }
-    temporaries[k.name] = staged.Stage(s.String(k.name), k.name);
-  }
-  // An error a writer reports about a temporary names the user's path.
-  auto writing = [&](const std::function<void()>& write) {
-    try {
-      write();
-    } catch (const InputError& e) {
-      for (const auto& [key, temporary] : temporaries) {
-        if (e.file() == temporary) throw InputError(s.String(key), e.line(), key, e.message());
-      }
-      throw;
-    }
-  };
-
-  ReadInfo info;
-  ReadLimits limits;
-  limits.max_vertices = size_t(s.Integer("limits.max_vertices"));
-  limits.max_faces = size_t(s.Integer("limits.max_faces"));
-  limits.max_face_degree = size_t(s.Integer("limits.max_face_degree"));
-  limits.max_file_bytes = std::uint64_t(s.Integer("limits.max_file_bytes"));
-  const Mesh read = d.makes_input ? Mesh()
-                    : meshes.mesh ? *meshes.mesh
-                                  : ReadMesh(spec.mesh(), &info, limits);
-  if (meshes.mesh) info.format = "memory";
-  std::unique_ptr<Mesh> reference_mesh;
-  if (meshes.reference) {
-    reference_mesh = std::make_unique<Mesh>(*meshes.reference);
-  } else if (!spec.reference().empty()) {
-    reference_mesh = std::make_unique<Mesh>(ReadMesh(spec.reference(), nullptr, limits));
-  }
-  const double read_seconds = Since(start);
-
-  const auto solve_start = Clock::now();
-  const std::unique_ptr<Solution> solution = Solve(spec, read, reference_mesh.get(), progress);
-  const double solve_seconds = Since(solve_start);
-  const LoopResult& solved = solution->loop;
-  const WorkingNet& net = solution->net;
-  const Mesh& input = solution->input;
-  // The result's validity against the net it came from (analysis/validity.h)
-  // needs no reference: it is checked on a second thread while the
-  // reference's trees are built and the input is measured (mostly serial).
-  std::future<Validity> validity_check;
-  if (solved.usable) {
-    validity_check = std::async(std::launch::async, [&] {
-      return CheckValidity(solution->output, &input, LimitsOf(s), true);
-    });
-  }
-
-  const auto setup_start = Clock::now();
-  const ReferenceSurface reference(reference_mesh ? *reference_mesh : input);
-  // Without a separate reference the input is its own reference surface:
-  // every vertex lies on it, so its distances to it are 0 and need not be
-  // measured.
-  Metrics before = ComputeMetrics(input, reference_mesh ? &reference : nullptr, &input);
-  if (!reference_mesh) {
-    before.prox_max = before.surface_distance_max = before.surface_distance_mean = 0;
-    before.boundary_prox_max = reference.HasBoundary() ? 0 : -1;
-    before.hausdorff = 0;
-  }
-  const double scale = before.bbox_diagonal;
-  const AnalysisRows extra_before = Analyse(input, d.analyses, HNetOptionsOf(s));
-  const double setup_seconds = Since(setup_start);
-  const int levels = int(s.Integer("multiresolution.levels"));
-
-  RunResult run;
-  nlohmann::json& rep = run.report;
-  rep["schema_version"] = kReportSchemaVersion;
-  rep["archgeo"] = "solve";
-  rep["spec"] = spec.spec_path;
-  rep["mesh"] = spec.mesh();
-  rep["reference"] = spec.reference().empty() ? spec.mesh() : spec.reference();
-  rep["problem"] = d.name;
-  rep["input"] = {{"format", info.format}, {"reoriented_faces", info.reoriented_faces}};
-  rep["units"] = {{"lengths", "file units"},
-                  {"relative", net.derived ? "file units / bounding-box diagonal of the net "
-                                             "solved (before solving)"
-                                           : "file units / bounding-box diagonal of the input"},
-                  {"bbox_diagonal", scale},
-                  {"angles", "degrees"},
-                  {"rounds", "measures and max_move in the canonical frame (input mean edge "
-                             "length = 1); round 0 = the input"},
-                  {"objective", "0.5 * sum_terms w * sum r^2, in the canonical frame (unit mean "
-                                "edge length), at the last linearisation"}};
-  rep["settings"] = s.ToJson();
-  rep["blas"] = BlasLibrary();
-  rep["details"] = solution->details;
-  if (!net.details.empty()) rep["details"]["net"] = net.details;  // a net the problem made
-  if (s.Bool("output.blocks")) rep["blocks"] = BlocksJson(*solution->store, solution->frame);
-  if (levels > 0) {
-    rep["multiresolution"] = {{"scheme", s.String("multiresolution.scheme")},
-                              {"levels", solution->levels}};
-  }
-  rep["rounds"] = RoundsJson(solution->rounds);
-  rep["output_round"] = solved.output_round;
-  rep["stop"] = solved.stop;
-  rep["usable"] = solved.usable;
-  rep["variables"] = solved.variables;
-  rep["residuals"] = solved.residuals;
-  rep["pcg"] = {{"rounds", solved.pcg_rounds}, {"cg_iterations", solved.cg_iterations}};
-  rep["iterations"] = {{"outer", solved.rounds}, {"inner", solved.iterations}};
-  rep["objective"] = solved.objective;
-  nlohmann::json tolerances = nlohmann::json::object();
-  std::string tolerance_lines;
-  for (const auto& [key, met] : solved.tolerances) {
-    tolerances[key] = {{"bound", s.Number(key)}, {"met", met}};
-    char line[200];
-    std::snprintf(line, sizeof line, "tolerance %s <= %g: %s\n", key.c_str(), s.Number(key),
-                  s.Number(key) <= 0 ? "off" : met ? "met" : "NOT met");
-    tolerance_lines += line;
-  }
-  rep["tolerances"] = tolerances;
-  rep["before"] = MetricsToJson(before, scale);
-  AnalysisToJson(extra_before, scale, rep["before"]);
-
-  if (!solved.usable) {
-    run.exit_code = 3;
-    rep["message"] = solved.message;
-    run.summary = "archgeo: the solver found no usable solution: " + solved.message +
-                  "\nnothing was written.\n";
-    return run;
-  }
-
-  const Mesh& output = solution->output;
-  const Validity validity = validity_check.get();
-  rep["validity"] = validity.ToJson();
-  rep["validity"]["restored_round"] =
-      solved.restored_valid ? nlohmann::json(solved.output_round) : nlohmann::json(nullptr);
-  // The problem's own checks (ProblemDecl::invalid), on the state written.
-  const std::string own = d.invalid ? d.invalid(solution->hooks) : std::string();
-  rep["validity"]["problem"] = own.empty() ? nlohmann::json(nullptr) : nlohmann::json(own);
-  if (!own.empty()) rep["validity"]["valid"] = false;
-  if (!validity.valid() || !own.empty()) {
-    run.exit_code = 3;
-    rep["message"] = "the result is not valid";
-    run.summary = "archgeo: the result is not valid (nothing was written):\n" + validity.Reason() +
-                  own +
-                  "(limits: validity.* keys; the report's validity section lists every check)\n";
-    const nlohmann::json& details = solution->details;
-    if (details.contains("suitability") && details["suitability"].contains("warning")) {
-      run.summary += "WARNING (input suitability): " +
-                     details["suitability"]["warning"].get<std::string>() + "\n";
-    }
-    return run;
-  }
-  bool tolerances_met = true;
-  for (const auto& [key, met] : solved.tolerances) tolerances_met = tolerances_met && met;
-  run.exit_code = tolerances_met ? 0 : 4;
-  // The per-face value of the colours, the PLY properties and the picture;
-  // the input gives the scale where the problem has no tolerance for it.
-  const auto write_start = Clock::now();
-  const FaceValues face_values = ComputeFaceValues(d.colors, output, &input, &s);
-  // The mesh file is written on a second thread while the output is
-  // measured (its staged temporary is committed only at the end).
-  const bool ascii_ply = s.Bool("output.ascii_ply");
-  double mesh_write_seconds = 0;
-  std::future<void> mesh_written;
-  if (temporaries.count("output.mesh")) {
-    mesh_written = std::async(std::launch::async, [&] {
-      const auto mesh_start = Clock::now();
-      const FaceColors colors = ColorsOf(face_values);
-      const std::vector<PlyValues> properties = {{face_values.name, face_values.values}};
-      // Per vertex: the displacement from the input (file units), when the
-      // output has the input's vertices.
-      std::vector<PlyValues> vertex_values;
-      if (output.number_of_vertices() == input.number_of_vertices()) {
-        PlyValues& d = vertex_values.emplace_back();
-        d.name = "displacement";
-        d.values.assign(output.num_vertices(), 0.0);
-        for (VertexIndex v : output.vertices()) {
-          d.values[v.idx()] = std::sqrt(CGAL::squared_distance(output.point(v), input.point(v)));
-        }
-      }
-      writing([&] {
-        WriteMesh(temporaries.at("output.mesh"), output, &colors, ascii_ply, &properties,
-                  &vertex_values);
-      });
-      mesh_write_seconds = Since(mesh_start);
-    });
-  }
-  double write_seconds = Since(write_start);
-
-  const auto metrics_start = Clock::now();
-  const bool same_vertices = output.number_of_vertices() == input.number_of_vertices();
-  const Metrics after = ComputeMetrics(output, &reference, same_vertices ? &input : nullptr);
-  const AnalysisRows extra_after = Analyse(output, d.analyses, HNetOptionsOf(s));
-  rep["after"] = MetricsToJson(after, scale);
-  AnalysisToJson(extra_after, scale, rep["after"]);
-  const double metrics_seconds = Since(metrics_start);
-
-  const auto rest_start = Clock::now();
-  rep["colors"] = {{"value", face_values.name},  {"label", face_values.label},
-                   {"units", face_values.units}, {"red_at", face_values.red_at},
-                   {"red_from", face_values.red_from}};
-  if (s.Bool("output.arrays")) rep["arrays"] = ArraysJson(face_values, output, input);
-  if (temporaries.count("output.image")) {
-    const FaceValues before = ComputeFaceValues(d.colors, input, &input, &s);
-    std::vector<PicturePanel> panels = {PanelOf(input, before.values, "input"),
-                                        PanelOf(output, face_values.values, "output")};
-    writing([&] {
-      WriteView(temporaries.at("output.image"), panels, ScaleOf(face_values), {},
-                "output.image");
-    });
-  }
-  HookContext& hooks = solution->hooks;
-  for (const auto& [key, temporary] : temporaries) {
-    if (key != "output.mesh" && key != "output.report" && key != "output.image") {
-      hooks.temporaries[key.substr(std::string("output.").size())] = temporary;
-    }
-  }
-  if (d.write && !hooks.temporaries.empty()) writing([&] { d.write(hooks); });
-  if (mesh_written.valid()) mesh_written.get();
-  rep["details"] = hooks.details;
-  if (!net.details.empty()) rep["details"]["net"] = net.details;  // a net the problem made
-  nlohmann::json seconds = {{"read", read_seconds},
-                            {"reference_and_metrics_before", setup_seconds},
-                            {"solve", solve_seconds},
-                            {"metrics_after", metrics_seconds},
-                            {"write", write_seconds + Since(rest_start)},
-                            {"write_mesh", mesh_write_seconds},
-                            {"total", Since(start)}};
-  for (const auto& [k, v] : solved.seconds) seconds[k] = v;
-  rep["seconds"] = seconds;
-  if (temporaries.count("output.report")) {
-    writing([&] { WriteTextFile(temporaries.at("output.report"), rep.dump(2) + "\n", "output.report"); });
-  }
-  staged.Commit();
-  if (meshes.output) *meshes.output = output;
-
-  char head[512];
-  std::snprintf(head, sizeof head,
-                "%s: %d variables, %d residuals, %d rounds / %d iterations%s, %.2f s (solve "
-                "%.2f s); stop: %s\n",
-                d.name.c_str(), solved.variables, solved.residuals, solved.rounds,
-                solved.iterations,
-                solved.pcg_rounds > 0
-                    ? (" (" + std::to_string(solved.pcg_rounds) + " rounds by PCG, " +
-                       std::to_string(solved.cg_iterations) + " CG steps)").c_str()
-                    : "",
-                Since(start), solve_seconds, solved.stop.c_str());
-  char objective[128];
-  std::snprintf(objective, sizeof objective, "objective (canonical frame): %.6e\n",
-                solved.objective.count("total") ? solved.objective.at("total") : 0.0);
-  std::string validity_lines = "validity: every check passed\n";
-  if (!validity.Warnings().empty()) validity_lines = "validity: valid; warnings:\n" + validity.Warnings();
-  if (solved.restored_valid) {
-    validity_lines += "the last round was not valid: the output is round " +
-                      std::to_string(solved.output_round) + ", the last valid one\n";
-  }
-  if (run.exit_code == 4) {
-    validity_lines += "WARNING: a tolerance was not met (exit 4): the result is valid and written\n";
-  }
-  if (!ZeroedTerm().empty()) {
-    validity_lines += "WARNING: ARCHGEO_ZERO_TERM=" + ZeroedTerm() +
-                      ": that term's residuals were zeroed (mutation testing)\n";
-  }
-  run.summary = head + net.headline + tolerance_lines + validity_lines + solution->headline +
-                MeasureHeadline(solved) +
-                objective + FormatMetrics(before, &after, scale) +
-                FormatAnalysis(extra_before, &extra_after, scale);
-  return run;
+  SolverOptions(spec.settings);  // a combination Ceres rejects fails before any work
+  return SpecRun(spec, progress, meshes).Run();
 }
 
 RunResult MeasureFiles(const std::string& mesh_path, const std::string& reference_path) {
