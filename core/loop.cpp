@@ -134,307 +134,405 @@ nlohmann::json RoundJson(const RoundLog& r) {
   return j;
 }
 
-LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, Model& model) {
-  CHECK(options.settings) << "RunLoop: no settings";
-  const Settings& s = *options.settings;
-  const ceres::Solver::Options base = SolverOptions(s);
-  RoundSolver how;
-  how.pcg_above = int(s.Integer("solver.pcg_above"));
-  how.pcg_function_tolerance = s.Number("solver.pcg_function_tolerance");
-  how.subset_parts = SubsetParts(s);
-  const std::vector<Stage> stages = declaration.stages(s);
-  const double time_limit = s.Number("schedule.max_seconds");
-  const auto start = Clock::now();
+namespace {
 
-  LoopResult result;
-  RoundLog input;
-  input.stage = "input";
-  for (const Stage& stage : stages) {
-    for (const std::string& m : stage.logged) input.measures[m] = model.Measure(m);
+// What a stage's settings make of it before its first round.
+struct StagePlan {
+  std::vector<Tolerance> active;  // tolerances with a bound > 0
+  bool stopping = false;          // one of them ends the stage when all hold
+  int rounds = 0;
+  double factor = 1;              // continuation factor of the weights
+  double band = -1;               // tolerance band of continued terms (< 0: none)
+  double rest_move = 0;
+  double guard = 0;
+};
+
+// The rounds of every stage of a problem (core/loop.h): one object per
+// RunLoop, its state what carries from round to round and stage to stage.
+class Loop {
+ public:
+  Loop(const ProblemDecl& declaration, const LoopOptions& options, Model& model)
+      : s_(*options.settings), options_(options), model_(model), base_(SolverOptions(s_)),
+        stages_(declaration.stages(s_)), time_limit_(s_.Number("schedule.max_seconds")) {
+    how_.pcg_above = int(s_.Integer("solver.pcg_above"));
+    how_.pcg_function_tolerance = s_.Number("solver.pcg_function_tolerance");
+    how_.subset_parts = SubsetParts(s_);
   }
-  result.log.push_back(input);
-  if (options.progress) options.progress("round  0 (input)" + MeasureText(input.measures));
 
-  double scale = 1;  // continuation, carried from stage to stage
-  // The last state that passed the validity checks (round 0: the input).
-  std::vector<double> last_valid = model.SaveState();
-  int last_valid_round = 0;
-  Residuals residuals;  // the last round's
-  bool built = false;
-  NormalPattern pattern;  // PCG rounds' pattern of J^T J, reused while it fits
-  int round_number = 0;
-  for (const Stage& stage : stages) {
-    std::vector<Tolerance> active;
-    for (const Tolerance& t : stage.tolerances) {
-      if (Bound(s, t) > 0) active.push_back(t);
+  LoopResult Run() {
+    LogInput();
+    last_valid_ = model_.SaveState();
+    for (const Stage& stage : stages_) {
+      if (!RunStage(stage)) return result_;
     }
-    bool stopping_tolerance = false;
-    for (const Tolerance& t : active) stopping_tolerance = stopping_tolerance || t.stops;
+    KeepLastValid();
+    for (const Stage& stage : stages_) {
+      for (const Tolerance& t : stage.tolerances) {
+        const double bound = Bound(s_, t);
+        result_.tolerances[t.key] = bound <= 0 || model_.Measure(t.measure) <= bound;
+      }
+    }
+    if (built_) result_.objective = Objective(residuals_);
+    return result_;
+  }
+
+ private:
+  // Round 0: the input's measures.
+  void LogInput() {
+    RoundLog input;
+    input.stage = "input";
+    for (const Stage& stage : stages_) {
+      for (const std::string& m : stage.logged) input.measures[m] = model_.Measure(m);
+    }
+    result_.log.push_back(input);
+    if (options_.progress) options_.progress("round  0 (input)" + MeasureText(input.measures));
+  }
+
+  StagePlan Plan(const Stage& stage) {
+    StagePlan plan;
+    for (const Tolerance& t : stage.tolerances) {
+      if (Bound(s_, t) > 0) plan.active.push_back(t);
+    }
+    for (const Tolerance& t : plan.active) plan.stopping = plan.stopping || t.stops;
     // A stage marked skip_if_met whose tolerances (one of them stopping)
     // already hold runs no round.
-    bool met_at_start = stage.skip_if_met && stopping_tolerance;
-    for (const Tolerance& t : active) {
-      met_at_start = met_at_start && model.Measure(t.measure) <= Bound(s, t);
+    bool met_at_start = stage.skip_if_met && plan.stopping;
+    for (const Tolerance& t : plan.active) {
+      met_at_start = met_at_start && model_.Measure(t.measure) <= Bound(s_, t);
     }
-    const int rounds = met_at_start ? 0 : int(s.Integer(stage.rounds_key));
+    plan.rounds = met_at_start ? 0 : int(s_.Integer(stage.rounds_key));
     if (met_at_start) {
-      result.stop = "tolerances met before " +
-                    (stage.name.empty() ? std::string("the first round") : stage.name + " round 1");
+      result_.stop = "tolerances met before " + (stage.name.empty() ? std::string("the first round")
+                                                                    : stage.name + " round 1");
     }
-    const double factor = stage.factor_key.empty() ? 1.0 : s.Number(stage.factor_key);
-    // The tolerance band of continued terms (< 0: none).
-    const double band = stage.band_key.empty()
-                            ? -1.0
-                            : active.empty() ? 0.0 : s.Number(stage.band_key) * Bound(s, active.front());
-    const double rest_move =
-        stage.rest_move_key.empty() ? stage.rest_move : s.Number(stage.rest_move_key);
-    const double guard = stage.guard_key.empty() ? 0.0 : s.Number(stage.guard_key);
-    const bool projecting = [&] {
-      for (const TermSpec* t : options.terms) {
-        if (t->needs_projection && s.Number("terms." + std::string(t->name) + ".weight") > 0) {
-          return true;
-        }
-      }
-      return false;
-    }();
+    plan.factor = stage.factor_key.empty() ? 1.0 : s_.Number(stage.factor_key);
+    plan.band = stage.band_key.empty() ? -1.0
+                : plan.active.empty()  ? 0.0
+                                       : s_.Number(stage.band_key) * Bound(s_, plan.active.front());
+    plan.rest_move = stage.rest_move_key.empty() ? stage.rest_move : s_.Number(stage.rest_move_key);
+    plan.guard = stage.guard_key.empty() ? 0.0 : s_.Number(stage.guard_key);
+    return plan;
+  }
 
+  // Whether a term that reads the projection onto the reference is on.
+  bool Projecting() const {
+    for (const TermSpec* t : options_.terms) {
+      if (t->needs_projection && s_.Number("terms." + std::string(t->name) + ".weight") > 0) {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // The stage's rounds; false when a round gave no usable state (the loop
+  // ends with result_.usable false).
+  bool RunStage(const Stage& stage) {
+    const StagePlan plan = Plan(stage);
+    const bool projecting = Projecting();
     // Best round (keep_best) and patience bookkeeping.
-    double best = stage.keep_best.empty() ? 0 : model.Measure(stage.keep_best);
-    std::vector<double> best_state;
-    if (!stage.keep_best.empty()) best_state = model.SaveState();
-    int best_round = round_number;
-    double patience_best = stage.patience_measure.empty() ? 0 : model.Measure(stage.patience_measure);
-    int last_gain = 0;
-
-    for (int k = 1; k <= rounds; ++k) {
-      if (time_limit > 0 && Since(start) >= time_limit) {
-        result.stop = "schedule.max_seconds reached";
+    best_ = stage.keep_best.empty() ? 0 : model_.Measure(stage.keep_best);
+    best_state_.clear();
+    if (!stage.keep_best.empty()) best_state_ = model_.SaveState();
+    best_round_ = round_number_;
+    patience_best_ = stage.patience_measure.empty() ? 0 : model_.Measure(stage.patience_measure);
+    last_gain_ = 0;
+    for (int k = 1; k <= plan.rounds; ++k) {
+      if (time_limit_ > 0 && Since(start_) >= time_limit_) {
+        result_.stop = "schedule.max_seconds reached";
         break;
       }
-      const auto round_start = Clock::now();
-      ++round_number;
-      if (stage.before_round) stage.before_round(model.hooks());
-      const double undo_before =
-          stage.undo_if_worse.empty() ? 0 : model.Measure(stage.undo_if_worse);
-      const double change_before =
-          stage.rest_change_measure.empty() ? 0 : model.Measure(stage.rest_change_measure);
-
-      const auto projection_start = Clock::now();
-      model.BeginRound(projecting);
-      if (projecting) result.seconds["projection"] += Since(projection_start);
-
-      const std::string label =
-          (stage.name.empty() ? std::string() : stage.name + " ") + "round " +
-          Format("%2.0f", round_number);
-      std::vector<double> before;
-      StepResult step;
-      if (stage.step) {
-        // A round that is not a Ceres solve.
-        before = model.SaveState();
-        step = stage.step(model.hooks());
-        model.StateChanged();
-        result.rounds = round_number;
-        result.iterations += step.iterations;
-      } else {
-        std::vector<ActiveTerm> terms;
-        for (const TermSpec* t : options.terms) {
-          const std::string name = t->name;
-          if (!stage.terms.empty() &&
-              std::find(stage.terms.begin(), stage.terms.end(), name) == stage.terms.end()) {
-            continue;
-          }
-          const bool continued = std::find(stage.continued.begin(), stage.continued.end(),
-                                           name) != stage.continued.end();
-          const double w = s.Number("terms." + name + ".weight") * (continued ? scale : 1.0);
-          if (w > 0) terms.push_back({t, w, continued ? band : -1.0});
-        }
-        const auto build_start = Clock::now();
-        residuals.Clear();
-        model.Build(terms, k, residuals);
-        residuals.Fit();
-        result.seconds["build"] += Since(build_start);
-        built = true;
-        before = model.SaveState();
-
-        ceres::Solver::Options solver = base;
-        if (time_limit > 0) {
-          solver.max_solver_time_in_seconds = std::min(
-              solver.max_solver_time_in_seconds, std::max(0.0, time_limit - Since(start)));
-        }
-        std::vector<std::pair<std::string, double>> watched;
-        for (const Tolerance& t : active) {
-          if (t.per_iteration) watched.push_back({t.measure, Bound(s, t)});
-        }
-        IterationWatch watch(model, options.progress, label, watched);
-        if (options.progress || !watched.empty()) {
-          solver.callbacks.push_back(&watch);
-          solver.update_state_every_iteration = true;
-        }
-        SolveSummary summary;
-        if (residuals.NumResiduals() > 0) {
-          // A round LeanSolve solves refuses the options it does not
-          // implement: an input error, before any output is written.
-          if (UsesLeanSolve(how.pcg_above, residuals)) {
-            std::string why;
-            const std::string option = LeanSolveRefuses(solver, &why);
-            if (!option.empty()) {
-              throw s.Error("solver." + option,
-                            why + " (this round has " +
-                                std::to_string(residuals.FreeTangentSize()) +
-                                " variables, more than solver.pcg_above = " +
-                                std::to_string(how.pcg_above) +
-                                ": set solver.pcg_above: 0 to solve every round with Ceres)");
-            }
-          }
-          if (!UsesLeanSolve(how.pcg_above, residuals) &&
-              solver.preconditioner_type == ceres::SUBSET &&
-              !AnyPart(residuals, how.subset_parts)) {
-            throw s.Error("solver.subset_preconditioner_parts",
-                          "no residual of this round is in these parts (preconditioner_type: "
-                          "subset needs them)");
-          }
-          summary = SolveRound(solver, how, residuals, &pattern);
-        }
-        model.StateChanged();
-
-        result.rounds = round_number;
-        result.variables = residuals.NumParameters();
-        result.residuals = residuals.NumResiduals();
-        if (summary.pcg) {
-          ++result.pcg_rounds;
-          result.cg_iterations += summary.cg_iterations;
-        }
-        step.iterations = summary.iterations;
-        step.cost = summary.final_cost;
-        result.iterations += step.iterations;
-        result.seconds["solver"] += summary.seconds;  // ceres::Solve or LeanSolve
-        result.seconds["linear_solver"] += summary.linear_solver_seconds;
-        result.seconds["jacobian"] += summary.jacobian_seconds;
-        result.seconds["residual"] += summary.residual_seconds;
-        if (!summary.usable) {
-          step.usable = false;
-          step.message = summary.message;
-        }
-      }
-      if (!step.usable || !model.Finite()) {
-        result.usable = false;
-        result.message = step.usable ? "the solver produced non-finite values" : step.message;
-        return result;
-      }
-
-      RoundLog row;
-      row.stage = stage.name;
-      row.round = round_number;
-      row.iterations = step.iterations;
-      row.cost = step.cost;
-      row.weight_scale = scale;
-      if (guard > 0) {
-        row.clamped = model.Guard(guard);
-        model.StateChanged();
-      }
-      if (stage.after_round) {
-        stage.after_round(model.hooks());
-        model.StateChanged();
-      }
-      row.max_move = model.MaxMove(before, model.SaveState());
-      for (const std::string& m : stage.logged) row.measures[m] = model.Measure(m);
-      bool stop = false;
-      if (!stage.undo_if_worse.empty() && model.Measure(stage.undo_if_worse) > undo_before) {
-        model.RestoreState(before);
-        model.StateChanged();
-        row.undone = true;
-        result.stop = "round undone: " + stage.undo_if_worse + " rose";
-        stop = true;
-      }
-      row.invalid = model.Invalid();
-      row.valid = row.invalid.empty();
-      if (row.valid) {
-        last_valid = model.SaveState();
-        last_valid_round = round_number;
-      }
-      row.seconds = Since(round_start);
-      result.log.push_back(row);
-      if (options.progress) {
-        char line[160];
-        std::snprintf(line, sizeof line, "%s done: %d iterations  cost %.6e  max move %.2e  %.2f s%s",
-                      label.c_str(), row.iterations, row.cost, row.max_move, row.seconds,
-                      row.undone ? "  UNDONE" : "");
-        options.progress(line + MeasureText(row.measures) + (row.valid ? "" : "  INVALID"));
-      }
-      if (stop) break;
-
-      if (!stage.keep_best.empty() && row.valid) {
-        const double value = model.Measure(stage.keep_best);
-        if (value < best) {
-          best = value;
-          best_state = model.SaveState();
-          best_round = round_number;
-        }
-      }
-      if (!stage.patience_measure.empty()) {
-        const double value = model.Measure(stage.patience_measure);
-        const double fraction = s.Number(stage.patience_key);
-        if (value < patience_best - fraction * patience_best) last_gain = k;
-        patience_best = std::min(patience_best, value);
-        if (fraction > 0 && k - last_gain >= stage.patience_rounds) {
-          result.stop = "no gain in " + stage.patience_measure + " for " +
-                        std::to_string(stage.patience_rounds) + " rounds";
-          break;
-        }
-      }
-      bool met = !active.empty();
-      for (const Tolerance& t : active) met = met && model.Measure(t.measure) <= Bound(s, t);
-      if (stopping_tolerance && met) {
-        result.stop = "tolerances met";
-        break;
-      }
-      if (!step.stop.empty()) {  // a step that reached its own end
-        result.stop = step.stop;
-        break;
-      }
-      if (!active.empty() && !met) scale *= factor;  // continuation
-      if (!stopping_tolerance) {
-        if (rest_move > 0 && row.max_move < rest_move) {
-          result.stop = "at rest (max move below " + Format("%g", rest_move) + ")";
-          break;
-        }
-        if (!stage.rest_change_measure.empty()) {
-          const double now = model.Measure(stage.rest_change_measure);
-          if (std::abs(now - change_before) <=
-              s.Number(stage.rest_change_key) * std::abs(change_before)) {
-            result.stop = "at rest (" + stage.rest_change_measure + " settled)";
-            break;
-          }
-        }
-      }
-      if (k == rounds) result.stop = "rounds exhausted (" + stage.rounds_key + ")";
+      const RoundEnd end = Round(stage, plan, k, projecting);
+      if (end == RoundEnd::kUnusable) return false;
+      if (end == RoundEnd::kStop) break;
+      if (k == plan.rounds) result_.stop = "rounds exhausted (" + stage.rounds_key + ")";
     }
-    result.output_round = round_number;
-    if (!stage.keep_best.empty() && best_round != round_number) {
-      model.RestoreState(best_state);  // the best round (or the stage's start)
-      model.StateChanged();
-      result.output_round = best_round;
+    result_.output_round = round_number_;
+    if (!stage.keep_best.empty() && best_round_ != round_number_) {
+      model_.RestoreState(best_state_);  // the best round (or the stage's start)
+      model_.StateChanged();
+      result_.output_round = best_round_;
+    }
+    return true;
+  }
+
+  enum class RoundEnd { kNext, kStop, kUnusable };
+
+  // Round k of the stage: its step or Ceres solve, then the round's log row
+  // and the stage's stop criteria.
+  RoundEnd Round(const Stage& stage, const StagePlan& plan, int k, bool projecting) {
+    const auto round_start = Clock::now();
+    ++round_number_;
+    if (stage.before_round) stage.before_round(model_.hooks());
+    const double undo_before = stage.undo_if_worse.empty() ? 0 : model_.Measure(stage.undo_if_worse);
+    const double change_before =
+        stage.rest_change_measure.empty() ? 0 : model_.Measure(stage.rest_change_measure);
+    const auto projection_start = Clock::now();
+    model_.BeginRound(projecting);
+    if (projecting) result_.seconds["projection"] += Since(projection_start);
+    const std::string label = (stage.name.empty() ? std::string() : stage.name + " ") +
+                              "round " + Format("%2.0f", round_number_);
+    std::vector<double> before;
+    const StepResult step = stage.step ? Step(stage, &before) : Solve(stage, plan, k, label, &before);
+    if (!step.usable || !model_.Finite()) {
+      result_.usable = false;
+      result_.message = step.usable ? "the solver produced non-finite values" : step.message;
+      return RoundEnd::kUnusable;
+    }
+    RoundLog row = Log(stage, plan, step, before, undo_before);
+    row.seconds = Since(round_start);
+    result_.log.push_back(row);
+    Report(label, row);
+    if (row.undone) return RoundEnd::kStop;
+    return Continue(stage, plan, k, row, step, change_before) ? RoundEnd::kNext : RoundEnd::kStop;
+  }
+
+  // A round that is not a Ceres solve.
+  StepResult Step(const Stage& stage, std::vector<double>* before) {
+    *before = model_.SaveState();
+    StepResult step = stage.step(model_.hooks());
+    model_.StateChanged();
+    result_.rounds = round_number_;
+    result_.iterations += step.iterations;
+    return step;
+  }
+
+  // The terms of the round with their weights (continued terms scaled).
+  std::vector<ActiveTerm> Terms(const Stage& stage, const StagePlan& plan) const {
+    std::vector<ActiveTerm> terms;
+    for (const TermSpec* t : options_.terms) {
+      const std::string name = t->name;
+      if (!stage.terms.empty() &&
+          std::find(stage.terms.begin(), stage.terms.end(), name) == stage.terms.end()) {
+        continue;
+      }
+      const bool continued =
+          std::find(stage.continued.begin(), stage.continued.end(), name) != stage.continued.end();
+      const double w = s_.Number("terms." + name + ".weight") * (continued ? scale_ : 1.0);
+      if (w > 0) terms.push_back({t, w, continued ? plan.band : -1.0});
+    }
+    return terms;
+  }
+
+  // Builds the round's residuals and solves them (Ceres or LeanSolve).
+  StepResult Solve(const Stage& stage, const StagePlan& plan, int k, const std::string& label,
+                   std::vector<double>* before) {
+    const auto build_start = Clock::now();
+    residuals_.Clear();
+    model_.Build(Terms(stage, plan), k, residuals_);
+    residuals_.Fit();
+    result_.seconds["build"] += Since(build_start);
+    built_ = true;
+    *before = model_.SaveState();
+
+    ceres::Solver::Options solver = base_;
+    if (time_limit_ > 0) {
+      solver.max_solver_time_in_seconds = std::min(solver.max_solver_time_in_seconds,
+                                                   std::max(0.0, time_limit_ - Since(start_)));
+    }
+    std::vector<std::pair<std::string, double>> watched;
+    for (const Tolerance& t : plan.active) {
+      if (t.per_iteration) watched.push_back({t.measure, Bound(s_, t)});
+    }
+    IterationWatch watch(model_, options_.progress, label, watched);
+    if (options_.progress || !watched.empty()) {
+      solver.callbacks.push_back(&watch);
+      solver.update_state_every_iteration = true;
+    }
+    SolveSummary summary;
+    if (residuals_.NumResiduals() > 0) {
+      CheckSolverFits(solver);
+      summary = SolveRound(solver, how_, residuals_, &pattern_);
+    }
+    model_.StateChanged();
+    return Account(summary);
+  }
+
+  // A round LeanSolve solves refuses the options it does not implement, and
+  // the SUBSET preconditioner needs residuals in its parts: input errors,
+  // before any output is written.
+  void CheckSolverFits(const ceres::Solver::Options& solver) const {
+    if (UsesLeanSolve(how_.pcg_above, residuals_)) {
+      std::string why;
+      const std::string option = LeanSolveRefuses(solver, &why);
+      if (!option.empty()) {
+        throw s_.Error("solver." + option,
+                       why + " (this round has " + std::to_string(residuals_.FreeTangentSize()) +
+                           " variables, more than solver.pcg_above = " +
+                           std::to_string(how_.pcg_above) +
+                           ": set solver.pcg_above: 0 to solve every round with Ceres)");
+      }
+    }
+    if (!UsesLeanSolve(how_.pcg_above, residuals_) &&
+        solver.preconditioner_type == ceres::SUBSET && !AnyPart(residuals_, how_.subset_parts)) {
+      throw s_.Error("solver.subset_preconditioner_parts",
+                     "no residual of this round is in these parts (preconditioner_type: "
+                     "subset needs them)");
     }
   }
+
+  // The solve's counts and times into the result; its step.
+  StepResult Account(const SolveSummary& summary) {
+    result_.rounds = round_number_;
+    result_.variables = residuals_.NumParameters();
+    result_.residuals = residuals_.NumResiduals();
+    if (summary.pcg) {
+      ++result_.pcg_rounds;
+      result_.cg_iterations += summary.cg_iterations;
+    }
+    StepResult step;
+    step.iterations = summary.iterations;
+    step.cost = summary.final_cost;
+    result_.iterations += step.iterations;
+    result_.seconds["solver"] += summary.seconds;  // ceres::Solve or LeanSolve
+    result_.seconds["linear_solver"] += summary.linear_solver_seconds;
+    result_.seconds["jacobian"] += summary.jacobian_seconds;
+    result_.seconds["residual"] += summary.residual_seconds;
+    if (!summary.usable) {
+      step.usable = false;
+      step.message = summary.message;
+    }
+    return step;
+  }
+
+  // The round's log row, after the guard, the stage's after_round and the
+  // undo of a round that made undo_if_worse rise; records a valid state.
+  RoundLog Log(const Stage& stage, const StagePlan& plan, const StepResult& step,
+               const std::vector<double>& before, double undo_before) {
+    RoundLog row;
+    row.stage = stage.name;
+    row.round = round_number_;
+    row.iterations = step.iterations;
+    row.cost = step.cost;
+    row.weight_scale = scale_;
+    if (plan.guard > 0) {
+      row.clamped = model_.Guard(plan.guard);
+      model_.StateChanged();
+    }
+    if (stage.after_round) {
+      stage.after_round(model_.hooks());
+      model_.StateChanged();
+    }
+    row.max_move = model_.MaxMove(before, model_.SaveState());
+    for (const std::string& m : stage.logged) row.measures[m] = model_.Measure(m);
+    if (!stage.undo_if_worse.empty() && model_.Measure(stage.undo_if_worse) > undo_before) {
+      model_.RestoreState(before);
+      model_.StateChanged();
+      row.undone = true;
+      result_.stop = "round undone: " + stage.undo_if_worse + " rose";
+    }
+    row.invalid = model_.Invalid();
+    row.valid = row.invalid.empty();
+    if (row.valid) {
+      last_valid_ = model_.SaveState();
+      last_valid_round_ = round_number_;
+    }
+    return row;
+  }
+
+  void Report(const std::string& label, const RoundLog& row) const {
+    if (!options_.progress) return;
+    char line[160];
+    std::snprintf(line, sizeof line, "%s done: %d iterations  cost %.6e  max move %.2e  %.2f s%s",
+                  label.c_str(), row.iterations, row.cost, row.max_move, row.seconds,
+                  row.undone ? "  UNDONE" : "");
+    options_.progress(line + MeasureText(row.measures) + (row.valid ? "" : "  INVALID"));
+  }
+
+  // After a round: keep the best, then the stop criteria (patience, the
+  // tolerances, the step's own end, rest); continues the weights where a
+  // tolerance is not met. False: the stage ends.
+  bool Continue(const Stage& stage, const StagePlan& plan, int k, const RoundLog& row,
+                const StepResult& step, double change_before) {
+    if (!stage.keep_best.empty() && row.valid) {
+      const double value = model_.Measure(stage.keep_best);
+      if (value < best_) {
+        best_ = value;
+        best_state_ = model_.SaveState();
+        best_round_ = round_number_;
+      }
+    }
+    if (!stage.patience_measure.empty()) {
+      const double value = model_.Measure(stage.patience_measure);
+      const double fraction = s_.Number(stage.patience_key);
+      if (value < patience_best_ - fraction * patience_best_) last_gain_ = k;
+      patience_best_ = std::min(patience_best_, value);
+      if (fraction > 0 && k - last_gain_ >= stage.patience_rounds) {
+        result_.stop = "no gain in " + stage.patience_measure + " for " +
+                       std::to_string(stage.patience_rounds) + " rounds";
+        return false;
+      }
+    }
+    bool met = !plan.active.empty();
+    for (const Tolerance& t : plan.active) met = met && model_.Measure(t.measure) <= Bound(s_, t);
+    if (plan.stopping && met) {
+      result_.stop = "tolerances met";
+      return false;
+    }
+    if (!step.stop.empty()) {  // a step that reached its own end
+      result_.stop = step.stop;
+      return false;
+    }
+    if (!plan.active.empty() && !met) scale_ *= plan.factor;  // continuation
+    if (plan.stopping) return true;
+    if (plan.rest_move > 0 && row.max_move < plan.rest_move) {
+      result_.stop = "at rest (max move below " + Format("%g", plan.rest_move) + ")";
+      return false;
+    }
+    if (!stage.rest_change_measure.empty()) {
+      const double now = model_.Measure(stage.rest_change_measure);
+      if (std::abs(now - change_before) <= s_.Number(stage.rest_change_key) * std::abs(change_before)) {
+        result_.stop = "at rest (" + stage.rest_change_measure + " settled)";
+        return false;
+      }
+    }
+    return true;
+  }
+
   // An invalid final state gives way to the last valid round after the input.
-  const Key* keep = s.schema().Find("validity.keep_last_valid");
-  if (keep && s.Bool("validity.keep_last_valid") && !model.Invalid().empty() &&
-      last_valid_round > 0) {
-    model.RestoreState(last_valid);
-    model.StateChanged();
-    result.output_round = last_valid_round;
-    result.restored_valid = true;
-    result.stop += "; the last round was invalid: the output is round " +
-                   std::to_string(last_valid_round) + ", the last valid one";
-  }
-  for (const Stage& stage : stages) {
-    for (const Tolerance& t : stage.tolerances) {
-      const double bound = Bound(s, t);
-      result.tolerances[t.key] = bound <= 0 || model.Measure(t.measure) <= bound;
+  void KeepLastValid() {
+    const Key* keep = s_.schema().Find("validity.keep_last_valid");
+    if (!keep || !s_.Bool("validity.keep_last_valid") || model_.Invalid().empty() ||
+        last_valid_round_ <= 0) {
+      return;
     }
+    model_.RestoreState(last_valid_);
+    model_.StateChanged();
+    result_.output_round = last_valid_round_;
+    result_.restored_valid = true;
+    result_.stop += "; the last round was invalid: the output is round " +
+                    std::to_string(last_valid_round_) + ", the last valid one";
   }
-  if (built) result.objective = Objective(residuals);
-  return result;
+
+  const Settings& s_;
+  const LoopOptions& options_;
+  Model& model_;
+  const ceres::Solver::Options base_;
+  RoundSolver how_;
+  const std::vector<Stage> stages_;
+  const double time_limit_;
+  const Clock::time_point start_ = Clock::now();
+  LoopResult result_;
+  double scale_ = 1;  // continuation, carried from stage to stage
+  // The last state that passed the validity checks (round 0: the input).
+  std::vector<double> last_valid_;
+  int last_valid_round_ = 0;
+  Residuals residuals_;  // the last round's
+  bool built_ = false;
+  NormalPattern pattern_;  // PCG rounds' pattern of J^T J, reused while it fits
+  int round_number_ = 0;
+  // The current stage's best round (keep_best) and patience.
+  double best_ = 0;
+  std::vector<double> best_state_;
+  int best_round_ = 0;
+  double patience_best_ = 0;
+  int last_gain_ = 0;
+};
+
+}  // namespace
+
+LoopResult RunLoop(const ProblemDecl& declaration, const LoopOptions& options, Model& model) {
+  CHECK(options.settings) << "RunLoop: no settings";
+  return Loop(declaration, options, model).Run();
 }
 
 }  // namespace archgeo
