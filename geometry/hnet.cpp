@@ -15,6 +15,7 @@
 #include <Eigen/Geometry>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
+#include <unsupported/Eigen/Polynomials>
 #include <glog/logging.h>
 
 #include "core/input_error.h"
@@ -176,19 +177,15 @@ double OptimalShapeScale(const std::vector<double>& W) {
     q.C += 1 / w;
     q.D += 1 / (w * w);
   }
-  // [Shi 2014, eq. 11]: dF/dλ = 2(Aλ − B + C/λ² − D/λ³) = 0 ⇔ p(λ) = 0.
-  // Companion matrix of the monic p/A = λ⁴ + a3 λ³ + a2 λ² + a1 λ + a0.
-  const double a3 = -q.B / q.A, a2 = 0, a1 = q.C / q.A, a0 = -q.D / q.A;
-  Eigen::Matrix4d companion = Eigen::Matrix4d::Zero();
-  companion(1, 0) = companion(2, 1) = companion(3, 2) = 1;
-  companion(0, 3) = -a0;
-  companion(1, 3) = -a1;
-  companion(2, 3) = -a2;
-  companion(3, 3) = -a3;
-  const Eigen::EigenSolver<Eigen::Matrix4d> solver(companion, /*computeEigenvectors=*/false);
+  // [Shi 2014, eq. 11]: dF/dλ = 2(Aλ − B + C/λ² − D/λ³) = 0 ⇔ p(λ) = 0,
+  // solved by Eigen's polynomial solver (the eigenvalues of the balanced
+  // companion matrix); its positive real roots are the candidates.
+  Eigen::Matrix<double, 5, 1> coefficients;  // increasing degree
+  coefficients << -q.D, q.C, 0, -q.B, q.A;
+  Eigen::PolynomialSolver<double, 4> solver(coefficients);
   std::vector<double> candidates;
   for (int i = 0; i < 4; ++i) {
-    const std::complex<double> root = solver.eigenvalues()[i];
+    const std::complex<double> root = solver.roots()[i];
     if (root.real() <= 0) continue;
     if (std::abs(root.imag()) > kRealRootTolerance * std::max(1.0, std::abs(root))) continue;
     candidates.push_back(root.real());
