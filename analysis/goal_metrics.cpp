@@ -3,6 +3,8 @@
 // archgeo — metrics of the goal library (see goal_metrics.h).
 #include "analysis/goal_metrics.h"
 
+#include "core/newell.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -23,11 +25,10 @@ Vec3 Position(const Mesh& mesh, VertexIndex v) { return ToVec3(mesh.point(v)); }
 
 // Vector area (Newell) of a face: area times unit normal.
 Vec3 VectorArea(const Mesh& mesh, FaceIndex f) {
-  Vec3 sum{0, 0, 0};
-  for (HalfedgeIndex h : mesh.halfedges_around_face(mesh.halfedge(f))) {
-    sum = Add(sum, Cross(Position(mesh, mesh.source(h)), Position(mesh, mesh.target(h))));
-  }
-  return Scale(0.5, sum);
+  std::vector<Vec3> p;
+  for (VertexIndex v : mesh.vertices_around_face(mesh.halfedge(f))) p.push_back(Position(mesh, v));
+  const Eigen::Vector3d n = NewellVector(int(p.size()), [&](int k) { return p[size_t(k)]; });
+  return Scale(0.5, {n[0], n[1], n[2]});
 }
 
 Vec3 Centroid(const Mesh& mesh, FaceIndex f) {

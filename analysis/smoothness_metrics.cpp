@@ -11,6 +11,7 @@
 #include <glog/logging.h>
 
 #include "core/solver_options.h"
+#include "core/newell.h"
 #include "mesh/vec3.h"
 
 namespace archgeo {
@@ -168,7 +169,8 @@ Vec3 FaceNormal(const Mesh& mesh, FaceIndex f) {
   } else if (k == 4) {
     n = Cross(Sub(p[2], p[0]), Sub(p[3], p[1]));  // diagonals
   } else {
-    for (size_t i = 0; i < k; ++i) n = Add(n, Cross(p[i], p[(i + 1) % k]));  // Newell
+    const Eigen::Vector3d newell = NewellVector(int(k), [&](int i) { return p[size_t(i)]; });
+    n = {newell[0], newell[1], newell[2]};
   }
   double longest = 0;
   for (size_t i = 0; i < k; ++i) longest = std::max(longest, Norm(Sub(p[(i + 1) % k], p[i])));

@@ -9,6 +9,7 @@
 #include <glog/logging.h>
 
 #include "core/term.h"
+#include "core/newell.h"
 #include "energies/autodiff_impl.h"
 
 namespace archgeo {
@@ -47,15 +48,7 @@ constexpr double kDegrees = 3.14159265358979323846 / 180.0;
 // Newell's normal of the polygon vs[0..k) at `position(v)`, unit (0 if degenerate).
 template <typename Positions>
 Eigen::Vector3d Newell(const int* vs, int k, Positions position) {
-  Eigen::Vector3d n(0, 0, 0);
-  for (int j = 0; j < k; ++j) {
-    const double* p = position(vs[j]);
-    const double* q = position(vs[(j + 1) % k]);
-    n += Eigen::Vector3d((p[1] - q[1]) * (p[2] + q[2]), (p[2] - q[2]) * (p[0] + q[0]),
-                         (p[0] - q[0]) * (p[1] + q[1]));
-  }
-  const double length = n.norm();
-  return length > 0 ? Eigen::Vector3d(n / length) : Eigen::Vector3d(0, 0, 0);
+  return NewellNormal(k, [&](int j) { return position(vs[j]); });  // core/newell.h
 }
 
 void AddConvexity(TermContext& c, size_t i) {

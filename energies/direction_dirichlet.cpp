@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/term.h"
+#include "core/newell.h"
 #include "energies/autodiff_impl.h"
 
 namespace archgeo {
@@ -34,16 +35,9 @@ void InitDirections(TermContext& c) {
     if (d[0] != 0 || d[1] != 0 || d[2] != 0) continue;
     const int* vs = faces.Vertices(f);
     const int k = faces.Count(f);
-    double n[3] = {0, 0, 0};
-    for (int j = 0; j < k; ++j) {
-      const double* a = c.Position(vs[j]);
-      const double* b = c.Position(vs[(j + 1) % k]);
-      n[0] += a[1] * b[2] - a[2] * b[1];
-      n[1] += a[2] * b[0] - a[0] * b[2];
-      n[2] += a[0] * b[1] - a[1] * b[0];
-    }
-    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    for (int a = 0; a < 3; ++a) d[a] = length > 0 ? n[a] / length : (a == 2 ? 1.0 : 0.0);
+    const Eigen::Vector3d n = NewellNormal(k, [&](int j) { return c.Position(vs[j]); });
+    const bool degenerate = n.norm() == 0;
+    for (int a = 0; a < 3; ++a) d[a] = degenerate ? (a == 2 ? 1.0 : 0.0) : n[a];
   }
 }
 

@@ -2,11 +2,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "energies/face_planarity.h"
 
+#include <array>
 #include <cmath>
 
 #include <glog/logging.h>
 
 #include "core/term.h"
+#include "core/newell.h"
 #include "core/tolerance_band.h"
 #include "energies/autodiff_impl.h"
 
@@ -33,29 +35,12 @@ FacePlanarity CheckedFacePlanarity(const double center[3], double inv_length) {
 // --- term `face_planarity` -----------------------------------------------------
 
 namespace archgeo::terms {
-namespace {
-
-using Vec = std::array<double, 3>;
-
-Vec At(const double* p) { return {p[0], p[1], p[2]}; }
-
-}  // namespace
-
 void InitFacePlaneNormal(TermContext& c, int face, const int* vs, int count) {
   double* n = c.Block("face_plane_normal", face);
   if (n[0] != 0 || n[1] != 0 || n[2] != 0) return;  // set already
-  // Newell normal: Σ p_i × p_{i+1}, normalised.
-  Vec sum{0, 0, 0};
-  for (int k = 0; k < count; ++k) {
-    const Vec a = At(c.Position(vs[k])), b = At(c.Position(vs[(k + 1) % count]));
-    sum[0] += a[1] * b[2] - a[2] * b[1];
-    sum[1] += a[2] * b[0] - a[0] * b[2];
-    sum[2] += a[0] * b[1] - a[1] * b[0];
-  }
-  const double length = std::sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]);
-  const Vec unit = length > 0 ? Vec{sum[0] / length, sum[1] / length, sum[2] / length}
-                              : Vec{0, 0, 0};
-  const bool ok = std::sqrt(unit[0] * unit[0] + unit[1] * unit[1] + unit[2] * unit[2]) > 0;
+  const Eigen::Vector3d unit =
+      NewellNormal(count, [&](int k) { return c.Position(vs[k]); });  // core/newell.h
+  const bool ok = unit.norm() > 0;
   n[0] = ok ? unit[0] : 0;
   n[1] = ok ? unit[1] : 0;
   n[2] = ok ? unit[2] : 1;
@@ -76,7 +61,7 @@ void AddFacePlanarity(TermContext& c, size_t i) {
   const int* vs = c.elements->Vertices(i);
   const int k = c.elements->Count(i);
   const int face = c.elements->face[i];
-  Vec center{0, 0, 0};
+  std::array<double, 3> center{0, 0, 0};
   for (int j = 0; j < k; ++j) {
     for (int a = 0; a < 3; ++a) center[a] += c.Position(vs[j])[a];
   }

@@ -8,6 +8,7 @@
 #include <glog/logging.h>
 
 #include "core/term.h"
+#include "core/newell.h"
 #include "energies/autodiff_impl.h"
 
 namespace archgeo {
@@ -86,15 +87,7 @@ void InitLoad(TermContext& c) {
     for (size_t f = 0; f < faces.size(); ++f) {
       const int* vs = faces.Vertices(f);
       const int k = faces.Count(f);
-      Vec n{0, 0, 0};
-      for (int j = 0; j < k; ++j) {
-        const double* a = c.Original(vs[j]);
-        const double* b = c.Original(vs[(j + 1) % k]);
-        n[0] += a[1] * b[2] - a[2] * b[1];
-        n[1] += a[2] * b[0] - a[0] * b[2];
-        n[2] += a[0] * b[1] - a[1] * b[0];
-      }
-      const double area = 0.5 * Length(n);
+      const double area = 0.5 * NewellVector(k, [&](int j) { return c.Original(vs[j]); }).norm();
       for (int j = 0; j < k; ++j) weight[size_t(vs[j])] += area / k;
     }
   } else {

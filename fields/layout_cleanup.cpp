@@ -3,6 +3,8 @@
 // Polygon-soup clean-ups of a layout (see fields/layout_cleanup.h).
 #include "fields/layout_cleanup.h"
 
+#include "core/newell.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -17,9 +19,7 @@ using V3 = Eigen::Vector3d;
 
 // The Newell normal of a polygon (twice its vector area).
 V3 Newell(const std::vector<V3>& p) {
-  V3 normal = V3::Zero();
-  for (size_t i = 0; i < p.size(); ++i) normal += p[i].cross(p[(i + 1) % p.size()]);
-  return normal;
+  return NewellVector(int(p.size()), [&](int i) { return p[size_t(i)]; });
 }
 
 // Interior angles (radians, in [0, 2π)) of a polygon in the plane of its

@@ -19,6 +19,7 @@
 #include <CGAL/boost/graph/Euler_operations.h>
 
 #include "geometry/triangle_tree.h"
+#include "core/newell.h"
 
 namespace archgeo {
 namespace {
@@ -40,12 +41,10 @@ Vector Direction(const Mesh& mesh, HalfedgeIndex h) {
 
 // Vector area of a polygon (Newell): area times unit normal.
 Vector VectorArea(const Mesh& mesh, FaceIndex f) {
-  Vector sum = CGAL::NULL_VECTOR;
-  for (HalfedgeIndex h : mesh.halfedges_around_face(mesh.halfedge(f))) {
-    sum = sum + CGAL::cross_product(mesh.point(mesh.source(h)) - CGAL::ORIGIN,
-                                    mesh.point(mesh.target(h)) - CGAL::ORIGIN);
-  }
-  return 0.5 * sum;
+  std::vector<Point> p;
+  for (VertexIndex v : mesh.vertices_around_face(mesh.halfedge(f))) p.push_back(mesh.point(v));
+  const Eigen::Vector3d n = NewellVector(int(p.size()), [&](int k) { return p[size_t(k)]; });
+  return 0.5 * Vector(n[0], n[1], n[2]);
 }
 
 // Unit tangent of the border polyline at target(h): the normalised sum of the

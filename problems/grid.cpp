@@ -63,6 +63,7 @@
 #include <cstdio>
 
 #include "core/problem.h"
+#include "core/newell.h"
 #include "generators/grid_mesh.h"
 #include "analysis/grid_metrics.h"
 #include "core/input_error.h"
@@ -337,7 +338,7 @@ std::string Folded(HookContext& c) {
       x.push_back(surface.Point(uv));
       normal += surface.Normal(NearChart(surface, uv, first));
     }
-    for (size_t k = 0; k < x.size(); ++k) newell += x[k].cross(x[(k + 1) % x.size()]);
+    newell = NewellVector(int(x.size()), [&](int k) { return x[size_t(k)]; });
     const double angle =
         std::atan2(newell.cross(normal).norm(), newell.dot(normal)) * 180 / M_PI;
     if (!(angle <= limit)) {  // NaN counts

@@ -12,6 +12,7 @@
 #include <numeric>
 
 #include "core/input_error.h"
+#include "core/newell.h"
 #include "render/colormap.h"
 
 namespace archgeo {
@@ -56,14 +57,7 @@ Camera MakeCamera(const PicturePanel& panel, double tilt_degrees) {
 }
 
 Vec FaceNormal(const PicturePanel& panel, const std::vector<int>& face) {
-  Vec n = Vec::Zero();  // Newell's method
-  for (size_t i = 0; i < face.size(); ++i) {
-    const Vec a = At(panel.points[face[i]]);
-    const Vec b = At(panel.points[face[(i + 1) % face.size()]]);
-    n += a.cross(b);
-  }
-  const double length = n.norm();
-  return length > 0 ? Vec(n / length) : Vec::Zero();
+  return NewellNormal(int(face.size()), [&](int i) { return At(panel.points[face[size_t(i)]]); });
 }
 
 void Text(cairo_t* cr, double x, double y, const std::string& text, double size, bool bold = false,
