@@ -25,8 +25,10 @@ Vec3 Position(const Mesh& mesh, VertexIndex v) { return ToVec3(mesh.point(v)); }
 
 // Vector area (Newell) of a face: area times unit normal.
 Vec3 VectorArea(const Mesh& mesh, FaceIndex f) {
-  std::vector<Vec3> p;
-  for (VertexIndex v : mesh.vertices_around_face(mesh.halfedge(f))) p.push_back(Position(mesh, v));
+  std::vector<Vec3> p;  // from the source of the face's halfedge
+  for (HalfedgeIndex h : mesh.halfedges_around_face(mesh.halfedge(f))) {
+    p.push_back(Position(mesh, mesh.source(h)));
+  }
   const Eigen::Vector3d n = NewellVector(int(p.size()), [&](int k) { return p[size_t(k)]; });
   return Scale(0.5, {n[0], n[1], n[2]});
 }

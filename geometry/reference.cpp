@@ -41,8 +41,10 @@ Vector Direction(const Mesh& mesh, HalfedgeIndex h) {
 
 // Vector area of a polygon (Newell): area times unit normal.
 Vector VectorArea(const Mesh& mesh, FaceIndex f) {
-  std::vector<Point> p;
-  for (VertexIndex v : mesh.vertices_around_face(mesh.halfedge(f))) p.push_back(mesh.point(v));
+  std::vector<Point> p;  // from the source of the face's halfedge
+  for (HalfedgeIndex h : mesh.halfedges_around_face(mesh.halfedge(f))) {
+    p.push_back(mesh.point(mesh.source(h)));
+  }
   const Eigen::Vector3d n = NewellVector(int(p.size()), [&](int k) { return p[size_t(k)]; });
   return 0.5 * Vector(n[0], n[1], n[2]);
 }
