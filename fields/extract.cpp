@@ -6,13 +6,12 @@
 #include <array>
 #include <cmath>
 #include <map>
-#include <numeric>
-#include <queue>
 #include <set>
 #include <sstream>
 
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Union_find.h>
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <glog/logging.h>
@@ -47,15 +46,15 @@ struct EdgeCrossing {
 
 constexpr double kSameCrossing = 1e-10;  // edge parameter
 
-struct UnionFind {
-  explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  size_t Find(size_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void Union(size_t a, size_t b) { parent[Find(a)] = Find(b); }
-  std::vector<size_t> parent;
-};
+using UnionFind = CGAL::Union_find<size_t>;
+
+// Singleton sets 0 … n − 1 in `uf`; element i is handles[i].
+std::vector<UnionFind::handle> MakeSets(size_t n, UnionFind* uf) {
+  std::vector<UnionFind::handle> handles;
+  handles.reserve(n);
+  for (size_t i = 0; i < n; ++i) handles.push_back(uf->make_set(i));
+  return handles;
+}
 
 V3 Pos(const Mesh& mesh, VertexIndex v) {
   const Point& p = mesh.point(v);
@@ -367,7 +366,13 @@ Extraction ExtractQuadMesh(const Mesh& mesh, const LevelSetFunctions& fn,
           {static_cast<int>(p), static_cast<int>(i)});
     }
   }
-  UnionFind regions(np);
+  // Each region (a connected group of glued pieces) gets a key that depends
+  // only on the order of the gluings: gluing piece a to piece b gives the
+  // joined region the key of b's region; faces are emitted in key order.
+  UnionFind regions;
+  const std::vector<UnionFind::handle> piece = MakeSets(np, &regions);
+  std::vector<size_t> key(np);  // per piece that is the root of its set
+  for (size_t p = 0; p < np; ++p) key[p] = p;
   for (const auto& [pair, list] : shared) {
     if (list.size() != 2) {
       ++out.anomalies;
@@ -375,8 +380,11 @@ Extraction ExtractQuadMesh(const Mesh& mesh, const LevelSetFunctions& fn,
     }
     twin[list[0].first][list[0].second] = list[1];
     twin[list[1].first][list[1].second] = list[0];
-    regions.Union(list[0].first, list[1].first);
+    const size_t joined_key = key[*regions.find(piece[list[1].first])];
+    regions.unify_sets(piece[list[0].first], piece[list[1].first]);
+    key[*regions.find(piece[list[0].first])] = joined_key;
   }
+  auto region_key = [&](size_t p) { return key[*regions.find(piece[p])]; };
 
   // Output vertices (step 4 of the header).
   std::vector<bool> boundary_vertex(mesh.number_of_vertices(), false), corner(mesh.number_of_vertices(), false);
@@ -469,7 +477,7 @@ Extraction ExtractQuadMesh(const Mesh& mesh, const LevelSetFunctions& fn,
           break;
         }
       }
-      region_loops[regions.Find(p0)].push_back(loop);
+      region_loops[region_key(p0)].push_back(loop);
     }
   }
 
@@ -499,7 +507,8 @@ Extraction ExtractQuadMesh(const Mesh& mesh, const LevelSetFunctions& fn,
     std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
     const double median = lengths[lengths.size() / 2];
     const double threshold = options.merge_fraction * median;
-    UnionFind uf(points.size());
+    UnionFind uf;
+    const std::vector<UnionFind::handle> point = MakeSets(points.size(), &uf);
     // Each interior vertex joined by an edge shorter than the snap threshold
     // to a boundary vertex goes to the nearest such boundary vertex.
     std::vector<int> snap_to(points.size(), -1);
@@ -508,7 +517,7 @@ Extraction ExtractQuadMesh(const Mesh& mesh, const LevelSetFunctions& fn,
       for (size_t i = 0; i < f.size(); ++i) {
         const int a = f[i], b = f[(i + 1) % f.size()];
         const double length = (points[a] - points[b]).norm();
-        if (length < threshold) uf.Union(a, b);
+        if (length < threshold) uf.unify_sets(point[a], point[b]);
         if (point_on_boundary[a] == point_on_boundary[b]) continue;
         const int inner = point_on_boundary[a] ? b : a, outer = point_on_boundary[a] ? a : b;
         if (length < snap_length[inner]) {
@@ -517,14 +526,24 @@ Extraction ExtractQuadMesh(const Mesh& mesh, const LevelSetFunctions& fn,
         }
       }
     for (size_t i = 0; i < points.size(); ++i) {
-      if (snap_to[i] < 0 || uf.Find(i) == uf.Find(snap_to[i])) continue;
-      uf.Union(i, snap_to[i]);
+      if (snap_to[i] < 0 || uf.same_set(point[i], point[snap_to[i]])) continue;
+      uf.unify_sets(point[i], point[snap_to[i]]);
       ++out.snapped_vertices;
     }
-    std::map<size_t, std::vector<int>> groups;
-    for (size_t i = 0; i < points.size(); ++i) groups[uf.Find(i)].push_back(static_cast<int>(i));
+    // Groups by their smallest point, members ascending (each group only
+    // changes its own points, so their order does not matter).
+    std::vector<std::vector<int>> groups;
+    std::vector<int> group(points.size(), -1);  // by the point at the root of a set
+    for (size_t i = 0; i < points.size(); ++i) {
+      int& g = group[*uf.find(point[i])];
+      if (g < 0) {
+        g = static_cast<int>(groups.size());
+        groups.emplace_back();
+      }
+      groups[g].push_back(static_cast<int>(i));
+    }
     std::vector<int> rep(points.size());
-    for (auto& [root, members] : groups) {
+    for (const std::vector<int>& members : groups) {
       V3 sum = V3::Zero();
       int n = 0;
       bool boundary = false, is_corner = false;
