@@ -6,11 +6,11 @@
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <numeric>
 #include <queue>
 #include <set>
 #include <tuple>
 
+#include <CGAL/Union_find.h>
 #include <glog/logging.h>
 
 namespace archgeo {
@@ -26,16 +26,6 @@ std::vector<HalfedgeIndex> Incoming(const Mesh& mesh, VertexIndex v) {
 bool OnBoundary(const Mesh& mesh, VertexIndex v) {
   return !mesh.is_isolated(v) && mesh.is_border(v, /*check_all_incident_halfedges=*/true);
 }
-
-struct UnionFind {
-  explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  size_t Find(size_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void Union(size_t a, size_t b) { parent[Find(a)] = Find(b); }
-  std::vector<size_t> parent;
-};
 
 // Assigns wedges: consecutive corners around a vertex share a wedge unless the
 // edge between them (edge of the second halfedge) is cut or a boundary edge.
@@ -310,7 +300,10 @@ CutGraph ComputeCutGraph(const Mesh& mesh, const std::vector<VertexIndex>& singu
 }
 
 CutSurfaceTopology CutSurface(const Mesh& mesh, const CutGraph& cut) {
-  UnionFind uf(mesh.number_of_faces());
+  // Faces joined across the edges that are neither cut nor on the boundary.
+  CGAL::Union_find<FaceIndex> pieces;
+  std::vector<CGAL::Union_find<FaceIndex>::handle> piece(mesh.number_of_faces());
+  for (FaceIndex f : mesh.faces()) piece[f.idx()] = pieces.make_set(f);
   int edges = 0;
   for (EdgeIndex e : mesh.edges()) {
     if (mesh.is_border(e)) {
@@ -322,11 +315,11 @@ CutSurfaceTopology CutSurface(const Mesh& mesh, const CutGraph& cut) {
       continue;
     }
     ++edges;
-    uf.Union(mesh.face(mesh.halfedge(e, 0)).idx(), mesh.face(mesh.halfedge(e, 1)).idx());
+    pieces.unify_sets(piece[mesh.face(mesh.halfedge(e, 0)).idx()],
+                      piece[mesh.face(mesh.halfedge(e, 1)).idx()]);
   }
   CutSurfaceTopology t;
-  for (FaceIndex f : mesh.faces())
-    if (uf.Find(f.idx()) == f.idx()) ++t.components;
+  t.components = static_cast<int>(pieces.number_of_sets());
   t.euler_characteristic =
       cut.num_wedges - edges + static_cast<int>(mesh.number_of_faces());
   return t;
