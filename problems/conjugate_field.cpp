@@ -202,16 +202,22 @@ struct Constraints {
   int boundary_faces = 0;  // boundary tangents prescribed (field.boundary_alignment)
 };
 
+// The run's data: the input's field geometry and the validated constraints.
+struct FieldState : ProblemState {
+  FieldGeometry geometry;
+  Constraints constraints;
+};
+
 // Element sets, the start z_N = e1 and the validated constraints.
 void Init(HookContext& c) {
   const Settings& s = *c.settings;
   const Mesh& mesh = c.store->mesh();
-  auto geometry = std::make_shared<FieldGeometry>(ComputeFieldGeometry(mesh, Jets(s)));
-  c.state["geometry"] = std::shared_ptr<const FieldGeometry>(geometry);
-  const FieldGeometry& g = *geometry;
+  FieldState& state = c.State<FieldState>();
+  state.geometry = ComputeFieldGeometry(mesh, Jets(s));
+  const FieldGeometry& g = state.geometry;
   const int faces = int(mesh.number_of_faces());
   const std::vector<bool> boundary = BoundaryVertices(mesh);
-  Constraints& con = c.State<Constraints>("constraints");
+  Constraints& con = state.constraints;
   con = Constraints{};
 
   auto no_face = [&](const std::string& key, long long id) {
@@ -376,25 +382,26 @@ void Init(HookContext& c) {
 // field inside r1 (re-optimising the whole disc pulls the singularity back
 // to where the energy had it, e.g. to an umbilic).
 void ApplyMoves(HookContext& c) {
-  Constraints& con = c.State<Constraints>("constraints");
+  FieldState& state = c.State<FieldState>();
+  Constraints& con = state.constraints;
   if (con.moved) return;
   con.moved = true;
   const Mesh& mesh = c.store->mesh();
-  const auto g = std::any_cast<std::shared_ptr<const FieldGeometry>>(c.state.at("geometry"));
+  const FieldGeometry& g = state.geometry;
   const Origin at = c.settings->Where("field.moves");
   std::vector<bool> touched(mesh.number_of_faces(), false), held(mesh.number_of_faces(), false);
   for (const Move& m : con.moves) {
     std::vector<V2> z(mesh.number_of_faces());
     for (FaceIndex f : mesh.faces()) z[f.idx()] = Eigen::Map<const V2>(c.store->At("z_n", int(f.idx())));
     const double apart =
-        (g->frames.centroid[size_t(m.from)] - g->frames.centroid[size_t(m.to)]).norm();
+        (g.frames.centroid[size_t(m.from)] - g.frames.centroid[size_t(m.to)]).norm();
     const double inner = m.inner > 0 ? m.inner / c.frame.scale : 2 * apart;
     const double outer = m.outer > 0 ? m.outer / c.frame.scale : 2 * inner;
     if (outer <= inner) {
       throw InputError(at.file, m.line, m.key + ".outer_radius",
                        "must be larger than inner_radius (" + std::to_string(inner * c.frame.scale) + ")");
     }
-    const SingularityMove move = MoveSingularity(mesh, g->frames, g->transports, g->curvature, z,
+    const SingularityMove move = MoveSingularity(mesh, g.frames, g.transports, g.curvature, z,
                                                  FaceIndex(m.from), FaceIndex(m.to), inner, outer);
     if (!move.error.empty()) throw InputError(at.file, m.line, m.key, move.error);
     if (!move.reached) {
@@ -427,8 +434,9 @@ double LineDeg(const V2& a, const V2& b) {
 
 void Finish(HookContext& c) {
   const Mesh& mesh = c.store->mesh();
-  const auto geometry = std::any_cast<std::shared_ptr<const FieldGeometry>>(c.state.at("geometry"));
-  const Constraints& con = c.State<Constraints>("constraints");
+  const FieldState& state = c.State<FieldState>();
+  const FieldGeometry& geometry = state.geometry;
+  const Constraints& con = state.constraints;
   std::vector<V2> z(mesh.number_of_faces());
   for (FaceIndex f : mesh.faces()) {
     const double* x = c.store->At("z_n", int(f.idx()));
@@ -436,8 +444,8 @@ void Finish(HookContext& c) {
   }
   auto result = std::make_shared<FieldResult>();
   result->mesh = mesh;
-  result->geometry = *geometry;
-  result->field = EvaluateField(mesh, *geometry, std::move(z));
+  result->geometry = geometry;
+  result->field = EvaluateField(mesh, geometry, std::move(z));
   result->frame = c.frame;
   const TcdField& field = result->field;
 
@@ -446,7 +454,7 @@ void Finish(HookContext& c) {
   int counted = 0;
   for (FaceIndex f : mesh.faces()) {
     const ConjugatePair& p = field.pairs[f.idx()];
-    const FaceCurvature& k = geometry->curvature[f.idx()];
+    const FaceCurvature& k = geometry.curvature[f.idx()];
     if (!p.valid || k.flat || field.smooth_fallback) continue;
     deviation += std::min(LineDeg(p.v, k.d1), LineDeg(p.v, k.d2));
     ++counted;
@@ -468,7 +476,7 @@ void Finish(HookContext& c) {
     (s.index > 0 ? plus : minus)++;
   }
   d["faces"] = mesh.number_of_faces();
-  d["flat_faces"] = geometry->flat_faces;
+  d["flat_faces"] = geometry.flat_faces;
   d["fallback"] = field.smooth_fallback ? "smooth orthogonal field of the face frames (e1, e2): "
                                           "the surface has no curvature"
                                         : "none";
@@ -526,13 +534,13 @@ void Finish(HookContext& c) {
   }
   for (const auto& [k, v] : d.items()) c.details[k] = v;
   c.headline += h;
-  c.state["field"] = std::shared_ptr<const FieldResult>(result);
+  c.field = result;
 }
 
 void Write(HookContext& c) {
   const auto it = c.temporaries.find("field");
   if (it == c.temporaries.end()) return;
-  const auto result = std::any_cast<std::shared_ptr<const FieldResult>>(c.state.at("field"));
+  const auto& result = c.field;
   WriteFieldPly(it->second, result->mesh, result->geometry, result->field, result->frame,
                 "output.field");
 }
