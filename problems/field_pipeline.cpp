@@ -203,7 +203,9 @@ ProblemSpec SubSpec(const ProblemDecl& sub, const Settings& parent) {
   for (const Key& k : spec.settings.schema().keys()) {
     if (RunKey(k.name) || !parent.schema().Find(k.name) || !parent.Given(k.name)) continue;
     if (k.type == Type::kCustom) {
-      spec.settings.SetCustom(k.name, parent.Custom(k.name), parent.Where(k.name));
+      const CustomValue* value = parent.Custom(k.name);
+      CHECK(value) << k.name << " is given without its value";
+      spec.settings.SetCustom(k.name, *value, parent.Where(k.name));
     } else {
       spec.settings.Set(k.name, parent.Get(k.name), parent.Where(k.name));
     }

@@ -56,7 +56,6 @@
 // output.grid (.obj with one `vt u v` per vertex, or .ply with double vertex
 // properties u, v; positions exactly x(u, v)).
 #include <Eigen/Geometry>
-#include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <cmath>
@@ -102,13 +101,6 @@ std::string Join(const std::vector<std::string>& names) {
   return s;
 }
 
-std::string Describe(const YAML::Node& node) {
-  if (node.IsScalar()) return "'" + node.Scalar() + "'";
-  if (node.IsSequence()) return "a list";
-  if (node.IsMap()) return "a mapping";
-  return "nothing";
-}
-
 // `surface: {name: NAME, <parameter>: value, ...}`. Throws InputError naming
 // the file, the line and the key (surface, surface.name, surface.<parameter>).
 Surface ReadSurface(const Settings& s, std::string* name_out = nullptr) {
@@ -117,38 +109,37 @@ Surface ReadSurface(const Settings& s, std::string* name_out = nullptr) {
     throw s.Error("surface", "the grid problem needs surface: {name: NAME, <parameter>: value, "
                              "...} (names: " + names + ")");
   }
-  const YAML::Node node = std::any_cast<YAML::Node>(s.Custom("surface"));
+  const CustomValue& node = *s.Custom("surface");
   const Origin at = s.Where("surface");
-  const auto line_of = [&](const YAML::Node& n) {
-    return at.file == "--set" || n.Mark().line < 0 ? at.line : n.Mark().line + 1;
+  const auto line_of = [&](const CustomValue& n) {
+    return at.file == "--set" || n.line <= 0 ? at.line : n.line;
   };
   if (!node.IsMap()) {
     throw InputError(at.file, line_of(node), "surface",
                      "expected a mapping {name: NAME, <parameter>: value, ...}, got " +
-                         Describe(node) + " (names: " + names + ")");
+                         node.Describe() + " (names: " + names + ")");
   }
   std::string name;
   int name_line = at.line;
   ParameterValues values;
   std::map<std::string, int> lines;  // key -> line
-  for (const auto& entry : node) {
-    const std::string key = entry.first.IsScalar() ? entry.first.Scalar() : "";
+  for (const CustomValue::Entry& entry : node.entries) {
+    const std::string& key = entry.key.text;
     const std::string dotted = "surface." + key;
-    const int line = line_of(entry.first);
+    const int line = line_of(entry.key);
     if (key.empty()) throw InputError(at.file, line, "surface", "a key must be a plain name");
     if (key == "name") {
-      if (!entry.second.IsScalar()) {
+      if (!entry.value.IsScalar()) {
         throw InputError(at.file, line, dotted, "expected a surface name (" + names + ")");
       }
-      name = entry.second.Scalar();
+      name = entry.value.text;
       name_line = line;
       continue;
     }
-    double value = 0;
-    if (!entry.second.IsScalar() || !YAML::convert<double>::decode(entry.second, value)) {
-      throw InputError(at.file, line, dotted, "expected a number, got " + Describe(entry.second));
+    if (!entry.value.number) {
+      throw InputError(at.file, line, dotted, "expected a number, got " + entry.value.Describe());
     }
-    values[key] = value;
+    values[key] = *entry.value.number;
     lines[dotted] = line;
   }
   if (name.empty()) {
