@@ -378,6 +378,17 @@ std::vector<std::string> ProblemSpec::InputFiles() const {
 
 namespace {
 
+// The custom problem of the spec `root`, from its `terms:` section.
+ProblemDecl CustomOf(const YAML::Node& root, const std::string& path,
+                     const std::set<std::string>& overridden) {
+  const std::string file = overridden.count("terms") ? "--set" : path;
+  const YAML::Node terms = root["terms"];
+  if (!terms) return CustomProblem(nullptr, file);
+  const CustomValue value =
+      ReadCustom(terms, {file, terms.Mark().line >= 0 ? terms.Mark().line + 1 : 0}, "terms");
+  return CustomProblem(&value, file);
+}
+
 ProblemSpec Parse(YAML::Node root, const std::string& path,
                   const std::vector<std::string>& overrides, bool require_mesh) {
   if (!root.IsMap()) throw InputError(path, 1, "", "expected a mapping of keys");
@@ -411,7 +422,7 @@ ProblemSpec Parse(YAML::Node root, const std::string& path,
   ProblemSpec spec;
   spec.spec_path = path;
   if (problem == "custom") {
-    spec.declaration = std::make_shared<const ProblemDecl>(CustomProblem(root, path, overridden));
+    spec.declaration = std::make_shared<const ProblemDecl>(CustomOf(root, path, overridden));
   } else {
     spec.declaration = std::shared_ptr<const ProblemDecl>(FindProblem(problem), [](auto*) {});
   }
