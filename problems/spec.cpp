@@ -56,10 +56,11 @@ std::string Describe(const YAML::Node& node) {
   return "nothing";
 }
 
-// Structured values are read to this depth: a deeper node keeps its kind and
-// line, not its contents (no problem reads deeper than four levels, and an
-// alias can make the YAML graph cyclic).
-constexpr int kCustomDepth = 8;
+// Structured values are read this many levels below their key (the deepest
+// form, handles, reads three): a list or mapping deeper than that keeps its
+// kind and line, not its contents (an alias can make the YAML graph cyclic,
+// and each level read multiplies what a list of aliases repeats).
+constexpr int kCustomDepth = 4;
 // At most this many nodes per structured value: more than a 1 MiB spec holds
 // without aliases, which can repeat a subtree exponentially often.
 constexpr size_t kCustomNodes = size_t{1} << 20;
