@@ -98,7 +98,7 @@ void Settings::Set(const std::string& name, Value value, Origin origin) {
   origin_[name] = std::move(origin);
 }
 
-void Settings::SetCustom(const std::string& name, std::any value, Origin origin) {
+void Settings::SetCustom(const std::string& name, CustomValue value, Origin origin) {
   const Key* key = schema_.Find(name);
   CHECK(key && key->type == Type::kCustom) << "no custom setting '" << name << "'";
   custom_[name] = std::move(value);
@@ -158,15 +158,21 @@ std::vector<long long> Settings::Integers(const std::string& name) const {
   return std::get<std::vector<long long>>(v);
 }
 
-const std::any& Settings::Custom(const std::string& name) const {
-  static const std::any kNone;
+const CustomValue* Settings::Custom(const std::string& name) const {
   const auto it = custom_.find(name);
-  return it == custom_.end() ? kNone : it->second;
+  return it == custom_.end() ? nullptr : &it->second;
 }
 
 InputError Settings::Error(const std::string& name, const std::string& message) const {
   const Origin o = Where(name);
   return InputError(o.file.empty() ? spec_file_ : o.file, o.line, name, message);
+}
+
+InputError Settings::ErrorAt(const std::string& name, const CustomValue& node,
+                             const std::string& key, const std::string& message) const {
+  const Origin o = Where(name);
+  const int line = o.file == "--set" ? 0 : node.line > 0 ? node.line : o.line;
+  return InputError(o.file.empty() ? spec_file_ : o.file, line, key, message);
 }
 
 std::string ToText(const Value& value) {

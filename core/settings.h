@@ -10,7 +10,6 @@
 // the place (Settings::Error).
 #pragma once
 
-#include <any>
 #include <limits>
 #include <map>
 #include <string>
@@ -19,6 +18,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "core/custom_value.h"
 #include "core/input_error.h"
 
 namespace archgeo {
@@ -91,7 +91,7 @@ class Settings {
 
   // Sets a value (type-checked by the caller, e.g. the YAML reader).
   void Set(const std::string& name, Value value, Origin origin);
-  void SetCustom(const std::string& name, std::any value, Origin origin);
+  void SetCustom(const std::string& name, CustomValue value, Origin origin);
 
   // Whether the user gave `name` (not only its default).
   bool Given(const std::string& name) const;
@@ -105,11 +105,17 @@ class Settings {
   const std::string& String(const std::string& name) const;  // choices, strings, paths
   std::vector<double> Numbers(const std::string& name) const;
   std::vector<long long> Integers(const std::string& name) const;
-  const std::any& Custom(const std::string& name) const;
+  // A structured (kCustom) value as given; null if it was not.
+  const CustomValue* Custom(const std::string& name) const;
 
   // An InputError about `name` at the place it was given (or the spec file
   // and line 0 when it was a default, `spec_file` then).
   InputError Error(const std::string& name, const std::string& message) const;
+  // An InputError about `node`, a part of the structured setting `name`,
+  // under `key` (e.g. "handles[2].position"): at the node's line, or the
+  // setting's when the node's is unknown; line 0 when given by --set.
+  InputError ErrorAt(const std::string& name, const CustomValue& node, const std::string& key,
+                     const std::string& message) const;
   void set_spec_file(std::string file) { spec_file_ = std::move(file); }
   const std::string& spec_file() const { return spec_file_; }
 
@@ -121,7 +127,7 @@ class Settings {
  private:
   Schema schema_;
   std::map<std::string, Value> values_;
-  std::map<std::string, std::any> custom_;
+  std::map<std::string, CustomValue> custom_;
   std::map<std::string, Origin> origin_;
   std::string spec_file_;
 };

@@ -17,7 +17,6 @@
 // a ceres::ScaledLoss (optionally wrapping a robust loss, `terms.<t>.loss`).
 #pragma once
 
-#include <any>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -35,6 +34,7 @@ class Manifold;
 namespace archgeo {
 
 class Batch;
+struct GridShared;  // energies/grid_shared.h
 
 class TermContext;
 using TermAdder = void (*)(TermContext& context, size_t element);
@@ -96,9 +96,10 @@ class TermContext {
   virtual bool OnBoundaryCurve(int v) const = 0;
   // Another element set of the mesh (mesh/elements.h), e.g. "faces".
   virtual const ElementSet& Elements(const std::string& name) = 0;
-  // An object the problem shares with its terms (its HookContext state
-  // `name`, e.g. the parametric surface of a grid); empty if none.
-  virtual const std::any& Shared(const std::string& name) const = 0;
+  // What the grid problem shares with its terms (energies/grid_shared.h
+  // SharedGrid): its surface and ideal edge length; the surface is null in
+  // every other problem.
+  virtual const GridShared& grid() const = 0;
   // Maps `width` values given in the file's units and axes (e.g. a load
   // direction or a length in a term option) to the canonical frame, as a
   // block of that FrameMap would be (kDirection rotates, kLength divides by

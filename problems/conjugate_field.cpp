@@ -39,9 +39,8 @@
 // PLY line segments per face, singularities as points).
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <set>
-
-#include <yaml-cpp/yaml.h>
 
 #include "core/problem.h"
 #include "energies/tcd_prescribed_direction.h"
@@ -66,43 +65,49 @@ struct Prescribed {
   bool from_file = false;
 };
 
+// A face index (0 to 2^30) if `node` is one.
+std::optional<int> FaceIndexOf(const CustomValue* node) {
+  if (!node || !node->integer || *node->integer < 0 || *node->integer > (1LL << 30)) {
+    return std::nullopt;
+  }
+  return int(*node->integer);
+}
+
 // field.directions: a list of {face: id, direction: [x, y, z]}.
 std::vector<Prescribed> ReadDirections(const Settings& s) {
   std::vector<Prescribed> out;
-  if (!s.Given("field.directions")) return out;
-  const YAML::Node list = std::any_cast<YAML::Node>(s.Custom("field.directions"));
-  const Origin at = s.Where("field.directions");
-  auto fail = [&](const YAML::Node& node, const std::string& key, const std::string& message) {
-    const int line = at.file == "--set" ? 0 : (node.Mark().line >= 0 ? node.Mark().line + 1 : at.line);
-    throw InputError(at.file, line, key, message);
-  };
-  if (!list.IsSequence()) fail(list, "field.directions", "expected a list of {face, direction}");
-  for (size_t i = 0; i < list.size(); ++i) {
-    const YAML::Node d = list[i];
-    const std::string key = "field.directions[" + std::to_string(i) + "]";
-    if (!d.IsMap()) fail(d, key, "expected {face: id, direction: [x, y, z]}");
-    for (const auto& e : d) {
-      const std::string k = e.first.IsScalar() ? e.first.Scalar() : "";
-      if (k != "face" && k != "direction") fail(e.first, key + "." + k, "unknown key (allowed: face, direction)");
-    }
-    long long face = -1;
-    if (!d["face"] || !d["face"].IsScalar() || !YAML::convert<long long>::decode(d["face"], face) ||
-        face < 0 || face > (1LL << 30)) {
-      fail(d, key + ".face", "expected a face index ≥ 0");
-    }
-    const YAML::Node xyz = d["direction"];
-    if (!xyz || !xyz.IsSequence() || xyz.size() != 3) fail(d, key + ".direction", "expected [x, y, z]");
-    Prescribed p;
-    p.face = int(face);
-    for (int k = 0; k < 3; ++k) {
-      double x = 0;
-      if (!xyz[k].IsScalar() || !YAML::convert<double>::decode(xyz[k], x) || !std::isfinite(x)) {
-        fail(xyz[k], key + ".direction", "expected a finite number");
+  const char* name = "field.directions";
+  if (!s.Given(name)) return out;
+  const CustomValue& list = *s.Custom(name);
+  const Origin at = s.Where(name);
+  if (!list.IsList()) throw s.ErrorAt(name, list, name, "expected a list of {face, direction}");
+  for (size_t i = 0; i < list.items.size(); ++i) {
+    const CustomValue& d = list.items[i];
+    const std::string key = std::string(name) + "[" + std::to_string(i) + "]";
+    if (!d.IsMap()) throw s.ErrorAt(name, d, key, "expected {face: id, direction: [x, y, z]}");
+    for (const CustomValue::Entry& e : d.entries) {
+      const std::string& k = e.key.text;
+      if (k != "face" && k != "direction") {
+        throw s.ErrorAt(name, e.key, key + "." + k, "unknown key (allowed: face, direction)");
       }
-      p.direction[k] = x;
+    }
+    const std::optional<int> face = FaceIndexOf(d.Find("face"));
+    if (!face) throw s.ErrorAt(name, d, key + ".face", "expected a face index ≥ 0");
+    const CustomValue* xyz = d.Find("direction");
+    if (!xyz || !xyz->IsList() || xyz->items.size() != 3) {
+      throw s.ErrorAt(name, d, key + ".direction", "expected [x, y, z]");
+    }
+    Prescribed p;
+    p.face = *face;
+    for (int k = 0; k < 3; ++k) {
+      const std::optional<double>& x = xyz->items[k].number;
+      if (!x || !std::isfinite(*x)) {
+        throw s.ErrorAt(name, xyz->items[k], key + ".direction", "expected a finite number");
+      }
+      p.direction[k] = *x;
     }
     p.key = key;
-    p.line = at.file == "--set" ? 0 : d.Mark().line + 1;
+    p.line = at.file == "--set" ? 0 : d.line;
     out.push_back(p);
   }
   return out;
@@ -116,49 +121,55 @@ struct Move {
   int line = 0;
 };
 
+// One move of field.moves (the list checked by ReadMoves), `key` its place.
+Move ReadMove(const Settings& s, const CustomValue& m, const std::string& key) {
+  const char* name = "field.moves";
+  Move move;
+  move.key = key;
+  move.line = s.Where(name).file == "--set" ? 0 : m.line;
+  if (!m.IsMap()) {
+    throw s.ErrorAt(name, m, key, "expected {from: face, to: face, inner_radius, outer_radius}");
+  }
+  for (const CustomValue::Entry& e : m.entries) {
+    const std::string& k = e.key.text;
+    if (k != "from" && k != "to" && k != "inner_radius" && k != "outer_radius") {
+      throw s.ErrorAt(name, e.key, key + "." + k,
+                      "unknown key (allowed: from, to, inner_radius, outer_radius)");
+    }
+  }
+  for (const auto& [field, target] :
+       {std::make_pair("from", &move.from), std::make_pair("to", &move.to)}) {
+    const std::optional<int> face = FaceIndexOf(m.Find(field));
+    if (!face) throw s.ErrorAt(name, m, key + "." + field, "expected a face index ≥ 0");
+    *target = *face;
+  }
+  for (const auto& [field, target] : {std::make_pair("inner_radius", &move.inner),
+                                      std::make_pair("outer_radius", &move.outer)}) {
+    const CustomValue* radius = m.Find(field);
+    if (!radius) continue;
+    if (!radius->number || !std::isfinite(*radius->number) || *radius->number <= 0) {
+      throw s.ErrorAt(name, *radius, key + "." + field, "expected a length > 0 (file units)");
+    }
+    *target = *radius->number;
+  }
+  if (move.from == move.to) {
+    throw s.ErrorAt(name, m, key + ".to", "`to` is the `from` face: nothing to move");
+  }
+  if (move.inner > 0 && move.outer > 0 && move.outer <= move.inner) {
+    throw s.ErrorAt(name, m, key + ".outer_radius", "must be larger than inner_radius");
+  }
+  return move;
+}
+
 std::vector<Move> ReadMoves(const Settings& s) {
   std::vector<Move> out;
   if (!s.Given("field.moves")) return out;
-  const YAML::Node list = std::any_cast<YAML::Node>(s.Custom("field.moves"));
-  const Origin at = s.Where("field.moves");
-  auto fail = [&](const YAML::Node& node, const std::string& key, const std::string& message) {
-    const int line = at.file == "--set" ? 0 : (node.Mark().line >= 0 ? node.Mark().line + 1 : at.line);
-    throw InputError(at.file, line, key, message);
-  };
-  if (!list.IsSequence()) fail(list, "field.moves", "expected a list of {from, to}");
-  for (size_t i = 0; i < list.size(); ++i) {
-    const YAML::Node m = list[i];
-    Move move;
-    move.key = "field.moves[" + std::to_string(i) + "]";
-    move.line = at.file == "--set" ? 0 : m.Mark().line + 1;
-    if (!m.IsMap()) fail(m, move.key, "expected {from: face, to: face, inner_radius, outer_radius}");
-    for (const auto& e : m) {
-      const std::string k = e.first.IsScalar() ? e.first.Scalar() : "";
-      if (k != "from" && k != "to" && k != "inner_radius" && k != "outer_radius") {
-        fail(e.first, move.key + "." + k, "unknown key (allowed: from, to, inner_radius, outer_radius)");
-      }
-    }
-    for (const auto& [name, target] : {std::make_pair("from", &move.from), std::make_pair("to", &move.to)}) {
-      long long face = -1;
-      if (!m[name] || !m[name].IsScalar() || !YAML::convert<long long>::decode(m[name], face) ||
-          face < 0 || face > (1LL << 30)) {
-        fail(m, move.key + "." + name, "expected a face index ≥ 0");
-      }
-      *target = int(face);
-    }
-    for (const auto& [name, target] : {std::make_pair("inner_radius", &move.inner),
-                                       std::make_pair("outer_radius", &move.outer)}) {
-      if (!m[name]) continue;
-      if (!m[name].IsScalar() || !YAML::convert<double>::decode(m[name], *target) ||
-          !std::isfinite(*target) || *target <= 0) {
-        fail(m[name], move.key + "." + name, "expected a length > 0 (file units)");
-      }
-    }
-    if (move.from == move.to) fail(m, move.key + ".to", "`to` is the `from` face: nothing to move");
-    if (move.inner > 0 && move.outer > 0 && move.outer <= move.inner) {
-      fail(m, move.key + ".outer_radius", "must be larger than inner_radius");
-    }
-    out.push_back(move);
+  const CustomValue& list = *s.Custom("field.moves");
+  if (!list.IsList()) {
+    throw s.ErrorAt("field.moves", list, "field.moves", "expected a list of {from, to}");
+  }
+  for (size_t i = 0; i < list.items.size(); ++i) {
+    out.push_back(ReadMove(s, list.items[i], "field.moves[" + std::to_string(i) + "]"));
   }
   return out;
 }
@@ -202,16 +213,22 @@ struct Constraints {
   int boundary_faces = 0;  // boundary tangents prescribed (field.boundary_alignment)
 };
 
+// The run's data: the input's field geometry and the validated constraints.
+struct FieldState : ProblemState {
+  FieldGeometry geometry;
+  Constraints constraints;
+};
+
 // Element sets, the start z_N = e1 and the validated constraints.
 void Init(HookContext& c) {
   const Settings& s = *c.settings;
   const Mesh& mesh = c.store->mesh();
-  auto geometry = std::make_shared<FieldGeometry>(ComputeFieldGeometry(mesh, Jets(s)));
-  c.state["geometry"] = std::shared_ptr<const FieldGeometry>(geometry);
-  const FieldGeometry& g = *geometry;
+  FieldState& state = c.State<FieldState>();
+  state.geometry = ComputeFieldGeometry(mesh, Jets(s));
+  const FieldGeometry& g = state.geometry;
   const int faces = int(mesh.number_of_faces());
   const std::vector<bool> boundary = BoundaryVertices(mesh);
-  Constraints& con = c.State<Constraints>("constraints");
+  Constraints& con = state.constraints;
   con = Constraints{};
 
   auto no_face = [&](const std::string& key, long long id) {
@@ -376,25 +393,26 @@ void Init(HookContext& c) {
 // field inside r1 (re-optimising the whole disc pulls the singularity back
 // to where the energy had it, e.g. to an umbilic).
 void ApplyMoves(HookContext& c) {
-  Constraints& con = c.State<Constraints>("constraints");
+  FieldState& state = c.State<FieldState>();
+  Constraints& con = state.constraints;
   if (con.moved) return;
   con.moved = true;
   const Mesh& mesh = c.store->mesh();
-  const auto g = std::any_cast<std::shared_ptr<const FieldGeometry>>(c.state.at("geometry"));
+  const FieldGeometry& g = state.geometry;
   const Origin at = c.settings->Where("field.moves");
   std::vector<bool> touched(mesh.number_of_faces(), false), held(mesh.number_of_faces(), false);
   for (const Move& m : con.moves) {
     std::vector<V2> z(mesh.number_of_faces());
     for (FaceIndex f : mesh.faces()) z[f.idx()] = Eigen::Map<const V2>(c.store->At("z_n", int(f.idx())));
     const double apart =
-        (g->frames.centroid[size_t(m.from)] - g->frames.centroid[size_t(m.to)]).norm();
+        (g.frames.centroid[size_t(m.from)] - g.frames.centroid[size_t(m.to)]).norm();
     const double inner = m.inner > 0 ? m.inner / c.frame.scale : 2 * apart;
     const double outer = m.outer > 0 ? m.outer / c.frame.scale : 2 * inner;
     if (outer <= inner) {
       throw InputError(at.file, m.line, m.key + ".outer_radius",
                        "must be larger than inner_radius (" + std::to_string(inner * c.frame.scale) + ")");
     }
-    const SingularityMove move = MoveSingularity(mesh, g->frames, g->transports, g->curvature, z,
+    const SingularityMove move = MoveSingularity(mesh, g.frames, g.transports, g.curvature, z,
                                                  FaceIndex(m.from), FaceIndex(m.to), inner, outer);
     if (!move.error.empty()) throw InputError(at.file, m.line, m.key, move.error);
     if (!move.reached) {
@@ -427,8 +445,9 @@ double LineDeg(const V2& a, const V2& b) {
 
 void Finish(HookContext& c) {
   const Mesh& mesh = c.store->mesh();
-  const auto geometry = std::any_cast<std::shared_ptr<const FieldGeometry>>(c.state.at("geometry"));
-  const Constraints& con = c.State<Constraints>("constraints");
+  const FieldState& state = c.State<FieldState>();
+  const FieldGeometry& geometry = state.geometry;
+  const Constraints& con = state.constraints;
   std::vector<V2> z(mesh.number_of_faces());
   for (FaceIndex f : mesh.faces()) {
     const double* x = c.store->At("z_n", int(f.idx()));
@@ -436,8 +455,8 @@ void Finish(HookContext& c) {
   }
   auto result = std::make_shared<FieldResult>();
   result->mesh = mesh;
-  result->geometry = *geometry;
-  result->field = EvaluateField(mesh, *geometry, std::move(z));
+  result->geometry = geometry;
+  result->field = EvaluateField(mesh, geometry, std::move(z));
   result->frame = c.frame;
   const TcdField& field = result->field;
 
@@ -446,7 +465,7 @@ void Finish(HookContext& c) {
   int counted = 0;
   for (FaceIndex f : mesh.faces()) {
     const ConjugatePair& p = field.pairs[f.idx()];
-    const FaceCurvature& k = geometry->curvature[f.idx()];
+    const FaceCurvature& k = geometry.curvature[f.idx()];
     if (!p.valid || k.flat || field.smooth_fallback) continue;
     deviation += std::min(LineDeg(p.v, k.d1), LineDeg(p.v, k.d2));
     ++counted;
@@ -468,7 +487,7 @@ void Finish(HookContext& c) {
     (s.index > 0 ? plus : minus)++;
   }
   d["faces"] = mesh.number_of_faces();
-  d["flat_faces"] = geometry->flat_faces;
+  d["flat_faces"] = geometry.flat_faces;
   d["fallback"] = field.smooth_fallback ? "smooth orthogonal field of the face frames (e1, e2): "
                                           "the surface has no curvature"
                                         : "none";
@@ -526,13 +545,13 @@ void Finish(HookContext& c) {
   }
   for (const auto& [k, v] : d.items()) c.details[k] = v;
   c.headline += h;
-  c.state["field"] = std::shared_ptr<const FieldResult>(result);
+  c.field = result;
 }
 
 void Write(HookContext& c) {
   const auto it = c.temporaries.find("field");
   if (it == c.temporaries.end()) return;
-  const auto result = std::any_cast<std::shared_ptr<const FieldResult>>(c.state.at("field"));
+  const auto& result = c.field;
   WriteFieldPly(it->second, result->mesh, result->geometry, result->field, result->frame,
                 "output.field");
 }

@@ -36,7 +36,7 @@ void Net(HookContext& c) {
     throw s.Error("level_sets", "the layout could not be extracted from the level sets: " +
                                     result->layout.error);
   }
-  c.state["level_sets"] = result;
+  c.level_sets = result;
   c.net.derived = true;
   c.net.mesh = InFileUnits(result->layout.mesh, result->frame);
   c.net.source.clear();  // layout vertices are not input vertices
@@ -48,7 +48,7 @@ void Net(HookContext& c) {
 }
 
 void Write(HookContext& c) {
-  const auto result = std::any_cast<std::shared_ptr<const LevelSetResult>>(c.state.at("level_sets"));
+  const auto& result = c.level_sets;
   if (const auto it = c.temporaries.find("layout"); it != c.temporaries.end()) {
     WriteMesh(it->second, InFileUnits(result->layout.mesh, result->frame));
   }

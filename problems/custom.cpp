@@ -111,25 +111,22 @@ void Finish(HookContext& c) {
 
 }  // namespace
 
-ProblemDecl CustomProblem(const YAML::Node& root, const std::string& path,
-                          const std::set<std::string>& overridden) {
+ProblemDecl CustomProblem(const CustomValue* terms, const std::string& file) {
   ProblemDecl d;
   d.name = "custom";
   d.summary = "the spec's own composition of registered terms";
   d.paper = "(see each term's paper)";
-  const YAML::Node terms = root["terms"];
-  const int line = terms && terms.Mark().line >= 0 ? terms.Mark().line + 1 : 0;
-  const std::string file = overridden.count("terms") ? "--set" : path;
-  if (!terms || !terms.IsMap() || terms.size() == 0) {
+  const int line = terms ? terms->line : 0;
+  if (!terms || !terms->IsMap() || terms->entries.empty()) {
     throw InputError(file, line, "terms",
                      "problem: custom needs a mapping `terms:` of registered terms and weights");
   }
   std::vector<std::string> known;
   for (const TermSpec* t : RegisteredTerms()) known.push_back(t->name);
   std::vector<std::string> driven;
-  for (const auto& entry : terms) {
-    const std::string name = entry.first.IsScalar() ? entry.first.Scalar() : "";
-    const int at = entry.first.Mark().line >= 0 ? entry.first.Mark().line + 1 : line;
+  for (const CustomValue::Entry& entry : terms->entries) {
+    const std::string& name = entry.key.text;
+    const int at = entry.key.line > 0 ? entry.key.line : line;
     const TermSpec* spec = FindTerm(name);
     if (!spec) {
       std::string list;

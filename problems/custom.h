@@ -29,19 +29,16 @@
 // elements (e.g. co_spherical's labelled stars) cannot be composed here.
 #pragma once
 
-#include <set>
 #include <string>
 
-#include <yaml-cpp/yaml.h>
-
+#include "core/custom_value.h"
 #include "core/problem.h"
 
 namespace archgeo {
 
-// The declaration of the custom problem of the spec `root` (read from
-// `path`; `overridden` keys came from --set). Throws InputError for an
-// unknown or uncomposable term.
-ProblemDecl CustomProblem(const YAML::Node& root, const std::string& path,
-                          const std::set<std::string>& overridden);
+// The declaration of the custom problem whose spec lists `terms` (its
+// `terms:` section as read, null if it has none) in `file` (the spec, or
+// "--set"). Throws InputError for an unknown or uncomposable term.
+ProblemDecl CustomProblem(const CustomValue* terms, const std::string& file);
 
 }  // namespace archgeo

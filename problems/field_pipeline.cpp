@@ -24,22 +24,21 @@ bool RunKey(const std::string& name) {
          StartsWith(name, "output.");
 }
 
-template <typename T>
-std::shared_ptr<const T> Nested(const char* problem, const char* key, const Settings& parent,
-                                const Mesh& mesh, const ProgressSink& progress) {
+// The nested solve of `problem` on `mesh` with the keys of `parent`; throws
+// InputError when it has no usable solution.
+std::unique_ptr<Solution> Nested(const char* problem, const Settings& parent, const Mesh& mesh,
+                                 const ProgressSink& progress) {
   const ProblemDecl* d = FindProblem(problem);
   CHECK(d) << problem << " is not registered";
   const ProblemSpec spec = SubSpec(*d, parent);
-  const std::unique_ptr<Solution> solution =
+  std::unique_ptr<Solution> solution =
       Solve(spec, mesh, nullptr, Prefixed(progress, std::string(problem) + ": "));
   if (!solution->loop.usable) {
     throw InputError(parent.spec_file(), 0, "",
                      std::string("the ") + problem + " stage found no usable solution: " +
                          solution->loop.message);
   }
-  const auto it = solution->hooks.state.find(key);
-  CHECK(it != solution->hooks.state.end()) << problem << " left no '" << key << "'";
-  return std::any_cast<std::shared_ptr<const T>>(it->second);
+  return solution;
 }
 
 }  // namespace
@@ -204,7 +203,9 @@ ProblemSpec SubSpec(const ProblemDecl& sub, const Settings& parent) {
   for (const Key& k : spec.settings.schema().keys()) {
     if (RunKey(k.name) || !parent.schema().Find(k.name) || !parent.Given(k.name)) continue;
     if (k.type == Type::kCustom) {
-      spec.settings.SetCustom(k.name, parent.Custom(k.name), parent.Where(k.name));
+      const CustomValue* value = parent.Custom(k.name);
+      CHECK(value) << k.name << " is given without its value";
+      spec.settings.SetCustom(k.name, *value, parent.Where(k.name));
     } else {
       spec.settings.Set(k.name, parent.Get(k.name), parent.Where(k.name));
     }
@@ -214,12 +215,18 @@ ProblemSpec SubSpec(const ProblemDecl& sub, const Settings& parent) {
 
 std::shared_ptr<const FieldResult> SolveField(const Settings& parent, const Mesh& mesh,
                                               const ProgressSink& progress) {
-  return Nested<FieldResult>("conjugate_field", "field", parent, mesh, progress);
+  std::shared_ptr<const FieldResult> field =
+      Nested("conjugate_field", parent, mesh, progress)->hooks.field;
+  CHECK(field) << "conjugate_field left no field";
+  return field;
 }
 
 std::shared_ptr<const LevelSetResult> SolveLevelSets(const Settings& parent, const Mesh& mesh,
                                                      const ProgressSink& progress) {
-  return Nested<LevelSetResult>("level_sets", "level_sets", parent, mesh, progress);
+  std::shared_ptr<const LevelSetResult> level_sets =
+      Nested("level_sets", parent, mesh, progress)->hooks.level_sets;
+  CHECK(level_sets) << "level_sets left no level sets";
+  return level_sets;
 }
 
 Mesh InFileUnits(const Mesh& mesh, const Similarity& frame) {

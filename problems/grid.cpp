@@ -56,11 +56,11 @@
 // output.grid (.obj with one `vt u v` per vertex, or .ply with double vertex
 // properties u, v; positions exactly x(u, v)).
 #include <Eigen/Geometry>
-#include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "core/problem.h"
 #include "core/newell.h"
@@ -78,12 +78,12 @@ namespace {
 
 constexpr const char* kMeasures[] = {"mdo", "ado", "mde", "ade"};
 
-// The run's grid, in HookContext state "grid" (the surface and L are shared
-// with the terms as "surface" and "grid_length").
-struct GridState {
+// The run's grid (the problem's state). The surface and L, file units, are
+// in HookContext::grid, which the terms read; the surface lives here.
+struct GridState : ProblemState {
   Grid grid;                 // topology and the initial (u, v)
+  std::optional<Surface> surface;
   std::string surface_name;  // as named in the spec
-  double length = 0;         // L, file units
   double initial_length = 0; // L before fitting to the domain
   int fits = 0;              // times L was shrunk to fit the domain
   int anchor = -1;           // the anchored vertex (least squares), or -1
@@ -102,13 +102,6 @@ std::string Join(const std::vector<std::string>& names) {
   return s;
 }
 
-std::string Describe(const YAML::Node& node) {
-  if (node.IsScalar()) return "'" + node.Scalar() + "'";
-  if (node.IsSequence()) return "a list";
-  if (node.IsMap()) return "a mapping";
-  return "nothing";
-}
-
 // `surface: {name: NAME, <parameter>: value, ...}`. Throws InputError naming
 // the file, the line and the key (surface, surface.name, surface.<parameter>).
 Surface ReadSurface(const Settings& s, std::string* name_out = nullptr) {
@@ -117,38 +110,37 @@ Surface ReadSurface(const Settings& s, std::string* name_out = nullptr) {
     throw s.Error("surface", "the grid problem needs surface: {name: NAME, <parameter>: value, "
                              "...} (names: " + names + ")");
   }
-  const YAML::Node node = std::any_cast<YAML::Node>(s.Custom("surface"));
+  const CustomValue& node = *s.Custom("surface");
   const Origin at = s.Where("surface");
-  const auto line_of = [&](const YAML::Node& n) {
-    return at.file == "--set" || n.Mark().line < 0 ? at.line : n.Mark().line + 1;
+  const auto line_of = [&](const CustomValue& n) {
+    return at.file == "--set" || n.line <= 0 ? at.line : n.line;
   };
   if (!node.IsMap()) {
     throw InputError(at.file, line_of(node), "surface",
                      "expected a mapping {name: NAME, <parameter>: value, ...}, got " +
-                         Describe(node) + " (names: " + names + ")");
+                         node.Describe() + " (names: " + names + ")");
   }
   std::string name;
   int name_line = at.line;
   ParameterValues values;
   std::map<std::string, int> lines;  // key -> line
-  for (const auto& entry : node) {
-    const std::string key = entry.first.IsScalar() ? entry.first.Scalar() : "";
+  for (const CustomValue::Entry& entry : node.entries) {
+    const std::string& key = entry.key.text;
     const std::string dotted = "surface." + key;
-    const int line = line_of(entry.first);
+    const int line = line_of(entry.key);
     if (key.empty()) throw InputError(at.file, line, "surface", "a key must be a plain name");
     if (key == "name") {
-      if (!entry.second.IsScalar()) {
+      if (!entry.value.IsScalar()) {
         throw InputError(at.file, line, dotted, "expected a surface name (" + names + ")");
       }
-      name = entry.second.Scalar();
+      name = entry.value.text;
       name_line = line;
       continue;
     }
-    double value = 0;
-    if (!entry.second.IsScalar() || !YAML::convert<double>::decode(entry.second, value)) {
-      throw InputError(at.file, line, dotted, "expected a number, got " + Describe(entry.second));
+    if (!entry.value.number) {
+      throw InputError(at.file, line, dotted, "expected a number, got " + entry.value.Describe());
     }
-    values[key] = value;
+    values[key] = *entry.value.number;
     lines[dotted] = line;
   }
   if (name.empty()) {
@@ -187,11 +179,11 @@ void CheckRequest(const Settings& s, const Surface& surface) {
 }
 
 const Surface& SurfaceOf(HookContext& c) {
-  return std::any_cast<const Surface&>(c.state.at("surface"));
+  return *c.grid.surface;
 }
 
 std::vector<Eigen::Vector2d> CurrentUv(HookContext& c) {
-  const int n = c.State<GridState>("grid").grid.NumVertices();
+  const int n = c.State<GridState>().grid.NumVertices();
   std::vector<Eigen::Vector2d> uv(n);
   for (int v = 0; v < n; ++v) {
     const double* p = c.store->At("uv", v);
@@ -214,7 +206,7 @@ void UpdatePositions(HookContext& c) {
 // MDO, ADO, MDE, ADE of the current (u, v): the whole grid, seams included
 // (cached per state version).
 const GridQuality& Quality(HookContext& c) {
-  GridState& g = c.State<GridState>("grid");
+  GridState& g = c.State<GridState>();
   if (g.version != c.version) {
     Grid grid = g.grid;
     grid.uv = CurrentUv(c);
@@ -248,7 +240,7 @@ nlohmann::json Excursion(const Grid& grid, const std::vector<Eigen::Vector2d>& u
 
 // The measure "outside": the larger excursion of the two (0: inside).
 double Outside(HookContext& c) {
-  const GridState& g = c.State<GridState>("grid");
+  const GridState& g = c.State<GridState>();
   const nlohmann::json excursion = Excursion(g.grid, CurrentUv(c), SurfaceOf(c));
   double outside = 0;
   for (const auto& fraction : excursion) outside = std::max(outside, fraction.get<double>());
@@ -264,13 +256,12 @@ double Outside(HookContext& c) {
 // its edge length set by the closed lines: only n_v resp. n_u fit it.)
 void FitLength(HookContext& c) {
   const double tolerance = c.settings->Number("grid.fit_tolerance");
-  GridState& g = c.State<GridState>("grid");
+  GridState& g = c.State<GridState>();
   if (tolerance <= 0 || g.grid.closed_u || g.grid.closed_v) return;
   const double outside = c.Measure("outside");
   if (outside <= tolerance) return;
   const double f = 1 / (1 + 2 * outside + tolerance);
-  g.length *= f;
-  c.state["grid_length"] = g.length;
+  c.grid.length *= f;
   ++g.fits;
   const std::vector<Eigen::Vector2d> uv = CurrentUv(c);
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();
@@ -322,7 +313,7 @@ std::string Folded(HookContext& c) {
   const Surface& surface = SurfaceOf(c);
   const double limit = c.settings->Number("grid.max_flip_degrees");
   const Mesh& mesh = c.store->mesh();
-  const std::vector<Eigen::Vector2d>& initial = c.State<GridState>("grid").grid.uv;
+  const std::vector<Eigen::Vector2d>& initial = c.State<GridState>().grid.uv;
   int count = 0, example = -1;
   double worst = 0;
   for (FaceIndex f : mesh.faces()) {
@@ -402,16 +393,15 @@ void Check(const Settings& s) {
 // The net: the uniform grid on the surface, as a quad mesh.
 void Net(HookContext& c) {
   const Settings& s = *c.settings;
-  GridState& g = c.State<GridState>("grid");
+  GridState& g = c.State<GridState>();
   const Surface surface = ReadSurface(s, &g.surface_name);
   CheckRequest(s, surface);
   const GridType type = TypeOf(s);
   g.grid = MakeUniformGrid(surface, int(s.Integer("grid.nu")), int(s.Integer("grid.nv")), type);
-  g.length = g.initial_length = s.Number("grid.ideal_length") > 0
-                                    ? s.Number("grid.ideal_length")
-                                    : DefaultLength(g.grid, surface);
-  c.state["surface"] = surface;
-  c.state["grid_length"] = g.length;
+  g.initial_length = s.Number("grid.ideal_length") > 0 ? s.Number("grid.ideal_length")
+                                                        : DefaultLength(g.grid, surface);
+  g.surface = surface;
+  c.grid = {&*g.surface, g.initial_length};
   c.net.derived = true;
   c.net.mesh = GridToMesh(g.grid, surface, &g.omitted_faces);
   c.net.source.resize(size_t(g.grid.NumVertices()));
@@ -426,12 +416,12 @@ void Net(HookContext& c) {
                    {"nv", g.grid.nv},
                    {"type", GridTypeName(type)},
                    {"paper_type", GridTypePaperName(type)},
-                   {"ideal_length", g.length},
+                   {"ideal_length", c.grid.length},
                    {"omitted_seam_faces", g.omitted_faces}};
   char line[300];
   std::snprintf(line, sizeof line,
                 "grid: %s, %d × %d, %s (%s), L = %.6g%s; method %s\n", g.surface_name.c_str(),
-                g.grid.nu, g.grid.nv, GridTypeName(type), GridTypePaperName(type), g.length,
+                g.grid.nu, g.grid.nv, GridTypeName(type), GridTypePaperName(type), c.grid.length,
                 g.omitted_faces > 0 ? " (mesh cut open along the flipping u-seam)" : "",
                 s.String("method").c_str());
   c.net.headline = line;
@@ -440,7 +430,7 @@ void Net(HookContext& c) {
 // Per solve: the (u, v), the element sets, fixed vertices and domain bounds.
 void Init(HookContext& c) {
   const Settings& s = *c.settings;
-  GridState& g = c.State<GridState>("grid");
+  GridState& g = c.State<GridState>();
   const Grid& grid = g.grid;
   const int n = grid.NumVertices();
   CHECK_EQ(int(c.store->mesh().number_of_vertices()), n) << "grid: the net is not the grid";
@@ -508,14 +498,14 @@ void Init(HookContext& c) {
 // (or fewer, to its own stop).
 StepResult ForceRound(HookContext& c) {
   const Settings& s = *c.settings;
-  GridState& g = c.State<GridState>("grid");
+  GridState& g = c.State<GridState>();
   Grid grid = g.grid;
   grid.uv = CurrentUv(c);
   ForceDirectedOptions o;
   o.d_o = s.Number("force.d_o");
   o.d_b = s.Number("force.d_b");
   o.d_l = s.Number("force.d_l");
-  o.ideal_length = g.length;
+  o.ideal_length = c.grid.length;
   o.max_iterations = int(s.Integer("force.iterations"));
   o.stop_mdo = s.Number("tolerance.mdo");
   o.stop_ado = s.Number("tolerance.ado");
@@ -559,14 +549,14 @@ StepResult ForceRound(HookContext& c) {
 
 void Finish(HookContext& c) {
   const Settings& s = *c.settings;
-  GridState& g = c.State<GridState>("grid");
+  GridState& g = c.State<GridState>();
   const GridQuality& after = Quality(c);
   c.details["quality_after"] = GridQualityToJson(after);
   c.details["quality_note"] =
       "quality_before/after: the whole grid, seams included (mdo, ado on the interpolating "
       "splines; mde, ade on the quad sides); the report's before/after: the mesh written";
   c.details["method"] = s.String("method");
-  c.details["ideal_length"] = g.length;
+  c.details["ideal_length"] = c.grid.length;
   c.details["ideal_length_initial"] = g.initial_length;
   c.details["ideal_length_fits"] = g.fits;
   c.details["outside_domain"] = Excursion(g.grid, CurrentUv(c), SurfaceOf(c));

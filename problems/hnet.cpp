@@ -72,14 +72,14 @@ namespace {
 // net is reported as not closing (a hole or non-planar stars).
 constexpr double kClosingMismatch = 1e-6;
 
-struct Current {
+struct Current : ProblemState {
   long version = -1;
   HNet hnet;
 };
 
 // The H-net of the current state (built once per state).
 const HNet& CurrentHNet(HookContext& c) {
-  Current& cur = c.State<Current>("hnet");
+  Current& cur = c.State<Current>();
   if (cur.version != c.version) {
     cur.hnet = BuildHNet(c.store->mesh(), HNetOptionsOf(*c.settings));
     cur.version = c.version;

@@ -75,7 +75,7 @@ using V3 = Eigen::Vector3d;
 
 constexpr double kSingularityReach = 1.5;  // spacings
 
-struct State {
+struct LevelSetState : ProblemState {
   std::shared_ptr<const FieldResult> field;
   CutGraph cut;
   FieldOrientation ov, ow;
@@ -87,7 +87,7 @@ struct State {
   std::string rounding_message;
 };
 
-State& St(HookContext& c) { return *c.State<std::shared_ptr<State>>("state"); }
+LevelSetState& St(HookContext& c) { return c.State<LevelSetState>(); }
 
 BlockDecl Values(const char* name, const char* doc) {
   return {name, Site::kVertex, 1, FrameMap::kLength, false, Carry::kReinitialise, true, false, doc};
@@ -95,9 +95,8 @@ BlockDecl Values(const char* name, const char* doc) {
 
 void Init(HookContext& c) {
   const Settings& s = *c.settings;
-  auto state = std::make_shared<State>();
-  c.State<std::shared_ptr<State>>("state") = state;
-  State& st = *state;
+  LevelSetState& st = St(c);
+  st = LevelSetState{};
   st.field = SolveField(s, *c.input, c.progress);
   const FieldGeometry& geo = st.field->geometry;
   const TcdField& field = st.field->field;
@@ -198,7 +197,7 @@ void Init(HookContext& c) {
 // ∇g of face f (frame coordinates of the face) from the block's values at
 // its three corner wedges.
 V2 FaceGradient(HookContext& c, const char* block, FaceIndex f) {
-  const State& st = St(c);
+  const LevelSetState& st = St(c);
   const Mesh& mesh = c.store->mesh();
   const std::array<V2, 3> p = FaceCorners2D(mesh, st.field->geometry.frames, f);
   const double corners[6] = {p[0].x(), p[0].y(), p[1].x(), p[1].y(), p[2].x(), p[2].y()};
@@ -210,7 +209,7 @@ V2 FaceGradient(HookContext& c, const char* block, FaceIndex f) {
 
 // Area-weighted mean ‖∇g‖ over the faces where the field is defined.
 double MeanGradient(HookContext& c, const char* block, const std::vector<V2>& dir) {
-  const State& st = St(c);
+  const LevelSetState& st = St(c);
   const FaceFrames& frames = st.field->geometry.frames;
   double sum = 0, area = 0;
   for (FaceIndex f : c.store->mesh().faces()) {
@@ -228,7 +227,7 @@ double MeanGradient(HookContext& c, const char* block, const std::vector<V2>& di
 // cell size asked for. The jump constants are rounded to multiples of these
 // and held constant.
 void Round(HookContext& c) {
-  State& st = St(c);
+  LevelSetState& st = St(c);
   if (st.rounded) return;
   st.rounded = true;
   st.spacing_g = st.spacing * MeanGradient(c, "level_set_g", st.v);
@@ -278,7 +277,7 @@ std::array<double, 2> GradientAngle(HookContext& c, const char* block, const std
 // |t_gᵀ M t_h| / max(|κ1|, |κ2|) with t_g, t_h the unit tangents R∇g/‖∇g‖,
 // R∇h/‖∇h‖ (0: conjugate; at most 1). Unit-free.
 double LevelSetConjugacy(HookContext& c) {
-  const State& st = St(c);
+  const LevelSetState& st = St(c);
   const FieldGeometry& geo = st.field->geometry;
   double sum = 0, area = 0;
   for (FaceIndex f : c.store->mesh().faces()) {
@@ -306,7 +305,7 @@ V3 Centroid(const Mesh& mesh, FaceIndex f) {
 }
 
 void Finish(HookContext& c) {
-  State& st = St(c);
+  LevelSetState& st = St(c);
   const Mesh& mesh = c.store->mesh();
   auto result = std::make_shared<LevelSetResult>();
   result->field = st.field;
@@ -446,11 +445,11 @@ void Finish(HookContext& c) {
   c.details["field"] = st.field->details;
   for (const auto& [k, v] : d.items()) c.details[k] = v;
   c.headline += st.field->headline + result->headline;
-  c.state["level_sets"] = std::shared_ptr<const LevelSetResult>(result);
+  c.level_sets = result;
 }
 
 void Write(HookContext& c) {
-  const auto result = std::any_cast<std::shared_ptr<const LevelSetResult>>(c.state.at("level_sets"));
+  const auto& result = c.level_sets;
   if (const auto it = c.temporaries.find("layout"); it != c.temporaries.end()) {
     if (!result->layout.ok) {
       throw c.settings->Error("output.layout", "no layout to write: " + result->layout.error);

@@ -133,11 +133,7 @@ class MeshModel::View : public TermContext {
     return !model_.on_curve_.empty() && model_.on_curve_[v];
   }
   const ElementSet& Elements(const std::string& name) override { return model_.Elements(name); }
-  const std::any& Shared(const std::string& name) const override {
-    static const std::any kNone;
-    const auto it = model_.hooks_.state.find(name);
-    return it == model_.hooks_.state.end() ? kNone : it->second;
-  }
+  const GridShared& grid() const override { return model_.hooks_.grid; }
   const Settings& settings() const override { return *model_.hooks_.settings; }
   const std::string& term_name() const override { return name_; }
 

@@ -9,20 +9,22 @@
 // (HookContext::SetElements), narrowed by `terms.<t>.select`.
 #pragma once
 
-#include <any>
 #include <functional>
 #include <future>
 #include <map>
 #include <memory>
 #include <set>
 #include <string>
+#include <type_traits>
 #include <vector>
 
+#include <glog/logging.h>
 #include <nlohmann/json.hpp>
 
 #include "core/loop.h"
 #include "analysis/validity.h"
 #include "core/problem.h"
+#include "energies/grid_shared.h"
 #include "mesh/similarity.h"
 #include "mesh/store.h"
 #include "mesh/surface_mesh.h"
@@ -31,6 +33,8 @@ namespace archgeo {
 
 class ReferenceSurface;
 class MeshModel;
+struct FieldResult;     // problems/field_pipeline.h
+struct LevelSetResult;  // problems/field_pipeline.h
 
 // The net a problem optimises when that is not the input mesh itself (hnet:
 // a diagonal net of the input, geometry/diagonal_net.h; principal_symmetric: the
@@ -45,8 +49,14 @@ struct WorkingNet {
   std::string headline;      // for the terminal ("" or lines ending in '\n')
 };
 
-// What a problem's hooks see. One per run (state carried across
-// multiresolution levels lives in `state`).
+// A problem's own data for one run (carried across multiresolution levels):
+// one struct per problem, derived from this, reached through
+// HookContext::State.
+struct ProblemState {
+  virtual ~ProblemState() = default;
+};
+
+// What a problem's hooks see. One per run.
 class HookContext {
  public:
   Store* store = nullptr;             // the current level's store (canonical frame)
@@ -64,7 +74,13 @@ class HookContext {
 
   nlohmann::json details = nlohmann::json::object();  // the report's problem entries
   std::string headline;               // lines for the terminal
-  std::map<std::string, std::any> state;  // the problem's own data for this run
+
+  // Results a problem leaves for the problem that nests it (problems/
+  // field_pipeline.h), for its `write` hook and for tests; null until set.
+  std::shared_ptr<const FieldResult> field;          // conjugate_field (finish)
+  std::shared_ptr<const LevelSetResult> level_sets;  // level_sets (finish), conjugate_layout (net)
+  // What the grid problem shares with its terms (TermContext::grid).
+  GridShared grid;
 
   // For `write`: the output in file units and the staged file per output key.
   const Mesh* output = nullptr;
@@ -82,13 +98,26 @@ class HookContext {
   void SetElements(const std::string& name, ElementSet set);
   // A measure's value on the current state.
   double Measure(const std::string& name);
-  // The problem's own data, created on first use.
+  // The problem's own data, created on first use. CHECKs that it is a T (a
+  // problem has one state type).
   template <typename T>
-  T& State(const std::string& name) {
-    std::any& a = state[name];
-    if (!a.has_value()) a = T{};
-    return std::any_cast<T&>(a);
+  T& State() {
+    static_assert(std::is_base_of_v<ProblemState, T>, "a problem's state derives from ProblemState");
+    if (!state_) state_ = std::make_unique<T>();
+    T* state = dynamic_cast<T*>(state_.get());
+    CHECK(state != nullptr) << "the problem's state is not of the type asked for";
+    return *state;
   }
+  // The problem's own data (CHECKs that it exists and is a T).
+  template <typename T>
+  const T& State() const {
+    const T* state = dynamic_cast<const T*>(state_.get());
+    CHECK(state != nullptr) << "the problem has no state of the type asked for";
+    return *state;
+  }
+
+ private:
+  std::unique_ptr<ProblemState> state_;
 };
 
 class MeshModel : public Model {

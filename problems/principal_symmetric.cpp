@@ -55,7 +55,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-struct Labels {
+struct Labels : ProblemState {
   std::vector<VertexPair> edges;
   int vertices = 0;  // of the mesh they label
   int rounds = 0;    // rounds of the current level
@@ -85,7 +85,7 @@ double AngleSum(const Mesh& mesh, VertexIndex v) {
 // the edge-label file); the star rule checked.
 void Net(HookContext& c) {
   const Settings& s = *c.settings;
-  Labels& labels = c.State<Labels>("labels");
+  Labels& labels = c.State<Labels>();
   Mesh triangles;
   if (Split(s)) {
     bool quads = false;
@@ -144,7 +144,7 @@ void UpdateSaddles(HookContext& c, bool classify) {
 // Per level: the labels (followed through Loop subdivision), the element
 // sets, the spheres fitted to the stars, the strip normals, the saddles.
 void Init(HookContext& c) {
-  Labels& labels = c.State<Labels>("labels");
+  Labels& labels = c.State<Labels>();
   Store& st = *c.store;
   const Mesh& mesh = st.mesh();
   if (int(mesh.number_of_vertices()) != labels.vertices) {
@@ -320,13 +320,13 @@ ProblemDecl principal_symmetric() {
                     {"saddle_excess", "tolerance.residual_max"}};
     s.logged = {"co_spherical_max", "strip_max", "saddle_violations", "E"};
     s.before_round = [](HookContext& c) {
-      if (c.State<Labels>("labels").rounds++ > 0) UpdateSaddles(c, false);
+      if (c.State<Labels>().rounds++ > 0) UpdateSaddles(c, false);
     };
     return std::vector<Stage>{s};
   };
   d.finish = [](HookContext& c) {
     const Conditions r = Measure(c);
-    c.details["principal_edges"] = int(c.State<Labels>("labels").edges.size());
+    c.details["principal_edges"] = int(c.State<Labels>().edges.size());
     c.details["conditions_after"] = Json(r);
     char line[300];
     std::snprintf(line, sizeof line,
@@ -342,7 +342,7 @@ ProblemDecl principal_symmetric() {
     std::string text =
         "# principal edges of the output mesh (archgeo principal_symmetric): \"i j\", "
         "0-based vertex indices\n";
-    for (const VertexPair& e : c.State<Labels>("labels").edges) {
+    for (const VertexPair& e : c.State<Labels>().edges) {
       text += std::to_string(e.first) + " " + std::to_string(e.second) + "\n";
     }
     WriteTextFile(it->second, text, "output.principal_edges");

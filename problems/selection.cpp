@@ -2,11 +2,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "problems/selection.h"
 
-#include <yaml-cpp/yaml.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <set>
 
 #include "geometry/curves.h"
@@ -26,24 +25,19 @@ class Parser {
  public:
   Parser(const Settings& s, std::string key) : s_(s), key_(std::move(key)), at_(s.Where(key_)) {}
 
-  [[noreturn]] void Fail(const YAML::Node& node, const std::string& sub,
+  [[noreturn]] void Fail(const CustomValue& node, const std::string& sub,
                          const std::string& message) const {
-    int line = at_.line;
-    if (at_.file != "--set" && node.IsDefined() && node.Mark().line >= 0) {
-      line = node.Mark().line + 1;
-    }
-    throw InputError(at_.file.empty() ? s_.spec_file() : at_.file, at_.file == "--set" ? 0 : line,
-                     sub.empty() ? key_ : key_ + "." + sub, message);
+    throw s_.ErrorAt(key_, node, sub.empty() ? key_ : key_ + "." + sub, message);
   }
 
   Selection Parse() {
     Selection out;
     out.line = at_.line;
-    const std::any& custom = s_.Custom(key_);
-    if (!custom.has_value()) return out;  // the default: all
-    const YAML::Node node = std::any_cast<YAML::Node>(custom);
+    const CustomValue* custom = s_.Custom(key_);
+    if (!custom) return out;  // the default: all
+    const CustomValue& node = *custom;
     if (node.IsScalar()) {
-      const std::string form = node.Scalar();
+      const std::string& form = node.text;
       if (form == "boundary") {
         out.side = Selection::Side::kBoundary;
       } else if (form == "interior") {
@@ -53,41 +47,39 @@ class Parser {
       } else if (form != "all") {
         Fail(node, "", "'" + form + "' is not a selection (" + kForms + ")");
       }
-    } else if (node.IsSequence()) {
+    } else if (node.IsList()) {
       out.by_ids = true;
       out.ids = Integers(node, "", 0);
     } else if (node.IsMap()) {
       std::set<std::string> seen;
-      for (const auto& entry : node) {
-        const std::string k = entry.first.IsScalar() ? entry.first.Scalar() : "";
-        const YAML::Node& v = entry.second;
-        if (!seen.insert(k).second) Fail(entry.first, k, "duplicate key");
+      for (const CustomValue::Entry& entry : node.entries) {
+        const std::string& k = entry.key.text;
+        const CustomValue& v = entry.value;
+        if (!seen.insert(k).second) Fail(entry.key, k, "duplicate key");
         if (k == "boundary") {
           out.side = Bool(v, k) ? Selection::Side::kBoundary : Selection::Side::kInterior;
         } else if (k == "free") {
           if (!Bool(v, k)) Fail(v, k, "only `free: true` is a condition (leave it out for all)");
           out.free = true;
         } else if (k == "ids") {
-          if (!v.IsSequence()) Fail(v, k, "expected a list of site ids");
+          if (!v.IsList()) Fail(v, k, "expected a list of site ids");
           out.by_ids = true;
           out.ids = Integers(v, k, 0);
         } else if (k == "loop") {
           out.loop = int(Integer(v, k, 0));
         } else if (k == "degree") {
-          out.degrees = v.IsSequence() ? Integers(v, k, 1) : std::vector<long long>{Integer(v, k, 1)};
+          out.degrees = v.IsList() ? Integers(v, k, 1) : std::vector<long long>{Integer(v, k, 1)};
           if (out.degrees.empty()) Fail(v, k, "expected a degree or a list of degrees");
         } else if (k == "curve") {
-          if (!v.IsScalar() || v.Scalar().empty()) Fail(v, k, "expected an OBJ file of polylines");
-          out.curve = Resolve(v.Scalar());
+          if (!v.IsScalar() || v.text.empty()) Fail(v, k, "expected an OBJ file of polylines");
+          out.curve = Resolve(v.text);
         } else if (k == "within") {
-          double d = 0;
-          if (!v.IsScalar() || !YAML::convert<double>::decode(v, d) || !std::isfinite(d) ||
-              !(d > 0)) {
+          if (!v.number || !std::isfinite(*v.number) || !(*v.number > 0)) {
             Fail(v, k, "expected a distance > 0 (input mean edge lengths)");
           }
-          out.within = d;
+          out.within = *v.number;
         } else {
-          Fail(entry.first, k, "unknown selection key (allowed: boundary, free, ids, loop, "
+          Fail(entry.key, k, "unknown selection key (allowed: boundary, free, ids, loop, "
                                "degree, curve, within)");
         }
       }
@@ -102,23 +94,20 @@ class Parser {
   }
 
  private:
-  bool Bool(const YAML::Node& v, const std::string& k) const {
-    bool b = false;
-    if (!v.IsScalar() || !YAML::convert<bool>::decode(v, b)) Fail(v, k, "expected true or false");
-    return b;
+  bool Bool(const CustomValue& v, const std::string& k) const {
+    if (!v.boolean) Fail(v, k, "expected true or false");
+    return *v.boolean;
   }
 
-  long long Integer(const YAML::Node& v, const std::string& k, long long lo) const {
-    long long i = 0;
-    if (!v.IsScalar() || !YAML::convert<long long>::decode(v, i) || i < lo) {
-      Fail(v, k, "expected an integer ≥ " + std::to_string(lo));
-    }
-    return i;
+  long long Integer(const CustomValue& v, const std::string& k, long long lo) const {
+    if (!v.integer || *v.integer < lo) Fail(v, k, "expected an integer ≥ " + std::to_string(lo));
+    return *v.integer;
   }
 
-  std::vector<long long> Integers(const YAML::Node& list, const std::string& k, long long lo) const {
+  std::vector<long long> Integers(const CustomValue& list, const std::string& k,
+                                  long long lo) const {
     std::vector<long long> out;
-    for (const YAML::Node& v : list) out.push_back(Integer(v, k, lo));
+    for (const CustomValue& v : list.items) out.push_back(Integer(v, k, lo));
     return out;
   }
 
@@ -267,19 +256,18 @@ std::vector<Polyline> TermCurves(const Settings& s, const std::string& key,
   const std::string& path = s.String(key);
   std::vector<Polyline> polylines;
   const std::string points_key = key + "_points";
-  const std::any& points = s.Custom(points_key);
-  if (points.has_value()) {
+  if (const CustomValue* list = s.Custom(points_key)) {
     if (!path.empty()) throw s.Error(points_key, "give either " + key + " or " + points_key);
     std::vector<Vec3> xyz;
-    const YAML::Node list = std::any_cast<YAML::Node>(points);
     const std::string form = "expected a list of points [x, y, z] (file units)";
-    if (!list.IsSequence()) throw s.Error(points_key, form);
-    for (const YAML::Node& point : list) {
+    if (!list->IsList()) throw s.Error(points_key, form);
+    for (const CustomValue& point : list->items) {
       Vec3 x;
-      bool ok = point.IsSequence() && point.size() == 3;
+      bool ok = point.IsList() && point.items.size() == 3;
       for (size_t i = 0; ok && i < 3; ++i) {
-        ok = point[i].IsScalar() && YAML::convert<double>::decode(point[i], x[i]) &&
-             std::isfinite(x[i]);
+        const std::optional<double>& number = point.items[i].number;
+        ok = number && std::isfinite(*number);
+        if (ok) x[i] = *number;
       }
       if (!ok) {
         throw s.Error(points_key, form + "; point " + std::to_string(xyz.size() + 1) +

@@ -63,8 +63,8 @@ struct Selection {
   }
 };
 
-// The selection `key` ("terms.<t>.select": a kCustom setting holding the
-// YAML node, or its default "all"). Throws InputError.
+// The selection `key` ("terms.<t>.select": a kCustom setting, or its default
+// "all"). Throws InputError.
 Selection ParseSelection(const Settings& settings, const std::string& key);
 
 // The indices of the elements of `set` that `selection` keeps, in order.
@@ -79,7 +79,7 @@ std::vector<size_t> SelectElements(const Selection& selection, const ElementSet&
 // The curves of a term option (core/term.h TermContext::Curves) in the
 // canonical frame: the polylines of the OBJ file the setting `key` names
 // (file units, moved by `frame`); or the one polyline of the kCustom setting
-// `key`_points, if the term declares it — a YAML list of points [x, y, z]
+// `key`_points, if the term declares it — a list of points [x, y, z]
 // (file units), closed when the last point repeats the first; or, when
 // neither is given, the boundary loops of `reference` (canonical; longest
 // first). Throws InputError naming the key for an unreadable file, a

@@ -41,8 +41,8 @@
 // displacement bound (a design moves the mesh on purpose); the reference
 // still applies: set proximity, boundary_proximity and anchor to 0 for a free
 // design.
-#include <yaml-cpp/yaml.h>
-
+#include <cmath>
+#include <optional>
 #include <set>
 
 #include "core/problem.h"
@@ -62,50 +62,56 @@ struct Handle {
 std::vector<Handle> ReadHandles(const Settings& s) {
   std::vector<Handle> handles;
   if (!s.Given("handles")) return handles;
-  const YAML::Node list = std::any_cast<YAML::Node>(s.Custom("handles"));
-  const Origin at = s.Where("handles");
-  auto fail = [&](const YAML::Node& node, const std::string& key, const std::string& message) {
-    const int line = at.file == "--set" ? 0 : (node.Mark().line >= 0 ? node.Mark().line + 1 : at.line);
-    throw InputError(at.file, line, key, message);
-  };
-  if (!list.IsSequence()) fail(list, "handles", "expected a list of {vertex, position | offset}");
+  const CustomValue& list = *s.Custom("handles");
+  if (!list.IsList()) {
+    throw s.ErrorAt("handles", list, "handles", "expected a list of {vertex, position | offset}");
+  }
   std::set<int> seen;
-  for (size_t i = 0; i < list.size(); ++i) {
-    const YAML::Node h = list[i];
+  for (size_t i = 0; i < list.items.size(); ++i) {
+    const CustomValue& h = list.items[i];
     const std::string key = "handles[" + std::to_string(i) + "]";
     if (!h.IsMap()) {
-      fail(h, key, "expected {vertex: i, position: [x, y, z]} or {vertex: i, offset: [dx, dy, dz]}");
+      throw s.ErrorAt(
+          "handles", h, key,
+          "expected {vertex: i, position: [x, y, z]} or {vertex: i, offset: [dx, dy, dz]}");
     }
-    for (const auto& e : h) {
-      const std::string k = e.first.IsScalar() ? e.first.Scalar() : "";
+    for (const CustomValue::Entry& e : h.entries) {
+      const std::string& k = e.key.text;
       if (k != "vertex" && k != "position" && k != "offset") {
-        fail(e.first, key + "." + k, "unknown key (allowed: vertex, position, offset)");
+        throw s.ErrorAt("handles", e.key, key + "." + k,
+                        "unknown key (allowed: vertex, position, offset)");
       }
     }
-    if (!h["vertex"]) fail(h, key, "missing 'vertex'");
-    if (bool(h["position"]) == bool(h["offset"])) fail(h, key, "give exactly one of 'position' and 'offset'");
+    const CustomValue* vertex = h.Find("vertex");
+    const CustomValue* position = h.Find("position");
+    const CustomValue* offset = h.Find("offset");
+    if (!vertex) throw s.ErrorAt("handles", h, key, "missing 'vertex'");
+    if ((position != nullptr) == (offset != nullptr)) {
+      throw s.ErrorAt("handles", h, key, "give exactly one of 'position' and 'offset'");
+    }
+    if (!vertex->integer || *vertex->integer < 0 || *vertex->integer > (1 << 30)) {
+      throw s.ErrorAt("handles", *vertex, key + ".vertex", "expected a vertex index ≥ 0");
+    }
     Handle handle;
-    long long vertex = -1;
-    if (!h["vertex"].IsScalar() || !YAML::convert<long long>::decode(h["vertex"], vertex) ||
-        vertex < 0 || vertex > (1 << 30)) {
-      fail(h["vertex"], key + ".vertex", "expected a vertex index ≥ 0");
-    }
-    handle.vertex = int(vertex);
+    handle.vertex = int(*vertex->integer);
     if (!seen.insert(handle.vertex).second) {
-      fail(h, key, "vertex " + std::to_string(vertex) + " is listed twice");
+      throw s.ErrorAt("handles", h, key,
+                      "vertex " + std::to_string(handle.vertex) + " is listed twice");
     }
-    handle.offset = bool(h["offset"]);
-    const YAML::Node xyz = handle.offset ? h["offset"] : h["position"];
+    handle.offset = offset != nullptr;
+    const CustomValue& xyz = handle.offset ? *offset : *position;
     const std::string xyz_key = key + (handle.offset ? ".offset" : ".position");
-    if (!xyz.IsSequence() || xyz.size() != 3) fail(xyz, xyz_key, "expected [x, y, z]");
-    for (int k = 0; k < 3; ++k) {
-      double x = 0;
-      if (!xyz[k].IsScalar() || !YAML::convert<double>::decode(xyz[k], x) || !std::isfinite(x)) {
-        fail(xyz[k], xyz_key, "expected a finite number");
-      }
-      handle.value[k] = x;
+    if (!xyz.IsList() || xyz.items.size() != 3) {
+      throw s.ErrorAt("handles", xyz, xyz_key, "expected [x, y, z]");
     }
-    handle.line = h.Mark().line + 1;
+    for (int k = 0; k < 3; ++k) {
+      const std::optional<double>& x = xyz.items[k].number;
+      if (!x || !std::isfinite(*x)) {
+        throw s.ErrorAt("handles", xyz.items[k], xyz_key, "expected a finite number");
+      }
+      handle.value[k] = *x;
+    }
+    handle.line = h.line;
     handles.push_back(handle);
   }
   return handles;

@@ -56,6 +56,66 @@ std::string Describe(const YAML::Node& node) {
   return "nothing";
 }
 
+// Structured values are read this many levels below their key (the deepest
+// form, handles, reads three): a list or mapping deeper than that keeps its
+// kind and line, not its contents (an alias can make the YAML graph cyclic,
+// and each level read multiplies what a list of aliases repeats).
+constexpr int kCustomDepth = 4;
+// At most this many nodes per structured value: more than a 1 MiB spec holds
+// without aliases, which can repeat a subtree exponentially often.
+constexpr size_t kCustomNodes = size_t{1} << 20;
+
+void ReadScalar(const YAML::Node& node, CustomValue& out) {
+  out.kind = CustomValue::Kind::kScalar;
+  out.text = node.Scalar();
+  double number = 0;
+  if (YAML::convert<double>::decode(node, number)) out.number = number;
+  long long integer = 0;
+  if (YAML::convert<long long>::decode(node, integer)) out.integer = integer;
+  bool boolean = false;
+  if (YAML::convert<bool>::decode(node, boolean)) out.boolean = boolean;
+}
+
+// Reads `node` at `depth` into `out`, taking one from `budget` per node;
+// false when the budget is spent.
+bool ReadCustomNode(const YAML::Node& node, int depth, size_t& budget, CustomValue& out) {
+  if (budget == 0) return false;
+  --budget;
+  out.line = node.Mark().line >= 0 ? node.Mark().line + 1 : 0;
+  if (node.IsScalar()) {
+    ReadScalar(node, out);
+  } else if (node.IsSequence()) {
+    out.kind = CustomValue::Kind::kList;
+    for (const YAML::Node& item : node) {
+      if (depth >= kCustomDepth) break;
+      if (!ReadCustomNode(item, depth + 1, budget, out.items.emplace_back())) return false;
+    }
+  } else if (node.IsMap()) {
+    out.kind = CustomValue::Kind::kMap;
+    for (const auto& entry : node) {
+      if (depth >= kCustomDepth) break;
+      CustomValue::Entry& e = out.entries.emplace_back();
+      if (!ReadCustomNode(entry.first, depth + 1, budget, e.key) ||
+          !ReadCustomNode(entry.second, depth + 1, budget, e.value)) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+// The structured value `node` of `key`, given at `where`.
+CustomValue ReadCustom(const YAML::Node& node, const Origin& where, const std::string& key) {
+  CustomValue value;
+  size_t budget = kCustomNodes;
+  if (!ReadCustomNode(node, 0, budget, value)) {
+    throw InputError(where.file, where.line, key,
+                     "more than " + std::to_string(kCustomNodes) +
+                         " values once its aliases are expanded: too large");
+  }
+  return value;
+}
+
 std::string List(const std::vector<std::string>& items) {
   std::string list;
   for (const std::string& a : items) list += (list.empty() ? "" : ", ") + a;
@@ -127,7 +187,9 @@ class Reader {
 
   void Set(const Key& k, const YAML::Node& node, Settings& out) const {
     out.Set(k.name, Parse(k, node), Where(node, k.name));
-    if (k.type == Type::kCustom) out.SetCustom(k.name, node, Where(node, k.name));
+    if (k.type == Type::kCustom) {
+      out.SetCustom(k.name, ReadCustom(node, Where(node, k.name), k.name), Where(node, k.name));
+    }
   }
 
  private:
@@ -317,6 +379,17 @@ std::vector<std::string> ProblemSpec::InputFiles() const {
 
 namespace {
 
+// The custom problem of the spec `root`, from its `terms:` section.
+ProblemDecl CustomOf(const YAML::Node& root, const std::string& path,
+                     const std::set<std::string>& overridden) {
+  const std::string file = overridden.count("terms") ? "--set" : path;
+  const YAML::Node terms = root["terms"];
+  if (!terms) return CustomProblem(nullptr, file);
+  const CustomValue value =
+      ReadCustom(terms, {file, terms.Mark().line >= 0 ? terms.Mark().line + 1 : 0}, "terms");
+  return CustomProblem(&value, file);
+}
+
 ProblemSpec Parse(YAML::Node root, const std::string& path,
                   const std::vector<std::string>& overrides, bool require_mesh) {
   if (!root.IsMap()) throw InputError(path, 1, "", "expected a mapping of keys");
@@ -350,7 +423,7 @@ ProblemSpec Parse(YAML::Node root, const std::string& path,
   ProblemSpec spec;
   spec.spec_path = path;
   if (problem == "custom") {
-    spec.declaration = std::make_shared<const ProblemDecl>(CustomProblem(root, path, overridden));
+    spec.declaration = std::make_shared<const ProblemDecl>(CustomOf(root, path, overridden));
   } else {
     spec.declaration = std::shared_ptr<const ProblemDecl>(FindProblem(problem), [](auto*) {});
   }

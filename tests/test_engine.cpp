@@ -32,7 +32,7 @@ namespace archgeo {
 namespace ARCHGEO_UNITY_ID {
 
 // The scripted model's state, kept in its hooks' state.
-struct Script {
+struct Script : ProblemState {
   std::vector<double> values;  // one "measure" per round
   size_t next = 0;             // the next round's value
   double state = 0;            // the current value of the measure
@@ -45,9 +45,9 @@ namespace fs = std::filesystem;
 class ScriptedModel : public Model {
  public:
   explicit ScriptedModel(std::vector<double> script) {
-    hooks_.State<Script>("script").values = std::move(script);
+    hooks_.State<Script>().values = std::move(script);
   }
-  Script& script() { return hooks_.State<Script>("script"); }
+  Script& script() { return hooks_.State<Script>(); }
   void BeginRound(bool) override {}
   void Build(const std::vector<ActiveTerm>&, int, Residuals&) override {}
   int Guard(double) override { return 0; }
@@ -57,7 +57,7 @@ class ScriptedModel : public Model {
   }
   void StateChanged() override {}
   std::vector<double> SaveState() const override {
-    return {std::any_cast<const Script&>(hooks_.state.at("script")).state};
+    return {hooks_.State<Script>().state};
   }
   void RestoreState(const std::vector<double>& s) override { script().state = s.at(0); }
   double MaxMove(const std::vector<double>& a, const std::vector<double>& b) const override {
@@ -90,7 +90,7 @@ LoopResult RunScript(const Stage& stage, const std::vector<double>& script, Sett
   s.rounds_key = "schedule.outer_iterations";
   s.logged = {"m"};
   s.step = [](HookContext& c) {
-    Script& script = c.State<Script>("script");
+    Script& script = c.State<Script>();
     script.state = script.values.at(script.next++);
     StepResult r;
     r.iterations = 1;

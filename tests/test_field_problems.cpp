@@ -51,11 +51,11 @@ std::unique_ptr<Solution> SolveYaml(const std::string& yaml, const Mesh& mesh) {
 }
 
 std::shared_ptr<const FieldResult> FieldOf(const Solution& s) {
-  return std::any_cast<std::shared_ptr<const FieldResult>>(s.hooks.state.at("field"));
+  return s.hooks.field;
 }
 
 std::shared_ptr<const LevelSetResult> LevelSetsOf(const Solution& s) {
-  return std::any_cast<std::shared_ptr<const LevelSetResult>>(s.hooks.state.at("level_sets"));
+  return s.hooks.level_sets;
 }
 
 double LineDeg(const V3& a, const V3& b) {

@@ -80,7 +80,7 @@ std::unique_ptr<Solution> SolveGrid(const std::string& yaml, const AfterInit& af
 }
 
 const Surface& SurfaceOf(HookContext& c) {
-  return std::any_cast<const Surface&>(c.state.at("surface"));
+  return *c.grid.surface;
 }
 
 // Moves every vertex to (u, v) = f(u, v) and its position to x(u, v).

@@ -609,7 +609,7 @@ int NearestFace(const Mesh& mesh, double x, double y) {
 }
 
 std::shared_ptr<const FieldResult> FieldOf(const Solution& s) {
-  return std::any_cast<std::shared_ptr<const FieldResult>>(s.hooks.state.at("field"));
+  return s.hooks.field;
 }
 
 double LineDegrees(const V3& a, const V3& b) {
@@ -784,7 +784,7 @@ TEST(Terms, TcdSingularityAvoidanceKeepsZNAwayFromZM) {
 // surface; ∇g should follow R v and ∇h follow R w (R: +90° in the face).
 
 std::shared_ptr<const LevelSetResult> LevelSetsOf(const Solution& s) {
-  return std::any_cast<std::shared_ptr<const LevelSetResult>>(s.hooks.state.at("level_sets"));
+  return s.hooks.level_sets;
 }
 
 // Per face: ∇g (or ∇h) in the face frame (canonical units, g in canonical
