@@ -13,12 +13,12 @@
 
 #include "core/input_error.h"
 #include "io/io.h"
-#include "problems/generate.h"
-#include "problems/registry.h"
-#include "problems/run.h"
-#include "problems/mesh_inputs.h"
-#include "problems/schema.h"
-#include "problems/spec.h"
+#include "problems/commands/generate.h"
+#include "problems/declarations/registry.h"
+#include "problems/commands/run.h"
+#include "problems/runtime/mesh_inputs.h"
+#include "problems/spec/schema.h"
+#include "problems/spec/spec.h"
 
 namespace archgeo {
 namespace {

@@ -18,7 +18,7 @@
 
 #include "core/input_error.h"
 #include "io/output_files.h"
-#include "problems/spec.h"
+#include "problems/spec/spec.h"
 
 extern char** environ;
 

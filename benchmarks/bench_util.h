@@ -30,9 +30,9 @@
 #include <vector>
 
 #include "core/input_error.h"
-#include "problems/run.h"
+#include "problems/commands/run.h"
 #include "core/solver_options.h"
-#include "problems/spec.h"
+#include "problems/spec/spec.h"
 
 namespace bench {
 

@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "benchmarks/bench_util.h"
-#include "problems/generate.h"
+#include "problems/commands/generate.h"
 
 namespace {
 

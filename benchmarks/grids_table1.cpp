@@ -9,7 +9,7 @@
 // orthogonal, locally equilateral grids on parametric surfaces" (text in
 // ../shared/papers/force-directed-orthogonal-grids.md) it solves the example
 // spec examples/grid_<scene>.yaml as it is (the `grid` problem,
-// problems/grid.cpp, in process: ReadSpec + Solve, nothing written) with both
+// problems/declarations/grid.cpp, in process: ReadSpec + Solve, nothing written) with both
 // methods — least squares (the spec's terms and weights) and force (the
 // paper's Listing 1, the spec with method: force: d_o = d_b = d_l = 5%, L =
 // the mean initial edge length, stop on stall, plateau or 10 × 5000
@@ -36,9 +36,9 @@
 
 #include "analysis/validity.h"
 #include "bench_util.h"
-#include "problems/model.h"
-#include "problems/solve.h"
-#include "problems/spec.h"
+#include "problems/runtime/model.h"
+#include "problems/runtime/solve.h"
+#include "problems/spec/spec.h"
 
 namespace {
 

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Pellis et al. 2019, Fig. 19: statistics of minimising the total absolute
 // curvature C(Φ) = ∫ |κ1| + |κ2| dA under boundary conditions, with the
-// total_absolute_curvature builder (problems/total_absolute_curvature.cpp) and
+// total_absolute_curvature builder (problems/declarations/total_absolute_curvature.cpp) and
 // the settings of examples/total_absolute_curvature.yaml, in this process
 // (ReadSpec + RunSpec; T = wall clock of the whole run, CPU = its user +
 // system time over all threads: on a shared machine T grows with the load).

@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Reproduces the statistics table of [Pellis 2019, Fig. 20] (mesh design)
-// for the smooth_mesh builder (problems/smooth_mesh.cpp, §5.1), and checks the
+// for the smooth_mesh builder (problems/declarations/smooth_mesh.cpp, §5.1), and checks the
 // acceptance of examples/smooth_mesh.yaml: on the two Directional meshes it
 // lowers E and the number of self-intersecting normal pyramids with a
 // largest vertex displacement ≤ 0.5% of the bounding-box diagonal.

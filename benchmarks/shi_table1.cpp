@@ -32,7 +32,7 @@
 //    diagonal, the patchwork file written; as examples/hnet.yaml runs it
 //    (its own reference) the targets: star planarity ≤ 1e-6, α_max
 //    ≤ 0.5°, displacement ≤ 0.1%. The file is an A-net along its diagonals
-//    (problems/hnet_net.h): hnet.net: auto solves its colour-1 diagonal net,
+//    (problems/declarations/hnet_net.h): hnet.net: auto solves its colour-1 diagonal net,
 //    the flatter one, with 9 holes ("solved" column; "star in" is the file's
 //    own stars).
 // Scherk is printed without a bound (no paper row of the same surface).

@@ -19,7 +19,7 @@
 
 #include "benchmarks/bench_util.h"
 #include "energies/pq_diagonal.h"
-#include "problems/generate.h"
+#include "problems/commands/generate.h"
 
 namespace {
 

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the value of a structured setting (Type::kCustom, e.g. `handles`,
 // `surface`, `terms.<t>.select`) in plain C++: the spec reader
-// (problems/spec.cpp) turns what the user wrote into a tree of scalars, lists
+// (problems/spec/spec.cpp) turns what the user wrote into a tree of scalars, lists
 // and mappings, each node with its line, and each scalar with its readings as
 // a number, an integer and a boolean under YAML's rules. Problems read their
 // own forms from it and name the place of an error (Settings::ErrorAt)

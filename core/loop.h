@@ -14,7 +14,7 @@
 //       stop on tolerances met, rest, patience; else continue (continuation)
 //   restore the best round if the stage keeps the best
 //
-// The loop knows no mesh type: it works through a Model (problems/model.h
+// The loop knows no mesh type: it works through a Model (problems/runtime/model.h
 // implements it over the CGAL store, the reference and the measures).
 #pragma once
 

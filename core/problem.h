@@ -5,7 +5,7 @@
 // stops, continuation, rest rules, undo, keep-best), the measures it logs,
 // and a few hooks for what is specific to its paper (e.g. the H-net step 2
 // between the rounds of Shi's step 3). One loop (core/loop.h) runs every
-// declaration; problems/<name>.cpp holds one, listed in problems/registry.cpp.
+// declaration; problems/declarations/<name>.cpp holds one, listed in problems/declarations/registry.cpp.
 #pragma once
 
 #include <functional>
@@ -38,7 +38,7 @@ struct Tolerance {
   bool stops = true;    // false: it only drives continuation (the stage runs on)
 };
 
-class HookContext;  // defined by the problem layer (problems/model.h)
+class HookContext;  // defined by the problem layer (problems/runtime/model.h)
 using Hook = std::function<void(HookContext&)>;
 
 // A round that is not a Ceres solve (e.g. the iterations of a force-directed
@@ -90,7 +90,7 @@ struct Stage {
   // of the bounding-box diagonal (the value of `guard_key`; 0 = none): a
   // vertex beyond half the bound gets an anchor to its input position
   // (weight 1, ×10 per further round), a vertex beyond the bound is put back
-  // inside it unless it is a vertex of a polygon (see problems/model.h).
+  // inside it unless it is a vertex of a polygon (see problems/runtime/model.h).
   std::string guard_key;
   std::vector<std::string> logged;  // measures in the round log and progress lines
   Hook before_round, after_round;
@@ -123,8 +123,8 @@ struct ProblemDecl {
   std::function<std::vector<Stage>(const Settings&)> stages;
   std::set<std::string> analyses;  // report sections: "planarity", "smoothness", "hnet"
   std::vector<std::string> output_keys;  // extra `output.<key>` files it writes
-  std::string colors = "planarity";  // face colours of the output PLY (problems/colors.h)
-  // The problem's own measures (besides problems/measures.h).
+  std::string colors = "planarity";  // face colours of the output PLY (problems/report/colors.h)
+  // The problem's own measures (besides problems/runtime/measures.h).
   std::map<std::string, std::function<double(HookContext&)>> measures;
   // After the spec is read: checks across keys (throw Settings::Error).
   std::function<void(const Settings&)> check;

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — settings declared once: every key of a problem spec is a Key
 // (name, type, default, range or choices, one-line doc) in a Schema. Reading
-// and validation (problems/spec_reader.h), the report's settings, `archgeo
+// and validation (problems/spec/spec.h), the report's settings, `archgeo
 // spec PROBLEM` and the key tables (docs/keys.md) all come from these declarations.
 //
 // No CGAL and no YAML here: a Settings object holds plain values, and where

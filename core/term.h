@@ -68,7 +68,7 @@ struct TermSpec {
 };
 
 // What a term's functions see. Implemented by the problem layer over the
-// store (problems/model.h); all lengths in the canonical frame.
+// store (problems/runtime/model.h); all lengths in the canonical frame.
 class TermContext {
  public:
   virtual ~TermContext() = default;

@@ -8,7 +8,7 @@
 // `guard_key`, e.g. smooth_mesh's tolerance.displacement_relative): after a
 // round the loop gives each vertex beyond half the bound the weight g_v = 1,
 // then ×10 every further round it stays there, and puts a vertex beyond the
-// bound back inside it (core/loop.h, problems/model.h Guard). Vertices with
+// bound back inside it (core/loop.h, problems/runtime/model.h Guard). Vertices with
 // g_v = 0 get no residual. Functor: the Anchor of energies/anchor.h; the same
 // units, singular cases (none) and invariances.
 //   [archgeo; the bounded-movement requirement of Pellis 2019, §5.1's

@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// What the grid problem (problems/grid.cpp) shares with its terms
+// What the grid problem (problems/declarations/grid.cpp) shares with its terms
 // (grid_orthogonality, grid_equilaterality, grid_quad_equilaterality,
 // grid_boundary, grid_fairness): the parametric surface and the ideal edge
 // length L, both in file units, through TermContext::grid(). Not a cost

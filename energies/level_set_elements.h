@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The per-element data of the level-set terms (level_set_*.h), shared by the
 // terms' adders and the problems that build their element sets
-// (problems/level_sets.cpp). Not a cost functor.
+// (problems/declarations/level_sets.cpp). Not a cost functor.
 //
 // Blocks (global, declared by the problem): "level_set_g", "level_set_h" —
 // one value per wedge of the cut graph (fields/cuts.h; one per vertex without

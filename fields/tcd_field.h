@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — a TCD field on a triangle mesh as the problems use it
-// (problems/conjugate_field.cpp, level_sets.cpp, conjugate_layout.cpp): the
+// (problems/declarations/conjugate_field.cpp, level_sets.cpp, conjugate_layout.cpp): the
 // geometry it lives on (face frames, frame transport, curvature per face) and
 // its evaluation (the conjugate pair of every face, statistics,
 // singularities) [Zadravec 2010, §2–3].

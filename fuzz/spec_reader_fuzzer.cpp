@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer harness: the YAML spec reader, archgeo::ReadSpec(path, overrides)
-// of problems/spec.h, on arbitrary bytes written to a temporary file (ReadSpec
+// of problems/spec/spec.h, on arbitrary bytes written to a temporary file (ReadSpec
 // reads a path; it opens no other file).
 //
 // Contract checked: every input either gives a spec or throws
@@ -17,7 +17,7 @@
 #include <string>
 
 #include "core/input_error.h"
-#include "problems/spec.h"
+#include "problems/spec/spec.h"
 
 namespace {
 

@@ -4,7 +4,7 @@
 // (`archgeo render`, output.image). Drawn with cairo (Debian libcairo2):
 // orthographic view, painter's algorithm (faces sorted back to front), flat
 // shading, one colour bar with the scale's label, units and red value.
-// No CGAL: meshes come as plain arrays (problems/picture.h converts).
+// No CGAL: meshes come as plain arrays (problems/report/picture.h converts).
 //
 // Camera (shared by every panel, so before/after line up): the principal
 // axes of the first panel's vertices; the view looks along the axis of least

@@ -13,8 +13,8 @@
 #include "energies/convexity.h"
 #include "energies/autodiff.h"
 #include "energies/min_edge_length.h"
-#include "problems/run.h"
-#include "problems/spec.h"
+#include "problems/commands/run.h"
+#include "problems/spec/spec.h"
 #include "tests/energy_checks.h"
 #include "tests/scratch_dir.h"
 

@@ -16,9 +16,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "problems/generate.h"
-#include "problems/run.h"
-#include "problems/spec.h"
+#include "problems/commands/generate.h"
+#include "problems/commands/run.h"
+#include "problems/spec/spec.h"
 #include "tests/scratch_dir.h"
 
 namespace archgeo {

@@ -21,11 +21,11 @@
 #include "core/input_error.h"
 #include "io/io.h"
 #include "mesh/similarity.h"
-#include "problems/model.h"
-#include "problems/registry.h"
-#include "problems/run.h"
-#include "problems/schema.h"
-#include "problems/spec.h"
+#include "problems/runtime/model.h"
+#include "problems/declarations/registry.h"
+#include "problems/commands/run.h"
+#include "problems/spec/schema.h"
+#include "problems/spec/spec.h"
 #include "tests/scratch_dir.h"
 
 namespace archgeo {

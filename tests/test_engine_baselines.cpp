@@ -26,8 +26,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "problems/run.h"
-#include "problems/spec.h"
+#include "problems/commands/run.h"
+#include "problems/spec/spec.h"
 #include "tests/scratch_dir.h"
 
 namespace archgeo {

@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 // End-to-end runs of the field pipeline's problems [Zadravec 2010, Fig. 1]
-// (problems/conjugate_field.cpp, level_sets.cpp, conjugate_layout.cpp), with
+// (problems/declarations/conjugate_field.cpp, level_sets.cpp, conjugate_layout.cpp), with
 // bounds from analytic surfaces and the paper:
 //  - conjugate_field: the principal field of a surface of revolution and of an
 //    ellipsoid patch within 2° (mean) of the analytic principal directions; a
@@ -33,10 +33,10 @@
 #include "generators/generators.h"
 #include "core/input_error.h"
 #include "io/io.h"
-#include "problems/field_pipeline.h"
-#include "problems/run.h"
-#include "problems/solve.h"
-#include "problems/spec.h"
+#include "problems/declarations/field_pipeline.h"
+#include "problems/commands/run.h"
+#include "problems/runtime/solve.h"
+#include "problems/spec/spec.h"
 #include "scratch_dir.h"
 
 namespace archgeo {

@@ -12,7 +12,7 @@
 
 #include "core/input_error.h"
 #include "io/io.h"
-#include "problems/spec.h"
+#include "problems/spec/spec.h"
 
 namespace archgeo {
 namespace ARCHGEO_UNITY_ID {

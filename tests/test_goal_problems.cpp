@@ -29,9 +29,9 @@
 #include "generators/smoothness_surfaces.h"
 #include "mesh/topology.h"
 #include "mesh/vec3.h"
-#include "problems/generate.h"
-#include "problems/solve.h"
-#include "problems/spec.h"
+#include "problems/commands/generate.h"
+#include "problems/runtime/solve.h"
+#include "problems/spec/spec.h"
 #include "tests/scratch_dir.h"
 
 namespace archgeo {

@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// End to end: the `grid` problem (problems/grid.cpp) — grids on parametric
+// End to end: the `grid` problem (problems/declarations/grid.cpp) — grids on parametric
 // surfaces [force-directed grids paper]:
 //  (a) a plane grid that is already orthogonal and equilateral stays put
 //      (MDO, ADO < 1e-9°), with least squares and with the force method;
@@ -40,10 +40,10 @@
 #include <nlohmann/json.hpp>
 
 #include "core/input_error.h"
-#include "problems/model.h"
-#include "problems/run.h"
-#include "problems/solve.h"
-#include "problems/spec.h"
+#include "problems/runtime/model.h"
+#include "problems/commands/run.h"
+#include "problems/runtime/solve.h"
+#include "problems/spec/spec.h"
 #include "surfaces/surface.h"
 #include "surfaces/surface_factory.h"
 #include "tests/scratch_dir.h"

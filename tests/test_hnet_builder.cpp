@@ -23,9 +23,9 @@
 #include "io/io.h"
 #include "analysis/metrics.h"
 #include "mesh/topology.h"
-#include "problems/hnet_net.h"
-#include "problems/run.h"
-#include "problems/spec.h"
+#include "problems/declarations/hnet_net.h"
+#include "problems/commands/run.h"
+#include "problems/spec/spec.h"
 #include "scratch_dir.h"
 
 namespace archgeo {

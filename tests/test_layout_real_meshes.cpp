@@ -31,8 +31,8 @@
 #include <nlohmann/json.hpp>
 
 #include "io/io.h"
-#include "problems/run.h"
-#include "problems/spec.h"
+#include "problems/commands/run.h"
+#include "problems/spec/spec.h"
 #include "scratch_dir.h"
 #include "make_mesh.h"
 

@@ -29,7 +29,7 @@
 #include "generators/generators.h"
 #include "analysis/metrics.h"
 #include "mesh/similarity.h"
-#include "problems/solve.h"
+#include "problems/runtime/solve.h"
 #include "tests/scratch_dir.h"
 #include "tests/shell.h"
 

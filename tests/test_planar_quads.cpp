@@ -16,7 +16,7 @@
 #include "analysis/metrics.h"
 #include "geometry/reference.h"
 #include "mesh/similarity.h"
-#include "problems/solve.h"
+#include "problems/runtime/solve.h"
 
 namespace archgeo {
 namespace ARCHGEO_UNITY_ID {

@@ -21,8 +21,8 @@
 #include <string>
 #include <vector>
 
-#include "problems/registry.h"
-#include "problems/schema.h"
+#include "problems/declarations/registry.h"
+#include "problems/spec/schema.h"
 
 namespace archgeo {
 namespace ARCHGEO_UNITY_ID {

@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Pictures and coloured outputs (issue 15): the per-face value of every
-// problem and its red value (problems/colors.h), the PLY's named float face
+// problem and its red value (problems/report/colors.h), the PLY's named float face
 // property read back by Debian's meshio (python3-meshio) and by archgeo's own
 // reader, and `archgeo render` / output.image PNGs decoded with cairo and
 // checked pixel by pixel (a planar grid is drawn green, a twisted one red).
@@ -20,8 +20,8 @@
 
 #include "io/io.h"
 #include "analysis/metrics.h"
-#include "problems/colors.h"
-#include "problems/spec.h"
+#include "problems/report/colors.h"
+#include "problems/spec/spec.h"
 #include "tests/scratch_dir.h"
 #include "tests/grid_obj.h"
 #include "tests/shell.h"

@@ -20,9 +20,9 @@
 #include "analysis/metrics.h"
 #include "analysis/smoothness_metrics.h"
 #include "geometry/principal_edges.h"
-#include "problems/run.h"
+#include "problems/commands/run.h"
 #include "mesh/elements.h"
-#include "problems/spec.h"
+#include "problems/spec/spec.h"
 #include "tests/scratch_dir.h"
 
 namespace archgeo {

@@ -7,9 +7,9 @@
 #include <fstream>
 
 #include "core/input_error.h"
-#include "problems/registry.h"
-#include "problems/schema.h"
-#include "problems/spec.h"
+#include "problems/declarations/registry.h"
+#include "problems/spec/schema.h"
+#include "problems/spec/spec.h"
 #include "tests/scratch_dir.h"
 
 namespace archgeo {

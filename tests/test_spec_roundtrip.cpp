@@ -13,11 +13,11 @@
 #include <vector>
 
 #include "core/input_error.h"
-#include "problems/generate.h"
-#include "problems/registry.h"
-#include "problems/run.h"
-#include "problems/schema.h"
-#include "problems/spec.h"
+#include "problems/commands/generate.h"
+#include "problems/declarations/registry.h"
+#include "problems/commands/run.h"
+#include "problems/spec/schema.h"
+#include "problems/spec/spec.h"
 #include "tests/scratch_dir.h"
 
 namespace archgeo {

@@ -13,8 +13,8 @@
 #include "generators/smoothness_surfaces.h"
 #include "mesh/subdivision.h"
 #include "mesh/topology.h"
-#include "problems/run.h"
-#include "problems/spec.h"
+#include "problems/commands/run.h"
+#include "problems/spec/spec.h"
 #include "tests/scratch_dir.h"
 
 namespace archgeo {

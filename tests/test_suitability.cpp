@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Input suitability warnings (problems/suitability.h), end to end: each
+// Input suitability warnings (problems/declarations/suitability.h), end to end: each
 // problem warns, before solving and in the summary, when its input net is far
 // from what it can make buildable, with the figures in details.suitability,
 // and stays quiet on the inputs it is made for:
@@ -18,8 +18,8 @@
 
 #include "generators/generators.h"
 #include "io/io.h"
-#include "problems/run.h"
-#include "problems/spec.h"
+#include "problems/commands/run.h"
+#include "problems/spec/spec.h"
 #include "scratch_dir.h"
 
 namespace archgeo {

@@ -39,9 +39,9 @@
 #include "analysis/smoothness_metrics.h"
 #include "mesh/topology.h"
 #include "mesh/vec3.h"
-#include "problems/field_pipeline.h"
-#include "problems/solve.h"
-#include "problems/spec.h"
+#include "problems/declarations/field_pipeline.h"
+#include "problems/runtime/solve.h"
+#include "problems/spec/spec.h"
 #include "tests/make_mesh.h"
 #include "tests/scratch_dir.h"
 

@@ -17,9 +17,9 @@
 #include "analysis/smoothness_metrics.h"
 #include "generators/smoothness_surfaces.h"
 #include "mesh/topology.h"
-#include "problems/run.h"
-#include "problems/spec.h"
-#include "problems/measures.h"
+#include "problems/commands/run.h"
+#include "problems/spec/spec.h"
+#include "problems/runtime/measures.h"
 #include "tests/scratch_dir.h"
 
 namespace archgeo {

@@ -23,8 +23,8 @@
 #include "generators/generators.h"
 #include "io/io.h"
 #include "geometry/reference.h"
-#include "problems/run.h"
-#include "problems/spec.h"
+#include "problems/commands/run.h"
+#include "problems/spec/spec.h"
 #include "scratch_dir.h"
 
 namespace archgeo {

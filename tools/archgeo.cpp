@@ -35,14 +35,14 @@
 #include "bench/bench.h"
 #include "core/input_error.h"
 #include "io/output_files.h"
-#include "problems/darboux.h"
-#include "problems/generate.h"
-#include "problems/picture.h"
+#include "problems/commands/darboux.h"
+#include "problems/commands/generate.h"
+#include "problems/report/picture.h"
 #include "energies/registry.h"
-#include "problems/registry.h"
-#include "problems/run.h"
-#include "problems/schema.h"
-#include "problems/spec.h"
+#include "problems/declarations/registry.h"
+#include "problems/commands/run.h"
+#include "problems/spec/schema.h"
+#include "problems/spec/spec.h"
 
 namespace {
 

@@ -1,0 +1,583 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "problems/commands/run.h"
+#include "problems/runtime/mesh_inputs.h"
+#include "energies/registry.h"
+
+#include <glog/logging.h>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <cstdio>
+#include <functional>
+#include <future>
+#include <map>
+#include <optional>
+#include <set>
+
+#include "core/solver_options.h"
+#include "core/input_error.h"
+#include "io/io.h"
+#include "analysis/metrics.h"
+#include "io/output_files.h"
+#include "geometry/reference.h"
+#include "mesh/similarity.h"
+#include "analysis/validity.h"
+#include "problems/report/analysis.h"
+#include "problems/report/colors.h"
+#include "problems/declarations/hnet_net.h"
+#include "problems/report/picture.h"
+#include "problems/runtime/model.h"
+#include "problems/report/report.h"
+#include "problems/runtime/solve.h"
+
+namespace archgeo {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double Since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// "before -> after (change %)" of every measure of the first stage's log.
+std::string MeasureHeadline(const LoopResult& r) {
+  if (r.log.empty()) return "";
+  const RoundLog& first = r.log.front();
+  const RoundLog* out = &r.log.back();
+  for (const RoundLog& row : r.log) {
+    if (row.round == r.output_round) out = &row;
+  }
+  std::string text;
+  for (const auto& [name, before] : first.measures) {
+    const auto it = out->measures.find(name);
+    if (it == out->measures.end()) continue;
+    char line[200];
+    std::snprintf(line, sizeof line, "  %s %.6g -> %.6g%s\n", name.c_str(), before, it->second,
+                  before != 0 ? (" (" + std::to_string(int(std::lround(
+                                            100.0 * (it->second - before) / std::abs(before)))) +
+                                 "%)").c_str()
+                              : "");
+    text += line;
+  }
+  return text.empty() ? "" : "measures (canonical frame: input mean edge length 1), input -> output:\n" + text;
+}
+
+// The problem's output blocks, per element, in file units.
+nlohmann::json BlocksJson(const Store& store, const Similarity& frame) {
+  nlohmann::json blocks = nlohmann::json::object();
+  for (const std::string& name : store.Names()) {
+    const BlockDecl& decl = store.Decl(name);
+    if (!decl.output) continue;
+    const char* on = store.IsGlobal(name)       ? "global"
+                     : decl.on == Site::kVertex ? "vertex"
+                     : decl.on == Site::kFace   ? "face"
+                                                : "edge";
+    blocks[name] = {{"on", on},
+                    {"width", decl.width},
+                    {"doc", decl.doc},
+                    {"values", store.InFileUnits(name, frame)}};
+  }
+  return blocks;
+}
+
+// Measures that count things (written as JSON integers in the round log).
+bool IsCountMeasure(const std::string& name) {
+  return name == "self_intersecting_pyramids" || name == "bad_saddles" ||
+         name == "saddle_violations";
+}
+
+// The round log with counts as integers (RoundLog keeps every measure as a
+// double).
+nlohmann::json RoundsJson(const nlohmann::json& rounds) {
+  nlohmann::json out = rounds;
+  for (nlohmann::json& row : out) {
+    if (!row.contains("measures")) continue;
+    for (auto& [name, value] : row["measures"].items()) {
+      if (IsCountMeasure(name) && value.is_number() && std::isfinite(value.get<double>())) {
+        value = std::llround(value.get<double>());
+      }
+    }
+  }
+  return out;
+}
+
+// Per-face values (file order of the output's faces) and per-vertex
+// displacement (when the output has the input's vertices), for output.arrays.
+nlohmann::json ArraysJson(const FaceValues& values, const Mesh& output, const Mesh& input) {
+  nlohmann::json face = nlohmann::json::array();
+  for (FaceIndex f : output.faces()) face.push_back(values.values[f.idx()]);
+  nlohmann::json arrays = {{"face", {{values.name, face}}}, {"vertex", nlohmann::json::object()}};
+  if (output.number_of_vertices() == input.number_of_vertices()) {
+    nlohmann::json displacement = nlohmann::json::array();
+    for (VertexIndex v : output.vertices()) {
+      displacement.push_back(std::sqrt(CGAL::squared_distance(output.point(v), input.point(v))));
+    }
+    arrays["vertex"]["displacement"] = displacement;
+  }
+  return arrays;
+}
+
+// Outputs written in one format only: another name would hide the content
+// (a PLY patchwork named .stl), so it is refused before any work.
+void CheckOutputName(const Settings& s, const std::string& key) {
+  const std::string& path = s.String(key);
+  if (key == "output.mesh" || key == "output.layout" || key == "output.grid") {
+    try {
+      CheckMeshExtension(path);
+    } catch (const InputError& e) {
+      throw s.Error(key, "'" + path + "': " + e.message());
+    }
+  }
+  static const std::map<std::string, std::vector<std::string>> kFormats = {
+      {"output.image", {".png", ".html"}},
+      {"output.patchwork", {".ply"}},
+      {"output.rulings", {".obj"}},
+      {"output.field", {".ply"}}};
+  const auto format = kFormats.find(key);
+  if (format == kFormats.end()) return;
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  const std::vector<std::string>& allowed = format->second;
+  if (std::find(allowed.begin(), allowed.end(), extension) != allowed.end()) return;
+  std::string names;
+  for (const std::string& a : allowed) names += (names.empty() ? "" : " or ") + a;
+  throw s.Error(key, "'" + path + "': this output is written as " + names + " only: use a " +
+                         names + " name");
+}
+
+ReadLimits LimitsOfSpec(const Settings& s) {
+  ReadLimits limits;
+  limits.max_vertices = size_t(s.Integer("limits.max_vertices"));
+  limits.max_faces = size_t(s.Integer("limits.max_faces"));
+  limits.max_face_degree = size_t(s.Integer("limits.max_face_degree"));
+  limits.max_file_bytes = std::uint64_t(s.Integer("limits.max_file_bytes"));
+  return limits;
+}
+
+// The report's units section.
+nlohmann::json UnitsJson(bool derived, double scale) {
+  return {{"lengths", "file units"},
+          {"relative", derived ? "file units / bounding-box diagonal of the net "
+                                 "solved (before solving)"
+                               : "file units / bounding-box diagonal of the input"},
+          {"bbox_diagonal", scale},
+          {"angles", "degrees"},
+          {"rounds", "measures and max_move in the canonical frame (input mean edge "
+                     "length = 1); round 0 = the input"},
+          {"objective", "0.5 * sum_terms w * sum r^2, in the canonical frame (unit mean "
+                        "edge length), at the last linearisation"}};
+}
+
+// The per-vertex displacement from the input (file units) as a PLY
+// property, when the output has the input's vertices.
+std::vector<PlyValues> DisplacementValues(const Mesh& output, const Mesh& input) {
+  std::vector<PlyValues> values;
+  if (output.number_of_vertices() != input.number_of_vertices()) return values;
+  PlyValues& d = values.emplace_back();
+  d.name = "displacement";
+  d.values.assign(output.num_vertices(), 0.0);
+  for (VertexIndex v : output.vertices()) {
+    d.values[v.idx()] = std::sqrt(CGAL::squared_distance(output.point(v), input.point(v)));
+  }
+  return values;
+}
+
+// One `archgeo solve` run, stage by stage: stage the outputs, read the
+// inputs, solve, measure the input, report the solve, check validity, write
+// and measure the output, summarise. Each stage's wall time goes to the
+// report's `seconds`.
+class SpecRun {
+ public:
+  SpecRun(const ProblemSpec& spec, const ProgressSink& progress, const MeshInputs& meshes)
+      : spec_(spec), s_(spec.settings), d_(*spec.declaration), progress_(progress),
+        meshes_(meshes) {}
+
+  RunResult Run() {
+    StageOutputs();
+    ReadInputs();
+    SolveAndMeasureInput();
+    ReportSolve();
+    if (!solution_->loop.usable) return NotUsable();
+    if (!Valid()) return run_;
+    WriteAndMeasureOutput();
+    run_.summary = Summary();
+    return run_;
+  }
+
+ private:
+  // Outputs are checked and staged before any work; no output may name an
+  // input (the spec, the mesh, the reference, files the problem reads).
+  void StageOutputs() {
+    for (const Key& k : s_.schema().keys()) {
+      if (k.type != Type::kOutputPath || s_.String(k.name).empty()) continue;
+      CheckOutputName(s_, k.name);
+      temporaries_[k.name] = staged_.Stage(s_.String(k.name), k.name);
+    }
+  }
+
+  static std::vector<std::string> Inputs(const ProblemSpec& spec) {
+    std::vector<std::string> inputs = spec.InputFiles();
+    inputs.push_back(spec.spec_path);
+    return inputs;
+  }
+
+  // Calls `write`; an error a writer reports about a temporary names the
+  // user's path.
+  void Writing(const std::function<void()>& write) const {
+    try {
+      write();
+    } catch (const InputError& e) {
+      for (const auto& [key, temporary] : temporaries_) {
+        if (e.file() == temporary) throw InputError(s_.String(key), e.line(), key, e.message());
+      }
+      throw;
+    }
+  }
+
+  void ReadInputs() {
+    const ReadLimits limits = LimitsOfSpec(s_);
+    read_ = d_.makes_input ? Mesh()
+            : meshes_.mesh ? *meshes_.mesh
+                           : ReadMesh(spec_.mesh(), &info_, limits);
+    if (meshes_.mesh) info_.format = "memory";
+    if (meshes_.reference) {
+      reference_mesh_ = std::make_unique<Mesh>(*meshes_.reference);
+    } else if (!spec_.reference().empty()) {
+      reference_mesh_ = std::make_unique<Mesh>(ReadMesh(spec_.reference(), nullptr, limits));
+    }
+    seconds_["read"] = Since(start_);
+  }
+
+  // The result's validity against the net it came from (analysis/validity.h)
+  // needs no reference: it is checked on a second thread while the
+  // reference's trees are built and the input is measured (mostly serial).
+  void SolveAndMeasureInput() {
+    const auto solve_start = Clock::now();
+    solution_ = Solve(spec_, read_, reference_mesh_.get(), progress_);
+    solve_seconds_ = Since(solve_start);
+    seconds_["solve"] = solve_seconds_;
+    const Mesh& input = solution_->input;
+    if (solution_->loop.usable) {
+      validity_check_ = std::async(std::launch::async, [this] {
+        return CheckValidity(solution_->output, &solution_->input, LimitsOf(s_), true);
+      });
+    }
+    const auto setup_start = Clock::now();
+    reference_ = std::make_unique<ReferenceSurface>(reference_mesh_ ? *reference_mesh_ : input);
+    // Without a separate reference the input is its own reference surface:
+    // every vertex lies on it, so its distances to it are 0 and need not be
+    // measured.
+    before_ = ComputeMetrics(input, reference_mesh_ ? reference_.get() : nullptr, &input);
+    if (!reference_mesh_) {
+      before_.prox_max = before_.surface_distance_max = before_.surface_distance_mean = 0;
+      before_.boundary_prox_max = reference_->HasBoundary() ? 0 : -1;
+      before_.hausdorff = 0;
+    }
+    scale_ = before_.bbox_diagonal;
+    extra_before_ = Analyse(input, d_.analyses, HNetOptionsOf(s_));
+    seconds_["reference_and_metrics_before"] = Since(setup_start);
+  }
+
+  void ReportSolve() {
+    const LoopResult& solved = solution_->loop;
+    const WorkingNet& net = solution_->net;
+    nlohmann::json& rep = run_.report;
+    rep["schema_version"] = kReportSchemaVersion;
+    rep["archgeo"] = "solve";
+    rep["spec"] = spec_.spec_path;
+    rep["mesh"] = spec_.mesh();
+    rep["reference"] = spec_.reference().empty() ? spec_.mesh() : spec_.reference();
+    rep["problem"] = d_.name;
+    rep["input"] = {{"format", info_.format}, {"reoriented_faces", info_.reoriented_faces}};
+    rep["units"] = UnitsJson(net.derived, scale_);
+    rep["settings"] = s_.ToJson();
+    rep["blas"] = BlasLibrary();
+    rep["details"] = solution_->details;
+    if (!net.details.empty()) rep["details"]["net"] = net.details;  // a net the problem made
+    if (s_.Bool("output.blocks")) rep["blocks"] = BlocksJson(*solution_->store, solution_->frame);
+    if (s_.Integer("multiresolution.levels") > 0) {
+      rep["multiresolution"] = {{"scheme", s_.String("multiresolution.scheme")},
+                                {"levels", solution_->levels}};
+    }
+    rep["rounds"] = RoundsJson(solution_->rounds);
+    rep["output_round"] = solved.output_round;
+    rep["stop"] = solved.stop;
+    rep["usable"] = solved.usable;
+    rep["variables"] = solved.variables;
+    rep["residuals"] = solved.residuals;
+    rep["pcg"] = {{"rounds", solved.pcg_rounds}, {"cg_iterations", solved.cg_iterations}};
+    rep["iterations"] = {{"outer", solved.rounds}, {"inner", solved.iterations}};
+    rep["objective"] = solved.objective;
+    nlohmann::json tolerances = nlohmann::json::object();
+    for (const auto& [key, met] : solved.tolerances) {
+      tolerances[key] = {{"bound", s_.Number(key)}, {"met", met}};
+    }
+    rep["tolerances"] = tolerances;
+    rep["before"] = MetricsToJson(before_, scale_);
+    AnalysisToJson(extra_before_, scale_, rep["before"]);
+  }
+
+  RunResult NotUsable() {
+    const std::string& message = solution_->loop.message;
+    run_.exit_code = 3;
+    run_.report["message"] = message;
+    run_.summary = "archgeo: the solver found no usable solution: " + message +
+                   "\nnothing was written.\n";
+    return run_;
+  }
+
+  // The checks of analysis/validity.h and the problem's own
+  // (ProblemDecl::invalid), on the state written. False: exit 3, with the
+  // reasons in the summary.
+  bool Valid() {
+    validity_ = validity_check_.get();
+    nlohmann::json& v = run_.report["validity"];
+    v = validity_.ToJson();
+    v["restored_round"] = solution_->loop.restored_valid
+                              ? nlohmann::json(solution_->loop.output_round)
+                              : nlohmann::json(nullptr);
+    const std::string own = d_.invalid ? d_.invalid(solution_->hooks) : std::string();
+    v["problem"] = own.empty() ? nlohmann::json(nullptr) : nlohmann::json(own);
+    if (!own.empty()) v["valid"] = false;
+    if (validity_.valid() && own.empty()) return true;
+    run_.exit_code = 3;
+    run_.report["message"] = "the result is not valid";
+    run_.summary = "archgeo: the result is not valid (nothing was written):\n" +
+                   validity_.Reason() + own +
+                   "(limits: validity.* keys; the report's validity section lists every check)\n";
+    const nlohmann::json& details = solution_->details;
+    if (details.contains("suitability") && details["suitability"].contains("warning")) {
+      run_.summary += "WARNING (input suitability): " +
+                      details["suitability"]["warning"].get<std::string>() + "\n";
+    }
+    return false;
+  }
+
+  // The mesh file is written on a second thread while the output is
+  // measured (its staged temporary is committed only at the end).
+  std::future<void> StartMeshWrite(const FaceValues& face_values) {
+    if (!temporaries_.count("output.mesh")) return {};
+    return std::async(std::launch::async, [this, &face_values] {
+      const auto mesh_start = Clock::now();
+      const FaceColors colors = ColorsOf(face_values);
+      const std::vector<PlyValues> properties = {{face_values.name, face_values.values}};
+      const std::vector<PlyValues> vertex_values =
+          DisplacementValues(solution_->output, solution_->input);
+      Writing([&] {
+        WriteMesh(temporaries_.at("output.mesh"), solution_->output, &colors,
+                           s_.Bool("output.ascii_ply"), &properties, &vertex_values);
+      });
+      mesh_write_seconds_ = Since(mesh_start);
+    });
+  }
+
+  void MeasureOutput() {
+    const auto metrics_start = Clock::now();
+    const Mesh& output = solution_->output;
+    const Mesh& input = solution_->input;
+    const bool same_vertices = output.number_of_vertices() == input.number_of_vertices();
+    after_ = ComputeMetrics(output, reference_.get(), same_vertices ? &input : nullptr);
+    extra_after_ = Analyse(output, d_.analyses, HNetOptionsOf(s_));
+    run_.report["after"] = MetricsToJson(after_, scale_);
+    AnalysisToJson(extra_after_, scale_, run_.report["after"]);
+    seconds_["metrics_after"] = Since(metrics_start);
+  }
+
+  // The picture and the problem's own outputs (ProblemDecl::write).
+  void WriteOtherOutputs(const FaceValues& face_values) {
+    const Mesh& input = solution_->input;
+    if (temporaries_.count("output.image")) {
+      const FaceValues before = ComputeFaceValues(d_.colors, input, &input, &s_);
+      std::vector<PicturePanel> panels = {PanelOf(input, before.values, "input"),
+                                          PanelOf(solution_->output, face_values.values, "output")};
+      Writing([&] {
+        WriteView(temporaries_.at("output.image"), panels, ScaleOf(face_values), {},
+                  "output.image");
+      });
+    }
+    HookContext& hooks = solution_->hooks;
+    for (const auto& [key, temporary] : temporaries_) {
+      if (key != "output.mesh" && key != "output.report" && key != "output.image") {
+        hooks.temporaries[key.substr(std::string("output.").size())] = temporary;
+      }
+    }
+    if (d_.write && !hooks.temporaries.empty()) Writing([&] { d_.write(hooks); });
+  }
+
+  // The per-face value of the colours, the PLY properties and the picture;
+  // the input gives the scale where the problem has no tolerance for it.
+  void WriteAndMeasureOutput() {
+    bool tolerances_met = true;
+    for (const auto& [key, met] : solution_->loop.tolerances) tolerances_met &= met;
+    run_.exit_code = tolerances_met ? 0 : 4;
+    const Mesh& output = solution_->output;
+    const auto write_start = Clock::now();
+    const FaceValues face_values = ComputeFaceValues(d_.colors, output, &solution_->input, &s_);
+    std::future<void> mesh_written = StartMeshWrite(face_values);
+    const double write_seconds = Since(write_start);
+    MeasureOutput();
+
+    const auto rest_start = Clock::now();
+    nlohmann::json& rep = run_.report;
+    rep["colors"] = {{"value", face_values.name},  {"label", face_values.label},
+                     {"units", face_values.units}, {"red_at", face_values.red_at},
+                     {"red_from", face_values.red_from}};
+    if (s_.Bool("output.arrays")) rep["arrays"] = ArraysJson(face_values, output, solution_->input);
+    WriteOtherOutputs(face_values);
+    if (mesh_written.valid()) mesh_written.get();
+    rep["details"] = solution_->hooks.details;
+    const WorkingNet& net = solution_->net;
+    if (!net.details.empty()) rep["details"]["net"] = net.details;  // a net the problem made
+    seconds_["write"] = write_seconds + Since(rest_start);
+    seconds_["write_mesh"] = mesh_write_seconds_;
+    seconds_["total"] = Since(start_);
+    for (const auto& [k, v] : solution_->loop.seconds) seconds_[k] = v;
+    rep["seconds"] = seconds_;
+    if (temporaries_.count("output.report")) {
+      Writing([&] {
+        WriteTextFile(temporaries_.at("output.report"), rep.dump(2) + "\n", "output.report");
+      });
+    }
+    staged_.Commit();
+    if (meshes_.output) *meshes_.output = output;
+  }
+
+  std::string Summary() const {
+    const LoopResult& solved = solution_->loop;
+    char head[512];
+    std::snprintf(head, sizeof head,
+                  "%s: %d variables, %d residuals, %d rounds / %d iterations%s, %.2f s (solve "
+                  "%.2f s); stop: %s\n",
+                  d_.name.c_str(), solved.variables, solved.residuals, solved.rounds,
+                  solved.iterations,
+                  solved.pcg_rounds > 0
+                      ? (" (" + std::to_string(solved.pcg_rounds) + " rounds by PCG, " +
+                         std::to_string(solved.cg_iterations) + " CG steps)").c_str()
+                      : "",
+                  Since(start_), solve_seconds_, solved.stop.c_str());
+    char objective[128];
+    std::snprintf(objective, sizeof objective, "objective (canonical frame): %.6e\n",
+                  solved.objective.count("total") ? solved.objective.at("total") : 0.0);
+    return head + solution_->net.headline + ToleranceLines() + ValidityLines() +
+           solution_->headline + MeasureHeadline(solved) + objective +
+           FormatMetrics(before_, &after_, scale_) +
+           FormatAnalysis(extra_before_, &extra_after_, scale_);
+  }
+
+  std::string ToleranceLines() const {
+    std::string lines;
+    for (const auto& [key, met] : solution_->loop.tolerances) {
+      char line[200];
+      std::snprintf(line, sizeof line, "tolerance %s <= %g: %s\n", key.c_str(), s_.Number(key),
+                    s_.Number(key) <= 0 ? "off" : met ? "met" : "NOT met");
+      lines += line;
+    }
+    return lines;
+  }
+
+  std::string ValidityLines() const {
+    const LoopResult& solved = solution_->loop;
+    std::string lines = "validity: every check passed\n";
+    if (!validity_.Warnings().empty()) lines = "validity: valid; warnings:\n" + validity_.Warnings();
+    if (solved.restored_valid) {
+      lines += "the last round was not valid: the output is round " +
+               std::to_string(solved.output_round) + ", the last valid one\n";
+    }
+    if (run_.exit_code == 4) {
+      lines += "WARNING: a tolerance was not met (exit 4): the result is valid and written\n";
+    }
+    if (!ZeroedTerm().empty()) {
+      lines += "WARNING: ARCHGEO_ZERO_TERM=" + ZeroedTerm() +
+               ": that term's residuals were zeroed (mutation testing)\n";
+    }
+    return lines;
+  }
+
+  const Clock::time_point start_ = Clock::now();
+  const ProblemSpec& spec_;
+  const Settings& s_;
+  const ProblemDecl& d_;
+  const ProgressSink& progress_;
+  const MeshInputs& meshes_;
+  StagedOutputs staged_{Inputs(spec_)};
+  std::map<std::string, std::string> temporaries_;  // output key -> staged file
+  ReadInfo info_;
+  Mesh read_;
+  std::unique_ptr<Mesh> reference_mesh_;
+  std::unique_ptr<Solution> solution_;
+  std::future<Validity> validity_check_;
+  Validity validity_;
+  std::unique_ptr<ReferenceSurface> reference_;
+  Metrics before_, after_;
+  AnalysisRows extra_before_, extra_after_;
+  double scale_ = 0;
+  double solve_seconds_ = 0;
+  double mesh_write_seconds_ = 0;
+  nlohmann::json seconds_ = nlohmann::json::object();
+  RunResult run_;
+};
+
+}  // namespace
+
+RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
+  return RunSpec(spec, progress, MeshInputs{});
+}
+
+RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const MeshInputs& meshes) {
+  ConfigureThreading();
+  CHECK(spec.declaration) << "RunSpec: the spec has no problem (use ReadSpec)";
+  SolverOptions(spec.settings);  // a combination Ceres rejects fails before any work
+  return SpecRun(spec, progress, meshes).Run();
+}
+
+RunResult MeasureFiles(const std::string& mesh_path, const std::string& reference_path) {
+  const Mesh mesh = ReadMesh(mesh_path);
+  RunResult run;
+  Metrics metrics;
+  if (reference_path.empty()) {
+    metrics = ComputeMetrics(mesh, nullptr, nullptr);
+  } else {
+    const Mesh reference_mesh = ReadMesh(reference_path);
+    const ReferenceSurface reference(reference_mesh);
+    const bool same = reference_mesh.number_of_vertices() == mesh.number_of_vertices();
+    metrics = ComputeMetrics(mesh, &reference, same ? &reference_mesh : nullptr);
+  }
+  const AnalysisRows analysis = Analyse(mesh, ApplicableAnalyses(mesh));
+  // The validity checks of `archgeo solve` (default limits): against the
+  // reference when it has the mesh's topology (an output and its input),
+  // else those of the mesh alone (panels, short edges, self-intersections).
+  std::string validity_text;
+  nlohmann::json validity_json;
+  {
+    std::optional<Mesh> input;
+    if (!reference_path.empty()) input = ReadMesh(reference_path);
+    const bool paired = input && input->number_of_vertices() == mesh.number_of_vertices() &&
+                        input->number_of_faces() == mesh.number_of_faces();
+    const Validity v = CheckValidity(mesh, paired ? &*input : nullptr, ValidityLimits{}, true);
+    validity_json = v.ToJson();
+    validity_json["against_reference"] = paired;
+    const std::string what =
+        paired ? "validity against the reference"
+               : input ? "validity of the mesh alone (the reference has another topology: no "
+                         "flips, creases or shortened edges compared)"
+                       : "validity of the mesh alone";
+    validity_text = what + (v.valid() ? ": every hard check passed\n" : ": NOT valid\n" + v.Reason());
+    if (!v.Warnings().empty()) validity_text += "warnings:\n" + v.Warnings();
+  }
+  run.report = {{"schema_version", kReportSchemaVersion},
+                {"archgeo", "measure"},
+                {"mesh", mesh_path},
+                {"reference", reference_path},
+                {"units", {{"lengths", "file units"},
+                           {"relative", "file units / bounding-box diagonal of the mesh"},
+                           {"angles", "degrees"}}},
+                {"metrics", MetricsToJson(metrics, metrics.bbox_diagonal)}};
+  AnalysisToJson(analysis, metrics.bbox_diagonal, run.report["metrics"]);
+  if (!validity_json.is_null()) run.report["validity"] = validity_json;
+  run.summary = FormatMetrics(metrics, nullptr, metrics.bbox_diagonal) +
+                FormatAnalysis(analysis, nullptr, metrics.bbox_diagonal) + validity_text;
+  return run;
+}
+
+}  // namespace archgeo

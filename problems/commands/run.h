@@ -1,0 +1,42 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// archgeo — one `archgeo solve` run: read the spec's files, solve the problem
+// in the canonical frame (level by level with multiresolution) through the
+// one loop, measure before and after, write the outputs atomically.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "core/progress.h"
+#include "problems/spec/spec.h"
+
+namespace archgeo {
+
+// The version of the JSON report's layout (docs/report.schema.json):
+// raised whenever a key changes meaning or moves.
+inline constexpr int kReportSchemaVersion = 1;
+
+struct RunResult {
+  // 0: a valid result, every tolerance met; 4: a valid result written, a
+  // tolerance missed; 3: no usable or no valid result, nothing written (bad
+  // input throws InputError: exit 2).
+  int exit_code = 0;
+  nlohmann::json report;   // the JSON run report (also written to output.report)
+  std::string summary;     // human-readable summary for the terminal
+};
+
+// Throws InputError for bad input (nothing is written then).
+RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress);
+
+// Meshes in memory instead of the spec's files (the public API, python/):
+// problems/runtime/mesh_inputs.h.
+struct MeshInputs;
+RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const MeshInputs& meshes);
+
+// `archgeo measure`: metrics of `mesh_path`, against `reference_path` if not
+// empty (displacement too when the vertex counts agree). Throws InputError.
+RunResult MeasureFiles(const std::string& mesh_path, const std::string& reference_path);
+
+}  // namespace archgeo

@@ -1,0 +1,594 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// archgeo — `conjugate_field`: a field of transverse conjugate directions (a
+// TCD field) on a triangle mesh of the design surface [Zadravec 2010, §2–4].
+//
+// Per face f: the second fundamental form M_f from osculating jets
+// (jets.degree, jets.rings; fields/face_curvature.h), a smooth frame (e1, e2)
+// and z_M,f (Prop. 1); the variable block z_n (width 2, output) is z_N,f in
+// that frame. The pair (v, w) of a face is the pair of common conjugate
+// directions of M_f and N_f (Prop. 2): conjugate by construction, whatever
+// z_N is. Terms (½ Σ w r², unit-free):
+//   tcd_dirichlet              Σ_e w_e |ζ_f − R(2τ_fg) ζ_g|², ζ = z_N − e1
+//   tcd_transversality         λ_trans Σ_f ‖z_N − e1‖⁴ (eq. 1)
+//   tcd_singularity_avoidance  Σ_f Ψ(‖z_N − z_M‖/ρ) (off by default)
+//   tcd_singularity_placement  z_N = z_M at field.singularities
+//   tcd_prescribed_direction   z_N on the line of Prop. 1 of a prescribed
+//                              direction at field.directions / field.constraints
+// Start: z_N = e1, the principal directions (the paper's initialisation
+// optimises ‖z_N − e1‖² from zero, which gives the same). Without
+// constraints the principal field (ζ ≡ 0) is the minimum of the first two
+// terms, so the result is the principal field; constraints and avoidance move
+// it, and the Dirichlet energy spreads their effect smoothly.
+//
+// Moving a singularity (field.moves, §4 "local correction"): after the
+// global solve, a last stage `move` subtracts the σ-blended correction of
+// eq. 4 around each move's `from` face so that z_N = z_M at its `to` face
+// (fields/singularities.h MoveSingularity), then re-optimises only the faces
+// in each blend's transition band (0 < β < 1), every other face held.
+//
+// Report: the singularities (index, vertex, position in file units; index of
+// a vertex from the rotation of the bisector of (v, w) around it, §3), the
+// index sum, the conjugacy error max |vᵀ M w| / (|κ|max ‖v‖‖w‖) (≈ 1e-16, by
+// construction), the angles between v and w, the mean deviation from the
+// principal directions and the prescribed directions met.
+//
+// A surface without curvature (every face flat, e.g. a plane): every pair is
+// conjugate; the field falls back to the smooth orthogonal field of the face
+// frames (e1, e2) with a warning. Output: output.field (fields/field_io.h:
+// PLY line segments per face, singularities as points).
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <set>
+
+#include "core/problem.h"
+#include "energies/tcd_prescribed_direction.h"
+#include "fields/field_io.h"
+#include "fields/singularities.h"
+#include "core/input_error.h"
+#include "mesh/topology.h"
+#include "problems/declarations/field_pipeline.h"
+#include "problems/runtime/model.h"
+
+namespace archgeo::problems {
+namespace {
+
+using V2 = Eigen::Vector2d;
+using V3 = Eigen::Vector3d;
+
+struct Prescribed {
+  int face = 0;
+  V3 direction = V3::Zero();  // file units
+  std::string key;            // for messages
+  int line = 0;
+  bool from_file = false;
+};
+
+// A face index (0 to 2^30) if `node` is one.
+std::optional<int> FaceIndexOf(const CustomValue* node) {
+  if (!node || !node->integer || *node->integer < 0 || *node->integer > (1LL << 30)) {
+    return std::nullopt;
+  }
+  return int(*node->integer);
+}
+
+// field.directions: a list of {face: id, direction: [x, y, z]}.
+std::vector<Prescribed> ReadDirections(const Settings& s) {
+  std::vector<Prescribed> out;
+  const char* name = "field.directions";
+  if (!s.Given(name)) return out;
+  const CustomValue& list = *s.Custom(name);
+  const Origin at = s.Where(name);
+  if (!list.IsList()) throw s.ErrorAt(name, list, name, "expected a list of {face, direction}");
+  for (size_t i = 0; i < list.items.size(); ++i) {
+    const CustomValue& d = list.items[i];
+    const std::string key = std::string(name) + "[" + std::to_string(i) + "]";
+    if (!d.IsMap()) throw s.ErrorAt(name, d, key, "expected {face: id, direction: [x, y, z]}");
+    for (const CustomValue::Entry& e : d.entries) {
+      const std::string& k = e.key.text;
+      if (k != "face" && k != "direction") {
+        throw s.ErrorAt(name, e.key, key + "." + k, "unknown key (allowed: face, direction)");
+      }
+    }
+    const std::optional<int> face = FaceIndexOf(d.Find("face"));
+    if (!face) throw s.ErrorAt(name, d, key + ".face", "expected a face index ≥ 0");
+    const CustomValue* xyz = d.Find("direction");
+    if (!xyz || !xyz->IsList() || xyz->items.size() != 3) {
+      throw s.ErrorAt(name, d, key + ".direction", "expected [x, y, z]");
+    }
+    Prescribed p;
+    p.face = *face;
+    for (int k = 0; k < 3; ++k) {
+      const std::optional<double>& x = xyz->items[k].number;
+      if (!x || !std::isfinite(*x)) {
+        throw s.ErrorAt(name, xyz->items[k], key + ".direction", "expected a finite number");
+      }
+      p.direction[k] = *x;
+    }
+    p.key = key;
+    p.line = at.file == "--set" ? 0 : d.line;
+    out.push_back(p);
+  }
+  return out;
+}
+
+// field.moves: a list of {from: face, to: face, inner_radius: r1, outer_radius: r2}.
+struct Move {
+  int from = 0, to = 0;
+  double inner = 0, outer = 0;  // file units; 0 = default
+  std::string key;
+  int line = 0;
+};
+
+// One move of field.moves (the list checked by ReadMoves), `key` its place.
+Move ReadMove(const Settings& s, const CustomValue& m, const std::string& key) {
+  const char* name = "field.moves";
+  Move move;
+  move.key = key;
+  move.line = s.Where(name).file == "--set" ? 0 : m.line;
+  if (!m.IsMap()) {
+    throw s.ErrorAt(name, m, key, "expected {from: face, to: face, inner_radius, outer_radius}");
+  }
+  for (const CustomValue::Entry& e : m.entries) {
+    const std::string& k = e.key.text;
+    if (k != "from" && k != "to" && k != "inner_radius" && k != "outer_radius") {
+      throw s.ErrorAt(name, e.key, key + "." + k,
+                      "unknown key (allowed: from, to, inner_radius, outer_radius)");
+    }
+  }
+  for (const auto& [field, target] :
+       {std::make_pair("from", &move.from), std::make_pair("to", &move.to)}) {
+    const std::optional<int> face = FaceIndexOf(m.Find(field));
+    if (!face) throw s.ErrorAt(name, m, key + "." + field, "expected a face index ≥ 0");
+    *target = *face;
+  }
+  for (const auto& [field, target] : {std::make_pair("inner_radius", &move.inner),
+                                      std::make_pair("outer_radius", &move.outer)}) {
+    const CustomValue* radius = m.Find(field);
+    if (!radius) continue;
+    if (!radius->number || !std::isfinite(*radius->number) || *radius->number <= 0) {
+      throw s.ErrorAt(name, *radius, key + "." + field, "expected a length > 0 (file units)");
+    }
+    *target = *radius->number;
+  }
+  if (move.from == move.to) {
+    throw s.ErrorAt(name, m, key + ".to", "`to` is the `from` face: nothing to move");
+  }
+  if (move.inner > 0 && move.outer > 0 && move.outer <= move.inner) {
+    throw s.ErrorAt(name, m, key + ".outer_radius", "must be larger than inner_radius");
+  }
+  return move;
+}
+
+std::vector<Move> ReadMoves(const Settings& s) {
+  std::vector<Move> out;
+  if (!s.Given("field.moves")) return out;
+  const CustomValue& list = *s.Custom("field.moves");
+  if (!list.IsList()) {
+    throw s.ErrorAt("field.moves", list, "field.moves", "expected a list of {from, to}");
+  }
+  for (size_t i = 0; i < list.items.size(); ++i) {
+    out.push_back(ReadMove(s, list.items[i], "field.moves[" + std::to_string(i) + "]"));
+  }
+  return out;
+}
+
+JetOptions Jets(const Settings& s) {
+  JetOptions o;
+  o.degree = int(s.Integer("jets.degree"));
+  o.rings = int(s.Integer("jets.rings"));
+  return o;
+}
+
+// A 3-D direction in file units as a canonical direction.
+V3 ToCanonicalDirection(const Similarity& frame, const V3& d) {
+  V3 out;
+  for (int k = 0; k < 3; ++k) {
+    out[k] = frame.axes[k][0] * d.x() + frame.axes[k][1] * d.y() + frame.axes[k][2] * d.z();
+  }
+  return out;
+}
+
+std::uint8_t FaceFlags(const Mesh& mesh, const std::vector<bool>& boundary, FaceIndex f) {
+  for (VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+    if (boundary[v.idx()]) return kBoundary;
+  }
+  return 0;
+}
+
+std::vector<int> FaceVertices(const Mesh& mesh, FaceIndex f) {
+  std::vector<int> vs;
+  for (VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) vs.push_back(int(v.idx()));
+  return vs;
+}
+
+struct Constraints {
+  std::vector<int> placements;
+  std::vector<Move> moves;
+  bool moved = false;
+  nlohmann::json moves_done = nlohmann::json::array();
+  std::vector<std::pair<int, V2>> prescribed;  // face, direction in the face frame
+  int file_rows = 0, file_flagged = 0, file_skipped = 0;
+  int boundary_faces = 0;  // boundary tangents prescribed (field.boundary_alignment)
+};
+
+// The run's data: the input's field geometry and the validated constraints.
+struct FieldState : ProblemState {
+  FieldGeometry geometry;
+  Constraints constraints;
+};
+
+// Element sets, the start z_N = e1 and the validated constraints.
+void Init(HookContext& c) {
+  const Settings& s = *c.settings;
+  const Mesh& mesh = c.store->mesh();
+  FieldState& state = c.State<FieldState>();
+  state.geometry = ComputeFieldGeometry(mesh, Jets(s));
+  const FieldGeometry& g = state.geometry;
+  const int faces = int(mesh.number_of_faces());
+  const std::vector<bool> boundary = BoundaryVertices(mesh);
+  Constraints& con = state.constraints;
+  con = Constraints{};
+
+  auto no_face = [&](const std::string& key, long long id) {
+    return s.Error(key, "face " + std::to_string(id) + " does not exist: " +
+                            (s.String("mesh").empty() ? std::string("the mesh") : s.String("mesh")) +
+                            " has " + std::to_string(faces) + " faces (ids are 0-based)");
+  };
+  for (long long id : s.Integers("field.singularities")) {
+    if (id >= faces) throw no_face("field.singularities", id);
+    const FaceCurvature& k = g.curvature[size_t(id)];
+    if (!k.z_m_finite) {
+      throw s.Error("field.singularities",
+                    "face " + std::to_string(id) + " has mean curvature 0 (z_M at infinity): no "
+                    "singularity can be placed there");
+    }
+    if ((k.z_m - V2(1, 0)).norm() >= 1.0) {
+      throw s.Error("field.singularities",
+                    "face " + std::to_string(id) + " has K ≤ 0: singularities there are fixed by "
+                    "the surface [Zadravec 2010, Prop. 4]");
+    }
+    con.placements.push_back(int(id));
+  }
+
+  con.moves = ReadMoves(s);
+  for (const Move& m : con.moves) {
+    const Origin at = s.Where("field.moves");
+    for (const auto& [name, f] : {std::make_pair(".from", m.from), std::make_pair(".to", m.to)}) {
+      if (f >= faces) {
+        throw InputError(at.file, m.line, m.key + name,
+                         "face " + std::to_string(f) + " does not exist: the mesh has " +
+                             std::to_string(faces) + " faces (ids are 0-based)");
+      }
+    }
+    const FaceCurvature& k = g.curvature[size_t(m.to)];
+    if (!k.z_m_finite || (k.z_m - V2(1, 0)).norm() >= 1.0) {
+      throw InputError(at.file, m.line, m.key + ".to",
+                       "face " + std::to_string(m.to) + " has K ≤ 0 or mean curvature 0: no "
+                       "singularity can be moved there [Zadravec 2010, Prop. 4]");
+    }
+  }
+
+  std::vector<Prescribed> prescribed = ReadDirections(s);
+  for (const Prescribed& p : prescribed) {
+    if (p.face >= faces) {
+      const Origin at = s.Where("field.directions");
+      throw InputError(at.file, p.line, p.key + ".face",
+                       "face " + std::to_string(p.face) + " does not exist: the mesh has " +
+                           std::to_string(faces) + " faces (ids are 0-based)");
+    }
+  }
+  const std::string file = s.String("field.constraints");
+  if (!file.empty()) {
+    const Eigen::MatrixXd m = ReadDmat(file, "field.constraints");
+    if (m.rows() != faces || m.cols() < 4) {
+      throw InputError(file, 1, "field.constraints",
+                       "expected one row per face (" + std::to_string(faces) +
+                           ") and at least 4 columns (flag, direction); the file has " +
+                           std::to_string(m.rows()) + " x " + std::to_string(m.cols()));
+    }
+    con.file_rows = int(m.rows());
+    for (int f = 0; f < faces; ++f) {
+      if (m(f, 0) == 0) continue;
+      ++con.file_flagged;
+      Prescribed p;
+      p.face = f;
+      p.direction = V3(m(f, 1), m(f, 2), m(f, 3));
+      p.from_file = true;
+      prescribed.push_back(p);
+    }
+  }
+  for (const Prescribed& p : prescribed) {
+    const FaceIndex f(p.face);
+    const V2 d = ToFrame(g.frames, f, ToCanonicalDirection(c.frame, p.direction));
+    const double m[3] = {g.curvature[p.face].M(0, 0), g.curvature[p.face].M(0, 1),
+                         g.curvature[p.face].M(1, 1)};
+    V2 point, line;
+    const bool ok = d.norm() > 1e-9 * std::max(1e-300, p.direction.norm()) &&
+                    TcdPrescribedLine(m, d.data(), &point, &line);
+    if (!ok) {
+      if (p.from_file) {
+        ++con.file_skipped;
+        continue;
+      }
+      const Origin at = s.Where("field.directions");
+      throw InputError(at.file, p.line, p.key + ".direction",
+                       "face " + std::to_string(p.face) +
+                           ": the direction is normal to the face or every direction is conjugate "
+                           "to it (zero curvature along it): it cannot be prescribed");
+    }
+    con.prescribed.push_back({p.face, d.normalized()});
+  }
+
+  // Boundary alignment: the boundary tangent as a prescribed direction of
+  // every boundary face, weighted by field.boundary_alignment (a factor on
+  // the prescribed-direction term's weight in the element data).
+  const double prescribed_weight = s.Number("terms.tcd_prescribed_direction.weight");
+  const double boundary_factor =
+      prescribed_weight > 0 ? s.Number("field.boundary_alignment") / prescribed_weight : 0.0;
+  std::vector<std::pair<int, V2>> along_boundary;
+  if (boundary_factor > 0) {
+    for (HalfedgeIndex h : mesh.halfedges()) {
+      if (mesh.is_border(h) || !mesh.is_border(mesh.opposite(h))) continue;
+      const FaceIndex f = mesh.face(h);
+      const Point& a = mesh.point(mesh.source(h));
+      const Point& b = mesh.point(mesh.target(h));
+      const V2 d = ToFrame(g.frames, f, V3(b.x() - a.x(), b.y() - a.y(), b.z() - a.z()));
+      const Eigen::Matrix2d& M = g.curvature[f.idx()].M;
+      const double m[3] = {M(0, 0), M(0, 1), M(1, 1)};
+      V2 point, line;
+      if (d.norm() > 0 && TcdPrescribedLine(m, d.data(), &point, &line)) {
+        along_boundary.push_back({int(f.idx()), d.normalized()});
+      }
+    }
+  }
+  con.boundary_faces = int(along_boundary.size());
+
+  ElementSet edges, all, placements, directions;
+  edges.site = Site::kEdge;
+  edges.data_width = 2;
+  for (const EdgeTransport& t : g.transports) {
+    const HalfedgeIndex h = mesh.halfedge(t.edge);
+    edges.Add({int(mesh.source(h).idx()), int(mesh.target(h).idx())}, int(t.edge.idx()),
+              int(t.f.idx()), int(t.edge.idx()),
+              boundary[mesh.source(h).idx()] || boundary[mesh.target(h).idx()] ? kBoundary : 0,
+              {t.angle, t.weight}, int(t.g.idx()));
+  }
+  all.site = placements.site = directions.site = Site::kFace;
+  all.data_width = 3;
+  placements.data_width = 2;
+  directions.data_width = 6;
+  for (FaceIndex f : mesh.faces()) {
+    const FaceCurvature& k = g.curvature[f.idx()];
+    all.Add(FaceVertices(mesh, f), int(f.idx()), int(f.idx()), -1, FaceFlags(mesh, boundary, f),
+            {k.z_m.x(), k.z_m.y(), k.z_m_finite ? 1.0 : 0.0});
+    double* z = c.store->At("z_n", int(f.idx()));
+    z[0] = 1.0;  // e1: the principal directions
+    z[1] = 0.0;
+  }
+  for (int f : con.placements) {
+    const FaceCurvature& k = g.curvature[size_t(f)];
+    placements.Add(FaceVertices(mesh, FaceIndex(f)), f, f, -1, FaceFlags(mesh, boundary, FaceIndex(f)),
+                   {k.z_m.x(), k.z_m.y()});
+  }
+  for (const auto& [list, factor] : {std::make_pair(&con.prescribed, 1.0),
+                                     std::make_pair(&along_boundary, boundary_factor)}) {
+    for (const auto& [f, d] : *list) {
+      const Eigen::Matrix2d& M = g.curvature[size_t(f)].M;
+      directions.Add(FaceVertices(mesh, FaceIndex(f)), f, f, -1,
+                     FaceFlags(mesh, boundary, FaceIndex(f)),
+                     {M(0, 0), M(0, 1), M(1, 1), d.x(), d.y(), factor});
+    }
+  }
+  c.SetElements("tcd_edges", std::move(edges));
+  c.SetElements("tcd_faces", std::move(all));
+  c.SetElements("tcd_placements", std::move(placements));
+  c.SetElements("tcd_prescribed", std::move(directions));
+}
+
+// Before the `move` stage: each move's σ-blended correction (eq. 4), then
+// every face outside the blends' transition bands (0 < β < 1) held constant:
+// the re-optimisation smooths the seam of each blend and keeps the moved
+// field inside r1 (re-optimising the whole disc pulls the singularity back
+// to where the energy had it, e.g. to an umbilic).
+void ApplyMoves(HookContext& c) {
+  FieldState& state = c.State<FieldState>();
+  Constraints& con = state.constraints;
+  if (con.moved) return;
+  con.moved = true;
+  const Mesh& mesh = c.store->mesh();
+  const FieldGeometry& g = state.geometry;
+  const Origin at = c.settings->Where("field.moves");
+  std::vector<bool> touched(mesh.number_of_faces(), false), held(mesh.number_of_faces(), false);
+  for (const Move& m : con.moves) {
+    std::vector<V2> z(mesh.number_of_faces());
+    for (FaceIndex f : mesh.faces()) z[f.idx()] = Eigen::Map<const V2>(c.store->At("z_n", int(f.idx())));
+    const double apart =
+        (g.frames.centroid[size_t(m.from)] - g.frames.centroid[size_t(m.to)]).norm();
+    const double inner = m.inner > 0 ? m.inner / c.frame.scale : 2 * apart;
+    const double outer = m.outer > 0 ? m.outer / c.frame.scale : 2 * inner;
+    if (outer <= inner) {
+      throw InputError(at.file, m.line, m.key + ".outer_radius",
+                       "must be larger than inner_radius (" + std::to_string(inner * c.frame.scale) + ")");
+    }
+    const SingularityMove move = MoveSingularity(mesh, g.frames, g.transports, g.curvature, z,
+                                                 FaceIndex(m.from), FaceIndex(m.to), inner, outer);
+    if (!move.error.empty()) throw InputError(at.file, m.line, m.key, move.error);
+    if (!move.reached) {
+      throw InputError(at.file, m.line, m.key + ".inner_radius",
+                       "face " + std::to_string(m.to) + " is farther from face " +
+                           std::to_string(m.from) + " (through the mesh) than inner_radius " +
+                           std::to_string(inner * c.frame.scale) + ": the blend does not reach it");
+    }
+    int count = 0;
+    for (FaceIndex f : mesh.faces()) {
+      Eigen::Map<V2>(c.store->At("z_n", int(f.idx()))) = move.z_n[f.idx()];
+      if (move.beta[f.idx()] > 0) ++count;
+      if (move.beta[f.idx()] > 0 && move.beta[f.idx()] < 1) touched[f.idx()] = true;
+    }
+    held[size_t(m.to)] = true;
+    int band = 0;
+    for (FaceIndex f : mesh.faces()) band += move.beta[f.idx()] > 0 && move.beta[f.idx()] < 1;
+    con.moves_done.push_back({{"from", m.from}, {"to", m.to}, {"inner_radius", inner * c.frame.scale},
+                              {"outer_radius", outer * c.frame.scale}, {"faces_blended", count},
+                              {"faces_reoptimised", band}});
+  }
+  for (FaceIndex f : mesh.faces()) {
+    if (!touched[f.idx()] || held[f.idx()]) c.model->SetConstant("z_n", int(f.idx()));
+  }
+}
+
+double LineDeg(const V2& a, const V2& b) {
+  return std::abs(WrapLineAngle(LineAngle(a) - LineAngle(b))) * 180.0 / M_PI;
+}
+
+void Finish(HookContext& c) {
+  const Mesh& mesh = c.store->mesh();
+  const FieldState& state = c.State<FieldState>();
+  const FieldGeometry& geometry = state.geometry;
+  const Constraints& con = state.constraints;
+  std::vector<V2> z(mesh.number_of_faces());
+  for (FaceIndex f : mesh.faces()) {
+    const double* x = c.store->At("z_n", int(f.idx()));
+    z[f.idx()] = V2(x[0], x[1]);
+  }
+  auto result = std::make_shared<FieldResult>();
+  result->mesh = mesh;
+  result->geometry = geometry;
+  result->field = EvaluateField(mesh, geometry, std::move(z));
+  result->frame = c.frame;
+  const TcdField& field = result->field;
+
+  // Deviation from the principal directions; prescribed directions met.
+  double deviation = 0;
+  int counted = 0;
+  for (FaceIndex f : mesh.faces()) {
+    const ConjugatePair& p = field.pairs[f.idx()];
+    const FaceCurvature& k = geometry.curvature[f.idx()];
+    if (!p.valid || k.flat || field.smooth_fallback) continue;
+    deviation += std::min(LineDeg(p.v, k.d1), LineDeg(p.v, k.d2));
+    ++counted;
+  }
+  double prescribed_max = 0, prescribed_mean = 0;
+  for (const auto& [f, d] : con.prescribed) {
+    const ConjugatePair& p = field.pairs[size_t(f)];
+    const double e = p.valid ? std::min(LineDeg(d, p.v), LineDeg(d, p.w)) : 90.0;
+    prescribed_max = std::max(prescribed_max, e);
+    prescribed_mean += e / double(con.prescribed.size());
+  }
+
+  nlohmann::json& d = result->details;
+  nlohmann::json singular = nlohmann::json::array();
+  int plus = 0, minus = 0;
+  for (const Singularity& s : field.singularities) {
+    const Vec3 p = c.frame.FromCanonical(Vec3{s.position.x(), s.position.y(), s.position.z()});
+    singular.push_back({{"vertex", int(s.vertex.idx())}, {"index", s.index}, {"position", {p[0], p[1], p[2]}}});
+    (s.index > 0 ? plus : minus)++;
+  }
+  d["faces"] = mesh.number_of_faces();
+  d["flat_faces"] = geometry.flat_faces;
+  d["fallback"] = field.smooth_fallback ? "smooth orthogonal field of the face frames (e1, e2): "
+                                          "the surface has no curvature"
+                                        : "none";
+  d["singularities"] = singular;
+  d["index_sum"] = field.index_sum;
+  d["valid_faces"] = field.stats.valid_faces;
+  d["invalid_faces"] = field.stats.invalid_faces;
+  d["conjugacy_error_max"] = field.stats.max_conjugacy_error;
+  d["angle_min_deg"] = field.stats.min_angle_deg;
+  d["angle_mean_deg"] = field.mean_angle_deg;
+  d["principal_deviation_mean_deg"] = counted > 0 ? deviation / counted : 0.0;
+  d["placements"] = con.placements.size();
+  if (!con.moves_done.empty()) d["moves"] = con.moves_done;
+  d["boundary_aligned_faces"] = con.boundary_faces;
+  d["prescribed"] = {{"faces", con.prescribed.size()},
+                     {"deviation_max_deg", prescribed_max},
+                     {"deviation_mean_deg", prescribed_mean}};
+  if (con.file_rows > 0) {
+    d["constraints_file"] = {{"rows", con.file_rows},
+                             {"flagged", con.file_flagged},
+                             {"skipped", con.file_skipped}};
+  }
+
+  char line[512];
+  std::string& h = result->headline;
+  if (field.smooth_fallback) {
+    h += "warning: the surface has no curvature (all " + std::to_string(mesh.number_of_faces()) +
+         " faces flat): every pair of directions is conjugate; the field falls back to the smooth "
+         "orthogonal field of the face frames (e1, e2)\n";
+  }
+  std::snprintf(line, sizeof line,
+                "TCD field: %zu singularities (%d positive, %d negative), index sum %g; conjugacy "
+                "error max %.2e; angle between v and w min %.1f°, mean %.1f°; deviation from the "
+                "principal directions mean %.2f°\n",
+                field.singularities.size(), plus, minus, field.index_sum,
+                field.stats.max_conjugacy_error, field.stats.min_angle_deg, field.mean_angle_deg,
+                counted > 0 ? deviation / counted : 0.0);
+  h += line;
+  if (!con.prescribed.empty()) {
+    std::snprintf(line, sizeof line,
+                  "prescribed directions: %zu faces, deviation max %.2f°, mean %.2f°%s\n",
+                  con.prescribed.size(), prescribed_max, prescribed_mean,
+                  con.file_skipped > 0
+                      ? (" (" + std::to_string(con.file_skipped) + " rows of field.constraints "
+                                                                   "skipped: not prescribable)")
+                            .c_str()
+                      : "");
+    h += line;
+  }
+  if (field.stats.invalid_faces > 0) {
+    std::snprintf(line, sizeof line,
+                  "%d faces have no conjugate pair (flat, or exactly singular)\n",
+                  field.stats.invalid_faces);
+    h += line;
+  }
+  for (const auto& [k, v] : d.items()) c.details[k] = v;
+  c.headline += h;
+  c.field = result;
+}
+
+void Write(HookContext& c) {
+  const auto it = c.temporaries.find("field");
+  if (it == c.temporaries.end()) return;
+  const auto& result = c.field;
+  WriteFieldPly(it->second, result->mesh, result->geometry, result->field, result->frame,
+                "output.field");
+}
+
+}  // namespace
+
+ProblemDecl conjugate_field() {
+  ProblemDecl d;
+  d.name = "conjugate_field";
+  d.summary = "a field of transverse conjugate directions (TCD field) on a triangle mesh";
+  d.paper = "[Zadravec 2010, §2–4]";
+  d.input = InputKind::kTriangles;
+  d.terms = FieldTerms();
+  d.keys = FieldKeys();
+  d.blocks = {{"z_n", Site::kFace, 2, FrameMap::kInvariant, false, Carry::kReinitialise, true,
+               false, "z_N of the face in its own frame (Prop. 2; e1 = (1, 0): principal)"}};
+  d.check = [](const Settings& s) {
+    CheckNoMultiresolution(s, "conjugate_field");
+    CheckFieldOutputs(s);
+  };
+  d.init = &Init;
+  d.stages = [](const Settings& settings) {
+    Stage s;
+    s.name = "field";
+    s.rounds_key = "field.rounds";
+    std::vector<Stage> stages{s};
+    if (settings.Given("field.moves")) {
+      s.name = "move";
+      s.before_round = &ApplyMoves;
+      stages.push_back(s);
+    }
+    return stages;
+  };
+  d.finish = &Finish;
+  d.output_keys = {"field"};
+  d.write = &Write;
+  return d;
+}
+
+}  // namespace archgeo::problems

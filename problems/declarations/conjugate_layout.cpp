@@ -1,0 +1,106 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// archgeo — `conjugate_layout`: from a triangle mesh of the design surface to
+// a planar-quad layout, the pipeline of [Zadravec 2010, Fig. 1]:
+//
+//   (a) a TCD field (conjugate_field: §2–4),
+//   (b) level sets along it and the quad-dominant layout they cut out
+//       (level_sets: §5; fields/extract.h),
+//   (c) optimisation of the layout for planar faces (planar_quads: §6, eq. 8).
+//
+// It is the planar_quads declaration (same terms, keys, stage and
+// tolerance) whose `net` hook runs (a) and (b) as nested solves on the input
+// (`mesh`, a triangle mesh) with this spec's field and level-set keys and
+// returns the layout as the net solved: the report's "before" is the layout
+// (δ_PQ,n before the PQ step), "after" the final mesh, and displacements are
+// measured from the layout. Without a `reference` the layout is its own
+// reference surface (its vertices lie on the input; the report's "net" entry
+// gives its distance to the input surface).
+//
+// Outputs: output.mesh (the final planar mesh), output.layout (the layout
+// before the PQ step), output.field (fields/field_io.h), output.report.
+#include "core/problem.h"
+#include "fields/field_io.h"
+#include "core/input_error.h"
+#include "io/io.h"
+#include "problems/declarations/field_pipeline.h"
+#include "problems/runtime/model.h"
+
+namespace archgeo::problems {
+namespace {
+
+void Net(HookContext& c) {
+  const Settings& s = *c.settings;
+  const std::shared_ptr<const LevelSetResult> result = SolveLevelSets(s, *c.input, c.progress);
+  if (!result->layout.ok) {
+    throw s.Error("level_sets", "the layout could not be extracted from the level sets: " +
+                                    result->layout.error);
+  }
+  c.level_sets = result;
+  c.net.derived = true;
+  c.net.mesh = InFileUnits(result->layout.mesh, result->frame);
+  c.net.source.clear();  // layout vertices are not input vertices
+  c.net.details = result->details;
+  c.net.details["net"] = "conjugate layout";
+  c.net.details["field"] = result->field->details;
+  c.net.headline = result->field->headline + result->headline +
+                   "solving the layout for planar faces (planar_quads)\n";
+}
+
+void Write(HookContext& c) {
+  const auto& result = c.level_sets;
+  if (const auto it = c.temporaries.find("layout"); it != c.temporaries.end()) {
+    WriteMesh(it->second, InFileUnits(result->layout.mesh, result->frame));
+  }
+  if (const auto it = c.temporaries.find("field"); it != c.temporaries.end()) {
+    const FieldResult& field = *result->field;
+    WriteFieldPly(it->second, field.mesh, field.geometry, field.field, field.frame, "output.field");
+  }
+}
+
+}  // namespace
+
+ProblemDecl conjugate_layout() {
+  ProblemDecl d = planar_quads();
+  // Ceres' direct solve in every round, as every problem but planar_quads: the
+  // field stages on Concerthall have more than 100k variables, and their
+  // figures (docs/methods/conjugate_layout.md) were measured with it.
+  d.defaults.erase("solver.pcg_above");
+  std::vector<std::string> planar;
+  for (TermUse& t : d.terms) {
+    planar.push_back(t.term);
+    // A layout from the level sets is near planar and smooth already:
+    // planarity starts lower and rises by continuation, fairness relative to
+    // the layout is light, and the dihedral energy only keeps E from rising
+    // (inspired mesh: max displacement 0.49% of the diagonal, E 87.65 ->
+    // 87.07; with planar_quads' weights 0.55% and 82.3, without the dihedral
+    // energy 0.27% and E up to 90.8).
+    if (t.term == "pq_diagonal" || t.term == "face_planarity") t.weight = 1;
+    if (t.term == "fairness") t.weight = 0.1;
+    if (t.term == "dihedral_energy") t.weight = 0.05;
+  }
+  d.name = "conjugate_layout";
+  d.summary = "design surface (triangles) → TCD field → level sets → layout → planar quads";
+  d.paper = "[Zadravec 2010, Fig. 1, §2–6]";
+  d.input = InputKind::kTriangles;
+  for (const TermUse& t : FieldTerms()) d.terms.push_back(t);
+  for (const TermUse& t : LevelSetTerms()) d.terms.push_back(t);
+  for (const Key& k : FieldKeys()) d.keys.push_back(k);
+  for (const Key& k : LevelSetKeys()) d.keys.push_back(k);
+  const auto stages = d.stages;
+  d.stages = [stages, planar](const Settings& s) {
+    std::vector<Stage> out = stages(s);
+    for (Stage& stage : out) {
+      stage.name = "planar";
+      stage.terms = planar;
+    }
+    return out;
+  };
+  d.check = &CheckLevelSetKeys;
+  d.net = &Net;
+  d.output_keys = {"layout", "field"};
+  d.write = &Write;
+  return d;
+}
+
+}  // namespace archgeo::problems

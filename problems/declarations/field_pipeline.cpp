@@ -1,0 +1,243 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "problems/declarations/field_pipeline.h"
+
+#include <glog/logging.h>
+
+#include <cctype>
+
+#include "core/input_error.h"
+#include "io/io.h"
+#include "problems/declarations/registry.h"
+#include "problems/spec/schema.h"
+#include "problems/runtime/solve.h"
+
+namespace archgeo {
+namespace {
+
+bool StartsWith(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
+
+// The parent's run keys, which a nested stage does not take over.
+bool RunKey(const std::string& name) {
+  return name == "problem" || name == "reference" || name == "fixed" ||
+         StartsWith(name, "schedule.") || StartsWith(name, "multiresolution.") ||
+         StartsWith(name, "output.");
+}
+
+// The nested solve of `problem` on `mesh` with the keys of `parent`; throws
+// InputError when it has no usable solution.
+std::unique_ptr<Solution> Nested(const char* problem, const Settings& parent, const Mesh& mesh,
+                                 const ProgressSink& progress) {
+  const ProblemDecl* d = FindProblem(problem);
+  CHECK(d) << problem << " is not registered";
+  const ProblemSpec spec = SubSpec(*d, parent);
+  std::unique_ptr<Solution> solution =
+      Solve(spec, mesh, nullptr, Prefixed(progress, std::string(problem) + ": "));
+  if (!solution->loop.usable) {
+    throw InputError(parent.spec_file(), 0, "",
+                     std::string("the ") + problem + " stage found no usable solution: " +
+                         solution->loop.message);
+  }
+  return solution;
+}
+
+}  // namespace
+
+std::vector<TermUse> FieldTerms() {
+  return {{"tcd_dirichlet", 1},
+          {"tcd_transversality", 0.1},
+          {"tcd_singularity_avoidance", 0},
+          {"tcd_singularity_placement", 100},
+          {"tcd_prescribed_direction", 100}};
+}
+
+std::vector<Key> FieldKeys() {
+  Key singularities;
+  singularities.name = "field.singularities";
+  singularities.type = Type::kIntegers;
+  singularities.fallback = std::vector<long long>{};
+  singularities.lo = 0;
+  singularities.doc =
+      "faces (0-based ids) where a singularity is placed: z_N = z_M there (faces with K > 0)";
+  Key directions;
+  directions.name = "field.directions";
+  directions.type = Type::kCustom;
+  directions.example = "[]";
+  directions.doc =
+      "prescribed conjugate directions: a list of {face: id, direction: [x, y, z]} (file units; "
+      "projected onto the face)";
+  Key moves;
+  moves.name = "field.moves";
+  moves.type = Type::kCustom;
+  moves.example = "[{from: 120, to: 180}]";
+  moves.doc =
+      "singularities moved locally after the solve [Zadravec 2010, §4, eq. 4]: a list of "
+      "{from: face, to: face, inner_radius: r1, outer_radius: r2} (file units; the σ blend is 1 "
+      "within r1 of `from` and 0 beyond r2; defaults r1 = 2 × the distance from `from` to `to`, "
+      "r2 = 2 r1); z_N = z_M at `to`, then the faces of the transition band (r1 to r2) are "
+      "re-optimised";
+  Key constraints;
+  constraints.name = "field.constraints";
+  constraints.type = Type::kInputPath;
+  constraints.doc =
+      "libigl DMAT file, one row per face: column 0 ≠ 0 marks a face whose prescribed "
+      "direction is columns 1–3 (file units); further columns are not used";
+  return {IntegerKey("jets.degree", 4, 2, 4,
+                     "degree of the osculating jets fitted at every vertex (curvature)"),
+          IntegerKey("jets.rings", 2, 1, 8,
+                     "jet neighbourhood: vertices within this many edges (grown until it has "
+                     "twice the jet's coefficients)"),
+          singularities,
+          moves,
+          directions,
+          constraints,
+          NumberKey("field.boundary_alignment", 1, 0, 1e6,
+                    "weight of the boundary tangent as a prescribed direction of every boundary "
+                    "face (through tcd_prescribed_direction, which must be on): level sets along "
+                    "the boundary, fewer cut boundary faces; 0 = off"),
+          IntegerKey("field.rounds", 1, 1, 100,
+                     "Ceres solves of the field (each at most solver.max_num_iterations)")};
+}
+
+std::vector<TermUse> LevelSetTerms() {
+  return {{"level_set_alignment", 0.1},
+          {"level_set_normalised", 1},
+          {"level_set_conjugacy", 1},
+          {"level_set_jump", 100},
+          {"level_set_branch_point", 100}};
+}
+
+std::vector<Key> LevelSetKeys() {
+  return {IntegerKey("level_sets.target_faces", 1600, 1, 100000000,
+                     "faces the layout should have: the spacing is Δw = sqrt(Σ_f A_f sin∠(v, w) "
+                     "/ target_faces)"),
+          NumberKey("level_sets.edge_length", 0, 0, 1e30,
+                    "the spacing Δw of the level sets in file units (the layout's edge length) "
+                    "instead of target_faces; 0 = from target_faces"),
+          ChoiceKey("level_sets.rounding", "even", {"even", "odd"},
+                    "jumps across cuts from ±1/2 singularities rounded to even multiples of Δw "
+                    "(quads around the singularity) or odd ones (valence-4 vertices and an "
+                    "extraordinary face)"),
+          IntegerKey("level_sets.rounds", 1, 1, 100,
+                     "Ceres solves per stage (eq. 5; eq. 6; with the jumps fixed)"),
+          NumberKey("extraction.merge_fraction", 0.05, 0, 0.5,
+                    "layout vertices joined by an edge shorter than this fraction of the median "
+                    "edge are merged"),
+          NumberKey("extraction.boundary_snap", 0.35, 0, 0.5,
+                    "a layout vertex joined to a boundary vertex by an edge shorter than this "
+                    "fraction of the median edge is moved onto it (fewer cut-off boundary "
+                    "triangles) and a boundary edge shorter than half of it is collapsed (no "
+                    "sliver sides); 0 = off"),
+          BoolKey("extraction.merge_valence_two", true,
+                  "an interior layout vertex on two faces only (a +1/2 singularity on a level "
+                  "of both functions) is removed by merging its two faces (two quads give a "
+                  "quad); off: it stays, with two corners of about 180°"),
+          NumberKey("extraction.cap_angle", 160, 0, 180,
+                    "an interior layout triangle with a corner above this (degrees: its vertices "
+                    "nearly on a line, e.g. between two singularities closer than the spacing) "
+                    "is merged into the face across its longest side; 0 = off"),
+          NumberKey("extraction.slit_angle", 3, 0, 90,
+                    "a layout corner whose two sides leave within this angle (degrees: two level "
+                    "lines side by side from a singular vertex) leaves its face, the longer side "
+                    "split at the shorter side's end in the face across (no hairline face to fold "
+                    "over); 0 = off"),
+          NumberKey("extraction.reflex_margin", 2, -1, 180,
+                    "a layout face bent inward at an interior vertex by more than this (degrees "
+                    "beyond 180°) is split along a diagonal from that corner into two convex-cornered "
+                    "faces (the PQ step cannot make it planar without folding it further); -1 = off"),
+          NumberKey("extraction.corner_angle", 30, 0, 180,
+                    "boundary vertices where the boundary turns by more than this (degrees) are "
+                    "kept as corners of the layout")};
+}
+
+void CheckLevelSetKeys(const Settings& s) {
+  CheckFieldOutputs(s);
+  if (s.Given("level_sets.target_faces") && s.Given("level_sets.edge_length") &&
+      s.Number("level_sets.edge_length") > 0) {
+    throw s.Error("level_sets.edge_length",
+                  "give either level_sets.target_faces or level_sets.edge_length, not both");
+  }
+  // Eq. 5 is what gives g and h their slope (eq. 6 and 7 are invariant to
+  // scaling g and h): without it both stay constant and there is no layout.
+  if (!(s.Number("terms.level_set_alignment.weight") > 0)) {
+    throw s.Error("terms.level_set_alignment",
+                  "level_sets needs level_set_alignment (eq. 5) with a weight > 0: it sets the "
+                  "spacing of the level sets; a `terms:` section that does not list it turns it off");
+  }
+}
+
+void CheckFieldOutputs(const Settings& s) {
+  if (s.schema().Find("output.layout") && !s.String("output.layout").empty()) {
+    try {
+      CheckMeshExtension(s.String("output.layout"));
+    } catch (const InputError& e) {
+      throw s.Error("output.layout", "'" + s.String("output.layout") + "': " + e.message());
+    }
+  }
+  if (s.schema().Find("output.field") && !s.String("output.field").empty()) {
+    const std::string& path = s.String("output.field");
+    std::string extension = path.size() >= 4 ? path.substr(path.size() - 4) : "";
+    for (char& ch : extension) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+    if (extension != ".ply") {
+      throw s.Error("output.field", "'" + path + "': the field is written as PLY (.ply)");
+    }
+  }
+}
+
+void CheckNoMultiresolution(const Settings& s, const std::string& problem) {
+  if (s.Integer("multiresolution.levels") > 0) {
+    throw s.Error("multiresolution.levels",
+                  problem + " computes its field on the input mesh: multiresolution is not "
+                            "supported");
+  }
+}
+
+ProblemSpec SubSpec(const ProblemDecl& sub, const Settings& parent) {
+  ProblemSpec spec;
+  spec.spec_path = parent.spec_file();
+  spec.declaration = std::shared_ptr<const ProblemDecl>(&sub, [](const ProblemDecl*) {});
+  spec.settings = Settings(ProblemSchema(sub));
+  spec.settings.set_spec_file(parent.spec_file());
+  // Only what the user gave: the stages declare their keys once (same
+  // defaults), and Settings::Given must stay true only for given keys.
+  for (const Key& k : spec.settings.schema().keys()) {
+    if (RunKey(k.name) || !parent.schema().Find(k.name) || !parent.Given(k.name)) continue;
+    if (k.type == Type::kCustom) {
+      const CustomValue* value = parent.Custom(k.name);
+      CHECK(value) << k.name << " is given without its value";
+      spec.settings.SetCustom(k.name, *value, parent.Where(k.name));
+    } else {
+      spec.settings.Set(k.name, parent.Get(k.name), parent.Where(k.name));
+    }
+  }
+  return spec;
+}
+
+std::shared_ptr<const FieldResult> SolveField(const Settings& parent, const Mesh& mesh,
+                                              const ProgressSink& progress) {
+  std::shared_ptr<const FieldResult> field =
+      Nested("conjugate_field", parent, mesh, progress)->hooks.field;
+  CHECK(field) << "conjugate_field left no field";
+  return field;
+}
+
+std::shared_ptr<const LevelSetResult> SolveLevelSets(const Settings& parent, const Mesh& mesh,
+                                                     const ProgressSink& progress) {
+  std::shared_ptr<const LevelSetResult> level_sets =
+      Nested("level_sets", parent, mesh, progress)->hooks.level_sets;
+  CHECK(level_sets) << "level_sets left no level sets";
+  return level_sets;
+}
+
+Mesh InFileUnits(const Mesh& mesh, const Similarity& frame) {
+  Mesh out = mesh;
+  FromCanonical(frame, out);
+  return out;
+}
+
+ProgressSink Prefixed(const ProgressSink& progress, const std::string& prefix) {
+  if (!progress) return progress;
+  return [progress, prefix](const std::string& line) { progress(prefix + line); };
+}
+
+}  // namespace archgeo

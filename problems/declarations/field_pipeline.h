@@ -1,0 +1,94 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// archgeo — what the three problems of the design-surface-to-layout pipeline
+// [Zadravec 2010, Fig. 1] share: conjugate_field (a TCD field on a triangle
+// mesh, §2–4), level_sets (two functions whose level sets follow the field and
+// the quad-dominant layout they cut out, §5) and conjugate_layout (field →
+// level sets → layout → planar_quads, §6).
+//
+// A later stage runs the earlier ones as nested solves (problems/runtime/solve.h
+// Solve) on specs made from its own settings (SubSpec): every key the stages
+// share is declared once here (FieldKeys, LevelSetKeys) and carried over with
+// the place it was given, so a bad value is reported at its line in the
+// user's spec whichever stage reads it.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/loop.h"
+#include "core/problem.h"
+#include "core/settings.h"
+#include "fields/cuts.h"
+#include "fields/extract.h"
+#include "fields/tcd_field.h"
+#include "mesh/similarity.h"
+#include "mesh/surface_mesh.h"
+#include "problems/spec/spec.h"
+
+namespace archgeo {
+
+namespace problems {
+ProblemDecl planar_quads();
+ProblemDecl conjugate_field();
+ProblemDecl level_sets();
+}  // namespace problems
+
+// The field stage's terms (with their default weights) and keys.
+std::vector<TermUse> FieldTerms();
+std::vector<Key> FieldKeys();
+// The level-set stage's terms and keys (extraction included).
+std::vector<TermUse> LevelSetTerms();
+std::vector<Key> LevelSetKeys();
+// Cross-key checks of the level-set keys (ProblemDecl::check), including
+// CheckFieldOutputs.
+void CheckLevelSetKeys(const Settings& s);
+// output.layout is a mesh file name (.obj, .off, .ply), output.field a .ply.
+void CheckFieldOutputs(const Settings& s);
+// Refuses multiresolution for the field stages (the field lives on the input).
+void CheckNoMultiresolution(const Settings& s, const std::string& problem);
+
+// A spec of `sub` whose keys take the parent's values (and where they were
+// given) for every key both declare that the user gave, except the parent's
+// own run keys: problem, reference, fixed, schedule.*, multiresolution.* and
+// output.* (solver.* keys apply to every stage).
+ProblemSpec SubSpec(const ProblemDecl& sub, const Settings& parent);
+
+// The field of a conjugate_field solve, canonical frame of its input.
+struct FieldResult {
+  Mesh mesh;                                // the triangle mesh, canonical frame
+  FieldGeometry geometry;
+  TcdField field;
+  Similarity frame;                         // file units -> canonical
+  nlohmann::json details = nlohmann::json::object();
+  std::string headline;
+};
+
+// The level sets and the layout of a level_sets solve (canonical frame).
+struct LevelSetResult {
+  std::shared_ptr<const FieldResult> field;
+  CutGraph cut;
+  LevelSetFunctions functions;  // functions.cut points to `cut`
+  Extraction layout;            // canonical frame
+  Similarity frame;
+  nlohmann::json details = nlohmann::json::object();
+  std::string headline;
+};
+
+// Nested solves: conjugate_field / level_sets on `mesh` (file units) with the
+// keys of `parent`. Throw InputError as the stages do.
+std::shared_ptr<const FieldResult> SolveField(const Settings& parent, const Mesh& mesh,
+                                              const ProgressSink& progress);
+std::shared_ptr<const LevelSetResult> SolveLevelSets(const Settings& parent, const Mesh& mesh,
+                                                     const ProgressSink& progress);
+
+// `mesh` (canonical frame) in file units.
+Mesh InFileUnits(const Mesh& mesh, const Similarity& frame);
+
+// A progress sink that prefixes every line with `prefix`.
+ProgressSink Prefixed(const ProgressSink& progress, const std::string& prefix);
+
+}  // namespace archgeo

@@ -1,0 +1,96 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// archgeo — `planar_quads`: every quad (and polygon) planar to a tolerance
+// while the mesh keeps its shape, its boundary and its visual smoothness.
+//
+// Objective [Zadravec 2010, §6, eq. 8], ½ Σ w r² in the canonical frame (unit
+// mean edge length), so every weight is unit-free:
+//   pq_diagonal (quads) + face_planarity (every face of 4+ sides: it also
+//   ties the plane normals the dihedral energy reads to the vertices)
+//   + fairness relative to the input (eq. 8's fairness term)
+//   + dihedral_energy [Pellis 2019, eq. 3] (visual smoothness, E = Σ ℓ ℓ*)
+//   + boundary_proximity + proximity (+ point_weight) + anchor,
+// and the validity barriers convexity and min_edge_length, on by default
+// (implicit: a spec that lists its terms keeps them) and continued with the
+// planarity weights.
+// Why these defaults (measured on the six quad meshes of ../shared/data):
+// planarity alone reaches δ_PQ,n 6.8e-4 on libigl's Conjugate layout by
+// bending 9-18 quads inward and raises E from 75.9 to 105.5; the barriers
+// alone keep every quad convex but stall at 3.3e-3 (the planarity weight
+// pushes a few quads against them); fairness relative to the input spreads
+// the change over the net so that no quad has to fold: 9.7e-4 with every
+// quad convex, and the dihedral energy keeps E at or below the input's on
+// all six meshes (docs/methods/planar_quads.md).
+// Rounds: project every vertex onto the reference (closest point and tangent
+// plane, or boundary tangent line), rebuild, solve. The tolerance τ on max
+// δ_PQ,n drives the run, not the weights:
+//  - every Ceres iteration measures max δ_PQ,n and the solve stops the moment
+//    it is ≤ τ, so the mesh moves no further than planarity demands;
+//  - a round that ends short of τ multiplies the planarity weights by
+//    continuation.factor (continuation on the penalty weight);
+//  - with continuation.band b > 0 a face within b·τ costs nothing and only the
+//    excess is penalised (core/tolerance_band.h).
+// Measured on the six quad meshes of ../shared/data: per-face weights stalled
+// (fixing one face pushed its neighbours out), and a band of 0.8 halves the
+// movement for τ = 5e-3 but slows τ = 1e-3 down several times. Without a
+// tolerance (τ = 0) the weights stay fixed and the rounds stop when a round
+// moves no vertex by more than 1e-6 mean edge lengths.
+#include "core/problem.h"
+#include "problems/declarations/suitability.h"
+
+namespace archgeo::problems {
+
+ProblemDecl planar_quads() {
+  ProblemDecl d;
+  d.name = "planar_quads";
+  d.summary = "make every quad (and polygon) planar while the mesh keeps its shape and boundary";
+  d.paper = "[Zadravec 2010, §6, eq. 8]";
+  d.input = InputKind::kHasPolygons;
+  d.terms = {{"pq_diagonal", 10},
+             {"face_planarity", 10, {}, "non_triangles"},
+             {"boundary_proximity", 10},
+             {"proximity", 2, {{"point_weight", 0.01}}},
+             {"anchor", 1},
+             {"fairness", 10, {{"relative_to_original", true}}},
+             {"dihedral_energy", 0.5},
+             {"convexity", 1000, {}, "", true},
+             {"min_edge_length", 1000, {}, "", true}};
+  // Rounds of more than 100k variables (~15k quads) by Levenberg–Marquardt
+  // with block-Jacobi conjugate gradients on the assembled normal equations
+  // (core/lean_solve.h); docs/performance.md has the measurements. Ceres' SUBSET
+  // preconditioner, if chosen, from the planarity terms and the barriers
+  // (the terms the continuation stiffens).
+  d.defaults = {{"solver.pcg_above", 100000LL},
+                {"solver.subset_preconditioner_parts",
+                 std::string("pq_diagonal,face_planarity,convexity,min_edge_length")}};
+  d.keys = {
+      NumberKey("tolerance.pq_normalized_max", 1e-3, 0, 1,
+                "stop as soon as every quad has δ_PQ,n at most this; 0 = fixed weights, "
+                "rounds until at rest"),
+      NumberKey("continuation.band", 0, 0, 1,
+                "a face within band × tolerance costs nothing (only the excess is penalised): "
+                "less movement for a loose tolerance"),
+      NumberKey("continuation.factor", 10, 1, 1e6,
+                "planarity weight growth per round that ends short of the tolerance")};
+  d.stages = [](const Settings&) {
+    Stage s;
+    s.rounds_key = "schedule.outer_iterations";
+    s.tolerances = {{"pq_normalized_max", "tolerance.pq_normalized_max", true}};
+    s.continued = {"pq_diagonal", "face_planarity", "convexity", "min_edge_length"};
+    s.factor_key = "continuation.factor";
+    s.band_key = "continuation.band";
+    s.rest_move = 1e-6;
+    // A run that misses the tolerance returns its flattest valid round (the
+    // input itself if no round was flatter), never a less planar one.
+    s.keep_best = "pq_normalized_max";
+    s.logged = {"pq_normalized_max", "E"};
+    return std::vector<Stage>{s};
+  };
+  d.analyses = {"planarity", "smoothness"};
+  // Before solving: warn when the quads are far from a conjugate net
+  // (problems/declarations/suitability.h).
+  d.net = [](HookContext& c) { CheckConjugateNet(c, *c.input); };
+  return d;
+}
+
+}  // namespace archgeo::problems
