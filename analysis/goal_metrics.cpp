@@ -9,10 +9,9 @@
 #include <cmath>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <Eigen/SVD>
 #include <glog/logging.h>
-
-#include "mesh/vec3.h"
 
 namespace archgeo {
 namespace {
@@ -21,26 +20,31 @@ namespace {
 // directions than this resolves are treated as rank-deficient.
 constexpr double kRankThreshold = 1e-12;
 
-Vec3 Position(const Mesh& mesh, VertexIndex v) { return ToVec3(mesh.point(v)); }
+using V = Eigen::Vector3d;
+
+V E(const Vec3& x) { return {x[0], x[1], x[2]}; }
+V Position(const Mesh& mesh, VertexIndex v) {
+  const Point& p = mesh.point(v);
+  return {p.x(), p.y(), p.z()};
+}
 
 // Vector area (Newell) of a face: area times unit normal.
-Vec3 VectorArea(const Mesh& mesh, FaceIndex f) {
-  std::vector<Vec3> p;  // from the source of the face's halfedge
+V VectorArea(const Mesh& mesh, FaceIndex f) {
+  std::vector<V> p;  // from the source of the face's halfedge
   for (HalfedgeIndex h : mesh.halfedges_around_face(mesh.halfedge(f))) {
     p.push_back(Position(mesh, mesh.source(h)));
   }
-  const Eigen::Vector3d n = NewellVector(int(p.size()), [&](int k) { return p[size_t(k)]; });
-  return Scale(0.5, {n[0], n[1], n[2]});
+  return 0.5 * NewellVector(int(p.size()), [&](int k) { return p[size_t(k)]; });
 }
 
-Vec3 Centroid(const Mesh& mesh, FaceIndex f) {
-  Vec3 sum{0, 0, 0};
+V Centroid(const Mesh& mesh, FaceIndex f) {
+  V sum = V::Zero();
   int n = 0;
   for (VertexIndex v : mesh.vertices_around_face(mesh.halfedge(f))) {
-    sum = Add(sum, Position(mesh, v));
+    sum += Position(mesh, v);
     ++n;
   }
-  return Scale(1.0 / n, sum);
+  return (1.0 / n) * sum;
 }
 
 double MeanEdgeLength(const Mesh& mesh) {
@@ -49,7 +53,7 @@ double MeanEdgeLength(const Mesh& mesh) {
   return mesh.number_of_edges() > 0 ? sum / mesh.number_of_edges() : 0.0;
 }
 
-double Angle(const Vec3& a, const Vec3& b) { return std::atan2(Norm(Cross(a, b)), Dot(a, b)); }
+double Angle(const V& a, const V& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
 
 }  // namespace
 
@@ -58,9 +62,9 @@ ConicalMeasure MeasureConical(const Mesh& mesh) {
   double sum = 0.0;
   for (VertexIndex v : mesh.vertices()) {
     if (mesh.is_border(v, /*check_all_incident_halfedges=*/true) || mesh.degree(v) != 4) continue;
-    std::vector<Vec3> edges;
+    std::vector<V> edges;
     for (VertexIndex w : mesh.vertices_around_target(mesh.halfedge(v))) {
-      edges.push_back(Sub(Position(mesh, w), Position(mesh, v)));
+      edges.push_back(Position(mesh, w) - Position(mesh, v));
     }
     double omega[4];
     for (int k = 0; k < 4; ++k) omega[k] = Angle(edges[k], edges[(k + 1) % 4]);
@@ -100,13 +104,15 @@ FaceOffsetMeasure MeasureFaceOffsets(const Mesh& mesh, double offset) {
   double sum = 0.0;
   for (VertexIndex v : mesh.vertices()) {
     if (mesh.is_border(v, true) || mesh.degree(v) < 4) continue;
-    const Vec3 p = Position(mesh, v);
+    const V p = Position(mesh, v);
     std::vector<Vec3> normals;
     std::vector<double> heights;
     for (FaceIndex f : mesh.faces_around_target(mesh.halfedge(v))) {
-      const Vec3 n = Unit(VectorArea(mesh, f));
-      normals.push_back(n);
-      heights.push_back(Dot(n, Sub(Centroid(mesh, f), p)) + offset);
+      const V area = VectorArea(mesh, f);
+      const double length = area.norm();
+      const V n = length > 0 ? V(area / length) : V::Zero();  // zero: no area, or NaN
+      normals.push_back({n[0], n[1], n[2]});
+      heights.push_back(n.dot(Centroid(mesh, f) - p) + offset);
     }
     const double miss = PlanesMiss(normals, heights);
     ++measure.vertices;
@@ -165,13 +171,13 @@ int NonConvexQuads(const Mesh& mesh) {
   int count = 0;
   for (FaceIndex f : mesh.faces()) {
     if (mesh.degree(f) != 4) continue;
-    const Vec3 n = VectorArea(mesh, f);
-    std::vector<Vec3> p;
+    const V n = VectorArea(mesh, f);
+    std::vector<V> p;
     for (VertexIndex v : mesh.vertices_around_face(mesh.halfedge(f))) p.push_back(Position(mesh, v));
-    bool convex = Norm(n) > 0;
+    bool convex = n.norm() > 0;
     for (int k = 0; k < 4 && convex; ++k) {
-      const Vec3 turn = Cross(Sub(p[k], p[(k + 3) % 4]), Sub(p[(k + 1) % 4], p[k]));
-      convex = Dot(turn, n) > 0;
+      const V turn = (p[k] - p[(k + 3) % 4]).cross(p[(k + 1) % 4] - p[k]);
+      convex = turn.dot(n) > 0;
     }
     if (!convex) ++count;
   }
@@ -181,7 +187,7 @@ int NonConvexQuads(const Mesh& mesh) {
 std::vector<double> TributaryAreas(const Mesh& mesh) {
   std::vector<double> areas(mesh.num_vertices(), 0.0);
   for (FaceIndex f : mesh.faces()) {
-    const double share = Norm(VectorArea(mesh, f)) / mesh.degree(f);
+    const double share = VectorArea(mesh, f).norm() / mesh.degree(f);
     for (VertexIndex v : mesh.vertices_around_face(mesh.halfedge(f))) areas[v.idx()] += share;
   }
   return areas;
@@ -195,29 +201,31 @@ ForceBalanceMeasure MeasureForceBalance(const Mesh& mesh, const std::vector<Vec3
   CHECK_EQ(fixed.size(), mesh.num_vertices()) << "MeasureForceBalance: one flag per vertex";
   CHECK_EQ(stiffness.size(), mesh.num_edges()) << "MeasureForceBalance: one stiffness per edge";
   CHECK_EQ(rest_length.size(), mesh.num_edges()) << "MeasureForceBalance: one rest length per edge";
-  std::vector<Vec3> resultant = loads;
+  std::vector<V> resultant;
+  resultant.reserve(loads.size());
+  for (const Vec3& load : loads) resultant.push_back(E(load));
   for (EdgeIndex e : mesh.edges()) {
     CHECK(stiffness[e.idx()] > 0 && rest_length[e.idx()] >= 0)
         << "MeasureForceBalance: bad spring on edge " << e.idx();
     const HalfedgeIndex h = mesh.halfedge(e);
     const VertexIndex a = mesh.source(h), b = mesh.target(h);
-    const Vec3 d = Sub(Position(mesh, b), Position(mesh, a));  // a → b
-    const double length = Norm(d);
+    const V d = Position(mesh, b) - Position(mesh, a);  // a → b
+    const double length = d.norm();
     const double l0 = rest_length[e.idx()];
     const double tension = l0 == 0      ? stiffness[e.idx()]
                            : length > 0 ? stiffness[e.idx()] * (1.0 - l0 / length)
                                         : 0.0;
-    const Vec3 force = Scale(tension, d);  // on a, towards b
-    resultant[a.idx()] = Add(resultant[a.idx()], force);
-    resultant[b.idx()] = Sub(resultant[b.idx()], force);
+    const V force = tension * d;  // on a, towards b
+    resultant[a.idx()] += force;
+    resultant[b.idx()] -= force;
   }
   ForceBalanceMeasure measure;
   double load_sum = 0.0, resultant_sum = 0.0;
   for (VertexIndex v : mesh.vertices()) {
     if (fixed[v.idx()]) continue;
     ++measure.free_vertices;
-    load_sum += Norm(loads[v.idx()]);
-    const double r = Norm(resultant[v.idx()]);
+    load_sum += E(loads[v.idx()]).norm();
+    const double r = resultant[v.idx()].norm();
     resultant_sum += r;
     measure.max_resultant = std::max(measure.max_resultant, r);
   }

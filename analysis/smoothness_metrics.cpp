@@ -8,23 +8,30 @@
 #include <cstdio>
 #include <limits>
 
+#include <Eigen/Geometry>
 #include <glog/logging.h>
 
 #include "core/solver_options.h"
 #include "core/newell.h"
-#include "mesh/vec3.h"
 
 namespace archgeo {
 namespace {
 
-bool IsZero(const Vec3& a) { return a[0] == 0 && a[1] == 0 && a[2] == 0; }
+using V = Eigen::Vector3d;
+
+V E(const Vec3& x) { return {x[0], x[1], x[2]}; }
+bool IsZero(const V& a) { return a[0] == 0 && a[1] == 0 && a[2] == 0; }
+Vec3 ToArray(const V& x) { return {x[0], x[1], x[2]}; }
 
 // Consecutive normals closer than this are one vertex of the normal pyramid.
 constexpr double kSameNormal = 1e-9;
 // Sign tests of the arc-crossing predicate on unit vectors.
 constexpr double kArcSide = 1e-12;
 
-Vec3 Position(const Mesh& mesh, VertexIndex v) { return ToVec3(mesh.point(v)); }
+V Position(const Mesh& mesh, VertexIndex v) {
+  const Point& p = mesh.point(v);
+  return {p.x(), p.y(), p.z()};
+}
 
 // Out-halfedges v → w_j of v in counter-clockwise order (seen from the
 // normals' side): face(h_j) lies between w_j and w_{j+1}, and the next
@@ -52,27 +59,27 @@ std::vector<HalfedgeIndex> OutHalfedges(const Mesh& mesh, VertexIndex v) {
 // cross at an interior point of both? c, d strictly on different sides of the
 // plane of ab, a, b strictly on different sides of the plane of cd, and the
 // crossing point of arc ab with the great circle cd is the one on arc cd.
-bool ArcsCross(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  const Vec3 n1 = Cross(a, b), n2 = Cross(c, d);
-  const double sc = Dot(n1, c), sd = Dot(n1, d), sa = Dot(n2, a), sb = Dot(n2, b);
+bool ArcsCross(const V& a, const V& b, const V& c, const V& d) {
+  const V n1 = a.cross(b), n2 = c.cross(d);
+  const double sc = n1.dot(c), sd = n1.dot(d), sa = n2.dot(a), sb = n2.dot(b);
   const bool split_cd = (sc > kArcSide && sd < -kArcSide) || (sc < -kArcSide && sd > kArcSide);
   const bool split_ab = (sa > kArcSide && sb < -kArcSide) || (sa < -kArcSide && sb > kArcSide);
   if (!split_cd || !split_ab) return false;
-  const Vec3 on_ab = Add(Scale(std::abs(sb), a), Scale(std::abs(sa), b));
-  const Vec3 on_cd = Add(Scale(std::abs(sd), c), Scale(std::abs(sc), d));
-  return Dot(on_ab, on_cd) > 0;
+  const V on_ab = std::abs(sb) * a + std::abs(sa) * b;
+  const V on_cd = std::abs(sd) * c + std::abs(sc) * d;
+  return on_ab.dot(on_cd) > 0;
 }
 
 // The normal-pyramid test of VertexStar::self_intersecting_pyramid.
-bool PyramidSelfIntersects(const std::vector<Vec3>& normals) {
-  std::vector<Vec3> p;
-  for (const Vec3& n : normals) {
-    if (p.empty() || Norm(Sub(n, p.back())) > kSameNormal) p.push_back(n);
+bool PyramidSelfIntersects(const std::vector<V>& normals) {
+  std::vector<V> p;
+  for (const V& n : normals) {
+    if (p.empty() || (n - p.back()).norm() > kSameNormal) p.push_back(n);
   }
-  while (p.size() > 1 && Norm(Sub(p.front(), p.back())) <= kSameNormal) p.pop_back();
+  while (p.size() > 1 && (p.front() - p.back()).norm() <= kSameNormal) p.pop_back();
   const size_t m = p.size();
   for (size_t i = 0; i < m && m > 1; ++i) {
-    if (Norm(Add(p[i], p[(i + 1) % m])) <= kSameNormal) return true;  // antipodal side
+    if ((p[i] + p[(i + 1) % m]).norm() <= kSameNormal) return true;  // antipodal side
   }
   if (m < 4) return false;
   for (size_t i = 0; i < m; ++i) {
@@ -92,7 +99,7 @@ int Sign(double h, double length) {
 // The good-saddle conditions of VertexStar::good_saddle for a valence-6
 // triangle star w (positions relative to v) with unit test normal n and face
 // normals fn[j] of v w_j w_{j+1}.
-bool IsGoodSaddle(const std::vector<Vec3>& w, const std::vector<Vec3>& fn, const Vec3& n,
+bool IsGoodSaddle(const std::vector<V>& w, const std::vector<V>& fn, const V& n,
                   const std::vector<int>& sign) {
   const int k = 6;
   for (int s : sign) {
@@ -117,22 +124,22 @@ bool IsGoodSaddle(const std::vector<Vec3>& w, const std::vector<Vec3>& fn, const
 
   // 1-1 projection: every face keeps its orientation in the test plane.
   for (int j = 0; j < k; ++j) {
-    if (Dot(Cross(w[j], w[(j + 1) % k]), n) <= 0) return false;
+    if (w[j].cross(w[(j + 1) % k]).dot(n) <= 0) return false;
   }
   // The 4 crossing segments (from v to the zero of the height on w_j w_{j+1}),
   // projected to the plane, are not in a common half-plane: the largest
   // angular gap between consecutive ones is < π.
-  Vec3 t1 = Cross(n, std::abs(n[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0});
-  t1 = Scale(1 / Norm(t1), t1);
-  const Vec3 t2 = Cross(n, t1);
+  V t1 = n.cross(std::abs(n[0]) < 0.9 ? V::UnitX() : V::UnitY());
+  t1 = (1 / t1.norm()) * t1;
+  const V t2 = n.cross(t1);
   std::vector<double> angles;
   for (int j = 0; j < k; ++j) {
-    const Vec3& a = w[j];
-    const Vec3& b = w[(j + 1) % k];
-    const double ha = Dot(n, a), hb = Dot(n, b);
+    const V& a = w[j];
+    const V& b = w[(j + 1) % k];
+    const double ha = n.dot(a), hb = n.dot(b);
     if (sign[j] == sign[(j + 1) % k]) continue;
-    const Vec3 x = Add(a, Scale(ha / (ha - hb), Sub(b, a)));
-    angles.push_back(std::atan2(Dot(x, t2), Dot(x, t1)));
+    const V x = a + ha / (ha - hb) * (b - a);
+    angles.push_back(std::atan2(x.dot(t2), x.dot(t1)));
   }
   CHECK_EQ(angles.size(), 4u);
   std::sort(angles.begin(), angles.end());
@@ -144,9 +151,9 @@ bool IsGoodSaddle(const std::vector<Vec3>& w, const std::vector<Vec3>& fn, const
   // inflection faces.
   for (int j = 0; j < k; ++j) {
     if (sign[j] != sign[(j + 1) % k]) continue;
-    const double before = Dot(fn[j], w[(j + k - 1) % k]);
-    const double after = Dot(fn[j], w[(j + 2) % k]);
-    const double scale_before = Norm(w[(j + k - 1) % k]), scale_after = Norm(w[(j + 2) % k]);
+    const double before = fn[j].dot(w[(j + k - 1) % k]);
+    const double after = fn[j].dot(w[(j + 2) % k]);
+    const double scale_before = w[(j + k - 1) % k].norm(), scale_after = w[(j + 2) % k].norm();
     const int s_before = Sign(before, scale_before), s_after = Sign(after, scale_after);
     if (s_before * s_after < 0) return false;
   }
@@ -160,25 +167,24 @@ unsigned char Channel(double x) {
 }  // namespace
 
 Vec3 FaceNormal(const Mesh& mesh, FaceIndex f) {
-  std::vector<Vec3> p;
+  std::vector<V> p;
   for (VertexIndex v : mesh.vertices_around_face(mesh.halfedge(f))) p.push_back(Position(mesh, v));
   const size_t k = p.size();
-  Vec3 n{0, 0, 0};
+  V n = V::Zero();
   if (k == 3) {
-    n = Cross(Sub(p[1], p[0]), Sub(p[2], p[0]));  // exact
+    n = (p[1] - p[0]).cross(p[2] - p[0]);  // exact
   } else if (k == 4) {
-    n = Cross(Sub(p[2], p[0]), Sub(p[3], p[1]));  // diagonals
+    n = (p[2] - p[0]).cross(p[3] - p[1]);  // diagonals
   } else {
-    const Eigen::Vector3d newell = NewellVector(int(k), [&](int i) { return p[size_t(i)]; });
-    n = {newell[0], newell[1], newell[2]};
+    n = NewellVector(int(k), [&](int i) -> const V& { return p[size_t(i)]; });
   }
   double longest = 0;
-  for (size_t i = 0; i < k; ++i) longest = std::max(longest, Norm(Sub(p[(i + 1) % k], p[i])));
-  const double length = Norm(n);
+  for (size_t i = 0; i < k; ++i) longest = std::max(longest, (p[(i + 1) % k] - p[i]).norm());
+  const double length = n.norm();
   if (!(length > kDegenerateNormal * longest * longest) || !std::isfinite(length)) {
     return {0, 0, 0};
   }
-  return Scale(1 / length, n);
+  return ToArray((1 / length) * n);
 }
 
 std::vector<Vec3> FaceNormals(const Mesh& mesh) {
@@ -195,14 +201,14 @@ std::vector<Vec3> FaceNormals(const Mesh& mesh) {
 
 Vec3 VertexNormal(const Mesh& mesh, const std::vector<Vec3>& face_normals, VertexIndex v) {
   CHECK_EQ(face_normals.size(), mesh.num_faces());
-  Vec3 sum{0, 0, 0};
-  if (mesh.halfedge(v) == Mesh::null_halfedge()) return sum;
+  if (mesh.halfedge(v) == Mesh::null_halfedge()) return {0, 0, 0};
+  V sum = V::Zero();
   for (FaceIndex f : mesh.faces_around_target(mesh.halfedge(v))) {
-    if (f != Mesh::null_face()) sum = Add(sum, face_normals[f.idx()]);
+    if (f != Mesh::null_face()) sum += E(face_normals[f.idx()]);
   }
-  const double length = Norm(sum);
+  const double length = sum.norm();
   if (!(length > 1e-12)) return {0, 0, 0};
-  return Scale(1 / length, sum);
+  return ToArray((1 / length) * sum);
 }
 
 EdgeSmoothness MeasureEdgeSmoothness(const Mesh& mesh, const std::vector<Vec3>& face_normals) {
@@ -220,16 +226,15 @@ EdgeSmoothness MeasureEdgeSmoothness(const Mesh& mesh, const std::vector<Vec3>& 
     const EdgeIndex e(static_cast<EdgeIndex::size_type>(i));
     if (mesh.is_removed(e)) continue;
     const HalfedgeIndex h = mesh.halfedge(e);
-    const double length =
-        Norm(Sub(Position(mesh, mesh.target(h)), Position(mesh, mesh.source(h))));
+    const double length = (Position(mesh, mesh.target(h)) - Position(mesh, mesh.source(h))).norm();
     result.length[e.idx()] = length;
     if (mesh.is_border(e)) continue;
-    const Vec3& nf = face_normals[mesh.face(h).idx()];
-    const Vec3& ng = face_normals[mesh.face(mesh.opposite(h)).idx()];
+    const V nf = E(face_normals[mesh.face(h).idx()]);
+    const V ng = E(face_normals[mesh.face(mesh.opposite(h)).idx()]);
     if (IsZero(nf) || IsZero(ng)) continue;
-    const double angle = std::atan2(Norm(Cross(nf, ng)), Dot(nf, ng));  // |α_e| [§3]
+    const double angle = std::atan2(nf.cross(ng).norm(), nf.dot(ng));  // |α_e| [§3]
     result.measured[e.idx()] = 1;
-    result.dual_length[e.idx()] = Norm(Sub(nf, ng));  // ℓ*_e [§3]
+    result.dual_length[e.idx()] = (nf - ng).norm();  // ℓ*_e [§3]
     result.angle[e.idx()] = angle;
     result.energy[e.idx()] = length * angle;
   }
@@ -240,27 +245,27 @@ std::array<double, 2> ShapeOperatorEigenvalues(const Mesh& mesh,
                                                const std::vector<Vec3>& face_normals,
                                                VertexIndex v) {
   CHECK_EQ(face_normals.size(), mesh.num_faces());
-  const Vec3 n = VertexNormal(mesh, face_normals, v);
+  const V n = E(VertexNormal(mesh, face_normals, v));
   if (IsZero(n)) return {0, 0};
   // W′_v = ½ Σ (n_f × n_f′)(w − v)ᵀ over measured out-edges   [Pellis 2019, §5.3]
   double w[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-  const Vec3 pv = Position(mesh, v);
+  const V pv = Position(mesh, v);
   for (HalfedgeIndex h : OutHalfedges(mesh, v)) {
     if (mesh.is_border(mesh.edge(h))) continue;
-    const Vec3& nf = face_normals[mesh.face(h).idx()];                   // left of v → w
-    const Vec3& ng = face_normals[mesh.face(mesh.opposite(h)).idx()];    // right of v → w
+    const V nf = E(face_normals[mesh.face(h).idx()]);                   // left of v → w
+    const V ng = E(face_normals[mesh.face(mesh.opposite(h)).idx()]);    // right of v → w
     if (IsZero(nf) || IsZero(ng)) return {0, 0};
-    const Vec3 s = Cross(nf, ng);
-    const Vec3 d = Sub(Position(mesh, mesh.target(h)), pv);
+    const V s = nf.cross(ng);
+    const V d = Position(mesh, mesh.target(h)) - pv;
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) w[i][j] += 0.5 * s[i] * d[j];
     }
   }
   // Compression of ½(W′ + W′ᵀ) to the tangent plane, in a basis t1, t2 ⊥ n.
-  Vec3 t1 = Cross(n, std::abs(n[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0});
-  t1 = Scale(1 / Norm(t1), t1);
-  const Vec3 t2 = Cross(n, t1);
-  const auto form = [&](const Vec3& a, const Vec3& b) {
+  V t1 = n.cross(std::abs(n[0]) < 0.9 ? V::UnitX() : V::UnitY());
+  t1 = (1 / t1.norm()) * t1;
+  const V t2 = n.cross(t1);
+  const auto form = [&](const V& a, const V& b) {
     double sum = 0;
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) sum += a[i] * 0.5 * (w[i][j] + w[j][i]) * b[j];
@@ -278,17 +283,18 @@ VertexStar ClassifyVertexStar(const Mesh& mesh, const std::vector<Vec3>& face_no
   VertexStar star;
   const std::vector<HalfedgeIndex> out = OutHalfedges(mesh, v);
   if (out.empty()) return star;
-  std::vector<Vec3> w, fn;
+  std::vector<V> w, fn;
   bool triangles = true;
   for (HalfedgeIndex h : out) {
     if (mesh.is_border(h)) return star;  // boundary vertex
     const FaceIndex f = mesh.face(h);
-    if (IsZero(face_normals[f.idx()])) return star;
-    fn.push_back(face_normals[f.idx()]);
-    w.push_back(Sub(Position(mesh, mesh.target(h)), Position(mesh, v)));
+    const V nf = E(face_normals[f.idx()]);
+    if (IsZero(nf)) return star;
+    fn.push_back(nf);
+    w.push_back(Position(mesh, mesh.target(h)) - Position(mesh, v));
     triangles = triangles && mesh.degree(f) == 3;
   }
-  const Vec3 n = VertexNormal(mesh, face_normals, v);
+  const V n = E(VertexNormal(mesh, face_normals, v));
   if (IsZero(n)) return star;
   star.measured = true;
   star.valence = int(out.size());
@@ -296,7 +302,7 @@ VertexStar ClassifyVertexStar(const Mesh& mesh, const std::vector<Vec3>& face_no
 
   const int k = star.valence;
   std::vector<int> sign(k);
-  for (int j = 0; j < k; ++j) sign[j] = Sign(Dot(n, w[j]), Norm(w[j]));
+  for (int j = 0; j < k; ++j) sign[j] = Sign(n.dot(w[j]), w[j].norm());
   std::vector<int> nonzero;
   for (int s : sign) {
     if (s != 0) nonzero.push_back(s);
@@ -318,7 +324,7 @@ SmoothnessMetrics EdgeMetrics(const Mesh& mesh, const std::vector<Vec3>& normals
   m.vertices = int(mesh.number_of_vertices());
   m.faces = int(mesh.number_of_faces());
   m.edges = int(mesh.number_of_edges());
-  for (FaceIndex f : mesh.faces()) m.degenerate_faces += IsZero(normals[f.idx()]) ? 1 : 0;
+  for (FaceIndex f : mesh.faces()) m.degenerate_faces += IsZero(E(normals[f.idx()])) ? 1 : 0;
 
   const EdgeSmoothness edges = MeasureEdgeSmoothness(mesh, normals);
   for (EdgeIndex e : mesh.edges()) {

@@ -9,27 +9,31 @@
 #include <cstdio>
 #include <iterator>
 
+#include <Eigen/Geometry>
+
+#include "core/newell.h"
 #include "core/solver_options.h"
 #include "geometry/reference.h"
-#include "mesh/vec3.h"
 
 namespace archgeo {
 namespace {
 
 constexpr double kDegrees = 180.0 / 3.14159265358979323846;
 
-std::vector<Vec3> Corners(const Mesh& mesh, FaceIndex f) {
-  std::vector<Vec3> p;
+using V = Eigen::Vector3d;
+
+std::vector<V> Corners(const Mesh& mesh, FaceIndex f) {
+  std::vector<V> p;
   for (VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
-    p.push_back(ToVec3(mesh.point(v)));
+    const Point& x = mesh.point(v);
+    p.emplace_back(x.x(), x.y(), x.z());
   }
   return p;
 }
 
-Vec3 Newell(const std::vector<Vec3>& p) {
-  Vec3 n{0, 0, 0};
-  for (size_t i = 0; i < p.size(); ++i) n = Add(n, Cross(p[i], p[(i + 1) % p.size()]));
-  return Unit(n);
+// The unit Newell normal, or zero for a panel without area.
+V Newell(const std::vector<V>& p) {
+  return NewellNormal(int(p.size()), [&](int i) -> const V& { return p[size_t(i)]; });
 }
 
 // A panel's shape in the plane of its Newell normal.
@@ -51,17 +55,20 @@ bool Cross2(const std::array<double, 2>& a, const std::array<double, 2>& b,
          o4 != 0;
 }
 
-Panel Shape(const std::vector<Vec3>& p) {
+Panel Shape(const std::vector<V>& p) {
   Panel panel;
   const size_t k = p.size();
-  const Vec3 n = Newell(p);
-  Vec3 e1 = Sub(p[1], p[0]);
-  e1 = Unit(Sub(e1, Scale(Dot(e1, n), n)));
-  const Vec3 e2 = Cross(n, e1);
+  const V n = Newell(p);
+  const V side1 = p[1] - p[0];
+  const V in_plane = side1 - side1.dot(n) * n;
+  const double length = in_plane.norm();
+  // e1 is zero where the first side has no length in the plane (or is NaN).
+  const V e1 = length > 0 ? V(in_plane / length) : V::Zero();
+  const V e2 = n.cross(e1);
   std::vector<std::array<double, 2>> q(k);
   for (size_t i = 0; i < k; ++i) {
-    const Vec3 d = Sub(p[i], p[0]);
-    q[i] = {Dot(d, e1), Dot(d, e2)};
+    const V d = p[i] - p[0];
+    q[i] = {d.dot(e1), d.dot(e2)};
   }
   double area = 0;
   for (size_t i = 0; i < k; ++i) {
@@ -76,7 +83,7 @@ Panel Shape(const std::vector<Vec3>& p) {
     const double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - b[0], vy = c[1] - b[1];
     const double turn = std::atan2(s * (ux * vy - uy * vx), ux * vx + uy * vy);  // left turn > 0
     panel.interior.push_back(180.0 - turn * kDegrees);
-    const double side = Norm(Sub(p[(i + 1) % k], p[i]));
+    const double side = (p[(i + 1) % k] - p[i]).norm();
     shortest = std::min(shortest, side);
     longest = std::max(longest, side);
   }
@@ -93,8 +100,8 @@ Panel Shape(const std::vector<Vec3>& p) {
   return panel;
 }
 
-double Angle(const Vec3& a, const Vec3& b) {
-  return std::atan2(Norm(Cross(a, b)), Dot(a, b)) * kDegrees;
+double Angle(const V& a, const V& b) {
+  return std::atan2(a.cross(b).norm(), a.dot(b)) * kDegrees;
 }
 
 void Note(ValidityCheck& c, double value, int element, bool worse_is_larger = true) {
@@ -112,7 +119,7 @@ struct FaceFigures {
   double worst_reflex = 0, worst_small = 180, aspect = 1;
 };
 
-FaceFigures Figures(const std::vector<Vec3>& p, const std::vector<Vec3>& before_corners,
+FaceFigures Figures(const std::vector<V>& p, const std::vector<V>& before_corners,
                     const ValidityLimits& limits) {
   FaceFigures g;
   if (p.size() < 4) return g;
@@ -254,17 +261,17 @@ Validity CheckValidity(const Mesh& out, const Mesh* input, const ValidityLimits&
   // serial pass.
   const FullTeams teams;
   const long faces = long(out.num_faces());  // index slots, removed ones too
-  std::vector<Vec3> normal_out(static_cast<size_t>(faces)), normal_in;
-  if (in) normal_in.resize(size_t(faces));
+  std::vector<V> normal_out(static_cast<size_t>(faces), V::Zero()), normal_in;
+  if (in) normal_in.resize(size_t(faces), V::Zero());
   std::vector<FaceFigures> figures(static_cast<size_t>(faces));
 #pragma omp parallel for schedule(dynamic, 4096)
   for (long i = 0; i < faces; ++i) {
     const FaceIndex f(static_cast<FaceIndex::size_type>(i));
     if (out.is_removed(f)) continue;
-    const std::vector<Vec3> p = Corners(out, f);
+    const std::vector<V> p = Corners(out, f);
     normal_out[size_t(i)] = Newell(p);
     if (in) normal_in[size_t(i)] = Newell(Corners(*in, f));
-    figures[size_t(i)] = Figures(p, in ? Corners(*in, f) : std::vector<Vec3>{}, limits);
+    figures[size_t(i)] = Figures(p, in ? Corners(*in, f) : std::vector<V>{}, limits);
   }
   for (long i = 0; i < faces; ++i) {
     if (out.is_removed(FaceIndex(static_cast<FaceIndex::size_type>(i)))) continue;

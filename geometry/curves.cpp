@@ -15,12 +15,12 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
+#include <Eigen/Core>
 #include <glog/logging.h>
 
 #include "core/input_error.h"
 #include "io/input_file.h"
 #include "io/text_scan.h"
-#include "mesh/vec3.h"
 
 namespace archgeo {
 namespace {
@@ -29,6 +29,11 @@ using Segment = Kernel::Segment_3;
 using SegmentIterator = std::vector<Segment>::const_iterator;
 using SegmentPrimitive = CGAL::AABB_segment_primitive<Kernel, SegmentIterator>;
 using SegmentTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, SegmentPrimitive>>;
+using V = Eigen::Vector3d;
+
+V E(const Vec3& p) { return {p[0], p[1], p[2]}; }
+V E(const Point& p) { return {p.x(), p.y(), p.z()}; }
+Vec3 ToArray(const V& x) { return {x[0], x[1], x[2]}; }
 
 bool Finite(const Vec3& p) {
   return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
@@ -143,9 +148,11 @@ double PolylineLength(const Polyline& polyline) {
   const size_t m = polyline.points.size();
   double length = 0.0;
   for (size_t i = 0; i + 1 < m; ++i) {
-    length += Norm(Sub(polyline.points[i + 1], polyline.points[i]));
+    length += (E(polyline.points[i + 1]) - E(polyline.points[i])).norm();
   }
-  if (polyline.closed && m > 1) length += Norm(Sub(polyline.points[0], polyline.points[m - 1]));
+  if (polyline.closed && m > 1) {
+    length += (E(polyline.points[0]) - E(polyline.points[m - 1])).norm();
+  }
   return length;
 }
 
@@ -174,7 +181,7 @@ PolylineLocator::PolylineLocator(const Polyline& polyline) : impl_(std::make_uni
     CHECK(Finite(a) && a != b) << "PolylineLocator: invalid segment " << i;
     impl_->segments.emplace_back(ToPoint(a), ToPoint(b));
     impl_->arc.push_back(impl_->length);
-    impl_->length += Norm(Sub(b, a));
+    impl_->length += (E(b) - E(a)).norm();
   }
   impl_->tree.insert(impl_->segments.cbegin(), impl_->segments.cend());
   impl_->tree.build();
@@ -191,12 +198,15 @@ PolylineLocator::Location PolylineLocator::Closest(const Vec3& query) const {
   Location location;
   location.point = ToVec3(point);
   location.segment = i;
-  const Vec3 source = ToVec3(segment.source());
-  const Vec3 direction = Sub(ToVec3(segment.target()), source);
-  location.tangent = Unit(direction);
-  const double along = Dot(Sub(location.point, source), location.tangent);
-  location.arc_length = impl_->arc[i] + std::clamp(along, 0.0, Norm(direction));
-  location.distance = Norm(Sub(query, location.point));
+  const V source = E(segment.source());
+  const V direction = E(segment.target()) - source;
+  const double length = direction.norm();
+  // Zero if |direction|² underflows (end points closer than ~1e-154).
+  const V tangent = length > 0 ? V(direction / length) : V::Zero();
+  location.tangent = ToArray(tangent);
+  const double along = (E(point) - source).dot(tangent);
+  location.arc_length = impl_->arc[i] + std::clamp(along, 0.0, length);
+  location.distance = (E(query) - E(point)).norm();
   return location;
 }
 
@@ -229,20 +239,20 @@ namespace {
 
 // Centripetal Catmull-Rom on p0 p1 p2 p3 at u ∈ [0, 1] between p1 and p2
 // (Barry–Goldman pyramid with knot intervals |p_{i+1} − p_i|^½).
-Vec3 CatmullRom(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3, double u) {
+V CatmullRom(const V& p0, const V& p1, const V& p2, const V& p3, double u) {
   const double t0 = 0.0;
-  const double t1 = t0 + std::sqrt(Norm(Sub(p1, p0)));
-  const double t2 = t1 + std::sqrt(Norm(Sub(p2, p1)));
-  const double t3 = t2 + std::sqrt(Norm(Sub(p3, p2)));
+  const double t1 = t0 + std::sqrt((p1 - p0).norm());
+  const double t2 = t1 + std::sqrt((p2 - p1).norm());
+  const double t3 = t2 + std::sqrt((p3 - p2).norm());
   const double t = t1 + u * (t2 - t1);
-  const auto lerp = [](const Vec3& a, const Vec3& b, double ta, double tb, double t) {
-    return Add(Scale((tb - t) / (tb - ta), a), Scale((t - ta) / (tb - ta), b));
+  const auto lerp = [](const V& a, const V& b, double ta, double tb, double t) -> V {
+    return (tb - t) / (tb - ta) * a + (t - ta) / (tb - ta) * b;
   };
-  const Vec3 a1 = lerp(p0, p1, t0, t1, t);
-  const Vec3 a2 = lerp(p1, p2, t1, t2, t);
-  const Vec3 a3 = lerp(p2, p3, t2, t3, t);
-  const Vec3 b1 = lerp(a1, a2, t0, t2, t);
-  const Vec3 b2 = lerp(a2, a3, t1, t3, t);
+  const V a1 = lerp(p0, p1, t0, t1, t);
+  const V a2 = lerp(p1, p2, t1, t2, t);
+  const V a3 = lerp(p2, p3, t2, t3, t);
+  const V b1 = lerp(a1, a2, t0, t2, t);
+  const V b2 = lerp(a2, a3, t1, t3, t);
   return lerp(b1, b2, t1, t2, t);
 }
 
@@ -254,11 +264,11 @@ Polyline SampleCatmullRom(const Polyline& polyline, int samples_per_segment) {
   CHECK_GE(samples_per_segment, 1) << "SampleCatmullRom: samples_per_segment must be >= 1";
   const auto& p = polyline.points;
   // Point i of the extended sequence (phantom points at open ends).
-  const auto at = [&](int i) -> Vec3 {
-    if (polyline.closed) return p[((i % m) + m) % m];
-    if (i < 0) return Sub(Scale(2.0, p[0]), p[1]);
-    if (i >= m) return Sub(Scale(2.0, p[m - 1]), p[m - 2]);
-    return p[i];
+  const auto at = [&](int i) -> V {
+    if (polyline.closed) return E(p[((i % m) + m) % m]);
+    if (i < 0) return 2.0 * E(p[0]) - E(p[1]);
+    if (i >= m) return 2.0 * E(p[m - 1]) - E(p[m - 2]);
+    return E(p[i]);
   };
   Polyline result;
   result.closed = polyline.closed;
@@ -266,8 +276,8 @@ Polyline SampleCatmullRom(const Polyline& polyline, int samples_per_segment) {
   for (int i = 0; i < segments; ++i) {
     result.points.push_back(p[i]);
     for (int s = 1; s < samples_per_segment; ++s) {
-      result.points.push_back(CatmullRom(at(i - 1), at(i), at(i + 1), at(i + 2),
-                                         static_cast<double>(s) / samples_per_segment));
+      result.points.push_back(ToArray(CatmullRom(at(i - 1), at(i), at(i + 1), at(i + 2),
+                                                 static_cast<double>(s) / samples_per_segment)));
     }
   }
   if (!polyline.closed) result.points.push_back(p[m - 1]);

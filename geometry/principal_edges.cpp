@@ -3,6 +3,7 @@
 // Principal edges of triangle meshes (geometry/principal_edges.h).
 #include "geometry/principal_edges.h"
 
+#include <Eigen/Core>
 #include <glog/logging.h>
 
 #include <algorithm>
@@ -15,12 +16,14 @@
 
 #include "core/input_error.h"
 #include "io/input_file.h"
-#include "mesh/vec3.h"
 
 namespace archgeo {
 namespace {
 
-Vec3 P(const Mesh& mesh, VertexIndex v) { return ToVec3(mesh.point(v)); }
+Eigen::Vector3d P(const Mesh& mesh, VertexIndex v) {
+  const Point& p = mesh.point(v);
+  return {p.x(), p.y(), p.z()};
+}
 
 std::vector<VertexIndex> Ring(const Mesh& mesh, VertexIndex v) {
   std::vector<VertexIndex> ring;
@@ -244,19 +247,18 @@ Mesh PrincipalSymmetricTorus(double R, double r, int n_u, int n_v, double noise,
   if (noise > 0) {
     double mean = 0;
     for (EdgeIndex e : mesh.edges()) {
-      mean += Norm(Sub(P(mesh, mesh.vertex(e, 0)), P(mesh, mesh.vertex(e, 1))));
+      mean += (P(mesh, mesh.vertex(e, 0)) - P(mesh, mesh.vertex(e, 1))).norm();
     }
     mean /= double(mesh.number_of_edges());
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> uniform(-1.0, 1.0);
     for (VertexIndex v : mesh.vertices()) {
-      Vec3 d;
+      Eigen::Vector3d d;
       do {
-        d = {uniform(rng), uniform(rng), uniform(rng)};
-      } while (Dot(d, d) > 1);
-      const Vec3 p = P(mesh, v);
-      mesh.point(v) = Point(p[0] + noise * mean * d[0], p[1] + noise * mean * d[1],
-                            p[2] + noise * mean * d[2]);
+        d = Eigen::Vector3d{uniform(rng), uniform(rng), uniform(rng)};  // braces: drawn in order
+      } while (d.squaredNorm() > 1);
+      const Eigen::Vector3d p = P(mesh, v) + noise * mean * d;
+      mesh.point(v) = Point(p[0], p[1], p[2]);
     }
   }
   return mesh;

@@ -7,13 +7,13 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include "geometry/curves.h"
 #include "generators/generators.h"
 #include "core/input_error.h"
 #include "generators/smoothness_surfaces.h"
-#include "mesh/vec3.h"
 #include "tests/make_mesh.h"
 #include "tests/scratch_dir.h"
 
@@ -22,7 +22,10 @@ namespace ARCHGEO_UNITY_ID {
 
 constexpr double kRounding = 1e-12;
 
-double Distance(const Vec3& a, const Vec3& b) { return Norm(Sub(a, b)); }
+using V = Eigen::Vector3d;
+
+V E(const Vec3& x) { return {x[0], x[1], x[2]}; }
+double Distance(const Vec3& a, const Vec3& b) { return (E(a) - E(b)).norm(); }
 
 class ReadPolylinesTest : public ScratchDirTest {
  protected:
@@ -174,9 +177,9 @@ double MaxTurning(const Polyline& p) {
   double worst = 0.0;
   for (size_t i = 0; i < m; ++i) {
     if (!p.closed && (i == 0 || i + 1 == m)) continue;
-    const Vec3 a = Sub(p.points[i], p.points[(i + m - 1) % m]);
-    const Vec3 b = Sub(p.points[(i + 1) % m], p.points[i]);
-    worst = std::max(worst, std::atan2(Norm(Cross(a, b)), Dot(a, b)));
+    const V a = E(p.points[i]) - E(p.points[(i + m - 1) % m]);
+    const V b = E(p.points[(i + 1) % m]) - E(p.points[i]);
+    worst = std::max(worst, std::atan2(a.cross(b).norm(), a.dot(b)));
   }
   return worst;
 }

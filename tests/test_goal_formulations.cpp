@@ -20,6 +20,7 @@
 #include <ceres/loss_function.h>
 #include <ceres/problem.h>
 #include <ceres/solver.h>
+#include <Eigen/Core>
 #include <gtest/gtest.h>
 
 #include "energies/anchor.h"
@@ -35,7 +36,7 @@
 #include "analysis/metrics.h"
 #include "generators/smoothness_surfaces.h"
 #include "mesh/topology.h"
-#include "mesh/vec3.h"
+#include "tests/make_mesh.h"
 
 namespace archgeo {
 namespace ARCHGEO_UNITY_ID {
@@ -95,7 +96,7 @@ void SolveNet(HangingNet* net, double k, double l0) {
   int free = 0;
   for (VertexIndex v : mesh.vertices()) {
     if (net->fixed[v.idx()]) continue;
-    load_sum += Norm(net->loads[v.idx()]);
+    load_sum += Eigen::Vector3d(net->loads[v.idx()].data()).norm();
     ++free;
   }
   const double inv_force = free / load_sum;
@@ -121,15 +122,16 @@ void SolveNet(HangingNet* net, double k, double l0) {
 // x = ½, mirror in y = ½, swap of x and y).
 double SymmetryError(const HangingNet& net) {
   const int n = net.n;
-  auto at = [&](int i, int j) { return ToVec3(net.mesh.point(VertexIndex(j * (n + 1) + i))); };
+  using V = Eigen::Vector3d;
+  auto at = [&](int i, int j) { return Pos(net.mesh, VertexIndex(j * (n + 1) + i)); };
   double worst = 0.0;
   for (int j = 0; j <= n; ++j) {
     for (int i = 0; i <= n; ++i) {
-      const Vec3 p = at(i, j);
-      const Vec3 mx = at(n - i, j), my = at(i, n - j), swap = at(j, i);
-      worst = std::max(worst, Norm(Sub(p, {1.0 - mx[0], mx[1], mx[2]})));
-      worst = std::max(worst, Norm(Sub(p, {my[0], 1.0 - my[1], my[2]})));
-      worst = std::max(worst, Norm(Sub(p, {swap[1], swap[0], swap[2]})));
+      const V p = at(i, j);
+      const V mx = at(n - i, j), my = at(i, n - j), swap = at(j, i);
+      worst = std::max(worst, (p - V(1.0 - mx[0], mx[1], mx[2])).norm());
+      worst = std::max(worst, (p - V(my[0], 1.0 - my[1], my[2])).norm());
+      worst = std::max(worst, (p - V(swap[1], swap[0], swap[2])).norm());
     }
   }
   return worst;
@@ -255,7 +257,7 @@ TEST(ConicalTorus, NoisyPrincipalNetBecomesConicalPlanarWithConstantOffsets) {
   // Nearby: the vertices move by about the noise, not more.
   double moved = 0.0;
   for (VertexIndex v : mesh.vertices()) {
-    moved = std::max(moved, Norm(Sub(ToVec3(mesh.point(v)), ToVec3(noisy.point(v)))));
+    moved = std::max(moved, (Pos(mesh, v) - Pos(noisy, v)).norm());
   }
   EXPECT_LE(moved, 0.1 * edge);
 }

@@ -12,7 +12,6 @@
 #include "generators/generators.h"
 #include "analysis/goal_metrics.h"
 #include "generators/smoothness_surfaces.h"
-#include "mesh/vec3.h"
 #include "tests/make_mesh.h"
 
 namespace archgeo {

@@ -8,6 +8,7 @@
 // other terms in small solves (frame conversion of lengths and directions,
 // shear, bending, curvature flow, a curve file), `terms.<t>.select`, and
 // goal terms on meshes they do not fit.
+#include <Eigen/Core>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -28,10 +29,10 @@
 #include "mesh/similarity.h"
 #include "generators/smoothness_surfaces.h"
 #include "mesh/topology.h"
-#include "mesh/vec3.h"
 #include "problems/commands/generate.h"
 #include "problems/runtime/solve.h"
 #include "problems/spec/spec.h"
+#include "tests/make_mesh.h"
 #include "tests/scratch_dir.h"
 
 namespace archgeo {
@@ -58,7 +59,7 @@ std::unique_ptr<Solution> SolveSpec(const ProblemSpec& spec, const Mesh& mesh) {
 double MaxDisplacement(const Mesh& a, const Mesh& b) {
   double m = 0;
   for (VertexIndex v : a.vertices()) {
-    m = std::max(m, Norm(Sub(ToVec3(a.point(v)), ToVec3(b.point(v)))));
+    m = std::max(m, (Pos(a, v) - Pos(b, v)).norm());
   }
   return m;
 }
@@ -179,16 +180,16 @@ TEST(HangingNet, LoadDirectionIsInTheFileAxes) {
     const Point p = grid.point(v);
     grid.point(v) = Point(c * p.x() + 3, p.y() - 2, s * p.x() + 1);
   }
-  const Vec3 normal{-s, 0, c};
+  const Eigen::Vector3d normal(-s, 0, c);
   const ProblemSpec spec = ParseSpec(
       "problem: custom\nfixed: boundary\nterms:\n  load: {load: 1, direction: [" +
       std::to_string(normal[0]) + ", 0, " + std::to_string(normal[2]) + "]}\n");
   const std::unique_ptr<Solution> sol = SolveSpec(spec, grid);
   double along = 0, across = 0;
   for (VertexIndex v : grid.vertices()) {
-    const Vec3 d = Sub(ToVec3(sol->output.point(v)), ToVec3(grid.point(v)));
-    along = std::max(along, Dot(d, normal));
-    across = std::max(across, Norm(Sub(d, Scale(Dot(d, normal), normal))));
+    const Eigen::Vector3d d = Pos(sol->output, v) - Pos(grid, v);
+    along = std::max(along, d.dot(normal));
+    across = std::max(across, (d - d.dot(normal) * normal).norm());
   }
   EXPECT_GT(along, 0.5);
   EXPECT_LE(across, 1e-5);  // the direction's 6 printed digits
@@ -270,8 +271,8 @@ TEST_F(EvenBoundaryExample, SpacesTheBoundaryEvenlyOnThePerimeter) {
   const ReferenceSurface surface(dome);
   double away = 0;
   for (VertexIndex v : out.vertices()) {
-    away = std::max(away, Norm(Sub(surface.Closest(ToVec3(out.point(v))).point,
-                                   ToVec3(out.point(v)))));
+    const Eigen::Vector3d closest(surface.Closest(ToVec3(out.point(v))).point.data());
+    away = std::max(away, (closest - Pos(out, v)).norm());
   }
   EXPECT_LE(away, 0.005 * diagonal);
   std::printf("dome: boundary spacing %.2e -> %.2e, off the perimeter %.2e, off the surface "
@@ -394,11 +395,11 @@ TEST(ShearAndBending, RectanglesAndStraightLines) {
   const std::unique_ptr<Solution> a = SolveSpec(shear, sheared);
   double worst = 0;
   for (FaceIndex f : a->output.faces()) {
-    std::vector<Vec3> p;
+    std::vector<Eigen::Vector3d> p;
     for (VertexIndex v : CGAL::vertices_around_face(a->output.halfedge(f), a->output)) {
-      p.push_back(ToVec3(a->output.point(v)));
+      p.push_back(Pos(a->output, v));
     }
-    worst = std::max(worst, std::abs(Norm(Sub(p[2], p[0])) - Norm(Sub(p[3], p[1]))));
+    worst = std::max(worst, std::abs((p[2] - p[0]).norm() - (p[3] - p[1]).norm()));
   }
   EXPECT_LE(worst, 1e-8);
 

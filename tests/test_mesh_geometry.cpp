@@ -7,6 +7,7 @@
 #include <set>
 #include <vector>
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include "make_mesh.h"
@@ -14,7 +15,6 @@
 #include "analysis/metrics.h"
 #include "geometry/reference.h"
 #include "mesh/topology.h"
-#include "mesh/vec3.h"
 
 namespace archgeo {
 namespace ARCHGEO_UNITY_ID {
@@ -22,12 +22,17 @@ namespace ARCHGEO_UNITY_ID {
 constexpr double kExact = 1e-12;
 const double kDegree = M_PI / 180.0;
 
+using V = Eigen::Vector3d;
+
+V E(const Vec3& x) { return {x[0], x[1], x[2]}; }
+Vec3 ToArray(const V& x) { return {x[0], x[1], x[2]}; }
+
 double AngleBetween(const Vec3& a, const Vec3& b) {
-  return std::atan2(Norm(Cross(a, b)), Dot(a, b));
+  return std::atan2(E(a).cross(E(b)).norm(), E(a).dot(E(b)));
 }
 
 void ExpectNear(const Vec3& actual, const Vec3& expected, double tolerance) {
-  EXPECT_LE(Norm(Sub(actual, expected)), tolerance)
+  EXPECT_LE((E(actual) - E(expected)).norm(), tolerance)
       << "actual (" << actual[0] << ", " << actual[1] << ", " << actual[2] << "), expected ("
       << expected[0] << ", " << expected[1] << ", " << expected[2] << ")";
 }
@@ -50,14 +55,14 @@ Vec3 SphereCap(double u, double v) {  // unit sphere, a 1 x 1 radian patch aroun
 
 Mesh Transformed(const Mesh& mesh, double scale, const Vec3& axis, double angle,
                  const Vec3& translation) {
-  const Vec3 k = Unit(axis);
+  const V k = E(axis).normalized();
   Mesh out = mesh;
   for (VertexIndex v : out.vertices()) {
-    const Vec3 p = ToVec3(out.point(v));
+    const V p = Pos(out, v);
     // Rodrigues: R p = p cos + (k x p) sin + k (k.p)(1 - cos)
-    const Vec3 r = Add(Add(Scale(std::cos(angle), p), Scale(std::sin(angle), Cross(k, p))),
-                       Scale(Dot(k, p) * (1 - std::cos(angle)), k));
-    out.point(v) = ToPoint(Add(Scale(scale, r), translation));
+    const V r = std::cos(angle) * p + std::sin(angle) * k.cross(p) +
+                k.dot(p) * (1 - std::cos(angle)) * k;
+    out.point(v) = ToPoint(ToArray(scale * r + E(translation)));
   }
   return out;
 }
@@ -77,9 +82,9 @@ TEST(QuadGrid, VertexOrderAndCounts) {
   // Counter-clockwise in (u, v): the first face's normal points up on a flat square.
   const Mesh flat = QuadGrid(2, 2, FlatSquare);
   const auto h = flat.halfedge(FaceIndex(0));
-  const Vec3 a = ToVec3(flat.point(flat.source(h))), b = ToVec3(flat.point(flat.target(h))),
-             c = ToVec3(flat.point(flat.target(flat.next(h))));
-  EXPECT_GT(Cross(Sub(b, a), Sub(c, b))[2], 0);
+  const V a = Pos(flat, flat.source(h)), b = Pos(flat, flat.target(h)),
+          c = Pos(flat, flat.target(flat.next(h)));
+  EXPECT_GT((b - a).cross(c - b)[2], 0);
 }
 
 TEST(QuadGrid, NoiseIsBoundedAndSeeded) {
@@ -89,7 +94,7 @@ TEST(QuadGrid, NoiseIsBoundedAndSeeded) {
   const double bound = noise * ComputeMetrics(clean, nullptr, nullptr).mean_edge_length;
   double largest = 0;
   for (VertexIndex v : clean.vertices()) {
-    largest = std::max(largest, Norm(Sub(ToVec3(noisy.point(v)), ToVec3(clean.point(v)))));
+    largest = std::max(largest, (Pos(noisy, v) - Pos(clean, v)).norm());
   }
   EXPECT_LE(largest, bound);
   EXPECT_GT(largest, 0.8 * bound);  // 99 uniform draws: the largest is near the bound
@@ -112,18 +117,17 @@ TEST(RoofSurface, Formula) {
 // ---------------------------------------------------------------- reference
 
 TEST(ReferenceSurface, PlaneClosestPointAndNormalAreExact) {
-  const Vec3 origin{0.2, -0.1, 0.3}, a{1.0, 0.0, 0.5}, b{0.0, 1.0, -0.25};
-  const Mesh plane = QuadGrid(6, 5, [&](double u, double v) {
-    return Add(origin, Add(Scale(u, a), Scale(v, b)));
-  });
+  const V origin(0.2, -0.1, 0.3), a(1.0, 0.0, 0.5), b(0.0, 1.0, -0.25);
+  const Mesh plane =
+      QuadGrid(6, 5, [&](double u, double v) { return ToArray(origin + (u * a + v * b)); });
   const ReferenceSurface reference(plane);
-  const Vec3 n = Unit(Cross(a, b));  // S_u x S_v: the grid's orientation
+  const V n = a.cross(b).normalized();  // S_u x S_v: the grid's orientation
   for (const auto& [u, v, h] : std::vector<std::array<double, 3>>{
            {0.37, 0.61, 0.8}, {0.5, 0.5, -0.3}, {0.01, 0.93, 2.0}}) {
-    const Vec3 foot = Add(origin, Add(Scale(u, a), Scale(v, b)));
-    const ReferenceSurface::SurfacePoint closest = reference.Closest(Add(foot, Scale(h, n)));
-    ExpectNear(closest.point, foot, kExact);
-    ExpectNear(closest.normal, n, kExact);
+    const V foot = origin + (u * a + v * b);
+    const ReferenceSurface::SurfacePoint closest = reference.Closest(ToArray(foot + h * n));
+    ExpectNear(closest.point, ToArray(foot), kExact);
+    ExpectNear(closest.normal, ToArray(n), kExact);
   }
 }
 
@@ -135,11 +139,11 @@ TEST(ReferenceSurface, SphereCapClosestPointAndSmoothNormal) {
     for (double v = 0.1; v < 0.95; v += 0.0617) {
       const Vec3 direction = SphereCap(u, v);
       for (double radius : {0.8, 1.3}) {
-        const auto closest = reference.Closest(Scale(radius, direction));
-        worst_radius = std::max(worst_radius, std::abs(Norm(closest.point) - 1.0));
+        const auto closest = reference.Closest(ToArray(radius * E(direction)));
+        worst_radius = std::max(worst_radius, std::abs(E(closest.point).norm() - 1.0));
         // the sphere's normal at the closest point is its direction
         worst_angle = std::max(worst_angle, AngleBetween(closest.normal, closest.point));
-        EXPECT_NEAR(Norm(closest.normal), 1.0, kExact);
+        EXPECT_NEAR(E(closest.normal).norm(), 1.0, kExact);
         // The facet through the foot point tilts by up to ~1/60 rad from the
         // sphere's tangent plane: the foot moves sideways by |radius - 1| / 60.
         ExpectNear(closest.point, direction, std::abs(radius - 1) / 60 * 1.5);
@@ -157,10 +161,11 @@ TEST(ReferenceSurface, NormalIsContinuousAcrossTriangleEdges) {
   // Walk just above the surface across five quads; the facet normals jump by
   // degrees at every edge, the interpolated normal moves by a tiny step.
   const double step = 1e-4;
-  Vec3 previous = reference.Closest(Add(RoofSurface(0.3, 0.42), {0, 0, 1e-3})).normal;
+  const V lift(0, 0, 1e-3);
+  Vec3 previous = reference.Closest(ToArray(E(RoofSurface(0.3, 0.42)) + lift)).normal;
   double largest_jump = 0;
   for (double u = 0.3 + step; u < 0.8; u += step) {
-    const Vec3 normal = reference.Closest(Add(RoofSurface(u, 0.42), {0, 0, 1e-3})).normal;
+    const Vec3 normal = reference.Closest(ToArray(E(RoofSurface(u, 0.42)) + lift)).normal;
     largest_jump = std::max(largest_jump, AngleBetween(normal, previous));
     previous = normal;
   }
@@ -174,15 +179,16 @@ TEST(ReferenceSurface, BoundaryOfPlanarSquareIsExact) {
     const auto closest = reference.ClosestOnBoundary(query);
     ASSERT_TRUE(closest.has_value());
     ExpectNear(closest->point, point, kExact);
-    EXPECT_NEAR(std::abs(Dot(closest->tangent, tangent)), 1.0, kExact);
-    EXPECT_NEAR(Norm(closest->tangent), 1.0, kExact);
+    EXPECT_NEAR(std::abs(E(closest->tangent).dot(E(tangent))), 1.0, kExact);
+    EXPECT_NEAR(E(closest->tangent).norm(), 1.0, kExact);
   };
   ExpectLine({0.3, -0.2, 0.5}, {0.3, 0, 0}, {1, 0, 0});
   ExpectLine({1.3, 0.6, -0.2}, {1, 0.6, 0}, {0, 1, 0});
   ExpectLine({0.6, 0.9, 0.4}, {0.6, 1, 0}, {1, 0, 0});  // from inside the square
   // At a corner the tangent bisects the two boundary edges.
-  ExpectLine({-0.1, -0.2, 0}, {0, 0, 0}, Unit({1, -1, 0}));
-  ExpectLine({1.2, 1.1, 0.3}, {1, 1, 0}, Unit({1, -1, 0}));
+  const Vec3 bisector = ToArray(V(1, -1, 0).normalized());
+  ExpectLine({-0.1, -0.2, 0}, {0, 0, 0}, bisector);
+  ExpectLine({1.2, 1.1, 0.3}, {1, 1, 0}, bisector);
 }
 
 TEST(ReferenceSurface, ClosedCubeHasNoBoundary) {

@@ -38,7 +38,6 @@
 #include "geometry/principal_edges.h"
 #include "analysis/smoothness_metrics.h"
 #include "mesh/topology.h"
-#include "mesh/vec3.h"
 #include "problems/declarations/field_pipeline.h"
 #include "problems/runtime/solve.h"
 #include "problems/spec/spec.h"
@@ -59,7 +58,7 @@ std::unique_ptr<Solution> SolveYaml(const std::string& yaml, const Mesh& mesh,
 double MaxDisplacement(const Mesh& a, const Mesh& b) {
   double m = 0;
   for (VertexIndex v : a.vertices()) {
-    m = std::max(m, Norm(Sub(ToVec3(a.point(v)), ToVec3(b.point(v)))));
+    m = std::max(m, (Pos(a, v) - Pos(b, v)).norm());
   }
   return m;
 }
@@ -318,13 +317,13 @@ TEST(Terms, OnCurveKeepsTheBoundaryOnItsPolygonUnderLaplacianShrinking) {
     double worst = 0;
     for (VertexIndex v : m.vertices()) {
       if (!boundary[v.idx()]) continue;
-      const Vec3 x = ToVec3(m.point(v));
+      const Eigen::Vector3d x = Pos(m, v);
       double best = INFINITY;
       for (size_t i = 0; i < polygon.size(); ++i) {
-        const Vec3 a = polygon[i], b = polygon[(i + 1) % polygon.size()];
-        const Vec3 d = Sub(b, a);
-        const double t = std::clamp(Dot(Sub(x, a), d) / Dot(d, d), 0.0, 1.0);
-        best = std::min(best, Norm(Sub(x, Add(a, Scale(t, d)))));
+        const Eigen::Vector3d a(polygon[i].data()), b(polygon[(i + 1) % polygon.size()].data());
+        const Eigen::Vector3d d = b - a;
+        const double t = std::clamp((x - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
+        best = std::min(best, (x - (a + t * d)).norm());
       }
       worst = std::max(worst, best);
     }

@@ -7,13 +7,14 @@
 #include <cstdio>
 #include <limits>
 
+#include <Eigen/Core>
+
 #include "energies/registry.h"
 #include "geometry/curves.h"
 #include "mesh/elements.h"
 #include "core/input_error.h"
 #include "geometry/reference.h"
 #include "mesh/similarity.h"
-#include "mesh/vec3.h"
 #include "problems/runtime/model.h"
 #include "problems/spec/selection.h"
 
@@ -33,18 +34,19 @@ bool On(const Settings& s, const std::string& term) {
 void FormDetails(HookContext& c) {
   const Settings& s = *c.settings;
   const std::vector<double> d = s.Numbers("terms.load.direction");
-  Vec3 u{d[0], d[1], d[2]};
-  u = Scale(1.0 / Norm(u), u);
+  Eigen::Vector3d u(d[0], d[1], d[2]);
+  u = (1.0 / u.norm()) * u;
   const Mesh& mesh = c.store->mesh();
-  std::vector<Vec3> supports;
+  std::vector<Eigen::Vector3d> supports;
   double top = -std::numeric_limits<double>::infinity();
   double support_top = top;
   for (VertexIndex v : mesh.vertices()) {
-    const Vec3 x = c.frame.FromCanonical(ToVec3(mesh.point(v)));
-    top = std::max(top, Dot(u, x));
+    const Vec3 p = c.frame.FromCanonical(ToVec3(mesh.point(v)));
+    const Eigen::Vector3d x(p[0], p[1], p[2]);
+    top = std::max(top, u.dot(x));
     if (!c.fixed[v.idx()]) continue;
-    support_top = std::max(support_top, Dot(u, x));
-    supports.push_back(Sub(x, Scale(Dot(u, x), u)));
+    support_top = std::max(support_top, u.dot(x));
+    supports.push_back(x - u.dot(x) * u);
   }
   const double balance = c.Measure("force_balance_max");
   nlohmann::json form = {{"force_balance_max", balance},
@@ -57,7 +59,7 @@ void FormDetails(HookContext& c) {
     double span = 0;
     for (size_t i = 0; i < supports.size(); ++i) {
       for (size_t j = i + 1; j < supports.size(); ++j) {
-        span = std::max(span, Norm(Sub(supports[i], supports[j])));
+        span = std::max(span, (supports[i] - supports[j]).norm());
       }
     }
     const double rise = top - support_top;

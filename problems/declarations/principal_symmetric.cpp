@@ -40,13 +40,14 @@
 // tolerance is a violation).
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 #include "core/problem.h"
 #include "core/input_error.h"
 #include "io/io.h"
 #include "io/output_files.h"
 #include "geometry/principal_edges.h"
 #include "analysis/smoothness_metrics.h"
-#include "mesh/vec3.h"
 #include "problems/runtime/model.h"
 #include "problems/declarations/suitability.h"
 
@@ -64,19 +65,27 @@ struct Labels : ProblemState {
 bool Split(const Settings& s) { return s.Given("split.diagonal") || s.Given("split.principal"); }
 bool EdgeFile(const Settings& s) { return !s.String("principal_edges").empty(); }
 
-Vec3 P(const Mesh& mesh, int v) { return ToVec3(mesh.point(VertexIndex(v))); }
-Vec3 B(Store& store, const char* name, int i) {
-  const double* x = store.At(name, i);
-  return {x[0], x[1], x[2]};
+using V = Eigen::Vector3d;
+
+V E(const Point& p) { return {p.x(), p.y(), p.z()}; }
+V E(const Vec3& x) { return {x[0], x[1], x[2]}; }
+V P(const Mesh& mesh, int v) { return E(mesh.point(VertexIndex(v))); }
+V B(Store& store, const char* name, int i) { return Eigen::Map<const V>(store.At(name, i)); }
+
+// x / |x|, or zero where |x| is 0 or NaN (Eigen's normalized() returns x
+// itself there): a sphere normal a diverged solve left at zero or NaN.
+V UnitOrZero(const V& x) {
+  const double length = x.norm();
+  return length > 0 ? V(x / length) : V::Zero();
 }
 
 double AngleSum(const Mesh& mesh, VertexIndex v) {
   double sum = 0;
   for (HalfedgeIndex h : CGAL::halfedges_around_target(mesh.halfedge(v), mesh)) {
     if (mesh.is_border(h)) continue;
-    const Vec3 a = Sub(ToVec3(mesh.point(mesh.source(h))), ToVec3(mesh.point(v)));
-    const Vec3 b = Sub(ToVec3(mesh.point(mesh.target(mesh.next(h)))), ToVec3(mesh.point(v)));
-    sum += std::atan2(Norm(Cross(a, b)), Dot(a, b));
+    const V a = E(mesh.point(mesh.source(h))) - E(mesh.point(v));
+    const V b = E(mesh.point(mesh.target(mesh.next(h)))) - E(mesh.point(v));
+    sum += std::atan2(a.cross(b).norm(), a.dot(b));
   }
   return sum;
 }
@@ -132,10 +141,10 @@ void UpdateSaddles(HookContext& c, bool classify) {
     double* saddle = st.At("saddle", s[0]);
     if (classify) saddle[0] = AngleSum(mesh, VertexIndex(s[0])) > 2 * kPi ? 1 : 0;
     if (saddle[0] == 0) continue;
-    const Vec3 n = Unit(B(st, "sphere_normal", s[0]));
+    const V n = UnitOrZero(B(st, "sphere_normal", s[0]));
     const double kappa = st.At("sphere_curvature", s[0])[0];
     for (int k = 0; k < 2; ++k) {
-      const double side = kappa * Dot(n, Sub(P(mesh, s[1 + k]), P(mesh, s[0])));
+      const double side = kappa * n.dot(P(mesh, s[1 + k]) - P(mesh, s[0]));
       st.At("saddle_dummy", s[0])[k] = std::sqrt(std::max(0.0, -side));
     }
   }
@@ -177,12 +186,12 @@ void Init(HookContext& c) {
   // the least-squares sphere through the four other neighbours.
   const std::vector<Vec3> face_normals = FaceNormals(mesh);
   for (const PrincipalStar& s : stars) {
-    Vec3 n = VertexNormal(mesh, face_normals, s.v);
-    if (Norm(n) == 0) n = {0, 0, 1};
+    V n = E(VertexNormal(mesh, face_normals, s.v));
+    if (n.norm() == 0) n = V::UnitZ();
     double ab = 0, aa = 0;
     for (VertexIndex w : s.other) {
-      const Vec3 d = Sub(ToVec3(mesh.point(w)), ToVec3(mesh.point(s.v)));
-      const double a = Dot(d, d), b = Dot(n, d);
+      const V d = E(mesh.point(w)) - E(mesh.point(s.v));
+      const double a = d.squaredNorm(), b = n.dot(d);
       ab += a * b;
       aa += a * a;
     }
@@ -194,10 +203,10 @@ void Init(HookContext& c) {
   }
   for (size_t i = 0; i < strip_set.size(); ++i) {
     const int v = strip_set.Vertices(i)[0], w = strip_set.Vertices(i)[1];
-    const Vec3 nv = B(st, "sphere_normal", v), nw = B(st, "sphere_normal", w);
-    Vec3 m = Cross(Sub(P(mesh, w), P(mesh, v)), Vec3{nv[0] + nw[0], nv[1] + nw[1], nv[2] + nw[2]});
-    if (Norm(m) == 0) m = Cross(Sub(P(mesh, w), P(mesh, v)), Vec3{1, 0, 0});
-    const Vec3 u = Unit(m);
+    const V along = P(mesh, w) - P(mesh, v);
+    V m = along.cross(B(st, "sphere_normal", v) + B(st, "sphere_normal", w));
+    if (m.norm() == 0) m = along.cross(V::UnitX());
+    const V u = UnitOrZero(m);
     double* block = st.At("strip_normal", strip_set.edge[i]);
     for (int k = 0; k < 3; ++k) block[k] = u[k];
   }
@@ -222,24 +231,26 @@ Conditions Measure(HookContext& c) {
   r.strips = int(strips.size());
   for (size_t i = 0; i < stars.size(); ++i) {
     const int* s = stars.Vertices(i);
-    const Vec3 n = Unit(B(st, "sphere_normal", s[0]));
+    const V n = UnitOrZero(B(st, "sphere_normal", s[0]));
     const double kappa = st.At("sphere_curvature", s[0])[0];
     for (int k = 3; k < 7; ++k) {
-      const Vec3 d = Sub(P(mesh, s[k]), P(mesh, s[0]));
-      r.co_spherical_max = std::max(r.co_spherical_max, std::abs(0.5 * kappa * Dot(d, d) - Dot(n, d)));
+      const V d = P(mesh, s[k]) - P(mesh, s[0]);
+      r.co_spherical_max =
+          std::max(r.co_spherical_max, std::abs(0.5 * kappa * d.squaredNorm() - n.dot(d)));
     }
     if (st.At("saddle", s[0])[0] == 0) continue;
     for (int k = 1; k < 3; ++k) {
       ++r.saddle_terms;
-      const double side = kappa * Dot(n, Sub(P(mesh, s[k]), P(mesh, s[0])));
+      const double side = kappa * n.dot(P(mesh, s[k]) - P(mesh, s[0]));
       r.saddle_excess = std::max(r.saddle_excess, side);
       if (side > slack) ++r.saddle_violations;
     }
   }
   for (size_t i = 0; i < strips.size(); ++i) {
     const int v = strips.Vertices(i)[0], w = strips.Vertices(i)[1];
-    const Vec3 t = Unit(Sub(P(mesh, w), P(mesh, v)));
-    const double det = Dot(t, Cross(Unit(B(st, "sphere_normal", v)), Unit(B(st, "sphere_normal", w))));
+    const V t = UnitOrZero(P(mesh, w) - P(mesh, v));
+    const V nv = UnitOrZero(B(st, "sphere_normal", v)), nw = UnitOrZero(B(st, "sphere_normal", w));
+    const double det = t.dot(nv.cross(nw));
     r.strip_max = std::max(r.strip_max, std::abs(det));
   }
   return r;
