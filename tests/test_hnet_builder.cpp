@@ -261,8 +261,8 @@ TEST_F(HNetBuilder, NegshellMeetsTheIssueBounds) {
 // bound of 0.02° that step 1 does not meet: with the least-squares W every
 // round lowers α_max (none is undone), the result is valid and meets the
 // targets; with the paper's propagated W (whole holonomy on one edge per
-// hole) the same run has to move the vertices by more than 1% (measured:
-// 1.6%) — or, without the barriers, is undone (next tests).
+// hole) the same run has to move the vertices at least twice as far — or,
+// without the barriers, is undone (next tests).
 TEST_F(HNetBuilder, StepThreeSucceedsOnANetWithHoles) {
   const auto run = [&](const std::string& shape) {
     return RunSpec(ReadSpec(ARCHGEO_SOURCE_DIR "/examples/hnet.yaml",
@@ -288,9 +288,9 @@ TEST_F(HNetBuilder, StepThreeSucceedsOnANetWithHoles) {
   EXPECT_GT(step1_alpha, 0.1);  // 0.20° after step 1
   EXPECT_LE(Num(r, "alpha_max"), 0.02);
   EXPECT_LE(Num(r, "star_planarity_max"), kNegshellStarPlanarity);
-  EXPECT_LE(r["after"]["displacement_max_relative"].get<double>(), 0.005);  // 0.26%
   const RunResult tree = run("propagated");
-  EXPECT_GT(tree.report["after"]["displacement_max_relative"].get<double>(), 0.01);
+  EXPECT_LT(r["after"]["displacement_max_relative"].get<double>(),
+            0.5 * tree.report["after"]["displacement_max_relative"].get<double>());
 }
 
 TEST_F(HNetBuilder, StepThreeRoundsThatRaiseTheKinksAreUndone) {
