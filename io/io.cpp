@@ -12,6 +12,10 @@
 //     own soup readers are not used: soup_readers.h says why.)
 //  3. CheckSoup: non-finite points, faces with fewer than 3 vertices,
 //     out-of-range or repeated indices, degenerate faces.
+//  3b. WeldCoincidentVertices (io/weld.h) when limits.weld_distance > 0:
+//     a per-face-vertices export becomes one surface; the weld's result is
+//     checked again (step 3 and 4), and a face it collapses or a
+//     non-manifold vertex it makes is bad input.
 //  4. PMP::orient_polygon_soup, refused if it had to duplicate a vertex or
 //     left an edge with one direction in both its faces
 //     (io/soup_halfedges.h); then PMP::polygon_soup_to_polygon_mesh
@@ -22,6 +26,7 @@
 // points and drops isolated ones, renumbering the vertices.
 // Messages number vertices and faces from 0, in file order.
 #include "io/io.h"
+#include "io/weld.h"
 
 #include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/OFF.h>
@@ -42,6 +47,7 @@
 #include <sstream>
 #include <type_traits>
 
+#include "core/input_error.h"
 #include "io/input_file.h"
 #include "io/soup_halfedges.h"
 #include "io/soup_readers.h"
@@ -195,6 +201,19 @@ struct OrientationVisitor : PMP::Default_orientation_visitor {
   void polygon_orientation_reversed(std::size_t p) { report->flipped[p] = !report->flipped[p]; }
 };
 
+// Welds the soup's coincident vertices (io/weld.h); the number welded away.
+std::size_t Weld(Soup* soup, double distance) {
+  if (!(distance > 0)) return 0;
+  std::vector<std::array<double, 3>> points;
+  points.reserve(soup->points.size());
+  for (const Point& p : soup->points) points.push_back({p.x(), p.y(), p.z()});
+  const std::size_t welded = WeldCoincidentVertices(&points, &soup->polygons, distance);
+  if (welded == 0) return 0;
+  soup->points.clear();
+  for (const auto& p : points) soup->points.emplace_back(p[0], p[1], p[2]);
+  return welded;
+}
+
 // Orients the soup consistently and returns the number of faces flipped.
 // Fails if that needs duplicated vertices (non-manifold or non-orientable).
 int Orient(const std::string& path, Soup* soup, const LineMap& lines) {
@@ -330,8 +349,23 @@ Mesh ReadMeshFromMemory(const std::string& name, std::string_view data, ReadInfo
   LineMap lines;
   Soup soup = ParseSoup(name, format, data, limits, &lines);
   CheckSoup(name, soup, lines);
-  const int flipped = Orient(name, &soup, lines);
-  if (info != nullptr) *info = {FormatName(format), flipped};
+  const std::size_t welded = Weld(&soup, limits.weld_distance);
+  int flipped = 0;
+  if (welded == 0) {
+    flipped = Orient(name, &soup, lines);
+  } else {
+    try {
+      LineMap faces_only;  // vertex numbers changed: no vertex lines
+      faces_only.face = lines.face;
+      CheckSoup(name, soup, faces_only);
+      flipped = Orient(name, &soup, faces_only);
+    } catch (const InputError& e) {
+      throw InputError(e.file(), e.line(), "limits.weld_distance",
+                       e.message() + " (after welding " + std::to_string(welded) +
+                           " coincident vertices; limits.weld_distance: 0 reads the file unwelded)");
+    }
+  }
+  if (info != nullptr) *info = {FormatName(format), flipped, int(welded)};
 
   // Every point (isolated ones included) in file order, then every face.
   // CGAL's precondition here, is_polygon_soup_a_polygon_mesh, is off in

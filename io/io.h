@@ -17,6 +17,7 @@ namespace archgeo {
 struct ReadInfo {
   std::string format;        // "obj", "off" or "ply"
   int reoriented_faces = 0;  // faces flipped to make the orientation consistent
+  int welded_vertices = 0;   // coincident vertices welded away (io/weld.h)
 };
 
 // Reads a polygon mesh (format from the extension, case-insensitive; the

@@ -27,6 +27,9 @@ struct ReadLimits {
   // Size of the file in bytes (it is read whole): 8 GiB,
   // enough for the vertex and face limits above in OBJ.    spec: limits.max_file_bytes
   std::uint64_t max_file_bytes = std::uint64_t{8} << 30;
+  // Vertices closer than this × the mean edge length are
+  // welded into one (io/weld.h); 0: never.                 spec: limits.weld_distance
+  double weld_distance = 1e-6;
 };
 
 }  // namespace archgeo

@@ -152,6 +152,7 @@ ReadLimits LimitsOfSpec(const Settings& s) {
   limits.max_faces = size_t(s.Integer("limits.max_faces"));
   limits.max_face_degree = size_t(s.Integer("limits.max_face_degree"));
   limits.max_file_bytes = std::uint64_t(s.Integer("limits.max_file_bytes"));
+  limits.weld_distance = s.Number("limits.weld_distance");
   return limits;
 }
 
@@ -289,7 +290,9 @@ class SpecRun {
     rep["mesh"] = spec_.mesh();
     rep["reference"] = spec_.reference().empty() ? spec_.mesh() : spec_.reference();
     rep["problem"] = d_.name;
-    rep["input"] = {{"format", info_.format}, {"reoriented_faces", info_.reoriented_faces}};
+    rep["input"] = {{"format", info_.format},
+                    {"reoriented_faces", info_.reoriented_faces},
+                    {"welded_vertices", info_.welded_vertices}};
     rep["units"] = UnitsJson(net.derived, scale_);
     rep["settings"] = s_.ToJson();
     rep["blas"] = BlasLibrary();
@@ -479,6 +482,11 @@ class SpecRun {
   std::string ValidityLines() const {
     const LoopResult& solved = solution_->loop;
     std::string lines = "validity: every check passed\n";
+    if (info_.welded_vertices > 0) {
+      lines += "WARNING: the input had coincident vertices: " +
+               std::to_string(info_.welded_vertices) +
+               " were welded on reading (limits.weld_distance; the report's input section)\n";
+    }
     if (!validity_.Warnings().empty()) lines = "validity: valid; warnings:\n" + validity_.Warnings();
     if (solved.restored_valid) {
       lines += "the last round was not valid: the output is round " +

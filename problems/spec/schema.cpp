@@ -56,6 +56,9 @@ std::vector<Key> CommonKeys(const ProblemDecl& d) {
                             "refuse faces with more vertices"));
   keys.push_back(IntegerKey("limits.max_file_bytes", 8589934592LL, 1, 1LL << 50,
                             "refuse input files larger than this (they are read whole)"));
+  keys.push_back(NumberKey("limits.weld_distance", 1e-6, 0, 0.5,
+                           "weld input vertices closer than this (in mean edge lengths) into one, "
+                           "as a per-face-vertices export needs (io/weld.h); 0: never"));
   keys.push_back(IntegerKey("limits.max_subdivided_faces", 20000000, 1, 2000000000,
                             "refuse a multiresolution level with more faces"));
   keys.push_back(NumberKey("validity.max_reflex_degrees", 10, 0, 180,
