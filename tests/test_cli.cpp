@@ -252,6 +252,38 @@ TEST_F(CliTest, BadCommandLine) {
   EXPECT_EQ(Archgeo("solve --help").code, 0);
 }
 
+// A mistyped command gets the nearest command (within two edits); `archgeo
+// help` lists every command; `spec --help` every problem with a template.
+TEST_F(CliTest, HelpListsTheCommandsAndAMistypeGetsASuggestion) {
+  const Outcome typo = Archgeo("slove " + Path("spec.yaml"));
+  EXPECT_EQ(typo.code, 2);
+  EXPECT_NE(typo.output.find("'slove' is not a command; did you mean 'solve'?"), std::string::npos)
+      << typo.output;
+  const Outcome far = Archgeo("frobnicate");
+  EXPECT_EQ(far.output.find("did you mean"), std::string::npos) << far.output;
+  EXPECT_NE(Archgeo("help mesure").output.find("did you mean 'measure'?"), std::string::npos);
+  const Outcome help = Archgeo("help");
+  EXPECT_EQ(help.code, 0);
+  for (const char* command :
+       {"solve", "spec", "terms", "measure", "generate", "darboux", "render", "bench"}) {
+    EXPECT_NE(help.output.find(std::string("\n  ") + command + " "), std::string::npos)
+        << command << " missing in\n" << help.output;
+  }
+  // The problems the registry has, as `spec` names them for an unknown one.
+  const std::string unknown = Archgeo("spec nosuch").output;
+  const size_t open = unknown.find("is not a problem ("), close = unknown.find(';', open);
+  ASSERT_NE(close, std::string::npos) << unknown;
+  std::stringstream names(unknown.substr(open + 18, close - open - 18));
+  const Outcome spec = Archgeo("spec --help");
+  int listed = 0;
+  for (std::string name; std::getline(names, name, ',');) {
+    name.erase(0, name.find_first_not_of(' '));
+    EXPECT_NE(spec.output.find(name), std::string::npos) << name << " missing in\n" << spec.output;
+    ++listed;
+  }
+  EXPECT_GE(listed, 9);  // every problem but custom, which a spec composes
+}
+
 }  // namespace
 }  // namespace archgeo
 

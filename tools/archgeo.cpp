@@ -29,8 +29,11 @@
 #include <malloc.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <iomanip>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "bench/bench.h"
 #include "core/input_error.h"
@@ -111,6 +114,49 @@ int Measure(const std::string& mesh, const std::string& reference, bool json) {
 
 }  // namespace
 
+namespace {
+
+// The number of single-character edits (insert, delete, replace) from a to b.
+std::size_t EditDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+bool IsCommand(CLI::App& app, const std::string& name) {
+  for (const CLI::App* command : app.get_subcommands({})) {
+    if (command->get_name() == name) return true;
+  }
+  return false;
+}
+
+// "'NAME' is not a command; did you mean 'X'? (archgeo help lists them)", the
+// suggestion only for a command within two edits.
+std::string NotACommand(CLI::App& app, const std::string& name) {
+  std::string best;
+  std::size_t best_distance = 3;
+  for (const CLI::App* command : app.get_subcommands({})) {
+    const std::size_t d = EditDistance(name, command->get_name());
+    if (d < best_distance) {
+      best_distance = d;
+      best = command->get_name();
+    }
+  }
+  return "'" + name + "' is not a command" + (best.empty() ? "" : "; did you mean '" + best + "'?") +
+         " (archgeo help lists them)";
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   // The loop rebuilds lists of hundreds of MB every round (core/residuals.h).
   // glibc maps every block above 32 MB afresh and unmaps it when freed, so
@@ -157,9 +203,9 @@ int main(int argc, char** argv) {
   CLI::App* spec = app.add_subcommand(
       "spec", "Print a problem's spec with every key, its default and doc (valid YAML to "
               "start from: set `mesh`)");
-  std::string problem_list;
+  std::string problem_list;  // `problem: custom` has no template: it is composed in the spec
   for (const std::string& n : archgeo::ProblemNames()) {
-    problem_list += (problem_list.empty() ? "" : ", ") + n;
+    if (n != "custom") problem_list += (problem_list.empty() ? "" : ", ") + n;
   }
   spec->add_option("problem", problem_name, problem_list)->required();
   spec->add_flag("--keys", keys_only, "Print the problem's own keys as a Markdown table instead");
@@ -289,6 +335,10 @@ int main(int argc, char** argv) {
                     "Run once (the --set settings; --repeat is the repeat's number) and write its "
                     "record here (what an emitted job does)");
 
+  if (argc > 1 && argv[1][0] != '-' && !IsCommand(app, argv[1])) {
+    std::cerr << "archgeo: error: " << NotACommand(app, argv[1]) << "\n";
+    return kBadInput;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -297,8 +347,8 @@ int main(int argc, char** argv) {
   }
 
   if (*help) {
-    if (help_topic.empty()) {
-      std::cout << app.help();
+    if (help_topic.empty()) {  // the tool's help: every command (not help's own)
+      std::cout << app.get_formatter()->make_help(&app, "archgeo", CLI::AppFormatMode::Normal);
       return 0;
     }
     for (CLI::App* command : app.get_subcommands({})) {
@@ -307,7 +357,7 @@ int main(int argc, char** argv) {
         return 0;
       }
     }
-    std::cerr << "archgeo: error: '" << help_topic << "' is not a command (archgeo help lists them)\n";
+    std::cerr << "archgeo: error: " << NotACommand(app, help_topic) << "\n";
     return kBadInput;
   }
 
