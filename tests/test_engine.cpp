@@ -25,6 +25,7 @@
 #include "problems/declarations/registry.h"
 #include "problems/commands/run.h"
 #include "problems/spec/schema.h"
+#include "problems/report/report.h"
 #include "problems/spec/spec.h"
 #include "tests/scratch_dir.h"
 
@@ -284,6 +285,25 @@ TEST_F(EngineTest, CustomTermsMustFitTheMesh) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.key(), "terms.pq_diagonal");
     EXPECT_NE(e.message().find("quads"), std::string::npos) << e.what();
+  }
+}
+
+// Summary changes: whole percents; from or to zero the absolute change (a
+// percentage of nothing means nothing); beyond +1000% the factor, so no
+// percent string exceeds ±1000%.
+TEST(ChangeText, PercentsAbsoluteChangesAndFactors) {
+  EXPECT_EQ(ChangeText(2.0, 2.5), "+25%");
+  EXPECT_EQ(ChangeText(2.0, 1.0), "-50%");
+  EXPECT_EQ(ChangeText(-2.0, -1.0), "+50%");
+  EXPECT_EQ(ChangeText(0.0, 0.0123), "+0.0123");
+  EXPECT_EQ(ChangeText(4.5e-5, 0.0), "-4.5e-05");
+  EXPECT_EQ(ChangeText(1.0, 11.0), "+1000%");
+  EXPECT_EQ(ChangeText(1.0, 15.2), "x15.2");
+  EXPECT_EQ(ChangeText(3.0, 3.0), "");
+  for (double after : {1e-9, 0.5, 1.0 + 1e-9, 9.0, 10.99, 11.01, 1e6}) {
+    const std::string text = ChangeText(1.0, after);
+    if (text.back() != '%') continue;
+    EXPECT_LE(std::abs(std::stod(text)), 1000.0) << text;
   }
 }
 

@@ -52,12 +52,10 @@ std::string MeasureHeadline(const LoopResult& r) {
   for (const auto& [name, before] : first.measures) {
     const auto it = out->measures.find(name);
     if (it == out->measures.end()) continue;
+    const std::string change = ChangeText(before, it->second);
     char line[200];
     std::snprintf(line, sizeof line, "  %s %.6g -> %.6g%s\n", name.c_str(), before, it->second,
-                  before != 0 ? (" (" + std::to_string(int(std::lround(
-                                            100.0 * (it->second - before) / std::abs(before)))) +
-                                 "%)").c_str()
-                              : "");
+                  change.empty() ? "" : (" (" + change + ")").c_str());
     text += line;
   }
   return text.empty() ? "" : "measures (canonical frame: input mean edge length 1), input -> output:\n" + text;

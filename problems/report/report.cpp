@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "problems/report/report.h"
 
+#include <cmath>
 #include <cstdio>
 #include <vector>
 
@@ -80,6 +81,19 @@ std::string FormatMetrics(const Metrics& before, const Metrics* after, double sc
            (after ? Cell(a, row.length, scale) : "") + "\n";
   }
   return out;
+}
+
+std::string ChangeText(double before, double after) {
+  if (before == after) return "";
+  char text[64];
+  if (before == 0 || after == 0 || !std::isfinite(before) || !std::isfinite(after)) {
+    std::snprintf(text, sizeof text, "%+.3g", after - before);
+  } else if ((after - before) / std::abs(before) > 10) {
+    std::snprintf(text, sizeof text, "x%.3g", after / before);
+  } else {
+    std::snprintf(text, sizeof text, "%+ld%%", std::lround(100.0 * (after - before) / std::abs(before)));
+  }
+  return text;
 }
 
 }  // namespace archgeo

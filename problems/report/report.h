@@ -14,4 +14,10 @@ namespace archgeo {
 // after side by side. Rows not computed (-1) are left out.
 std::string FormatMetrics(const Metrics& before, const Metrics* after, double scale);
 
+// The change from `before` to `after` for a summary line: "+12%" or "-3%"
+// (rounded to whole percents); the absolute change ("+0.0123", "-4.5e-05")
+// where a percentage means nothing (from or to zero); "x15.2" (the factor)
+// beyond +1000%. Empty when nothing changed.
+std::string ChangeText(double before, double after);
+
 }  // namespace archgeo
