@@ -50,7 +50,8 @@ struct Key {
   double hi = std::numeric_limits<double>::infinity();
   std::vector<std::string> choices;  // kChoice, kChoiceOrIntegers
   int size = 0;          // kNumbers / kIntegers: exact length (0 = any)
-  std::string example;   // kCustom: a YAML example for `archgeo spec`
+  std::string example;   // a YAML example for `archgeo spec` (a comment unless `required`)
+  bool required = false; // no default: the spec must give it (`archgeo spec` shows the example)
 };
 
 // Helpers to declare keys tersely.

@@ -253,7 +253,7 @@ TEST_F(CliTest, BadCommandLine) {
 }
 
 // A mistyped command gets the nearest command (within two edits); `archgeo
-// help` lists every command; `spec --help` every problem with a template.
+// help` lists every command; `spec --help` every problem, custom included.
 TEST_F(CliTest, HelpListsTheCommandsAndAMistypeGetsASuggestion) {
   const Outcome typo = Archgeo("slove " + Path("spec.yaml"));
   EXPECT_EQ(typo.code, 2);
@@ -271,7 +271,7 @@ TEST_F(CliTest, HelpListsTheCommandsAndAMistypeGetsASuggestion) {
   }
   // The problems the registry has, as `spec` names them for an unknown one.
   const std::string unknown = Archgeo("spec nosuch").output;
-  const size_t open = unknown.find("is not a problem ("), close = unknown.find(';', open);
+  const size_t open = unknown.find("is not a problem ("), close = unknown.find(')', open);
   ASSERT_NE(close, std::string::npos) << unknown;
   std::stringstream names(unknown.substr(open + 18, close - open - 18));
   const Outcome spec = Archgeo("spec --help");
@@ -281,7 +281,9 @@ TEST_F(CliTest, HelpListsTheCommandsAndAMistypeGetsASuggestion) {
     EXPECT_NE(spec.output.find(name), std::string::npos) << name << " missing in\n" << spec.output;
     ++listed;
   }
-  EXPECT_GE(listed, 9);  // every problem but custom, which a spec composes
+  EXPECT_GE(listed, 10);  // custom included
+  EXPECT_NE(unknown.find("custom"), std::string::npos) << unknown;
+  EXPECT_EQ(Archgeo("spec custom").code, 0);
 }
 
 }  // namespace

@@ -10,10 +10,12 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "core/input_error.h"
 #include "problems/commands/generate.h"
+#include "problems/declarations/custom.h"
 #include "problems/declarations/registry.h"
 #include "problems/commands/run.h"
 #include "problems/spec/schema.h"
@@ -50,7 +52,7 @@ TEST_F(SpecRoundTrip, EveryProblemsTemplateSolves) {
                     torus_quads = Generated("torus", torus), triangles = Generated("cone", cone);
   // The input each problem takes, and what it needs besides (a problem made
   // later must be added here).
-  const std::string faces = "60";  // a coarse layout (an overlapping face at 60 once broke the reference)
+  const std::string faces = "200";  // a coarse layout
   const std::map<std::string, std::vector<std::string>> inputs = {
       {"planar_quads", {"mesh=" + quads}},
       {"smooth_mesh", {"mesh=" + triangles}},
@@ -61,11 +63,12 @@ TEST_F(SpecRoundTrip, EveryProblemsTemplateSolves) {
       {"level_sets", {"mesh=" + triangles, "level_sets.target_faces=" + faces}},
       {"conjugate_layout", {"mesh=" + triangles, "level_sets.target_faces=" + faces}},
       {"grid", {}},
+      {"custom", {"mesh=" + quads}},
   };
+  const ProblemDecl custom = CustomExample();
   for (const std::string& name : ProblemNames()) {
-    if (name == "custom") continue;
     SCOPED_TRACE(name);
-    const ProblemDecl* d = FindProblem(name);
+    const ProblemDecl* d = name == "custom" ? &custom : FindProblem(name);
     ASSERT_NE(d, nullptr);
     ASSERT_TRUE(inputs.count(name)) << "add an input for the new problem " << name;
     const std::string spec = WriteFile(name + ".yaml", SpecTemplate(*d));
@@ -82,6 +85,42 @@ TEST_F(SpecRoundTrip, EveryProblemsTemplateSolves) {
     EXPECT_EQ(std::filesystem::exists(Path(name + "_out.obj")), run.exit_code != 3);
     EXPECT_TRUE(std::filesystem::exists(Path(name + ".json")) || run.exit_code == 3);
   }
+}
+
+// A template gives only defaults: read back, every key it sets holds its
+// default, but for the keys a spec must give (the grid's surface, a custom
+// problem's terms); keys without a default (field.moves, handles,
+// output.color_max, …) are comments, so a template moves no singularity and
+// no vertex the user did not ask for.
+TEST_F(SpecRoundTrip, TemplatesSetDefaultsOnly) {
+  const ProblemDecl custom = CustomExample();
+  for (const std::string& name : ProblemNames()) {
+    SCOPED_TRACE(name);
+    const ProblemDecl* d = name == "custom" ? &custom : FindProblem(name);
+    const std::string text = SpecTemplate(*d);
+    const ProblemSpec spec = ParseSpec(text, Path(name + ".yaml"), {"mesh=in.obj"});
+    int unset_examples = 0;
+    for (const Key& k : spec.settings.schema().keys()) {
+      if (k.name == "mesh" || k.required) continue;
+      if (name == "custom" && k.name.rfind("terms.", 0) == 0) continue;
+      const bool unset = std::holds_alternative<std::monostate>(k.fallback);
+      if (unset && !k.example.empty()) {
+        EXPECT_FALSE(spec.settings.Given(k.name)) << k.name << " has no default but is set";
+        ++unset_examples;
+        continue;
+      }
+      if (unset) {  // a path: written as "", which is none
+        EXPECT_EQ(ToText(spec.settings.Get(k.name)), "") << k.name;
+        continue;
+      }
+      if (k.type == Type::kCustom) continue;  // its default is written as such (select: all)
+      EXPECT_EQ(ToText(spec.settings.Get(k.name)), ToText(k.fallback)) << k.name;
+    }
+    EXPECT_GE(unset_examples, 1);  // output.color_max at least, shown as a comment
+  }
+  EXPECT_NE(SpecTemplate(*FindProblem("conjugate_layout")).find("# moves: [{from:"),
+            std::string::npos);
+  EXPECT_NE(SpecTemplate(*FindProblem("planar_quads")).find("# color_max: "), std::string::npos);
 }
 
 // Outputs written in one format only refuse another name before any work

@@ -40,6 +40,7 @@
 #include "io/output_files.h"
 #include "problems/commands/darboux.h"
 #include "problems/commands/generate.h"
+#include "problems/declarations/custom.h"
 #include "problems/report/picture.h"
 #include "energies/registry.h"
 #include "problems/declarations/registry.h"
@@ -84,15 +85,14 @@ int Terms() {
 }
 
 int Spec(const std::string& name, bool keys, bool common) {
-  const archgeo::ProblemDecl* problem = archgeo::FindProblem(name);
+  archgeo::ProblemDecl custom;
+  if (name == "custom") custom = archgeo::CustomExample();
+  const archgeo::ProblemDecl* problem =
+      name == "custom" ? &custom : archgeo::FindProblem(name);
   if (!problem) {
     std::string list;
-    for (const std::string& n : archgeo::ProblemNames()) {
-      if (n != "custom") list += (list.empty() ? "" : ", ") + n;
-    }
-    throw archgeo::InputError("", 0, "PROBLEM",
-                              "'" + name + "' is not a problem (" + list +
-                                  "; `problem: custom` composes terms: see docs/methods/engine.md)");
+    for (const std::string& n : archgeo::ProblemNames()) list += (list.empty() ? "" : ", ") + n;
+    throw archgeo::InputError("", 0, "PROBLEM", "'" + name + "' is not a problem (" + list + ")");
   }
   if (keys) {
     std::cout << archgeo::KeyTable(*problem, common);
@@ -203,9 +203,9 @@ int main(int argc, char** argv) {
   CLI::App* spec = app.add_subcommand(
       "spec", "Print a problem's spec with every key, its default and doc (valid YAML to "
               "start from: set `mesh`)");
-  std::string problem_list;  // `problem: custom` has no template: it is composed in the spec
+  std::string problem_list;  // custom: its template composes the terms of examples/planar_smooth.yaml
   for (const std::string& n : archgeo::ProblemNames()) {
-    if (n != "custom") problem_list += (problem_list.empty() ? "" : ", ") + n;
+    problem_list += (problem_list.empty() ? "" : ", ") + n;
   }
   spec->add_option("problem", problem_name, problem_list)->required();
   spec->add_flag("--keys", keys_only, "Print the problem's own keys as a Markdown table instead");

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -208,6 +210,32 @@ ProblemDecl CustomProblem(const CustomValue* terms, const std::string& file) {
       }
     }
   };
+  return d;
+}
+
+ProblemDecl CustomExample() {
+  // The composition of examples/planar_smooth.yaml: planar quads that stay
+  // smooth, close to the input and valid.
+  const std::vector<std::pair<std::string, double>> weights = {
+      {"pq_diagonal", 10},      {"face_planarity", 10},     {"fairness", 10},
+      {"dihedral_energy", 0.3}, {"proximity", 2},           {"boundary_proximity", 10},
+      {"anchor", 1},            {"convexity", 1000},        {"min_edge_length", 1000}};
+  CustomValue terms;
+  terms.kind = CustomValue::Kind::kMap;
+  for (const auto& [name, weight] : weights) {
+    CustomValue::Entry entry;
+    entry.key.kind = CustomValue::Kind::kScalar;
+    entry.key.text = name;
+    terms.entries.push_back(entry);
+  }
+  ProblemDecl d = CustomProblem(&terms, "");
+  for (TermUse& use : d.terms) {
+    for (const auto& [name, weight] : weights) {
+      if (use.term == name) use.weight = weight;
+    }
+    if (use.term == "face_planarity") use.elements = "non_triangles";
+    if (use.term == "proximity") use.options["point_weight"] = 0.01;
+  }
   return d;
 }
 

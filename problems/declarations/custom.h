@@ -41,4 +41,9 @@ namespace archgeo {
 // "--set"). Throws InputError for an unknown or uncomposable term.
 ProblemDecl CustomProblem(const CustomValue* terms, const std::string& file);
 
+// The custom problem composing the terms of examples/planar_smooth.yaml with
+// its weights: what `archgeo spec custom` prints, the terms being the one key
+// a custom spec must give.
+ProblemDecl CustomExample();
+
 }  // namespace archgeo

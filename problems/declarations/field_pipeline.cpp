@@ -62,7 +62,7 @@ std::vector<Key> FieldKeys() {
   Key directions;
   directions.name = "field.directions";
   directions.type = Type::kCustom;
-  directions.example = "[]";
+  directions.example = "[{face: 0, direction: [1, 0, 0]}]";
   directions.doc =
       "prescribed conjugate directions: a list of {face: id, direction: [x, y, z]} (file units; "
       "projected onto the face)";

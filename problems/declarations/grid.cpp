@@ -626,6 +626,7 @@ ProblemDecl grid() {
                 ", <parameter>: value, ...} (surfaces/surface_factory.h; `archgeo spec grid` "
                 "and docs/keys.md list the parameters)";
   surface.example = "{name: function_graph, a: 10, b: 10, h: 2, s: 3}";
+  surface.required = true;
   d.keys = {
       surface,
       IntegerKey("grid.nu", 20, 2, 1000000, "vertices along u (≥ 2; ≥ 3 when closed in u)"),

@@ -163,7 +163,7 @@ ProblemDecl smooth_mesh() {
   handles.type = Type::kCustom;
   handles.doc = "design handles: a list of {vertex: i, position: [x, y, z]} or {vertex: i, "
                 "offset: [dx, dy, dz]} (file units)";
-  handles.example = "[]";
+  handles.example = "[{vertex: 0, offset: [0, 0, 0.1]}]";
   d.keys = {NumberKey("tolerance.energy_relative", 1e-4, 0, 1,
                       "stop when 3 rounds in a row have not lowered the lowest true E by this "
                       "fraction (0: all rounds); not with handles"),

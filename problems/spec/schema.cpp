@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <variant>
 
 #include "core/solver_options.h"
 #include "energies/registry.h"
@@ -85,9 +86,12 @@ std::vector<Key> CommonKeys(const ProblemDecl& d) {
                          "empty: not written"));
   keys.push_back(PathKey("output.report", Type::kOutputPath,
                          "the JSON run report; empty: not written"));
-  keys.push_back(NumberKey("output.color_max", 0.01, 1e-12, 1e12,
-                           "the value shown as pure red in the face colours and pictures; "
-                           "unset: the problem's tolerance (problems/report/colors.h)"));
+  Key color_max = NumberKey("output.color_max", 0, 1e-12, 1e12,
+                            "the value shown as pure red in the face colours and pictures; "
+                            "unset: the problem's tolerance (problems/report/colors.h)");
+  color_max.fallback = std::monostate{};
+  color_max.example = "0.001";
+  keys.push_back(color_max);
   keys.push_back(PathKey("output.image", Type::kOutputPath,
                          "a PNG picture (or, named .html, a page to rotate): input and output "
                          "side by side, faces coloured by the problem's per-face value with a "
@@ -165,6 +169,10 @@ std::string Quote(const std::string& s) {
   return s;
 }
 
+bool IsUnset(const Key& k) {
+  return !k.required && std::holds_alternative<std::monostate>(k.fallback);
+}
+
 std::string DefaultText(const Key& k) {
   if (k.type == Type::kCustom) return k.example;
   const std::string text = ToText(k.fallback);
@@ -198,9 +206,14 @@ Schema ProblemSchema(const ProblemDecl& d) {
 std::string SpecTemplate(const ProblemDecl& d) {
   std::ostringstream out;
   out << "# archgeo problem `" << d.name << "`: " << d.summary << "\n# " << d.paper
-      << "\n# Every key with its default; delete what you do not change. A term listed\n"
+      << "\n# Every key with its default; delete what you do not change. A key shown as a\n"
+         "# comment is unset by default (the value there is an example). A term listed\n"
          "# under `terms` with weight 0 is off. Lengths are unit-free (the problem is\n"
          "# solved at unit mean edge length).\n";
+  if (d.name == "custom") {
+    out << "# `terms` is the one key a custom spec must give: the terms below (those of\n"
+           "# examples/planar_smooth.yaml) are an example; `archgeo terms` lists them all.\n";
+  }
   const Schema schema = ProblemSchema(d);
   std::vector<std::string> open;  // the sections of the previous key
   for (const Key& k : schema.keys()) {
@@ -219,12 +232,19 @@ std::string SpecTemplate(const ProblemDecl& d) {
       open.push_back(parts[i]);
     }
     const std::string indent(2 * (parts.size() - 1), ' ');
+    // A key without a default that the spec need not give: its example as a comment.
+    if (IsUnset(k) && !k.example.empty()) {
+      out << indent << "# " << parts.back() << ": " << k.example << "   # an example; unset by default\n";
+      out << indent << "  # " << k.doc << "\n";
+      continue;
+    }
     std::string value = k.name == "mesh" ? "REQUIRED.obj" : DefaultText(k);
     if (k.type == Type::kChoice) value += "   # " + [&] {
       std::string list;
       for (const std::string& c : k.choices) list += (list.empty() ? "" : " | ") + c;
       return list;
     }();
+    if (k.required && k.type == Type::kCustom) value += "   # required; an example";
     out << indent << parts.back() << ": " << value << "\n";
     out << indent << "  # " << k.doc << "\n";
   }
