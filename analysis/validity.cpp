@@ -2,7 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "analysis/validity.h"
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
 #include <cmath>
@@ -110,12 +112,22 @@ void Note(ValidityCheck& c, double value, int element, bool worse_is_larger = tr
     c.example = element;
   }
   ++c.count;
+  if (c.elements.size() < ValidityCheck::kMaxListed) c.elements.push_back(element);
+}
+
+// A defect the input had too: counted as inherited, and as a failure unless
+// the limits allow input defects.
+void NoteInherited(ValidityCheck& c, double value, int element, bool allowed,
+                   bool worse_is_larger = true) {
+  ++c.inherited;
+  if (!allowed) Note(c, value, element, worse_is_larger);
 }
 
 // One face's validity figures against its input shape (`before` empty: no
 // input); what is new in the output only.
 struct FaceFigures {
   bool bow_tie_new = false, reflex_new = false, small_new = false, aspect_new = false;
+  bool bow_tie_old = false, reflex_old = false;  // the input's face had it too
   double worst_reflex = 0, worst_small = 180, aspect = 1;
 };
 
@@ -127,11 +139,12 @@ FaceFigures Figures(const std::vector<V>& p, const std::vector<V>& before_corner
   const Panel now = Shape(p);
   const Panel before = in ? Shape(before_corners) : Panel{};
   g.bow_tie_new = now.bow_tie && !before.bow_tie;
+  g.bow_tie_old = now.bow_tie && before.bow_tie;
   for (size_t i = 0; i < now.interior.size(); ++i) {
     const double bent = now.interior[i] - 180.0;
     const bool was_bent = in && before.interior[i] - 180.0 > limits.max_reflex_degrees;
-    if (bent > limits.max_reflex_degrees && !was_bent) {
-      g.reflex_new = true;
+    if (bent > limits.max_reflex_degrees) {
+      (was_bent ? g.reflex_old : g.reflex_new) = true;
       g.worst_reflex = std::max(g.worst_reflex, bent);
     }
     const bool was_small = in && before.interior[i] < limits.min_corner_degrees;
@@ -145,10 +158,28 @@ FaceFigures Figures(const std::vector<V>& p, const std::vector<V>& before_corner
   return g;
 }
 
+// Intersecting pairs of the mesh's triangulation, with exact predicates: the
+// mesh's own kernel (Simple_cartesian<double>) calls nearly coplanar
+// neighbours of a smooth surface intersecting.
 size_t SelfIntersections(const Mesh& mesh) {
+  using Exact = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using ExactMesh = CGAL::Surface_mesh<Exact::Point_3>;
   const Mesh triangles = TriangulatedCopy(mesh);
-  std::vector<std::pair<FaceIndex, FaceIndex>> pairs;
-  CGAL::Polygon_mesh_processing::self_intersections(triangles, std::back_inserter(pairs));
+  ExactMesh exact;
+  std::vector<ExactMesh::Vertex_index> map(triangles.num_vertices());
+  for (VertexIndex v : triangles.vertices()) {
+    const Point& p = triangles.point(v);
+    map[v.idx()] = exact.add_vertex(Exact::Point_3(p.x(), p.y(), p.z()));
+  }
+  for (FaceIndex f : triangles.faces()) {
+    std::vector<ExactMesh::Vertex_index> corners;
+    for (VertexIndex v : CGAL::vertices_around_face(triangles.halfedge(f), triangles)) {
+      corners.push_back(map[v.idx()]);
+    }
+    exact.add_face(corners);
+  }
+  std::vector<std::pair<ExactMesh::Face_index, ExactMesh::Face_index>> pairs;
+  CGAL::Polygon_mesh_processing::self_intersections(exact, std::back_inserter(pairs));
   return pairs.size();
 }
 
@@ -161,15 +192,37 @@ bool Validity::valid() const {
   return true;
 }
 
+bool Validity::OnlyInherited() const {
+  bool failed = false;
+  for (const ValidityCheck& c : checks) {
+    if (!c.hard || c.passed()) continue;
+    if (c.count > c.inherited) return false;
+    failed = true;
+  }
+  return failed;
+}
+
 std::string Validity::Reason() const {
   std::string text;
   for (const ValidityCheck& c : checks) {
     if (!c.hard || c.passed()) continue;
     char line[256];
-    std::snprintf(line, sizeof line, "%s: %d (worst %.4g %s, limit %.4g%s)\n", c.name.c_str(),
+    std::snprintf(line, sizeof line, "%s: %d (worst %.4g %s, limit %.4g%s)", c.name.c_str(),
                   c.count, c.worst, c.unit.c_str(), c.limit,
-                  c.example >= 0 ? ("; e.g. element " + std::to_string(c.example)).c_str() : "");
+                  c.inherited > 0
+                      ? ("; " + std::to_string(std::min(c.inherited, c.count)) + " as in the input")
+                            .c_str()
+                      : "");
     text += line;
+    if (!c.elements.empty()) {
+      const bool faces = c.name == "reflex_corners" || c.name == "bow_ties" ||
+                         c.name == "flipped_faces";
+      text += faces ? "; faces" : c.name == "finite" ? "; vertices" : "; elements";
+      const size_t shown = std::min<size_t>(c.elements.size(), 12);
+      for (size_t i = 0; i < shown; ++i) text += (i ? ", " : " ") + std::to_string(c.elements[i]);
+      if (size_t(c.count) > shown) text += ", …";
+    }
+    text += "\n";
   }
   return text;
 }
@@ -187,7 +240,9 @@ std::string Validity::Warnings() const {
 }
 
 nlohmann::json Validity::ToJson() const {
-  nlohmann::json j = {{"valid", valid()}, {"checks", nlohmann::json::array()}};
+  nlohmann::json j = {{"valid", valid()},
+                      {"allow_input_defects", allow_input_defects},
+                      {"checks", nlohmann::json::array()}};
   for (const ValidityCheck& c : checks) {
     j["checks"].push_back({{"name", c.name},
                            {"hard", c.hard},
@@ -196,7 +251,9 @@ nlohmann::json Validity::ToJson() const {
                            {"worst", c.worst},
                            {"limit", c.limit},
                            {"unit", c.unit},
-                           {"example", c.example}});
+                           {"example", c.example},
+                           {"inherited", c.inherited},
+                           {"elements", c.elements}});
   }
   return j;
 }
@@ -252,6 +309,7 @@ Validity CheckValidity(const Mesh& out, const Mesh* input, const ValidityLimits&
     }
   }
   Validity result;
+  result.allow_input_defects = limits.allow_input_defects;
   if (finite.count > 0) {
     result.checks = {finite};
     return result;
@@ -280,8 +338,14 @@ Validity CheckValidity(const Mesh& out, const Mesh* input, const ValidityLimits&
       const double turned = Angle(normal_out[size_t(i)], normal_in[size_t(i)]);
       if (turned > limits.max_flip_degrees) Note(flipped, turned, int(i));
     }
+    const bool allowed = limits.allow_input_defects;
     if (g.bow_tie_new) Note(bow_ties, 1, int(i));
-    if (g.reflex_new) Note(reflex, g.worst_reflex, int(i));
+    if (g.bow_tie_old) NoteInherited(bow_ties, 1, int(i), allowed);
+    if (g.reflex_new) {
+      Note(reflex, g.worst_reflex, int(i));
+    } else if (g.reflex_old) {
+      NoteInherited(reflex, g.worst_reflex, int(i), allowed);
+    }
     if (g.small_new) Note(small, g.worst_small, int(i), false);
     if (g.aspect_new) Note(aspect, g.aspect, int(i));
   }
@@ -305,14 +369,21 @@ Validity CheckValidity(const Mesh& out, const Mesh* input, const ValidityLimits&
     const EdgeIndex e(static_cast<EdgeIndex::size_type>(i));
     if (out.is_removed(e)) continue;
     const double length_in = in ? EdgeLength(*in, e) : 1e300;
-    if (length[size_t(i)] < limits.min_edge_relative * mean_in && length[size_t(i)] < 0.5 * length_in) {
-      Note(short_edges, length[size_t(i)] / mean_in, int(i), false);
+    if (length[size_t(i)] < limits.min_edge_relative * mean_in) {
+      if (length[size_t(i)] < 0.5 * length_in) {
+        Note(short_edges, length[size_t(i)] / mean_in, int(i), false);
+      } else {
+        NoteInherited(short_edges, length[size_t(i)] / mean_in, int(i),
+                      limits.allow_input_defects, false);
+      }
     }
     if (crease[size_t(i)] > limits.max_crease_increase_degrees) Note(creases, crease[size_t(i)], int(i));
   }
   result.checks = {finite, reflex, bow_ties, flipped, short_edges, creases};
   if (full && limits.self_intersections) {
     const size_t pairs = SelfIntersections(out);
+    // Relative whatever allow_input_defects says: a surface that crosses
+    // itself by design (a Klein bottle) is the design, not a panel defect.
     if (pairs > 0 && !(input && SelfIntersections(*input) > 0)) {
       intersections.count = int(pairs);
       intersections.worst = double(pairs);

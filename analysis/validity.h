@@ -1,29 +1,34 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — is a result buildable? The checks every output passes before
-// `archgeo solve` may exit 0 (README, "Exit codes and guarantees"), measured against the
-// input it came from, so a defect the input already had is not blamed on
-// the optimisation:
+// `archgeo solve` may exit 0 (README, "Exit codes and guarantees"). A panel
+// that cannot be built fails whether or not the input had it; each check
+// counts apart the defects the input already had (`inherited`), so that a
+// run can tell what the optimisation did from what it was given, and
+// `allow_input_defects` (validity.allow_input_defects) exempts those:
 //
-//   hard (a result failing one is not written):
+//   hard:
 //     finite            every coordinate finite
 //     reflex_corners    panels (faces with ≥ 4 sides) with a corner bent inward
 //                       by more than max_reflex_degrees (interior angle
-//                       − 180°, in the plane of the face's Newell normal),
-//                       where the input's corner was not
+//                       − 180°, in the plane of the face's Newell normal);
+//                       inherited where the input's corner was bent so too
 //     bow_ties          self-intersecting panels (two non-adjacent sides
-//                       cross in that plane)
+//                       cross in that plane); inherited where the input's was
 //     flipped_faces     faces whose normal turned by more than
 //                       max_flip_degrees against the input's
 //     short_edges       edges shorter than min_edge_relative × the input's mean
-//                       edge length and than half their input length
+//                       edge length (collapsed); inherited where the edge is
+//                       not shorter than half its input length
 //     creases           interior edges whose dihedral angle (between the face
 //                       normals) grew by more than max_crease_increase_degrees
 //                       over the input's
 //     self_intersections  pairs of faces of the surface that intersect (CGAL
-//                       Polygon_mesh_processing, on a triangulation; only when
-//                       the input has none), in the full check
-//   soft (reported as warnings):
+//                       Polygon_mesh_processing, on a triangulation, exact
+//                       predicates), in the full check; only when the input
+//                       has none (a surface that crosses itself, as a Klein
+//                       bottle must, does so by design)
+//   soft (reported as warnings; only what is new in the output):
 //     small_corners     panel corners below min_corner_degrees (where the input
 //                       had none there)
 //     aspect            faces whose longest side exceeds max_aspect × their
@@ -50,6 +55,7 @@ struct ValidityLimits {
   double min_corner_degrees = 5;
   double max_aspect = 20;
   bool self_intersections = true;  // the full check (CGAL PMP; costs an AABB pass)
+  bool allow_input_defects = false;  // defects the input had too do not fail a check
 };
 
 struct ValidityCheck {
@@ -60,13 +66,21 @@ struct ValidityCheck {
   double limit = 0;
   std::string unit;      // "degrees", "mean edge lengths", ...
   int example = -1;      // a failing element (face, edge or vertex index)
+  int inherited = 0;     // elements failing in the input too (in `count` unless allowed)
+  std::vector<int> elements;  // the failing elements in index order (at most kMaxListed)
   bool passed() const { return count == 0; }
+  static constexpr size_t kMaxListed = 1000;
 };
 
 struct Validity {
   std::vector<ValidityCheck> checks;
+  bool allow_input_defects = false;  // as checked
   bool valid() const;            // every hard check passed
-  std::string Reason() const;    // the failed hard checks, one line each ("" if valid)
+  // Not valid, and only through defects the input had too: the optimisation
+  // made nothing worse (the loop judges its rounds so).
+  bool OnlyInherited() const;
+  std::string Reason() const;    // the failed hard checks, one line each, with their
+                                 // first elements ("" if valid)
   std::string Warnings() const;  // the failed soft checks
   nlohmann::json ToJson() const;
 };

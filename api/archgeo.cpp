@@ -82,7 +82,7 @@ void QuietLogging() {
 SolveResult FromRun(const RunResult& run, const Mesh& output) {
   SolveResult r;
   r.status = run.exit_code;
-  if (run.exit_code == 0 || run.exit_code == 4) r.mesh = ToData(output);
+  if (run.exit_code == 0 || run.exit_code == 4 || run.exit_code == 5) r.mesh = ToData(output);
   r.report = run.report.dump(2);
   r.summary = run.summary;
   return r;

@@ -123,7 +123,17 @@ struct ProblemDecl {
   std::function<std::vector<Stage>(const Settings&)> stages;
   std::set<std::string> analyses;  // report sections: "planarity", "smoothness", "hnet"
   std::vector<std::string> output_keys;  // extra `output.<key>` files it writes
-  std::string colors = "planarity";  // face colours of the output PLY (problems/report/colors.h)
+  // The per-face quantity of the face colours and pictures: the one the
+  // problem lowers (a name of problems/report/colors.h), unless
+  // `state_colors` is set.
+  std::string colors = "planarity";
+  // A per-face quantity that needs the problem's state (its variables, its
+  // labels): values(c, true) the input's (kept by the problem at init),
+  // values(c, false) the current state's; one per face index.
+  struct StateColors {
+    std::string name, label, units;
+    std::function<std::vector<double>(HookContext&, bool input)> values;
+  } state_colors;
   // The problem's own measures (besides problems/runtime/measures.h).
   std::map<std::string, std::function<double(HookContext&)>> measures;
   // After the spec is read: checks across keys (throw Settings::Error).

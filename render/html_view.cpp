@@ -102,7 +102,11 @@ function setup() {
     d.querySelector("p").textContent = p.summary;
     box.appendChild(d);
   });
+  if (!VIEW.scale.bar) {
+    document.getElementById("caption").textContent = VIEW.caption + " \u2014 drag to rotate";
+  }
   const bar = document.createElement("div"); bar.id = "bar";
+  if (!VIEW.scale.bar) bar.style.display = "none";
   const h = VIEW.height - 120;
   bar.innerHTML = `<div id="gradient" style="height:${h}px"></div><div id="ticks" style="height:${h}px"></div>`;
   box.appendChild(bar);
@@ -154,12 +158,13 @@ void WriteHtmlView(const std::string& path, const std::vector<PicturePanel>& pan
   view["width"] = options.panel_width;
   view["height"] = options.panel_height;
   view["camera"] = DefaultCamera(panels.front(), options.tilt_degrees);
-  view["scale"] = {{"label", scale.label}, {"units", scale.units}, {"red_at", scale.red_at}};
+  view["scale"] = {{"label", scale.label}, {"units", scale.units}, {"red_at", scale.red_at},
+                   {"bar", scale.bar}};
   char caption[512];
   std::snprintf(caption, sizeof caption, "colour: %s%s; red at %.3g%s", scale.label.c_str(),
                 scale.units.empty() ? "" : (" [" + scale.units + "]").c_str(), scale.red_at,
                 scale.red_from.empty() ? "" : (" (" + scale.red_from + ")").c_str());
-  view["caption"] = caption;
+  view["caption"] = scale.bar ? std::string(caption) : "faces grey: " + scale.label;
   for (const PicturePanel& p : panels) {
     if (p.faces.empty()) throw InputError(path, 0, key, "a mesh to draw has no faces");
     nlohmann::json colors = nlohmann::json::array();

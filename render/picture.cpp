@@ -114,6 +114,9 @@ void DrawColorBar(cairo_t* cr, double x, double top, double height, const Pictur
     cairo_stroke(cr);
     Text(cr, x + width + 8, y + 4, (f == 1.0 ? "≥ " : "") + Number(f * scale.red_at), 12);
   }
+  // What it shows: the label up to its first ':' (its name), and the unit.
+  const std::string name = scale.label.substr(0, scale.label.find(':'));
+  Text(cr, x, top - 30, name, 13, true);
   Text(cr, x, top - 12, scale.units.empty() ? "" : "[" + scale.units + "]", 13, true);
 }
 
@@ -207,7 +210,7 @@ void WritePicture(const std::string& path, const std::vector<PicturePanel>& pane
   const Eigen::Vector2d extent = (hi - lo).cwiseMax(1e-300);
   const double pixels = std::min(usable_w / extent.x(), usable_h / extent.y());
 
-  const int width = int(panels.size()) * options.panel_width + kBarWidth;
+  const int width = int(panels.size()) * options.panel_width + (scale.bar ? kBarWidth : 0);
   const int height = options.panel_height + kCaptionHeight;
   cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height);
   cairo_t* cr = cairo_create(surface);
@@ -218,13 +221,16 @@ void WritePicture(const std::string& path, const std::vector<PicturePanel>& pane
               options);
   }
   const double bar_top = kTitleHeight + 40;
-  DrawColorBar(cr, double(panels.size()) * options.panel_width + 20, bar_top,
-               options.panel_height - bar_top - 40, scale);
+  if (scale.bar) {
+    DrawColorBar(cr, double(panels.size()) * options.panel_width + 20, bar_top,
+                 options.panel_height - bar_top - 40, scale);
+  }
   cairo_set_source_rgb(cr, 0, 0, 0);
   Text(cr, 12, height - 12,
-       "colour: " + scale.label + (scale.units.empty() ? "" : " [" + scale.units + "]") +
-           "; red at " + Number(scale.red_at) +
-           (scale.red_from.empty() ? "" : " (" + scale.red_from + ")"),
+       !scale.bar ? "faces grey: " + scale.label
+                  : "colour: " + scale.label + (scale.units.empty() ? "" : " [" + scale.units + "]") +
+                        "; red at " + Number(scale.red_at) +
+                        (scale.red_from.empty() ? "" : " (" + scale.red_from + ")"),
        13);
   const cairo_status_t status = cairo_surface_write_to_png(surface, path.c_str());
   cairo_destroy(cr);

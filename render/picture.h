@@ -32,6 +32,7 @@ struct PictureScale {
   std::string units;     // e.g. "rad", "degrees", "1"
   double red_at = 1;     // the value drawn pure red (colour bar top)
   std::string red_from;  // where red_at comes from, e.g. "tolerance.pq_normalized_max"
+  bool bar = true;       // false: faces grey, no colour bar (no per-face quantity)
 };
 
 struct PictureOptions {

@@ -309,6 +309,31 @@ TEST_F(CliTest, MeasureRecognisesTheHyperbolicParaboloidAsAnHNet) {
   EXPECT_GE(m["E_prime"].get<double>(), m["E"].get<double>());
 }
 
+// `archgeo measure` prints the rows that describe the mesh: the A-net and
+// H-net rows for the A-net, not for a plain roof of near-planar quads (its
+// star planarity is far from 0), nor its saddle rows (defined on triangle
+// stars); `--all` prints them too, and the JSON has every metric.
+TEST_F(CliTest, MeasurePrintsTheMetricsThatApplyAndAllWithAll) {
+  ASSERT_EQ(Archgeo("generate " + Path("hp.obj") + " --surface hyperbolic_paraboloid").code, 0);
+  ASSERT_EQ(Archgeo("generate " + Path("roof.obj") + " --noise 0.2").code, 0);
+  const Outcome anet = Archgeo("measure " + Path("hp.obj"));
+  EXPECT_NE(anet.output.find("A-net star planarity max"), std::string::npos) << anet.output;
+  EXPECT_NE(anet.output.find("H-net kink"), std::string::npos) << anet.output;
+  const Outcome roof = Archgeo("measure " + Path("roof.obj"));
+  ASSERT_EQ(roof.code, 0) << roof.output;
+  for (const char* row : {"A-net star planarity", "H-net kink", "conical residual", "bad saddles",
+                          "non-convex quads"}) {
+    EXPECT_EQ(roof.output.find(row), std::string::npos) << row << " in\n" << roof.output;
+  }
+  EXPECT_NE(roof.output.find("δ_PQ,n max"), std::string::npos) << roof.output;
+  EXPECT_NE(roof.output.find("E = Σ ℓ ℓ*"), std::string::npos) << roof.output;
+  const Outcome all = Archgeo("measure " + Path("roof.obj") + " --all");
+  EXPECT_NE(all.output.find("A-net star planarity"), std::string::npos) << all.output;
+  EXPECT_NE(all.output.find("bad saddles"), std::string::npos) << all.output;
+  const Outcome json = Archgeo("measure " + Path("roof.obj") + " --json");
+  EXPECT_TRUE(nlohmann::json::parse(json.output)["metrics"].contains("star_planarity_max"));
+}
+
 // `archgeo darboux` (Shi 2014, eq. 12; the map itself is checked in
 // test_hnet_geometry): writes a PLY patchwork with normals, isophote colours
 // and rulings, and refuses c = 1, a non-PLY output and a singular projective

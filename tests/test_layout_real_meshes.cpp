@@ -7,8 +7,9 @@
 //
 // examples/conjugate_layout.yaml runs with only `mesh` and the outputs
 // changed. Checked, from the report and the written layout (output.layout):
-//  - exit 0 (a valid result, every tolerance met) and δ_PQ,n max ≤ 1e-3
-//    after the PQ step (the bound);
+//  - exit 0 (a valid result, every tolerance met), or exit 5 with defects
+//    the layout had only, and δ_PQ,n max ≤ 1e-3 after the PQ step (the
+//    issue's bound);
 //  - no cut edge whose field matching differs from its chain's (the cuts
 //    follow the field's singularities: fields/cut_jumps.h OrientPair);
 //  - the layout is a manifold polygon mesh (it is read back by ReadMesh,
@@ -73,7 +74,18 @@ TEST_P(RealMeshLayout, ConjugateLayoutExampleGivesAValidPlanarLayout) {
                                      "output.report=" + Path("r.json")});
   const RunResult run = RunSpec(spec, {});
   const nlohmann::json& r = run.report;
-  EXPECT_EQ(run.exit_code, 0);
+  // Exit 0, or exit 5 when the layout itself has a panel that cannot be
+  // built (train-station: a boundary quad with a corner bent inward by 20°)
+  // and the PQ step made nothing worse: every failing check's elements are
+  // ones the layout had so.
+  EXPECT_TRUE(run.exit_code == 0 || run.exit_code == 5) << run.summary;
+  if (run.exit_code == 5) {
+    for (const nlohmann::json& c : run.report.at("validity").at("checks")) {
+      EXPECT_EQ(c.at("count"), c.at("passed").get<bool>() ? 0 : c.at("inherited").get<int>())
+          << c.dump();
+    }
+    std::printf("%s", run.summary.substr(0, run.summary.find("measures")).c_str());
+  }
   ASSERT_TRUE(r.contains(nlohmann::json::json_pointer("/details/net/cut")) &&
               r.contains(nlohmann::json::json_pointer("/after/pq_normalized_max")))
       << "no layout figures in the report (exit " << run.exit_code << "): " << run.summary;

@@ -101,6 +101,19 @@ TEST_F(Render, BeforeAfterSideBySideOnOneScale) {
   EXPECT_EQ(after.red, 0);
 }
 
+// --value none: grey faces and no colour bar (the picture is one panel wide).
+TEST_F(Render, ValueNoneDrawsGreyFacesAndNoBar) {
+  const std::string twisted = WriteFile("twisted.obj", GridObj(8, 0.05));
+  const Outcome o =
+      Shell(Archgeo() + " render " + twisted + " --value none --out " + Path("grey.png"));
+  ASSERT_EQ(o.code, 0) << o.output;
+  const Pixels p = CountPixels(Path("grey.png"), 0, 60, 720, 560);
+  EXPECT_EQ(p.width, 720);
+  EXPECT_GT(p.drawn, 720 * 500 / 10);
+  EXPECT_EQ(p.red, 0);
+  EXPECT_EQ(p.green, 0);
+}
+
 TEST_F(Render, RefusesANameThatIsNotPngAndNamesIt) {
   const std::string flat = WriteFile("flat.obj", GridObj(2, 0.0));
   const Outcome o = Shell(Archgeo() + " render " + flat + " --out " + Path("view.jpg"));

@@ -5,7 +5,7 @@
 //
 //   archgeo solve SPEC.yaml [--set KEY=VALUE ...] [--quiet]
 //   archgeo spec PROBLEM [--keys]
-//   archgeo measure MESH [--reference REF] [--json]
+//   archgeo measure MESH [--reference REF] [--json] [--all]
 //   archgeo generate OUT [--surface NAME] [--nu N] [--nv N] [--noise X] [--scale S]
 //                        [--seed K] [--refinement K] [--reference REF_OUT]
 //   archgeo darboux NET OUT.ply [--c C] [--minus] [--projective 16 numbers]
@@ -58,7 +58,7 @@ int Solve(const std::string& spec_path, const std::vector<std::string>& override
   if (!quiet) progress = [](const std::string& line) { std::cerr << line << "\n"; };
   const archgeo::RunResult run = archgeo::RunSpec(spec, progress);
   std::cout << run.summary;
-  if (run.exit_code == 0 || run.exit_code == 4) {
+  if (run.exit_code == 0 || run.exit_code == 4 || run.exit_code == 5) {
     for (const archgeo::Key& k : spec.settings.schema().keys()) {
       if (k.type == archgeo::Type::kOutputPath && !spec.settings.String(k.name).empty()) {
         std::cout << "wrote " << spec.settings.String(k.name) << "\n";
@@ -102,8 +102,8 @@ int Spec(const std::string& name, bool keys, bool common) {
   return 0;
 }
 
-int Measure(const std::string& mesh, const std::string& reference, bool json) {
-  const archgeo::RunResult run = archgeo::MeasureFiles(mesh, reference);
+int Measure(const std::string& mesh, const std::string& reference, bool json, bool all) {
+  const archgeo::RunResult run = archgeo::MeasureFiles(mesh, reference, all);
   if (json) {
     std::cout << std::setw(2) << run.report << "\n";
   } else {
@@ -225,7 +225,12 @@ int main(int argc, char** argv) {
   measure->add_option("--reference", reference_path,
                       "Reference surface: adds δ_prox, δ∂_prox, distances, Hausdorff, and "
                       "displacement if the vertex counts agree");
-  measure->add_flag("--json", json, "Print the metrics as JSON");
+  measure->add_flag("--json", json, "Print the metrics as JSON (every metric)");
+  bool all_metrics = false;
+  measure->add_flag("--all", all_metrics,
+                    "Print every metric, also those that do not describe this mesh (A-net, "
+                    "H-net and conical rows of a net that is none of these; saddles of a quad "
+                    "mesh)");
 
   std::string grid_path;
   archgeo::GenerateOptions gen;
@@ -388,7 +393,7 @@ int main(int argc, char** argv) {
       std::cout << archgeo::RunDarboux(net_path, patchwork_path, darboux_options).summary;
       return 0;
     }
-    return Measure(mesh_path, reference_path, json);
+    return Measure(mesh_path, reference_path, json, all_metrics);
   } catch (const archgeo::InputError& e) {
     std::cerr << "archgeo: error: " << e.what() << "\n";
     return kBadInput;

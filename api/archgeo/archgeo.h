@@ -44,8 +44,9 @@ class Error : public std::runtime_error {
 };
 
 struct SolveResult {
-  // 0: valid, every tolerance met; 4: valid, a tolerance missed; 3: no usable
-  // or valid result (`mesh` is then empty). As the CLI's exit codes.
+  // 0: valid, every tolerance met; 4: valid, a tolerance missed; 5: written,
+  // with panels that cannot be built as in the input; 3: no usable or valid
+  // result (`mesh` is then empty). As the CLI's exit codes.
   int status = 0;
   MeshData mesh;        // the result in file units (same vertex order and faces)
   std::string report;   // the JSON report (docs/report.schema.json)

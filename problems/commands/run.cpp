@@ -200,6 +200,7 @@ class SpecRun {
     if (!solution_->loop.usable) return NotUsable();
     if (!Valid()) return run_;
     WriteAndMeasureOutput();
+    if (!validity_.valid()) run_.exit_code = 5;  // panels as defective as the input's
     run_.summary = Summary();
     return run_;
   }
@@ -342,6 +343,9 @@ class SpecRun {
     v["problem"] = own.empty() ? nlohmann::json(nullptr) : nlohmann::json(own);
     if (!own.empty()) v["valid"] = false;
     if (validity_.valid() && own.empty()) return true;
+    // Panels the input had so too: the result is written (exit 5) for the
+    // user to repair them; ValidityLines names them.
+    if (validity_.OnlyInherited() && own.empty()) return true;
     run_.exit_code = 3;
     run_.report["message"] = "the result is not valid";
     run_.summary = "archgeo: the result is not valid (nothing was written):\n" +
@@ -361,13 +365,14 @@ class SpecRun {
     if (!temporaries_.count("output.mesh")) return {};
     return std::async(std::launch::async, [this, &face_values] {
       const auto mesh_start = Clock::now();
+      const bool shown = face_values.name != "none";  // else no colours, no face property
       const FaceColors colors = ColorsOf(face_values);
       const std::vector<PlyValues> properties = {{face_values.name, face_values.values}};
       const std::vector<PlyValues> vertex_values =
           DisplacementValues(solution_->output, solution_->input);
       Writing([&] {
-        WriteMesh(temporaries_.at("output.mesh"), solution_->output, &colors,
-                           s_.Bool("output.ascii_ply"), &properties, &vertex_values);
+        WriteMesh(temporaries_.at("output.mesh"), solution_->output, shown ? &colors : nullptr,
+                  s_.Bool("output.ascii_ply"), shown ? &properties : nullptr, &vertex_values);
       });
       mesh_write_seconds_ = Since(mesh_start);
     });
@@ -385,13 +390,35 @@ class SpecRun {
     seconds_["metrics_after"] = Since(metrics_start);
   }
 
+  // The mean of the finite values (0 for none).
+  static double Mean(const std::vector<double>& values) {
+    double sum = 0;
+    int n = 0;
+    for (double x : values) {
+      if (std::isfinite(x)) sum += x, ++n;
+    }
+    return n > 0 ? sum / n : 0.0;
+  }
+
+  // The per-face quantity the problem lowers, on the input or the output,
+  // at the input's scale.
+  FaceValues ColorValues(const Mesh& mesh, bool input) {
+    const ProblemDecl::StateColors& own = d_.state_colors;
+    if (!own.values) return ComputeFaceValues(d_.colors, mesh, &solution_->input, &s_);
+    HookContext& hooks = solution_->hooks;
+    const std::vector<double> before = own.values(hooks, true);
+    return StateFaceValues(own.name, own.label, own.units,
+                           input ? before : own.values(hooks, false), before, &s_);
+  }
+
   // The picture and the problem's own outputs (ProblemDecl::write).
-  void WriteOtherOutputs(const FaceValues& face_values) {
+  void WriteOtherOutputs(const FaceValues& face_values, const FaceValues& before) {
     const Mesh& input = solution_->input;
     if (temporaries_.count("output.image")) {
-      const FaceValues before = ComputeFaceValues(d_.colors, input, &input, &s_);
-      std::vector<PicturePanel> panels = {PanelOf(input, before.values, "input"),
-                                          PanelOf(solution_->output, face_values.values, "output")};
+      const bool shown = face_values.name != "none";  // else grey faces
+      std::vector<PicturePanel> panels = {
+          PanelOf(input, shown ? before.values : std::vector<double>{}, "input"),
+          PanelOf(solution_->output, shown ? face_values.values : std::vector<double>{}, "output")};
       Writing([&] {
         WriteView(temporaries_.at("output.image"), panels, ScaleOf(face_values), {},
                   "output.image");
@@ -414,18 +441,20 @@ class SpecRun {
     run_.exit_code = tolerances_met ? 0 : 4;
     const Mesh& output = solution_->output;
     const auto write_start = Clock::now();
-    const FaceValues face_values = ComputeFaceValues(d_.colors, output, &solution_->input, &s_);
+    const FaceValues face_values = ColorValues(output, false);
     std::future<void> mesh_written = StartMeshWrite(face_values);
     const double write_seconds = Since(write_start);
     MeasureOutput();
 
     const auto rest_start = Clock::now();
     nlohmann::json& rep = run_.report;
-    rep["colors"] = {{"value", face_values.name},  {"label", face_values.label},
-                     {"units", face_values.units}, {"red_at", face_values.red_at},
-                     {"red_from", face_values.red_from}};
+    const FaceValues before = ColorValues(solution_->input, true);
+    rep["colors"] = {{"value", face_values.name},   {"label", face_values.label},
+                     {"units", face_values.units},  {"red_at", face_values.red_at},
+                     {"red_from", face_values.red_from},
+                     {"mean_before", Mean(before.values)}, {"mean_after", Mean(face_values.values)}};
     if (s_.Bool("output.arrays")) rep["arrays"] = ArraysJson(face_values, output, solution_->input);
-    WriteOtherOutputs(face_values);
+    WriteOtherOutputs(face_values, before);
     if (mesh_written.valid()) mesh_written.get();
     rep["details"] = solution_->hooks.details;
     const WorkingNet& net = solution_->net;
@@ -466,6 +495,13 @@ class SpecRun {
            FormatAnalysis(extra_before_, &extra_after_, scale_);
   }
 
+  // Hard-check defects the input had too (accepted or not).
+  int Inherited() const {
+    int n = 0;
+    for (const ValidityCheck& c : validity_.checks) n += c.hard ? c.inherited : 0;
+    return n;
+  }
+
   std::string ToleranceLines() const {
     std::string lines;
     for (const auto& [key, met] : solution_->loop.tolerances) {
@@ -479,13 +515,26 @@ class SpecRun {
 
   std::string ValidityLines() const {
     const LoopResult& solved = solution_->loop;
-    std::string lines = "validity: every check passed\n";
+    const std::string warnings = validity_.Warnings();
+    std::string lines;
+    if (!validity_.valid()) {
+      lines = "validity: NOT valid (exit 5): panels that cannot be built, as they were in the "
+              "input (the result is written for you to repair them; "
+              "validity.allow_input_defects: true accepts them):\n" +
+              validity_.Reason() + (warnings.empty() ? "" : "warnings:\n" + warnings);
+    } else {
+      lines = warnings.empty() ? "validity: every check passed\n"
+                               : "validity: valid; warnings:\n" + warnings;
+      if (validity_.allow_input_defects && Inherited() > 0) {
+        lines += "validity.allow_input_defects: " + std::to_string(Inherited()) +
+                 " defects as in the input were accepted\n";
+      }
+    }
     if (info_.welded_vertices > 0) {
       lines += "WARNING: the input had coincident vertices: " +
                std::to_string(info_.welded_vertices) +
                " were welded on reading (limits.weld_distance; the report's input section)\n";
     }
-    if (!validity_.Warnings().empty()) lines = "validity: valid; warnings:\n" + validity_.Warnings();
     if (solved.restored_valid) {
       lines += "the last round was not valid: the output is round " +
                std::to_string(solved.output_round) + ", the last valid one\n";
@@ -537,7 +586,8 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const M
   return SpecRun(spec, progress, meshes).Run();
 }
 
-RunResult MeasureFiles(const std::string& mesh_path, const std::string& reference_path) {
+RunResult MeasureFiles(const std::string& mesh_path, const std::string& reference_path,
+                       bool all) {
   const Mesh mesh = ReadMesh(mesh_path);
   RunResult run;
   Metrics metrics;
@@ -582,7 +632,9 @@ RunResult MeasureFiles(const std::string& mesh_path, const std::string& referenc
   AnalysisToJson(analysis, metrics.bbox_diagonal, run.report["metrics"]);
   if (!validity_json.is_null()) run.report["validity"] = validity_json;
   run.summary = FormatMetrics(metrics, nullptr, metrics.bbox_diagonal) +
-                FormatAnalysis(analysis, nullptr, metrics.bbox_diagonal) + validity_text;
+                FormatAnalysis(all ? analysis : RowsThatApply(mesh, analysis), nullptr,
+                               metrics.bbox_diagonal) +
+                validity_text;
   return run;
 }
 

@@ -20,8 +20,9 @@ inline constexpr int kReportSchemaVersion = 1;
 
 struct RunResult {
   // 0: a valid result, every tolerance met; 4: a valid result written, a
-  // tolerance missed; 3: no usable or no valid result, nothing written (bad
-  // input throws InputError: exit 2).
+  // tolerance missed; 5: the result written, with panels that cannot be
+  // built as they were in the input (analysis/validity.h); 3: no usable or
+  // no valid result, nothing written (bad input throws InputError: exit 2).
   int exit_code = 0;
   nlohmann::json report;   // the JSON run report (also written to output.report)
   std::string summary;     // human-readable summary for the terminal
@@ -37,6 +38,7 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const M
 
 // `archgeo measure`: metrics of `mesh_path`, against `reference_path` if not
 // empty (displacement too when the vertex counts agree). Throws InputError.
-RunResult MeasureFiles(const std::string& mesh_path, const std::string& reference_path);
+RunResult MeasureFiles(const std::string& mesh_path, const std::string& reference_path,
+                       bool all = false);
 
 }  // namespace archgeo

@@ -588,6 +588,7 @@ ProblemDecl conjugate_field() {
   d.finish = &Finish;
   d.output_keys = {"field"};
   d.write = &Write;
+  d.colors = "none";  // the mesh is not changed: the field is the result (output.field)
   return d;
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -108,6 +109,24 @@ void CurveDetails(HookContext& c) {
   c.headline += line;
 }
 
+// The per-face quantity the composition lowers (problems/report/colors.h):
+// planarity with a planarity term, else E or C with a smoothness term, else
+// none (spreads, loads and curves have no per-face picture).
+std::string ColorsOf(const std::vector<TermUse>& terms) {
+  auto has = [&](std::initializer_list<const char*> names) {
+    for (const TermUse& u : terms) {
+      for (const char* n : names) {
+        if (u.term == n) return true;
+      }
+    }
+    return false;
+  };
+  if (has({"pq_diagonal", "face_planarity", "conical"})) return "planarity";
+  if (has({"dihedral_energy", "smoothed_dihedral_energy"})) return "energy";
+  if (has({"total_absolute_curvature"})) return "curvature";
+  return "none";
+}
+
 void Finish(HookContext& c) {
   if (On(*c.settings, "load")) FormDetails(c);
   if (On(*c.settings, "on_curve")) CurveDetails(c);
@@ -171,6 +190,7 @@ ProblemDecl CustomProblem(const CustomValue* terms, const std::string& file) {
   for (const TermUse& u : d.terms) conical = conical || u.term == "conical";
   d.analyses = {"planarity", "spreads"};
   if (smooth) d.analyses.insert("smoothness");
+  d.colors = ColorsOf(d.terms);
   if (conical) d.analyses.insert("conical");
   d.stages = [driven, smooth, d](const Settings&) {
     Stage s;

@@ -713,7 +713,7 @@ ProblemDecl grid() {
     return std::vector<Stage>{st};
   };
   d.analyses = {"grid"};
-  d.colors = "planarity";
+  d.colors = "orthogonality";
   return d;
 }
 

@@ -498,6 +498,7 @@ ProblemDecl level_sets() {
   d.finish = &Finish;
   d.output_keys = {"layout", "field"};
   d.write = &Write;
+  d.colors = "none";  // the mesh is not changed: the functions and the layout are the result
   return d;
 }
 

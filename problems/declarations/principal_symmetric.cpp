@@ -60,6 +60,7 @@ struct Labels : ProblemState {
   std::vector<VertexPair> edges;
   int vertices = 0;  // of the mesh they label
   int rounds = 0;    // rounds of the current level
+  std::vector<double> input_residuals;  // ResidualPerFace of the input, for the pictures
 };
 
 bool Split(const Settings& s) { return s.Given("split.diagonal") || s.Given("split.principal"); }
@@ -256,6 +257,32 @@ Conditions Measure(HookContext& c) {
   return r;
 }
 
+// Per face, the largest co-sphericity residual |½ κ |d|² − n·d| (mean edge
+// lengths) of the constrained stars at its corners: the condition the
+// problem drives to zero, as its pictures show it.
+std::vector<double> ResidualPerFace(HookContext& c) {
+  Store& st = *c.store;
+  const Mesh& mesh = st.mesh();
+  const ElementSet& stars = c.model->Elements("principal_stars");
+  std::vector<double> at(mesh.num_vertices(), 0.0);
+  for (size_t i = 0; i < stars.size(); ++i) {
+    const int* s = stars.Vertices(i);
+    const V n = UnitOrZero(B(st, "sphere_normal", s[0]));
+    const double kappa = st.At("sphere_curvature", s[0])[0];
+    for (int k = 3; k < 7; ++k) {
+      const V d = P(mesh, s[k]) - P(mesh, s[0]);
+      at[size_t(s[0])] = std::max(at[size_t(s[0])], std::abs(0.5 * kappa * d.squaredNorm() - n.dot(d)));
+    }
+  }
+  std::vector<double> values(mesh.num_faces(), 0.0);
+  for (FaceIndex f : mesh.faces()) {
+    for (VertexIndex v : mesh.vertices_around_face(mesh.halfedge(f))) {
+      values[f.idx()] = std::max(values[f.idx()], at[v.idx()]);
+    }
+  }
+  return values;
+}
+
 nlohmann::json Json(const Conditions& r) {
   return {{"spheres", r.spheres},
           {"strips", r.strips},
@@ -316,7 +343,10 @@ ProblemDecl principal_symmetric() {
   d.net = &Net;
   d.init = [](HookContext& c) {
     Init(c);
-    if (c.level == 0) c.details["conditions_before"] = Json(Measure(c));
+    if (c.level == 0) {
+      c.details["conditions_before"] = Json(Measure(c));
+      c.State<Labels>().input_residuals = ResidualPerFace(c);
+    }
   };
   d.measures = {
       {"co_spherical_max", [](HookContext& c) { return Measure(c).co_spherical_max; }},
@@ -359,7 +389,11 @@ ProblemDecl principal_symmetric() {
     WriteTextFile(it->second, text, "output.principal_edges");
   };
   d.analyses = {"smoothness"};
-  d.colors = "bending";
+  d.state_colors = {"co_spherical_residual",
+                    "co-sphericity: the largest |½κ|d|² − n·d| of the stars at the face's corners",
+                    "mean edge lengths", [](HookContext& c, bool input) {
+                      return input ? c.State<Labels>().input_residuals : ResidualPerFace(c);
+                    }};
   return d;
 }
 

@@ -193,7 +193,7 @@ ProblemDecl smooth_mesh() {
     return std::vector<Stage>{st};
   };
   d.analyses = {"smoothness"};
-  d.colors = "bending";
+  d.colors = "energy";
   return d;
 }
 

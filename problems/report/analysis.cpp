@@ -3,6 +3,7 @@
 #include "problems/report/analysis.h"
 
 #include <cmath>
+#include <limits>
 #include <cstdio>
 
 #include "analysis/validity.h"
@@ -183,6 +184,34 @@ AnalysisRows Analyse(const Mesh& mesh, const std::set<std::string>& names,
   if (names.count("conical") && applicable.count("conical")) AddConical(mesh, rows);
   if (names.count("spreads") && applicable.count("spreads")) AddSpreads(mesh, rows);
   return rows;
+}
+
+AnalysisRows RowsThatApply(const Mesh& mesh, const AnalysisRows& rows) {
+  auto value = [&](const std::string& key) {
+    for (const AnalysisRow& r : rows) {
+      if (r.key == key) return r.value;
+    }
+    return std::numeric_limits<double>::infinity();
+  };
+  bool triangles = false;
+  for (FaceIndex f : mesh.faces()) triangles = triangles || mesh.degree(f) == 3;
+  const bool anet = value("star_planarity_max") <= 1e-3 || value("diagonal_star_planarity_mean") <= 1e-3;
+  const bool conical = value("conical_mean") <= 0.05;
+  const std::set<std::string> saddle = {"saddles", "bad_saddles"};
+  const std::set<std::string> net = {"star_planarity_max", "star_planarity_mean",
+                                     "diagonal_star_planarity_mean", "alpha_max", "alpha_mean",
+                                     "W_min", "W_max", "odd_valence_vertices",
+                                     "not_equitwist_edges", "mismatch_max"};
+  const std::set<std::string> cone = {"conical_max", "conical_mean", "face_offset_miss"};
+  AnalysisRows kept;
+  for (const AnalysisRow& r : rows) {
+    if ((saddle.count(r.key) && !triangles) || (net.count(r.key) && !anet) ||
+        (cone.count(r.key) && !conical) || r.key == "non_convex_quads") {
+      continue;
+    }
+    kept.push_back(r);
+  }
+  return kept;
 }
 
 void AnalysisToJson(const AnalysisRows& rows, double scale, nlohmann::json& json) {

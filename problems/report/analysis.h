@@ -49,6 +49,14 @@ std::set<std::string> ApplicableAnalyses(const Mesh& mesh);
 AnalysisRows Analyse(const Mesh& mesh, const std::set<std::string>& names,
                      const HNetOptions& hnet = {});
 
+// The rows of `rows` (Analyse of `mesh`) that describe what the mesh is, for
+// `archgeo measure` without --all: saddle rows only with triangles (bad
+// saddles are defined on triangle stars), the A-net and H-net rows only for
+// an A-net (star planarity max, or its diagonal net's mean, ≤ 1e-3), the
+// conical rows only for a near-conical mesh (mean residual ≤ 0.05 rad), and
+// no second count of non-convex quads (the panels row has them).
+AnalysisRows RowsThatApply(const Mesh& mesh, const AnalysisRows& rows);
+
 // Adds every row to `json` (lengths also as "<key>_relative" = value / scale).
 void AnalysisToJson(const AnalysisRows& rows, double scale, nlohmann::json& json);
 

@@ -2,21 +2,30 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — the per-face scalar a solve shows: the face colours and named
 // float properties of the output PLY, the pictures (output.image, `archgeo
-// render`) and the report's arrays (output.arrays). By the name a problem
-// declaration gives (ProblemDecl::colors):
-//   planarity  δ_PQ,n per face (diagonal distance / mean diagonal, unitless);
-//              red at tolerance.pq_normalized_max when the problem has that
-//              tolerance (> 0), else 1e-3 (planar_quads' default tolerance)
-//   bending    max over the face's edges of ℓ_e|α_e| / (mean edge length)
-//              [Pellis 2019, the summand of E′ per edge, made scale-free]:
-//              radians of an edge of mean length; red at the input's largest
-//              value (these problems have no per-face tolerance), so the
-//              before picture spans the whole scale
-//   curvature  the same scalar as bending (total_absolute_curvature)
-//   kinks      hnet: the largest kink angle along a face's edges, degrees
-//              [Shi 2014, Table 1]; red at 1°
-// `output.color_max`, when given, is the value shown red in every case (in
-// the scalar's units). Colours go green (0) → yellow → red (≥ red_at).
+// render`) and the report's arrays (output.arrays). Each problem shows the
+// quantity it lowers (ProblemDecl::colors), by name:
+//   planarity      δ_PQ,n per face (diagonal distance / mean diagonal,
+//                  unitless); red at tolerance.pq_normalized_max when the
+//                  problem has that tolerance (> 0), else 1e-3 (planar_quads'
+//                  default tolerance)
+//   energy         the face's share of E = Σ_e ℓ_e ℓ*_e [Pellis 2019, §3]:
+//                  half of each of its edges' ℓ ℓ*, in input mean edge
+//                  lengths (smooth_mesh); the faces' values add up to E
+//   curvature      the face's share of C = Σ_v |λ1| + |λ2| of W′ [Pellis
+//                  2019, §5.3]: each corner's value over its number of faces,
+//                  in input mean edge lengths (total_absolute_curvature)
+//   bending        max over the face's edges of ℓ_e|α_e| / (mean edge length)
+//                  [Pellis 2019, the summand of E′ per edge, Fig. 7], rad
+//   orthogonality  the face's largest |90° − corner angle|, degrees (grid);
+//                  red at tolerance.mdo when it is set
+//   kinks          hnet: the largest kink angle along a face's edges, degrees
+//                  [Shi 2014, Table 1]; red at 1°
+// Without a tolerance the scale is the input's 95th percentile (the same for
+// the input's and the output's picture). A problem whose quantity needs its
+// own state (principal_symmetric's condition residuals) gives it through
+// ProblemDecl::state_colors (StateFaceValues). `output.color_max`, when
+// given, is the value shown red in every case (in the scalar's units).
+// Colours go green (0) → yellow → red (≥ red_at).
 #pragma once
 
 #include <array>
@@ -46,6 +55,12 @@ struct FaceValues {
 // (if > 0) sets red_at. CHECKs the name is known.
 FaceValues ComputeFaceValues(const std::string& name, const Mesh& mesh, const Mesh* input,
                              const Settings* settings, double color_max = 0);
+
+// A problem's own per-face quantity (ProblemDecl::state_colors) on the
+// output, scaled by its input values as above.
+FaceValues StateFaceValues(std::string name, std::string label, std::string units,
+                           std::vector<double> values, const std::vector<double>& input_values,
+                           const Settings* settings);
 
 // Names ComputeFaceValues knows (for `archgeo render --value`).
 const std::vector<std::string>& FaceValueNames();

@@ -32,7 +32,7 @@ PicturePanel PanelOf(const Mesh& mesh, const std::vector<double>& face_values, s
 }
 
 PictureScale ScaleOf(const FaceValues& values) {
-  return {values.label, values.units, values.red_at, values.red_from};
+  return {values.label, values.units, values.red_at, values.red_from, values.name != "none"};
 }
 
 std::string RenderFiles(const RenderRequest& r) {
@@ -66,7 +66,7 @@ std::string RenderFiles(const RenderRequest& r) {
     }
   }
   std::vector<PicturePanel> panels;
-  PictureScale scale{"no values: grey", "", 1, ""};
+  PictureScale scale{"no per-face value (--value none)", "", 1, "", false};
   for (size_t i = 0; i < meshes.size(); ++i) {
     const std::string title =
         r.titles.empty() ? std::filesystem::path(r.meshes[i]).filename().string() : r.titles[i];

@@ -544,13 +544,17 @@ ValidityLimits LimitsOf(const Settings& s) {
   l.min_corner_degrees = s.Number("validity.min_corner_degrees");
   l.max_aspect = s.Number("validity.max_aspect");
   l.self_intersections = s.Bool("validity.self_intersections");
+  l.allow_input_defects = s.Bool("validity.allow_input_defects");
   return l;
 }
 
+// A round is judged on what the optimisation did: defects its input had
+// too do not make it invalid (the final check judges them; run.cpp).
 std::string MeshModel::Invalid() {
   if (!Finite()) return "finite: non-finite coordinates";
-  std::string reason =
-      CheckValidity(store_.mesh(), &start_, LimitsOf(*hooks_.settings), false).Reason();
+  ValidityLimits limits = LimitsOf(*hooks_.settings);
+  limits.allow_input_defects = true;
+  std::string reason = CheckValidity(store_.mesh(), &start_, limits, false).Reason();
   if (declaration_.invalid) reason += declaration_.invalid(hooks_);
   return reason;
 }

@@ -64,12 +64,13 @@ std::vector<Key> CommonKeys(const ProblemDecl& d) {
                             "refuse a multiresolution level with more faces"));
   keys.push_back(NumberKey("validity.max_reflex_degrees", 10, 0, 180,
                            "a panel corner bent inward by more than this makes the result "
-                           "invalid (unless the input's was)"));
+                           "invalid (see allow_input_defects)"));
   keys.push_back(NumberKey("validity.max_flip_degrees", 90, 0, 180,
                            "a face normal turned by more than this against the input's is a fold"));
   keys.push_back(NumberKey("validity.min_edge_relative", 0.1, 0, 1,
-                           "an edge shorter than this × the input's mean edge length (and than "
-                           "half its own input length) has collapsed"));
+                           "an edge shorter than this × the input's mean edge length has "
+                           "collapsed (as in the input where it is not shorter than half its "
+                           "input length)"));
   keys.push_back(NumberKey("validity.max_crease_increase_degrees", 30, 0, 180,
                            "an edge whose dihedral angle grew by more than this is a new crease"));
   keys.push_back(NumberKey("validity.min_corner_degrees", 5, 0, 90,
@@ -79,6 +80,10 @@ std::vector<Key> CommonKeys(const ProblemDecl& d) {
   keys.push_back(BoolKey("validity.keep_last_valid", true,
                          "when the last round is not valid, the output is the last valid round "
                          "(said in the report); false: such a result is not written (exit 3)"));
+  keys.push_back(BoolKey("validity.allow_input_defects", false,
+                         "panels the input already had reflex or bow-tied, and edges it had "
+                         "collapsed, do not fail validity; the report says so. false: every "
+                         "such panel fails (exit 5, the result written)"));
   keys.push_back(BoolKey("validity.self_intersections", true,
                          "check the result's surface for self-intersections (CGAL)"));
   keys.push_back(PathKey("output.mesh", Type::kOutputPath,
