@@ -104,7 +104,7 @@ constexpr double kMaxOutside = 0.005;
 
 double MaxOutside(const Json& excursion) {
   double m = 0;
-  for (const auto& [direction, fraction] : excursion.items()) m = std::max(m, fraction.get<double>());
+  for (const auto& entry : excursion.items()) m = std::max(m, entry.value().get<double>());
   return m;
 }
 

@@ -62,7 +62,8 @@ TEST(GridCover, AShrunkGridCoversTheSquareOfItsFactor) {
   const Surface plane = MakeSurface("plane", {{"a", 10}, {"b", 10}});
   const Grid g = MakeUniformGrid(plane, 9, 9, GridType::kOpen);
   Grid shrunk = g;
-  for (Eigen::Vector2d& p : shrunk.uv) p = Eigen::Vector2d(5, 5) + 0.5 * (p - Eigen::Vector2d(5, 5));
+  const Eigen::Vector2d centre(5, 5);
+  for (Eigen::Vector2d& p : shrunk.uv) p = centre + 0.5 * (p - centre);
   const GridCoverage c = MeasureCoverage(shrunk, g, plane, PatchArea(plane, plane.Domain()));
   EXPECT_NEAR(c.area_fraction, 0.25, kExact);
   EXPECT_NEAR(c.parameter_fraction, 0.25, kExact);

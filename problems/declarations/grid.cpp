@@ -46,9 +46,9 @@
 //   force: the paper's force-directed iterations (surfaces/force_directed.h,
 //     Listing 1: eqs. 1–3; corners of open grids excluded; the boundary rows
 //     put back on their sides of the domain after every step unless
-//     grid.boundary is free), force.iterations per round, until a §4 threshold holds
-//     (tolerance.*), the disposition stalls or plateaus (the stage ends, see
-//     StepResult::stop), or after force.rounds rounds.
+//     grid.boundary is free), force.iterations per round, until a §4
+//     threshold holds (tolerance.*), the disposition stalls or plateaus (the
+//     stage ends, see StepResult::stop), or after force.rounds rounds.
 // L, the constant ideal edge length [§3], is grid.ideal_length or the mean
 // edge length of the initial grid (on a grid closed in one direction: of its
 // closed lines, whose edges the closure fixes), in file units; the fitting
@@ -59,8 +59,9 @@
 // ADE (percent; on the quad sides, eq. 6) of the whole grid, its seams
 // included (surfaces/grid_quality.h Table1()); coverage (grid area / patch
 // area) and parameter_coverage (the grid's (u, v) area / the domain's;
-// surfaces/grid_cover.h), in `details.coverage_before|after` too. The report's before/after
-// objects hold the same four, measured on the mesh by the "grid" analysis
+// surfaces/grid_cover.h), in `details.coverage_before|after` too. The
+// report's before/after objects hold the four Table 1 measures, measured on
+// the mesh by the "grid" analysis
 // (problems/report/analysis.h; for the Klein bottle that is the grid cut open along
 // its seam, as written to the files), and `details` the whole grid's.
 //
