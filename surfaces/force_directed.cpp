@@ -8,6 +8,8 @@
 #include <Eigen/Dense>
 #include <glog/logging.h>
 
+#include "surfaces/grid_cover.h"
+
 namespace archgeo {
 namespace {
 
@@ -49,6 +51,13 @@ Vec2 ParameterStep(const Vec3& x, const Vec3& xu, const Vec3& xv, const Vec3& ta
   return g.inverse() * Vec2(xu.dot(d), xv.dot(d));
 }
 
+// The parameter step along a curve with tangent t at x that moves x to the
+// normal projection of `target` onto the tangent line (zero where t = 0).
+double SideStep(const Vec3& x, const Vec3& t, const Vec3& target) {
+  const double tt = t.squaredNorm();
+  return tt > 0 ? t.dot(target - x) / tt : 0.0;
+}
+
 // Every Table 1 measure of `now` within `tolerance` of `then` (NaN = NaN).
 bool Unchanged(const QualityMeasures& now, const QualityMeasures& then, double tolerance) {
   const auto same = [&](double a, double b) {
@@ -67,6 +76,22 @@ bool ThresholdsMet(const QualityMeasures& q, const ForceDirectedOptions& o) {
   };
   return holds(o.stop_mdo, q.mdo) && holds(o.stop_ado, q.ado) && holds(o.stop_mde, q.mde) &&
          holds(o.stop_ade, q.ade);
+}
+
+// A boundary vertex back on its side: the held coordinate at the side, the
+// other within the side's extent (a vertex slides along its side, not past
+// the corner).
+Vec2 HeldOnSide(Vec2 uv, const BoundaryHold& hold, const ParameterDomain& covered,
+                const Grid& grid) {
+  if (hold.u) {
+    uv[0] = hold.u_value;
+    if (!grid.closed_v) uv[1] = std::clamp(uv[1], covered.v0, covered.v1);
+  }
+  if (hold.v) {
+    uv[1] = hold.v_value;
+    if (!grid.closed_u) uv[0] = std::clamp(uv[0], covered.u0, covered.u1);
+  }
+  return uv;
 }
 
 }  // namespace
@@ -99,6 +124,10 @@ ForceDirectedResult RunForceDirected(const Surface& surface, const Grid& initial
   Grid& grid = result.grid;
   const int n = grid.NumVertices();
   const Stencils st = StencilsOf(grid);
+  std::vector<BoundaryHold> hold(static_cast<size_t>(n));
+  if (o.hold_boundary) {
+    for (int v = 0; v < n; ++v) hold[size_t(v)] = HoldOf(grid, v, o.covered);
+  }
   const GridNetwork network = NetworkOfGrid(grid);
   const double L = o.ideal_length > 0 ? o.ideal_length : MeanEdgeLength(grid, surface);
   CHECK(L > 0) << "RunForceDirected: the grid has no length";
@@ -156,16 +185,28 @@ ForceDirectedResult RunForceDirected(const Surface& surface, const Grid& initial
     previous_step.swap(step);
     for (int v = 0; v < n; ++v) {
       const Vec3 target = x[v] + disp[v];
-      Vec2 uv = grid.uv[v] + ParameterStep(x[v], xu[v], xv[v], target);
+      const BoundaryHold& held = hold[size_t(v)];
+      // A held vertex: the target projected onto its side's tangent (x_v on
+      // a side u = const, x_u on v = const), not the coordinate of the
+      // tangent-plane step in the skew basis {x_u, x_v}, which would turn a
+      // push across the side into a slide along it.
+      const auto step_of = [&](const Vec3& at, const Vec3& pu, const Vec3& pv) {
+        if (held.u && held.v) return Vec2(Vec2::Zero());
+        if (held.u) return Vec2(0, SideStep(at, pv, target));
+        if (held.v) return Vec2(SideStep(at, pu, target), 0);
+        return ParameterStep(at, pu, pv, target);
+      };
+      Vec2 uv = grid.uv[v] + step_of(x[v], xu[v], xv[v]);
       for (int r = 0; r < o.projection_repetitions; ++r) {
         Vec3 pu, pv;
         surface.Tangents(uv[0], uv[1], &pu, &pv);
-        uv += ParameterStep(surface.Point(uv), pu, pv, target);
+        uv += step_of(surface.Point(uv), pu, pv);
       }
       if (o.clamp_to_domain) {
         if (!domain.periodic_u) uv[0] = std::clamp(uv[0], domain.u0, domain.u1);
         if (!domain.periodic_v) uv[1] = std::clamp(uv[1], domain.v0, domain.v1);
       }
+      if (hold[size_t(v)].Any()) uv = HeldOnSide(uv, hold[size_t(v)], o.covered, grid);
       step[v] = uv - grid.uv[v];
       const Vec2 change = step[v] - previous_step[v];
       max_change = std::max(max_change, (xu[v] * change[0] + xv[v] * change[1]).norm());

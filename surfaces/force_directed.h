@@ -32,8 +32,13 @@
 //    with (du_t, dv_t) the coordinates in the unit basis); then p' is
 //    projected once more onto the tangent plane at the new (u, v) and the
 //    step repeated ("one repetition is sufficient"). The vertex is x(u, v):
-//    on the surface by construction. A periodic direction wraps (u, v). An
-//    open direction is left free by default — the paper bounds nothing, and
+//    on the surface by construction. A periodic direction wraps (u, v).
+//    With hold_boundary, the boundary rows of an open direction are put back
+//    on their side of the covered domain after every step (surfaces/
+//    grid_cover.h HoldOf: a boundary vertex keeps the one coordinate and
+//    keeps the slide along the boundary that eq. 2 gives it, within the
+//    side; a corner stays at its corner) — the boundary the paper's eq. 2 assumes, held. Without
+//    it an open direction is left free — the paper bounds nothing, and
 //    every surface here is defined beyond its domain, so an open grid may
 //    contract into or grow out of the domain (its Fig. 8; on the Table 1
 //    stand-ins the open grids end up to 37% of the domain's length beyond
@@ -98,6 +103,10 @@ struct ForceDirectedOptions {
   double plateau_tolerance = 0.01;
   // Clamp open directions to the domain's bounds (default: free, see above).
   bool clamp_to_domain = false;
+  // Hold the boundary rows of open directions on the sides of `covered`
+  // (default: free, see above).
+  bool hold_boundary = false;
+  ParameterDomain covered;
   // A history entry (and the threshold check) every this many iterations, ≥ 1;
   // the first (iteration 0, the input) and the last are always recorded.
   int history_stride = 10;

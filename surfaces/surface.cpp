@@ -69,6 +69,17 @@ Eigen::Vector2d Surface::Wrapped(Eigen::Vector2d uv) const {
   return uv;
 }
 
+Eigen::Vector2d Surface::NearestChart(Eigen::Vector2d uv, const Eigen::Vector2d& near) const {
+  const ParameterDomain d = Domain();
+  if (d.periodic_u) {
+    const long turns = std::lround((uv[0] - near[0]) / d.PeriodU());
+    uv[0] -= double(turns) * d.PeriodU();
+    if (d.u_seam_flips_v && turns % 2 != 0) uv[1] = d.v0 + d.v1 - uv[1];
+  }
+  if (d.periodic_v) uv[1] -= double(std::lround((uv[1] - near[1]) / d.PeriodV())) * d.PeriodV();
+  return uv;
+}
+
 Eigen::Vector2d Surface::Canonical(Eigen::Vector2d uv) const {
   const ParameterDomain d = Domain();
   uv = Wrapped(uv);

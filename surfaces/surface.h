@@ -88,6 +88,11 @@ class Surface {
   // formulas extend beyond the domain). x(Wrapped(uv)) = x(uv).
   Eigen::Vector2d Wrapped(Eigen::Vector2d uv) const;
 
+  // The parameter of the same point as `uv` in the chart nearest to `near`:
+  // whole periods added in the periodic directions, and across a flipping
+  // u-seam v reflected once per turn. x(NearestChart(uv, near)) = x(uv).
+  Eigen::Vector2d NearestChart(Eigen::Vector2d uv, const Eigen::Vector2d& near) const;
+
   // The parameter of the point of the surface closest to `x`, by Newton's
   // method on f(u, v) = ½‖x(u, v) − x‖² from `start` (exact Hessian from
   // Tangents<Jet>; a Gauss–Newton step where the Hessian is not positive

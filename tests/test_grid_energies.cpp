@@ -34,6 +34,7 @@
 #include "energies/grid_fairness.h"
 #include "energies/grid_orthogonality.h"
 #include "energies/grid_quad_equilaterality.h"
+#include "energies/grid_side_manifold.h"
 #include "surfaces/surface_factory.h"
 
 namespace archgeo {
@@ -248,6 +249,50 @@ TEST(GridEnergies, FairnessOfACircleOnACylinder) {
   const Vec3 straight = AsVec(Evaluate(*fairness, {Block(Uv(1.0, 0.5)), Block(Uv(1.0, 1.0)),
                                                    Block(Uv(1.0, 1.5))}));
   EXPECT_NEAR(straight.norm(), 0.0, 1e-15);
+}
+
+// The side manifold (energies/grid_side_manifold.h): the held coordinate
+// never changes, the free one stays within the side however long the step,
+// Minus inverts Plus, and the Jacobians are the derivatives of Plus and Minus
+// (central differences) with MinusJacobian · PlusJacobian = 1.
+TEST(GridSideManifold, SlidesAlongItsSideAndNeverPastItsEnds) {
+  constexpr double kStep = 1e-6, kDerivative = 1e-8;
+  const GridSideManifold side(0, 2.0, 5.0);  // u held, v ∈ [2, 5]
+  const double x[2] = {1.25, 3.0};
+  for (double delta : {-100.0, -1.0, -1e-3, 0.0, 0.4, 7.0, 1e6}) {
+    double y[2], back;
+    ASSERT_TRUE(side.Plus(x, &delta, y));
+    EXPECT_EQ(y[0], x[0]) << delta;
+    EXPECT_GE(y[1], 2.0) << delta;
+    EXPECT_LE(y[1], 5.0) << delta;
+    if (std::abs(delta) < 1.0) {  // within a half turn of the sine: invertible
+      ASSERT_TRUE(side.Minus(y, x, &back));
+      EXPECT_NEAR(back, delta, 1e-12) << delta;
+    }
+  }
+  double plus_j[2], minus_j[2];
+  ASSERT_TRUE(side.PlusJacobian(x, plus_j));
+  ASSERT_TRUE(side.MinusJacobian(x, minus_j));
+  double ya[2], yb[2];
+  const double a = kStep, b = -kStep;
+  side.Plus(x, &a, ya);
+  side.Plus(x, &b, yb);
+  EXPECT_EQ(plus_j[0], 0.0);
+  EXPECT_NEAR(plus_j[1], (ya[1] - yb[1]) / (2 * kStep), kDerivative);
+  const double xa[2] = {x[0], x[1] + kStep}, xb[2] = {x[0], x[1] - kStep};
+  double ma, mb;
+  side.Minus(xa, x, &ma);
+  side.Minus(xb, x, &mb);
+  EXPECT_EQ(minus_j[0], 0.0);
+  EXPECT_NEAR(minus_j[1], (ma - mb) / (2 * kStep), kDerivative);
+  EXPECT_NEAR(minus_j[1] * plus_j[1], 1.0, 1e-14);
+  // Holding v, sliding u: the same with the roles swapped.
+  const GridSideManifold bottom(1, -1.0, 1.0);
+  const double p[2] = {0.5, 7.0}, delta = 50.0;
+  double q[2];
+  bottom.Plus(p, &delta, q);
+  EXPECT_EQ(q[1], 7.0);
+  EXPECT_LE(std::abs(q[0]), 1.0);
 }
 
 }  // namespace

@@ -25,20 +25,30 @@
 //       grid_fairness             0.3   second differences / L along the lines
 //                                       (suppresses the zigzag that central
 //                                       differences do not see)
-//     An open direction has nothing that holds the grid on its patch (the
-//     energy is lowest where the surface is flattest): the centre vertex
-//     keeps its (u, v) (grid.anchor). A grid open in both directions that
-//     reaches beyond the domain by more than grid.fit_tolerance of its
-//     length gets a smaller L and is solved again (FitLength), until it lies
-//     on its patch: it contracts, as the paper's open grids do (Fig. 8).
-//     Ceres parameter bounds on (u, v) were tried instead and rejected: an
-//     open grid that wants to grow piles up against the bound (the Dupin
-//     bridge's corner quads collapse).
+//     Boundary (grid.boundary, surfaces/grid_cover.h): by default a grid
+//     open in both directions holds its boundary rows on the sides of the
+//     parameter domain (or of its centred part of area fraction
+//     grid.coverage): a vertex on a side keeps that coordinate and slides
+//     along the other, within the side's ends (energies/
+//     grid_side_manifold.h; ceres::SubsetManifold along a closed direction),
+//     a corner is constant. So the grid covers its patch, and the
+//     terms make the best grid of that patch (the uniform grid starts on
+//     it). With a free boundary an open direction has nothing that holds the
+//     grid on its patch (the energy is lowest where the surface is
+//     flattest): the centre vertex keeps its (u, v) (grid.anchor), and a
+//     grid open in both directions that reaches beyond the domain by more
+//     than grid.fit_tolerance of its length gets a smaller L and is solved
+//     again (FitLength), until it lies on its patch: it contracts (to a
+//     fifth of the Dupin bridge's patch). Ceres parameter bounds on (u, v)
+//     were tried instead of a held boundary and rejected: an open grid that
+//     wants to grow piles up against the bound (the Dupin bridge's corner
+//     quads collapse).
 //   force: the paper's force-directed iterations (surfaces/force_directed.h,
-//     Listing 1: eqs. 1–3; corners of open grids excluded; free, not held in
-//     the domain), force.iterations per round, until a §4 threshold holds
-//     (tolerance.*), the disposition stalls or plateaus (the stage ends, see
-//     StepResult::stop), or after force.rounds rounds.
+//     Listing 1: eqs. 1–3; corners of open grids excluded; the boundary rows
+//     put back on their sides of the domain after every step unless
+//     grid.boundary is free), force.iterations per round, until a §4
+//     threshold holds (tolerance.*), the disposition stalls or plateaus (the
+//     stage ends, see StepResult::stop), or after force.rounds rounds.
 // L, the constant ideal edge length [§3], is grid.ideal_length or the mean
 // edge length of the initial grid (on a grid closed in one direction: of its
 // closed lines, whose edges the closure fixes), in file units; the fitting
@@ -47,8 +57,11 @@
 // Measures (logged every round, tolerances `tolerance.mdo|ado|mde|ade`, 0 =
 // off): MDO, ADO (degrees; on the interpolating splines, eqs. 4–5) and MDE,
 // ADE (percent; on the quad sides, eq. 6) of the whole grid, its seams
-// included (surfaces/grid_quality.h Table1()). The report's before/after
-// objects hold the same four, measured on the mesh by the "grid" analysis
+// included (surfaces/grid_quality.h Table1()); coverage (grid area / patch
+// area) and parameter_coverage (the grid's (u, v) area / the domain's;
+// surfaces/grid_cover.h), in `details.coverage_before|after` too. The
+// report's before/after objects hold the four Table 1 measures, measured on
+// the mesh by the "grid" analysis
 // (problems/report/analysis.h; for the Klein bottle that is the grid cut open along
 // its seam, as written to the files), and `details` the whole grid's.
 //
@@ -62,14 +75,18 @@
 #include <cstdio>
 #include <optional>
 
+#include <ceres/manifold.h>
+
 #include "core/problem.h"
 #include "core/newell.h"
 #include "generators/grid_mesh.h"
 #include "analysis/grid_metrics.h"
 #include "core/input_error.h"
+#include "energies/grid_side_manifold.h"
 #include "problems/runtime/model.h"
 #include "surfaces/force_directed.h"
 #include "surfaces/grid.h"
+#include "surfaces/grid_cover.h"
 #include "surfaces/grid_quality.h"
 #include "surfaces/surface_factory.h"
 
@@ -87,6 +104,11 @@ struct GridState : ProblemState {
   double initial_length = 0; // L before fitting to the domain
   int fits = 0;              // times L was shrunk to fit the domain
   int anchor = -1;           // the anchored vertex (least squares), or -1
+  bool hold = false;         // open boundary rows held on `covered` (grid.boundary)
+  ParameterDomain covered;   // the part of the domain they are held on
+  double patch_area = 0;     // of the whole domain (file units²)
+  long coverage_version = -1;  // of the cached coverage
+  GridCoverage coverage;
   int omitted_faces = 0;     // seam quads a Surface_mesh cannot hold
   long version = -1;         // of the cached quality
   GridQuality quality;
@@ -247,6 +269,34 @@ double Outside(HookContext& c) {
   return outside;
 }
 
+// Coverage of the current (u, v) (cached per state version).
+const GridCoverage& Coverage(HookContext& c) {
+  GridState& g = c.State<GridState>();
+  if (g.coverage_version != c.version) {
+    Grid grid = g.grid;
+    grid.uv = CurrentUv(c);
+    g.coverage = MeasureCoverage(grid, g.grid, SurfaceOf(c), g.patch_area);
+    g.coverage_version = c.version;
+  }
+  return g.coverage;
+}
+
+nlohmann::json CoverageToJson(const GridCoverage& v) {
+  return {{"area_fraction", v.area_fraction},         {"parameter_fraction", v.parameter_fraction},
+          {"grid_area", v.grid_area},                 {"patch_area", v.patch_area},
+          {"parameter_area", v.parameter_area},       {"domain_area", v.domain_area}};
+}
+
+// grid.boundary: held (domain) or free; auto holds a grid open in both
+// directions (a grid closed in one direction has its edge length set by the
+// closed lines, which held rows in the other would stretch).
+bool HoldsBoundary(const Settings& s) {
+  const std::string mode = s.String("grid.boundary");
+  if (mode == "domain") return true;
+  if (mode == "free") return false;
+  return s.String("grid.type") == "open";
+}
+
 // Before a least-squares round of a grid open in both directions: if the
 // last round left it beyond the domain by the fraction e (> grid.fit_tolerance),
 // L shrinks by f = 1/(1 + 2e + grid.fit_tolerance) — an open grid of squares
@@ -257,7 +307,7 @@ double Outside(HookContext& c) {
 void FitLength(HookContext& c) {
   const double tolerance = c.settings->Number("grid.fit_tolerance");
   GridState& g = c.State<GridState>();
-  if (tolerance <= 0 || g.grid.closed_u || g.grid.closed_v) return;
+  if (tolerance <= 0 || g.hold || g.grid.closed_u || g.grid.closed_v) return;
   const double outside = c.Measure("outside");
   if (outside <= tolerance) return;
   const double f = 1 / (1 + 2 * outside + tolerance);
@@ -293,22 +343,6 @@ void FitLength(HookContext& c) {
 // the flipping seam sees reversed normals): more than grid.max_flip_degrees apart, the face is folded
 // against the surface. (The problem's default validity.max_flip_degrees is
 // 180, i.e. the engine's check is off; a spec may set it.)
-// The parameter of the same point as `uv` in the chart nearest to `near`
-// (whole periods added in the periodic directions; across a flipping u-seam
-// v is reflected, as in Surface::Wrapped). On the Klein bottle x_v, hence
-// the normal, changes sign across the u-seam: normals are compared in one
-// chart.
-Eigen::Vector2d NearChart(const Surface& surface, Eigen::Vector2d uv, const Eigen::Vector2d& near) {
-  const ParameterDomain d = surface.Domain();
-  if (d.periodic_u) {
-    const long turns = std::lround((uv[0] - near[0]) / d.PeriodU());
-    uv[0] -= double(turns) * d.PeriodU();
-    if (d.u_seam_flips_v && turns % 2 != 0) uv[1] = d.v0 + d.v1 - uv[1];
-  }
-  if (d.periodic_v) uv[1] -= double(std::lround((uv[1] - near[1]) / d.PeriodV())) * d.PeriodV();
-  return uv;
-}
-
 std::string Folded(HookContext& c) {
   const Surface& surface = SurfaceOf(c);
   const double limit = c.settings->Number("grid.max_flip_degrees");
@@ -325,9 +359,9 @@ std::string Folded(HookContext& c) {
       const Eigen::Vector2d uv(p[0], p[1]);
       // The first corner in the chart nearest its initial parameter, the
       // others in the chart of the first.
-      if (x.empty()) first = NearChart(surface, uv, initial[v.idx()]);
+      if (x.empty()) first = surface.NearestChart(uv, initial[v.idx()]);
       x.push_back(surface.Point(uv));
-      normal += surface.Normal(NearChart(surface, uv, first));
+      normal += surface.Normal(surface.NearestChart(uv, first));
     }
     newell = NewellVector(int(x.size()), [&](int k) { return x[size_t(k)]; });
     const double angle =
@@ -388,6 +422,15 @@ void Check(const Settings& s) {
                                  "(vertex properties u, v)");
   }
   CheckRequest(s, ReadSurface(s));
+  if (s.Number("grid.coverage") < 1) {
+    if (s.String("grid.type") == "closed_both") {
+      throw s.Error("grid.coverage", "a grid closed in both directions covers its whole surface");
+    }
+    if (!HoldsBoundary(s)) {
+      throw s.Error("grid.coverage", "a fraction of the domain is covered by a held boundary "
+                                     "(grid.boundary: domain)");
+    }
+  }
 }
 
 // The net: the uniform grid on the surface, as a quad mesh.
@@ -398,6 +441,10 @@ void Net(HookContext& c) {
   CheckRequest(s, surface);
   const GridType type = TypeOf(s);
   g.grid = MakeUniformGrid(surface, int(s.Integer("grid.nu")), int(s.Integer("grid.nv")), type);
+  g.hold = HoldsBoundary(s) && type != GridType::kClosedBoth;
+  g.covered = CoveredDomain(surface.Domain(), g.grid, s.Number("grid.coverage"));
+  if (g.hold) MapOpenDirections(&g.grid, surface.Domain(), g.covered);
+  g.patch_area = PatchArea(surface, surface.Domain());
   g.initial_length = s.Number("grid.ideal_length") > 0 ? s.Number("grid.ideal_length")
                                                         : DefaultLength(g.grid, surface);
   g.surface = surface;
@@ -417,6 +464,9 @@ void Net(HookContext& c) {
                    {"type", GridTypeName(type)},
                    {"paper_type", GridTypePaperName(type)},
                    {"ideal_length", c.grid.length},
+                   {"boundary", g.hold ? "domain" : "free"},
+                   {"coverage_target",
+                    g.hold ? nlohmann::json(s.Number("grid.coverage")) : nlohmann::json()},
                    {"omitted_seam_faces", g.omitted_faces}};
   char line[300];
   std::snprintf(line, sizeof line,
@@ -482,16 +532,39 @@ void Init(HookContext& c) {
     }
   }
   for (int v = 0; v < n; ++v) {
-    if (c.fixed[v]) c.model->SetConstant("uv", v);
+    if (c.fixed[v]) {
+      c.model->SetConstant("uv", v);
+      continue;
+    }
+    const BoundaryHold hold = g.hold ? HoldOf(grid, v, g.covered) : BoundaryHold{};
+    if (hold.u && hold.v) {
+      c.model->SetConstant("uv", v);  // a corner
+    } else if (hold.Any()) {
+      // On a side: slides along it, within its ends (a closed direction has
+      // none).
+      const int held = hold.u ? 0 : 1;
+      const bool ends = hold.u ? !grid.closed_v : !grid.closed_u;
+      const double lo = hold.u ? g.covered.v0 : g.covered.u0;
+      const double hi = hold.u ? g.covered.v1 : g.covered.u1;
+      c.model->SetManifold("uv", v, [=]() -> ceres::Manifold* {
+        if (ends) return MakeGridSideManifold(held, lo, hi);
+        return new ceres::SubsetManifold(2, {held});
+      });
+    }
   }
+  // The anchor holds a grid whose open direction nothing else holds.
   const std::string anchor = s.String("grid.anchor");
   g.anchor = -1;
-  if (anchor == "centre" || (anchor == "auto" && !(grid.closed_u && grid.closed_v))) {
+  if (anchor == "centre" ||
+      (anchor == "auto" && !g.hold && !(grid.closed_u && grid.closed_v))) {
     g.anchor = grid.Index(grid.nu / 2, grid.nv / 2);
     c.model->SetConstant("uv", g.anchor);
   }
   UpdatePositions(c);
-  if (c.level == 0) c.details["quality_before"] = GridQualityToJson(Quality(c));
+  if (c.level == 0) {
+    c.details["quality_before"] = GridQualityToJson(Quality(c));
+    c.details["coverage_before"] = CoverageToJson(Coverage(c));
+  }
 }
 
 // One round of the force method: force.iterations iterations of Listing 1
@@ -515,6 +588,8 @@ StepResult ForceRound(HookContext& c) {
   o.plateau_window = int(s.Integer("force.plateau_window"));
   o.plateau_tolerance = s.Number("force.plateau_tolerance");
   o.clamp_to_domain = s.Bool("force.clamp_to_domain");
+  o.hold_boundary = g.hold;
+  o.covered = g.covered;
   o.history_stride = int(s.Integer("force.measure_every"));
   const ForceDirectedResult r = RunForceDirected(SurfaceOf(c), grid, o);
   for (int v = 0; v < grid.NumVertices(); ++v) {
@@ -560,6 +635,8 @@ void Finish(HookContext& c) {
   c.details["ideal_length_initial"] = g.initial_length;
   c.details["ideal_length_fits"] = g.fits;
   c.details["outside_domain"] = Excursion(g.grid, CurrentUv(c), SurfaceOf(c));
+  const GridCoverage& coverage = Coverage(c);
+  c.details["coverage_after"] = CoverageToJson(coverage);
   if (s.String("method") == "force") {
     c.details["force"] = {{"iterations", g.force_iterations},
                           {"stop", g.force_stop},
@@ -580,6 +657,14 @@ void Finish(HookContext& c) {
                     ? (" (force: " + std::to_string(g.force_iterations) + " iterations, " +
                        g.force_stop + ")").c_str()
                     : "");
+  c.headline += line;
+  const nlohmann::json& first = c.details["coverage_before"];
+  std::snprintf(line, sizeof line,
+                "grid coverage (%s boundary): grid area %.1f%% -> %.1f%% of the patch, parameter "
+                "domain %.1f%% -> %.1f%%\n",
+                g.hold ? "held" : "free", 100 * first.at("area_fraction").get<double>(),
+                100 * coverage.area_fraction, 100 * first.at("parameter_fraction").get<double>(),
+                100 * coverage.parameter_fraction);
   c.headline += line;
 }
 
@@ -638,11 +723,21 @@ ProblemDecl grid() {
                 "grid [§3] (closed in one direction: of the closed lines)"),
       ChoiceKey("grid.anchor", "auto", {"auto", "centre", "none"},
                 "least squares: centre: the centre vertex keeps its (u, v) (an open direction "
-                "has nothing else that holds the grid on its patch); auto: centre unless the "
-                "grid is closed in both directions"),
+                "with a free boundary has nothing else that holds the grid on its patch); "
+                "auto: centre when an open direction's boundary is free"),
+      ChoiceKey("grid.boundary", "auto", {"auto", "domain", "free"},
+                "domain: the boundary rows of an open direction stay on the sides of the "
+                "parameter domain (a boundary vertex slides along its side, corners stay at the "
+                "corners), so the grid covers its patch; free: nothing holds them (least "
+                "squares: anchor and grid.fit_tolerance; force: the paper's Listing 1 as "
+                "written); auto: domain when the grid is open in both directions"),
+      NumberKey("grid.coverage", 1, 0, 1,
+                "with a held boundary: the fraction of the parameter domain's area the grid "
+                "covers, a rectangle centred in the domain (each open direction shrunk by "
+                "√fraction when both are open)"),
       NumberKey("grid.fit_tolerance", 0.005, 0, 1,
-                "least squares: while an open grid reaches beyond the domain by more than this "
-                "fraction of its length, shrink L and solve again (0 = off)"),
+                "least squares, free boundary: while an open grid reaches beyond the domain by "
+                "more than this fraction of its length, shrink L and solve again (0 = off)"),
       NumberKey("grid.max_flip_degrees", 90, 0, 180,
                 "validity: a face whose normal is more than this from the surface normal at "
                 "its corners is folded (the result is not valid; replaces the engine's "
@@ -683,9 +778,13 @@ ProblemDecl grid() {
     d.measures[m] = [name = std::string(m)](HookContext& c) { return Table1(c, name); };
   }
   d.measures["outside"] = &Outside;
+  d.measures["coverage"] = [](HookContext& c) { return Coverage(c).area_fraction; };
+  d.measures["parameter_coverage"] = [](HookContext& c) {
+    return Coverage(c).parameter_fraction;
+  };
   d.stages = [](const Settings& s) {
     Stage st;
-    st.logged = {"mdo", "ado", "mde", "ade", "outside"};
+    st.logged = {"mdo", "ado", "mde", "ade", "outside", "coverage", "parameter_coverage"};
     st.after_round = &UpdatePositions;
     if (s.String("method") == "force") {
       st.name = "force";
@@ -704,7 +803,8 @@ ProblemDecl grid() {
       // iterating while the grid, already good enough, grows beyond the
       // patch (100 × 100 function graph: 10 iterations instead of 2), and
       // without thresholds it would stop the first iteration.
-      const bool fit = s.Number("grid.fit_tolerance") > 0 && s.String("grid.type") == "open";
+      const bool fit = s.Number("grid.fit_tolerance") > 0 && s.String("grid.type") == "open" &&
+                       !HoldsBoundary(s);
       st.tolerances = Tolerances(true);
       if (fit) st.tolerances.push_back({"outside", "grid.fit_tolerance"});
       st.before_round = &FitLength;

@@ -369,6 +369,11 @@ void MeshModel::SetConstant(const std::string& block, int index) {
   constant_elements_.insert(store_.At(block, index));
 }
 
+void MeshModel::SetManifold(const std::string& block, int index,
+                            std::function<ceres::Manifold*()> make) {
+  manifolds_[store_.At(block, index)] = std::move(make);
+}
+
 void MeshModel::SetElements(const std::string& name, ElementSet set) {
   set.name = name;
   sets_[name] = std::move(set);
@@ -475,6 +480,9 @@ void MeshModel::Build(const std::vector<ActiveTerm>& terms, int round, Residuals
   }
   for (const double* b : constant_blocks_) {
     if (residuals.Has(b)) residuals.SetConstant(b);
+  }
+  for (const auto& [b, make] : manifolds_) {
+    if (residuals.Has(b) && !constant_blocks_.count(b)) residuals.SetManifold(b, make());
   }
 }
 

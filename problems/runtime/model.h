@@ -29,6 +29,10 @@
 #include "mesh/store.h"
 #include "mesh/surface_mesh.h"
 
+namespace ceres {
+class Manifold;
+}  // namespace ceres
+
 namespace archgeo {
 
 class ReferenceSurface;
@@ -145,6 +149,10 @@ class MeshModel : public Model {
   // Holds one block of a variable block constant (e.g. a prescribed face of
   // a field, or the value that fixes a function's constant).
   void SetConstant(const std::string& block, int index);
+  // One block of a variable block optimised on a manifold (`make` returns a
+  // new one each round; the round's problem owns it), e.g. a grid vertex's
+  // (u, v) on a side of its domain. A constant block stays constant.
+  void SetManifold(const std::string& block, int index, std::function<ceres::Manifold*()> make);
   // The element set `name` (built on first use), narrowed by `select`.
   const ElementSet& Elements(const std::string& name);
   // The elements term `spec` acts on: its set `terms.<t>.on` narrowed by
@@ -172,6 +180,7 @@ class MeshModel : public Model {
   Mesh start_;               // the mesh at the start of the solve (validity's reference)
   std::set<const double*> constant_blocks_;  // blocks of constant (data) blocks
   std::set<const double*> constant_elements_;  // SetConstant's
+  std::map<double*, std::function<ceres::Manifold*()>> manifolds_;  // SetManifold's
   std::map<std::string, double> cache_;
   std::map<std::string, std::unique_ptr<View>> views_;
 };
