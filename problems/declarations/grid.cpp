@@ -26,7 +26,7 @@
 //                                       (suppresses the zigzag that central
 //                                       differences do not see)
 //     Boundary (grid.boundary, surfaces/grid_cover.h): by default a grid
-//     open in both directions holds its boundary rows on the sides of the
+//     with an open direction holds its boundary rows on the sides of the
 //     parameter domain (or of its centred part of area fraction
 //     grid.coverage): a vertex on a side keeps that coordinate and slides
 //     along the other, within the side's ends (energies/
@@ -40,9 +40,8 @@
 //     than grid.fit_tolerance of its length gets a smaller L and is solved
 //     again (FitLength), until it lies on its patch: it contracts (to a
 //     fifth of the Dupin bridge's patch). Ceres parameter bounds on (u, v)
-//     were tried instead of a held boundary and rejected: an open grid that
-//     wants to grow piles up against the bound (the Dupin bridge's corner
-//     quads collapse).
+//     would let an open grid that wants to grow pile up against the bound
+//     (the Dupin bridge's corner quads collapse).
 //   force: the paper's force-directed iterations (surfaces/force_directed.h,
 //     Listing 1: eqs. 1–3; corners of open grids excluded; the boundary rows
 //     put back on their sides of the domain after every step unless
@@ -287,14 +286,15 @@ nlohmann::json CoverageToJson(const GridCoverage& v) {
           {"parameter_area", v.parameter_area},       {"domain_area", v.domain_area}};
 }
 
-// grid.boundary: held (domain) or free; auto holds a grid open in both
-// directions (a grid closed in one direction has its edge length set by the
-// closed lines, which held rows in the other would stretch).
+// grid.boundary: held (domain) or free; auto holds every grid with an open
+// direction (a grid closed in one direction has its edge length set by the
+// closed lines: held rows in the other are stretched or squeezed unless the
+// vertex count along it suits the patch, as examples/grid_tower.yaml's).
 bool HoldsBoundary(const Settings& s) {
   const std::string mode = s.String("grid.boundary");
   if (mode == "domain") return true;
   if (mode == "free") return false;
-  return s.String("grid.type") == "open";
+  return s.String("grid.type") != "closed_both";
 }
 
 // Before a least-squares round of a grid open in both directions: if the
@@ -730,7 +730,7 @@ ProblemDecl grid() {
                 "parameter domain (a boundary vertex slides along its side, corners stay at the "
                 "corners), so the grid covers its patch; free: nothing holds them (least "
                 "squares: anchor and grid.fit_tolerance; force: the paper's Listing 1 as "
-                "written); auto: domain when the grid is open in both directions"),
+                "written); auto: domain when the grid has an open direction"),
       NumberKey("grid.coverage", 1, 0, 1,
                 "with a held boundary: the fraction of the parameter domain's area the grid "
                 "covers, a rectangle centred in the domain (each open direction shrunk by "
