@@ -21,6 +21,9 @@ namespace archgeo {
 namespace {
 
 constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+// An edge the input had this short (× its mean edge length) is collapsed: a
+// short edge the input had by design (a thin part of the surface) is not.
+constexpr double kCollapsed = 1e-3;
 
 using V = Eigen::Vector3d;
 
@@ -372,7 +375,7 @@ Validity CheckValidity(const Mesh& out, const Mesh* input, const ValidityLimits&
     if (length[size_t(i)] < limits.min_edge_relative * mean_in) {
       if (length[size_t(i)] < 0.5 * length_in) {
         Note(short_edges, length[size_t(i)] / mean_in, int(i), false);
-      } else {
+      } else if (length[size_t(i)] < kCollapsed * mean_in) {
         NoteInherited(short_edges, length[size_t(i)] / mean_in, int(i),
                       limits.allow_input_defects, false);
       }

@@ -18,8 +18,9 @@
 //     flipped_faces     faces whose normal turned by more than
 //                       max_flip_degrees against the input's
 //     short_edges       edges shorter than min_edge_relative × the input's mean
-//                       edge length (collapsed); inherited where the edge is
-//                       not shorter than half its input length
+//                       edge length and than half their input length
+//                       (collapsed by the solve); inherited: edges the input
+//                       had shorter than 1e-3 × its mean edge length
 //     creases           interior edges whose dihedral angle (between the face
 //                       normals) grew by more than max_crease_increase_degrees
 //                       over the input's

@@ -68,9 +68,9 @@ std::vector<Key> CommonKeys(const ProblemDecl& d) {
   keys.push_back(NumberKey("validity.max_flip_degrees", 90, 0, 180,
                            "a face normal turned by more than this against the input's is a fold"));
   keys.push_back(NumberKey("validity.min_edge_relative", 0.1, 0, 1,
-                           "an edge shorter than this × the input's mean edge length has "
-                           "collapsed (as in the input where it is not shorter than half its "
-                           "input length)"));
+                           "an edge shorter than this × the input's mean edge length (and than "
+                           "half its own input length) has collapsed; one the input had "
+                           "shorter than 1e-3 × it is an input defect"));
   keys.push_back(NumberKey("validity.max_crease_increase_degrees", 30, 0, 180,
                            "an edge whose dihedral angle grew by more than this is a new crease"));
   keys.push_back(NumberKey("validity.min_corner_degrees", 5, 0, 90,
