@@ -53,7 +53,7 @@ TEST_F(Relayout, AStalledNetEndsEarlyWithTheReasonAndTheWayOut) {
   EXPECT_EQ(run.exit_code, 4);
   EXPECT_EQ(r.at("stop").get<std::string>().rfind("stalled: no gain in the best valid", 0), 0u)
       << r.at("stop");
-  EXPECT_EQ(r.at("iterations").at("outer").get<int>(), 3);  // schedule.stall_rounds
+  EXPECT_EQ(r.at("iterations").at("outer").get<int>(), 3);  // stall.rounds
   // The suitability figures and the command for this net's surface.
   EXPECT_GT(r.at("details").at("suitability").at("conjugacy_mean").get<double>(), 0.35);
   const std::string command = "archgeo solve examples/conjugate_layout.yaml --set mesh=" + net_ +
@@ -64,7 +64,7 @@ TEST_F(Relayout, AStalledNetEndsEarlyWithTheReasonAndTheWayOut) {
 }
 
 TEST_F(Relayout, WithoutTheStallRuleEveryRoundRuns) {
-  const RunResult run = Run({"schedule.outer_iterations=8", "schedule.stall_fraction=0"});
+  const RunResult run = Run({"schedule.outer_iterations=8", "stall.fraction=0"});
   EXPECT_EQ(run.exit_code, 4);
   EXPECT_EQ(run.report.at("iterations").at("outer").get<int>(), 8);
   EXPECT_EQ(run.report.at("stop").get<std::string>().rfind("rounds exhausted", 0), 0u);

@@ -116,7 +116,9 @@ void Relayout(HookContext& c) {
 }  // namespace
 
 std::string RelayoutCommand(const Settings& s, const Mesh& net) {
-  const std::string mesh = std::filesystem::absolute(s.String("mesh")).lexically_normal().string();
+  const std::string& file = s.String("mesh");  // "" for a net given in memory
+  const std::string mesh =
+      file.empty() ? "NET_FILE" : std::filesystem::absolute(file).lexically_normal().string();
   return "archgeo solve examples/conjugate_layout.yaml --set mesh=" + mesh +
          " --set level_sets.target_faces=" + std::to_string(net.number_of_faces());
 }
