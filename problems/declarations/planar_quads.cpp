@@ -38,8 +38,8 @@
 // Stall: a run whose best valid max δ_PQ,n has not fallen by more than
 // stall.fraction (1%) in stall.rounds (3) rounds ends there. On the nets far
 // from conjugate (pillow, M2 and four public nets) the rounds after that
-// only stiffened the same conflict for a minute or two (rounds invalid, or
-// gaining 0.3% each on M2); the four successes above gain more than 1%
+// only stiffen the same conflict up to the last of schedule.outer_iterations
+// (rounds invalid, or gaining 0.3% each on M2); the four successes above gain more than 1%
 // within every three rounds (the bubble's first two rounds nothing, its
 // third 31%), and a grid with hexagons 2.7-6% per round for five rounds
 // before it meets the tolerance in one step (tests/test_planar_quads.cpp).
