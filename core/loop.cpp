@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "core/lean_solve.h"
 #include "core/normal_equations.h"
@@ -235,6 +236,9 @@ class Loop {
     if (!stage.keep_best.empty()) best_state_ = model_.SaveState();
     best_round_ = round_number_;
     patience_best_ = stage.patience_measure.empty() ? 0 : model_.Measure(stage.patience_measure);
+    if (stage.patience_valid && !model_.Invalid().empty()) {
+      patience_best_ = std::numeric_limits<double>::infinity();  // no valid value yet
+    }
     last_gain_ = 0;
     for (int k = 1; k <= plan.rounds; ++k) {
       if (time_limit_ > 0 && Since(start_) >= time_limit_) {
@@ -451,17 +455,7 @@ class Loop {
         best_round_ = round_number_;
       }
     }
-    if (!stage.patience_measure.empty()) {
-      const double value = model_.Measure(stage.patience_measure);
-      const double fraction = s_.Number(stage.patience_key);
-      if (value < patience_best_ - fraction * patience_best_) last_gain_ = k;
-      patience_best_ = std::min(patience_best_, value);
-      if (fraction > 0 && k - last_gain_ >= stage.patience_rounds) {
-        result_.stop = "no gain in " + stage.patience_measure + " for " +
-                       std::to_string(stage.patience_rounds) + " rounds";
-        return false;
-      }
-    }
+    if (!stage.patience_measure.empty() && Stalled(stage, k, row)) return false;
     bool met = !plan.active.empty();
     for (const Tolerance& t : plan.active) met = met && model_.Measure(t.measure) <= Bound(s_, t);
     if (plan.stopping && met) {
@@ -485,6 +479,30 @@ class Loop {
         return false;
       }
     }
+    return true;
+  }
+
+  // The stall rule (Stage::patience_*): whether `patience_rounds` rounds in a
+  // row, up to round k of the stage, have not lowered the lowest measure so
+  // far by the fraction; records the reason.
+  bool Stalled(const Stage& stage, int k, const RoundLog& row) {
+    const double fraction = s_.Number(stage.patience_key);
+    const int rounds = stage.patience_rounds_key.empty()
+                           ? stage.patience_rounds
+                           : int(s_.Integer(stage.patience_rounds_key));
+    if (!stage.patience_valid || row.valid) {
+      const double value = model_.Measure(stage.patience_measure);
+      if (value < patience_best_ - fraction * std::abs(patience_best_) ||
+          (std::isinf(patience_best_) && std::isfinite(value))) {
+        last_gain_ = k;
+      }
+      patience_best_ = std::min(patience_best_, value);
+    }
+    if (!(fraction > 0) || rounds <= 0 || k - last_gain_ < rounds) return false;
+    result_.stalled = true;
+    result_.stop = "stalled: no gain in " + std::string(stage.patience_valid ? "the best valid " : "") +
+                   stage.patience_measure + " (" + Format("%.4g", patience_best_) + ") by more than " +
+                   Format("%g", 100 * fraction) + "% in " + std::to_string(rounds) + " rounds";
     return true;
   }
 

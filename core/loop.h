@@ -11,7 +11,7 @@
 //         tolerance ends the solve the moment it holds)
 //       check the solution (usable, finite); after-round hook (e.g. guard)
 //       measure; log the round; undo a round that made `undo_if_worse` worse
-//       stop on tolerances met, rest, patience; else continue (continuation)
+//       stop on tolerances met, rest, a stall (patience); else continue (continuation)
 //   restore the best round if the stage keeps the best
 //
 // The loop knows no mesh type: it works through a Model (problems/runtime/model.h
@@ -108,6 +108,7 @@ struct LoopResult {
   std::vector<RoundLog> log;                // log[0]: the input (round 0)
   int output_round = 0;                     // the round whose state is the output
   std::string stop;                         // why the last stage ended
+  bool stalled = false;                     // a stage ended by its stall rule (patience)
   bool restored_valid = false;              // the last round was invalid: the output is
                                             // the last valid round (output_round)
 };

@@ -76,10 +76,14 @@ struct Stage {
   double rest_move = 0;
   std::string rest_move_key;
   std::string rest_change_measure, rest_change_key;
-  // The stage ends when `patience_rounds` rounds in a row have not lowered
-  // the lowest `patience_measure` so far by the fraction `patience_key`.
-  std::string patience_measure, patience_key;
+  // Stall: the stage ends when `patience_rounds` rounds in a row (or the
+  // value of `patience_rounds_key`) have not lowered the lowest
+  // `patience_measure` so far by the fraction `patience_key` (0 = off). With
+  // `patience_valid`, only a round that passes the validity checks counts (a
+  // stage that keeps its best valid round gains nothing from an invalid one).
+  std::string patience_measure, patience_key, patience_rounds_key;
   int patience_rounds = 0;
+  bool patience_valid = false;
   // The output is the state after the round with the lowest value of this
   // measure (the input counts as round 0).
   std::string keep_best;

@@ -65,7 +65,10 @@ class ScriptedModel : public Model {
     return std::abs(a.at(0) - b.at(0));
   }
   bool Finite() const override { return std::isfinite(SaveState()[0]); }
-  std::string Invalid() override { return Finite() ? "" : "finite"; }
+  // A negative state stands for an invalid one (e.g. a folded panel).
+  std::string Invalid() override {
+    return !Finite() ? "finite" : SaveState()[0] < 0 ? "negative" : "";
+  }
   HookContext& hooks() override { return hooks_; }
 
  private:
@@ -156,6 +159,51 @@ TEST(Loop, PatienceEndsTheStage) {
   const LoopResult r = RunScript(st, {9.99, 9.95, 9.96, 1, 1, 1}, s);
   EXPECT_EQ(r.rounds, 3);
   EXPECT_NE(r.stop.find("no gain"), std::string::npos) << r.stop;
+  EXPECT_TRUE(r.stalled);
+}
+
+TEST(Loop, TheStallRoundsComeFromAKey) {
+  const Settings s = LoopSettings({NumberKey("gain", 0.01, 0, 1, ""),
+                                   IntegerKey("stall_rounds", 2, 1, 100, "")});
+  Stage st;
+  st.patience_measure = "m";
+  st.patience_key = "gain";
+  st.patience_rounds = 5;  // the key wins
+  st.patience_rounds_key = "stall_rounds";
+  const LoopResult r = RunScript(st, {9, 8.95, 8.99, 1, 1}, s);
+  EXPECT_EQ(r.rounds, 3);  // round 1 gains 10%; rounds 2 and 3 less than 1% of 9
+  EXPECT_TRUE(r.stalled);
+  EXPECT_NE(r.stop.find("in 2 rounds"), std::string::npos) << r.stop;
+}
+
+// With patience_valid, an invalid round's lower value is no gain: the stage
+// stalls although the measure fell, and runs on where only valid rounds gain.
+TEST(Loop, OnlyValidRoundsGainWhenTheStageSaysSo) {
+  const Settings s = LoopSettings({NumberKey("gain", 0.01, 0, 1, "")});
+  Stage st;
+  st.patience_measure = "m";
+  st.patience_key = "gain";
+  st.patience_rounds = 2;
+  st.patience_valid = true;
+  const LoopResult stalls = RunScript(st, {-1, -2, 5, 4}, s);
+  EXPECT_EQ(stalls.rounds, 2);
+  EXPECT_TRUE(stalls.stalled);
+  EXPECT_NE(stalls.stop.find("best valid m (10)"), std::string::npos) << stalls.stop;
+  st.patience_valid = false;
+  const LoopResult counts_all = RunScript(st, {-1, -2, -2, -2}, s);
+  EXPECT_EQ(counts_all.rounds, 4);  // rounds 1 and 2 gain; 3 and 4 do not
+  EXPECT_TRUE(counts_all.stalled);
+}
+
+TEST(Loop, NoStallWhileEveryRoundGains) {
+  const Settings s = LoopSettings({NumberKey("gain", 0.01, 0, 1, "")});
+  Stage st;
+  st.patience_measure = "m";
+  st.patience_key = "gain";
+  st.patience_rounds = 1;
+  const LoopResult r = RunScript(st, {9, 8, 7, 6}, s);
+  EXPECT_EQ(r.rounds, 4);
+  EXPECT_FALSE(r.stalled);
 }
 
 TEST(Loop, ARoundThatMakesTheMeasureWorseIsUndone) {

@@ -8,6 +8,10 @@
 //       (level_sets: §5; fields/extract.h),
 //   (c) optimisation of the layout for planar faces (planar_quads: §6, eq. 8).
 //
+// The input may also be a polygon mesh (e.g. a quad net too far from
+// conjugate to be planarised): its triangulation is the design surface
+// (field_pipeline.h DesignSurface).
+//
 // It is the planar_quads declaration (same terms, keys, stage and
 // tolerance) whose `net` hook runs (a) and (b) as nested solves on the input
 // (`mesh`, a triangle mesh) with this spec's field and level-set keys and
@@ -19,6 +23,8 @@
 //
 // Outputs: output.mesh (the final planar mesh), output.layout (the layout
 // before the PQ step), output.field (fields/field_io.h), output.report.
+#include <algorithm>
+
 #include "core/problem.h"
 #include "fields/field_io.h"
 #include "core/input_error.h"
@@ -31,7 +37,8 @@ namespace {
 
 void Net(HookContext& c) {
   const Settings& s = *c.settings;
-  const std::shared_ptr<const LevelSetResult> result = SolveLevelSets(s, *c.input, c.progress);
+  const std::shared_ptr<const LevelSetResult> result =
+      SolveLevelSets(s, DesignSurface(s, *c.input), c.progress);
   if (!result->layout.ok) {
     throw s.Error("level_sets", "the layout could not be extracted from the level sets: " +
                                     result->layout.error);
@@ -79,10 +86,15 @@ ProblemDecl conjugate_layout() {
     if (t.term == "fairness") t.weight = 0.1;
     if (t.term == "dihedral_energy") t.weight = 0.05;
   }
+  // The layout is the way out relayout offers: not a key here.
+  d.keys.erase(std::remove_if(d.keys.begin(), d.keys.end(),
+                              [](const Key& k) { return k.name == "relayout"; }),
+               d.keys.end());
+  d.finish = nullptr;
   d.name = "conjugate_layout";
   d.summary = "design surface (triangles) → TCD field → level sets → layout → planar quads";
   d.paper = "[Zadravec 2010, Fig. 1, §2–6]";
-  d.input = InputKind::kTriangles;
+  d.input = InputKind::kAny;  // a polygon mesh: its triangulation (DesignSurface)
   for (const TermUse& t : FieldTerms()) d.terms.push_back(t);
   for (const TermUse& t : LevelSetTerms()) d.terms.push_back(t);
   for (const Key& k : FieldKeys()) d.keys.push_back(k);

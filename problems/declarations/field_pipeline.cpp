@@ -7,6 +7,7 @@
 #include <cctype>
 
 #include "core/input_error.h"
+#include "geometry/reference.h"
 #include "io/io.h"
 #include "problems/declarations/registry.h"
 #include "problems/spec/schema.h"
@@ -24,13 +25,18 @@ bool RunKey(const std::string& name) {
          StartsWith(name, "output.");
 }
 
-// The nested solve of `problem` on `mesh` with the keys of `parent`; throws
-// InputError when it has no usable solution.
+// The nested solve of `problem` on `mesh` with the keys of `parent` and then
+// `overrides`; throws InputError when it has no usable solution.
 std::unique_ptr<Solution> Nested(const char* problem, const Settings& parent, const Mesh& mesh,
-                                 const ProgressSink& progress) {
+                                 const ProgressSink& progress,
+                                 const std::map<std::string, Value>& overrides = {}) {
   const ProblemDecl* d = FindProblem(problem);
   CHECK(d) << problem << " is not registered";
-  const ProblemSpec spec = SubSpec(*d, parent);
+  ProblemSpec spec = SubSpec(*d, parent);
+  for (const auto& [name, value] : overrides) {
+    CHECK(spec.settings.schema().Find(name)) << problem << " has no key " << name;
+    spec.settings.Set(name, value, Origin{parent.spec_file(), 0});
+  }
   std::unique_ptr<Solution> solution =
       Solve(spec, mesh, nullptr, Prefixed(progress, std::string(problem) + ": "));
   if (!solution->loop.usable) {
@@ -222,11 +228,27 @@ std::shared_ptr<const FieldResult> SolveField(const Settings& parent, const Mesh
 }
 
 std::shared_ptr<const LevelSetResult> SolveLevelSets(const Settings& parent, const Mesh& mesh,
-                                                     const ProgressSink& progress) {
+                                                     const ProgressSink& progress,
+                                                     const std::map<std::string, Value>& overrides) {
   std::shared_ptr<const LevelSetResult> level_sets =
-      Nested("level_sets", parent, mesh, progress)->hooks.level_sets;
+      Nested("level_sets", parent, mesh, progress, overrides)->hooks.level_sets;
   CHECK(level_sets) << "level_sets left no level sets";
   return level_sets;
+}
+
+Mesh DesignSurface(const Settings& parent, const Mesh& mesh) {
+  bool triangles = true;
+  for (FaceIndex f : mesh.faces()) triangles = triangles && mesh.degree(f) == 3;
+  if (triangles) return mesh;
+  for (const char* key : {"field.singularities", "field.moves", "field.directions",
+                          "field.constraints"}) {
+    if (parent.schema().Find(key) && parent.Given(key)) {
+      throw parent.Error(key, "names faces of a triangle mesh, but the mesh has polygons (its "
+                              "triangulation is the design surface): give the design surface as "
+                              "a triangle mesh to use this key");
+    }
+  }
+  return TriangulatedCopy(mesh);
 }
 
 Mesh InFileUnits(const Mesh& mesh, const Similarity& frame) {

@@ -13,6 +13,7 @@
 // user's spec whichever stage reads it.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -79,11 +80,22 @@ struct LevelSetResult {
 };
 
 // Nested solves: conjugate_field / level_sets on `mesh` (file units) with the
-// keys of `parent`. Throw InputError as the stages do.
+// keys of `parent` (and then `overrides`, keys of level_sets). Throw
+// InputError as the stages do.
 std::shared_ptr<const FieldResult> SolveField(const Settings& parent, const Mesh& mesh,
                                               const ProgressSink& progress);
-std::shared_ptr<const LevelSetResult> SolveLevelSets(const Settings& parent, const Mesh& mesh,
-                                                     const ProgressSink& progress);
+std::shared_ptr<const LevelSetResult> SolveLevelSets(
+    const Settings& parent, const Mesh& mesh, const ProgressSink& progress,
+    const std::map<std::string, Value>& overrides = {});
+
+// The design surface a layout is computed on: `mesh` itself if it is a
+// triangle mesh, else its triangulation with the same vertices
+// (geometry/reference.h TriangulatedCopy: CGAL's rule for each quad's
+// diagonal, CGAL's triangulate_faces for other polygons).
+// Keys that name faces (field.singularities, .moves, .directions,
+// .constraints) refer to a triangle mesh: with polygons they are refused
+// (InputError on the key).
+Mesh DesignSurface(const Settings& parent, const Mesh& mesh);
 
 // `mesh` (canonical frame) in file units.
 Mesh InFileUnits(const Mesh& mesh, const Similarity& frame);

@@ -9,6 +9,7 @@
 #include <functional>
 #include <future>
 #include <string>
+#include <utility>
 
 #include "fields/net_curvature.h"
 
@@ -55,6 +56,34 @@ void CheckAsymptoticNet(HookContext& c, const Mesh& net) {
   Report(c, figures, warning);
 }
 
+namespace {
+
+// The conjugate-net check's figures and warning ("" if suitable).
+std::pair<nlohmann::json, std::string> ConjugateNetFigures(const Mesh& net) {
+  const NetCurvatureFigures f = MeasureNetCurvature(net);
+  nlohmann::json figures = {{"check", "quad edges along conjugate directions (PQ net)"},
+                            {"quads", f.quads},
+                            {"quads_sampled", f.sampled},
+                            {"quads_measured", f.measured},
+                            {"conjugacy_mean", f.conjugacy_mean},
+                            {"conjugacy_max", f.conjugacy_max},
+                            {"bound_conjugacy_mean", kConjugacy}};
+  std::string warning;
+  if (f.measured > 0 && f.conjugacy_mean > kConjugacy) {
+    char text[512];
+    std::snprintf(text, sizeof text,
+                  "the quads are far from a conjugate net: mean |II(u,v)|/(κ|u||v|) %.2f (max "
+                  "%.2f; bound %.2f; 0 for a conjugate net). Planar quads may then only come "
+                  "with folds or reflex corners, which the validity checks refuse: expect a "
+                  "missed tolerance.",
+                  f.conjugacy_mean, f.conjugacy_max, kConjugacy);
+    warning = text;
+  }
+  return {figures, warning};
+}
+
+}  // namespace
+
 // On a thread of its own (one core), recorded at the start of the first
 // round after it ends (HookContext::RecordChecks): the solve's first round
 // begins with serial work (the reference's tree, the residuals and their
@@ -63,28 +92,16 @@ void CheckAsymptoticNet(HookContext& c, const Mesh& net) {
 void CheckConjugateNet(HookContext& c, const Mesh& net) {
   c.checks.push_back(std::async(std::launch::async, [&net] {
     omp_set_num_threads(1);  // this thread's parallel regions (the jet fits)
-    const NetCurvatureFigures f = MeasureNetCurvature(net);
-    nlohmann::json figures = {{"check", "quad edges along conjugate directions (PQ net)"},
-                              {"quads", f.quads},
-                              {"quads_sampled", f.sampled},
-                              {"quads_measured", f.measured},
-                              {"conjugacy_mean", f.conjugacy_mean},
-                              {"conjugacy_max", f.conjugacy_max},
-                              {"bound_conjugacy_mean", kConjugacy}};
-    std::string warning;
-    if (f.measured > 0 && f.conjugacy_mean > kConjugacy) {
-      char text[512];
-      std::snprintf(text, sizeof text,
-                    "the quads are far from a conjugate net: mean |II(u,v)|/(κ|u||v|) %.2f (max "
-                    "%.2f; bound %.2f; 0 for a conjugate net). Planar quads may then only come "
-                    "with folds or reflex corners, which the validity checks refuse: expect a "
-                    "missed tolerance.",
-                    f.conjugacy_mean, f.conjugacy_max, kConjugacy);
-      warning = text;
-    }
+    const auto [figures, warning] = ConjugateNetFigures(net);
     return std::function<void(HookContext&)>(
-        [figures, warning](HookContext& c) { Report(c, figures, warning); });
+        [figures = figures, warning = warning](HookContext& c) { Report(c, figures, warning); });
   }));
+}
+
+bool CheckConjugateNetNow(HookContext& c, const Mesh& net) {
+  const auto [figures, warning] = ConjugateNetFigures(net);
+  Report(c, figures, warning);
+  return warning.empty();
 }
 
 void CheckPrincipalLabels(HookContext& c, const Mesh& mesh,

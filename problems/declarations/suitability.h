@@ -42,7 +42,11 @@ constexpr double kConjugacy = 0.35;
 constexpr double kPrincipalDegrees = 10;
 
 void CheckAsymptoticNet(HookContext& c, const Mesh& net);
+// On a thread of its own (recorded by HookContext::RecordChecks).
 void CheckConjugateNet(HookContext& c, const Mesh& net);
+// The same check at once, recorded before it returns; whether the net is
+// suitable (planar_quads' relayout: auto decides on it).
+bool CheckConjugateNetNow(HookContext& c, const Mesh& net);
 void CheckPrincipalLabels(HookContext& c, const Mesh& mesh,
                           const std::vector<std::pair<int, int>>& labels);
 

@@ -1,0 +1,155 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// archgeo — planar_quads' relayout (see relayout.h).
+#include "problems/declarations/relayout.h"
+
+#include <CGAL/boost/graph/iterator.h>
+#include <glog/logging.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "fields/layout_cleanup.h"
+#include "problems/declarations/field_pipeline.h"
+#include "problems/declarations/suitability.h"
+
+namespace archgeo {
+namespace {
+
+// "mean 0.40, max 0.76, bound 0.35" from the suitability figures.
+std::string ConjugacyText(const nlohmann::json& figures) {
+  if (!figures.contains("conjugacy_mean")) return "not measured";
+  char text[160];
+  std::snprintf(text, sizeof text, "conjugacy mean %.2f, max %.2f; bound %.2f, 0 for a conjugate net",
+                figures.at("conjugacy_mean").get<double>(),
+                figures.at("conjugacy_max").get<double>(),
+                figures.at("bound_conjugacy_mean").get<double>());
+  return text;
+}
+
+int Panels(const Mesh& mesh) {
+  int panels = 0;
+  for (FaceIndex f : mesh.faces()) panels += mesh.degree(f) > 3 ? 1 : 0;
+  return panels;
+}
+
+// The layout's panels with a corner straight or bent inward to within the
+// convexity barrier's margin split from that corner (fields/layout_cleanup.h
+// SplitReflexCorners, boundary corners included; the extraction splits only
+// interior ones beyond extraction.reflex_margin). The barrier holds every
+// corner the net has inside the margin but lets a corner already outside it
+// get worse by the margin: a layout corner at 180° on a straight or concave
+// stretch of the boundary would end reflex. Returns how many were split.
+int SplitBentPanels(Mesh& mesh, double margin_degrees) {
+  std::vector<Eigen::Vector3d> points;
+  for (VertexIndex v : mesh.vertices()) {
+    const Point& p = mesh.point(v);
+    points.emplace_back(p.x(), p.y(), p.z());
+  }
+  std::vector<std::vector<int>> faces;
+  for (FaceIndex f : mesh.faces()) {
+    std::vector<int> face;
+    for (VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) face.push_back(int(v.idx()));
+    faces.push_back(face);
+  }
+  int split = 0;
+  SplitReflexCorners(points, std::vector<bool>(points.size(), false), -margin_degrees, &faces, &split);
+  if (split == 0) return 0;
+  Mesh out;
+  for (const Eigen::Vector3d& p : points) out.add_vertex(Point(p.x(), p.y(), p.z()));
+  for (const std::vector<int>& face : faces) {
+    std::vector<VertexIndex> vs;
+    for (int v : face) vs.push_back(VertexIndex(v));
+    CHECK(out.add_face(vs) != Mesh::null_face()) << "a split panel is not manifold";
+  }
+  mesh = std::move(out);
+  return split;
+}
+
+// relayout: auto on an unsuitable net: its surface's conjugate layout
+// becomes the net solved.
+void Relayout(HookContext& c) {
+  const Settings& s = *c.settings;
+  const Mesh& net = *c.input;
+  const long long faces = (long long)net.number_of_faces();
+  if (c.progress) {
+    c.progress("relayout: auto: laying out the net's surface along a conjugate field (" +
+               std::to_string(faces) + " target faces)");
+  }
+  const std::shared_ptr<const LevelSetResult> result =
+      SolveLevelSets(s, DesignSurface(s, net), c.progress, {{"level_sets.target_faces", faces}});
+  if (!result->layout.ok) {
+    throw s.Error("relayout", "the net's surface could not be laid out anew (relayout: auto): " +
+                                  result->layout.error);
+  }
+  c.level_sets = result;
+  c.net.derived = true;
+  c.net.mesh = InFileUnits(result->layout.mesh, result->frame);
+  const int split = SplitBentPanels(c.net.mesh, s.Number("terms.convexity.margin_degrees"));
+  c.net.source.clear();  // layout vertices are not input vertices
+  c.net.details = result->details;
+  c.net.details["net"] = "conjugate layout of the input's surface (relayout: auto)";
+  const long long after = (long long)c.net.mesh.number_of_faces();
+  const int panels_before = Panels(net), panels_after = Panels(c.net.mesh);
+  c.details["relayout"] = {{"mode", "auto"},
+                           {"relaid", true},
+                           {"connectivity_changed", true},
+                           {"faces_before", faces},
+                           {"faces_after", after},
+                           {"panels_before", panels_before},
+                           {"panels_after", panels_after},
+                           {"panel_difference", panels_after - panels_before},
+                           {"split_bent_panels", split},
+                           {"vertices_before", net.number_of_vertices()},
+                           {"vertices_after", c.net.mesh.number_of_vertices()}};
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "relayout: the net was replaced by a conjugate layout of its surface: the "
+                "connectivity changed, %d panels instead of %d (%+d), %lld faces instead of %lld\n",
+                panels_after, panels_before, panels_after - panels_before, after, faces);
+  c.net.headline = result->field->headline + result->headline + text;
+}
+
+}  // namespace
+
+std::string RelayoutCommand(const Settings& s, const Mesh& net) {
+  const std::string& file = s.String("mesh");  // "" for a net given in memory
+  const std::string mesh =
+      file.empty() ? "NET_FILE" : std::filesystem::absolute(file).lexically_normal().string();
+  return "archgeo solve examples/conjugate_layout.yaml --set mesh=" + mesh +
+         " --set level_sets.target_faces=" + std::to_string(net.number_of_faces());
+}
+
+void CheckOrRelayout(HookContext& c) {
+  if (c.settings->String("relayout") != "auto") {
+    CheckConjugateNet(c, *c.input);
+    return;
+  }
+  if (CheckConjugateNetNow(c, *c.input)) {
+    c.details["relayout"] = {{"mode", "auto"}, {"relaid", false}};
+    return;
+  }
+  Relayout(c);
+}
+
+void SuggestRelayout(HookContext& c) {
+  const Settings& s = *c.settings;
+  if (s.String("relayout") != "suggest") return;
+  const double bound = s.Number("tolerance.pq_normalized_max");
+  if (!(bound > 0) || c.Measure("pq_normalized_max") <= bound) return;
+  const nlohmann::json figures =
+      c.details.contains("suitability") ? c.details["suitability"] : nlohmann::json::object();
+  const std::string command = RelayoutCommand(s, *c.input);
+  c.details["relayout"] = {{"mode", "suggest"}, {"relaid", false}, {"command", command}};
+  const std::string line =
+      "the tolerance was missed on this net (" + ConjugacyText(figures) +
+      "): planar quads need edges along conjugate directions. Lay the net's surface out anew "
+      "along a conjugate field and planarise that (a new net, about as many faces), from the "
+      "archgeo folder:\n  " + command + "\n(or relayout: auto in this spec)";
+  c.headline += "WAY OUT: " + line + "\n";
+}
+
+}  // namespace archgeo

@@ -1,0 +1,43 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// archgeo — planar_quads' way out for a net far from conjugate (key
+// `relayout`). A quad net planarises without folds only if its edges follow
+// conjugate directions of its surface [Zadravec 2010, §1]; when they do not,
+// more rounds do not help (the stall rule ends the run) but a new net along
+// a conjugate field does: the conjugate-layout pipeline (field → level sets →
+// layout, problems/declarations/conjugate_layout.cpp) on the net's own
+// surface, its triangulation (field_pipeline.h DesignSurface).
+//
+//   never    nothing is offered
+//   suggest  a run that misses the tolerance ends with the suitability
+//            figures and the exact `archgeo solve examples/conjugate_layout.yaml`
+//            command for the net's surface, with as many target faces as the
+//            net has (details.relayout.command)
+//   auto     a net the suitability check finds unsuitable is replaced, before
+//            the solve, by the conjugate layout of its surface (target faces:
+//            the net's face count); planar_quads planarises that layout, and
+//            details.relayout says the connectivity changed and how the
+//            panel count differs
+#pragma once
+
+#include <string>
+
+#include "core/settings.h"
+#include "mesh/surface_mesh.h"
+#include "problems/runtime/model.h"
+
+namespace archgeo {
+
+// The command that lays out `net`'s surface anew (the spec's mesh file,
+// absolute; target faces = the net's faces).
+std::string RelayoutCommand(const Settings& s, const Mesh& net);
+
+// planar_quads' `net` hook: the suitability check (on its own thread; at
+// once with relayout: auto, which then re-lays an unsuitable net).
+void CheckOrRelayout(HookContext& c);
+
+// planar_quads' `finish` hook (relayout: suggest): the advice when the
+// tolerance was missed.
+void SuggestRelayout(HookContext& c);
+
+}  // namespace archgeo
