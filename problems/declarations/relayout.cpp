@@ -19,7 +19,7 @@
 namespace archgeo {
 namespace {
 
-// "mean 0.40, max 0.76, bound 0.35" from the suitability figures.
+// "mean 0.40, max 0.76, bound 0.25" from the suitability figures.
 std::string ConjugacyText(const nlohmann::json& figures) {
   if (!figures.contains("conjugacy_mean")) return "not measured";
   char text[160];
