@@ -236,8 +236,10 @@ void RemoveNearSlits(const std::vector<V3>& points, double angle_deg,
 }
 
 void SplitReflexCorners(const std::vector<V3>& points, const std::vector<bool>& on_boundary,
-                        double margin_deg, std::vector<std::vector<int>>* faces, int* split) {
+                        double margin_deg, std::vector<std::vector<int>>* faces, int* split,
+                        double min_corner_deg) {
   const double limit = M_PI + margin_deg * M_PI / 180.0;
+  const double min_corner = min_corner_deg * M_PI / 180.0;
   auto positions = [&](const std::vector<int>& c) {
     std::vector<V3> p;
     for (int v : c) p.push_back(points[v]);
@@ -284,7 +286,7 @@ void SplitReflexCorners(const std::vector<V3>& points, const std::vector<bool>& 
         convex = convex && corner < M_PI;
         smallest = std::min(smallest, corner);
       }
-      if (!convex) continue;
+      if (!convex || smallest < min_corner) continue;
       const double score = (a.size() == 4) + (b.size() == 4) + smallest / M_PI;
       if (score > best_score) {
         best_score = score;

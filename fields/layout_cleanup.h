@@ -42,9 +42,12 @@ void RemoveNearSlits(const std::vector<Eigen::Vector3d>& points, double angle_de
 // from that corner x to a vertex y. The diagonal is chosen among those whose
 // two parts turn as the face does and have convex corners at x and y
 // (checked in each part's own plane), preferring parts with four vertices,
-// then the largest smallest corner at x and y.
+// then the largest smallest corner at x and y; a diagonal that makes a
+// corner at x or y below min_corner_deg is not taken (the face then keeps its
+// corner).
 void SplitReflexCorners(const std::vector<Eigen::Vector3d>& points,
                         const std::vector<bool>& on_boundary, double margin_deg,
-                        std::vector<std::vector<int>>* faces, int* split);
+                        std::vector<std::vector<int>>* faces, int* split,
+                        double min_corner_deg = 0);
 
 }  // namespace archgeo

@@ -21,8 +21,13 @@
 // reference surface (its vertices lie on the input; the report's "net" entry
 // gives its distance to the input surface).
 //
+// The layout's panels with a corner straight or bent inward (a boundary
+// corner too) are split there before the PQ step (relayout.h
+// SplitBentPanels; details.net.split_bent_panels): the convexity barrier
+// cannot straighten a corner the net already has bent.
+//
 // Outputs: output.mesh (the final planar mesh), output.layout (the layout
-// before the PQ step), output.field (fields/field_io.h), output.report.
+// the PQ step starts from), output.field (fields/field_io.h), output.report.
 #include <algorithm>
 
 #include "core/problem.h"
@@ -30,6 +35,7 @@
 #include "core/input_error.h"
 #include "io/io.h"
 #include "problems/declarations/field_pipeline.h"
+#include "problems/declarations/relayout.h"
 #include "problems/runtime/model.h"
 
 namespace archgeo::problems {
@@ -46,9 +52,11 @@ void Net(HookContext& c) {
   c.level_sets = result;
   c.net.derived = true;
   c.net.mesh = InFileUnits(result->layout.mesh, result->frame);
+  const int split = SplitBentPanels(c.net.mesh, s.Number("terms.convexity.margin_degrees"));
   c.net.source.clear();  // layout vertices are not input vertices
   c.net.details = result->details;
   c.net.details["net"] = "conjugate layout";
+  c.net.details["split_bent_panels"] = split;
   c.net.details["field"] = result->field->details;
   c.net.headline = result->field->headline + result->headline +
                    "solving the layout for planar faces (planar_quads)\n";
@@ -57,7 +65,10 @@ void Net(HookContext& c) {
 void Write(HookContext& c) {
   const auto& result = c.level_sets;
   if (const auto it = c.temporaries.find("layout"); it != c.temporaries.end()) {
-    WriteMesh(it->second, InFileUnits(result->layout.mesh, result->frame));
+    // The layout as solved: its bent panels split as in Net.
+    Mesh layout = InFileUnits(result->layout.mesh, result->frame);
+    SplitBentPanels(layout, c.settings->Number("terms.convexity.margin_degrees"));
+    WriteMesh(it->second, layout);
   }
   if (const auto it = c.temporaries.find("field"); it != c.temporaries.end()) {
     const FieldResult& field = *result->field;

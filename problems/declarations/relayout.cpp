@@ -36,38 +36,6 @@ int Panels(const Mesh& mesh) {
   return panels;
 }
 
-// The layout's panels with a corner straight or bent inward to within the
-// convexity barrier's margin split from that corner (fields/layout_cleanup.h
-// SplitReflexCorners, boundary corners included; the extraction splits only
-// interior ones beyond extraction.reflex_margin). The barrier holds every
-// corner the net has inside the margin but lets a corner already outside it
-// get worse by the margin: a layout corner at 180° on a straight or concave
-// stretch of the boundary would end reflex. Returns how many were split.
-int SplitBentPanels(Mesh& mesh, double margin_degrees) {
-  std::vector<Eigen::Vector3d> points;
-  for (VertexIndex v : mesh.vertices()) {
-    const Point& p = mesh.point(v);
-    points.emplace_back(p.x(), p.y(), p.z());
-  }
-  std::vector<std::vector<int>> faces;
-  for (FaceIndex f : mesh.faces()) {
-    std::vector<int> face;
-    for (VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) face.push_back(int(v.idx()));
-    faces.push_back(face);
-  }
-  int split = 0;
-  SplitReflexCorners(points, std::vector<bool>(points.size(), false), -margin_degrees, &faces, &split);
-  if (split == 0) return 0;
-  Mesh out;
-  for (const Eigen::Vector3d& p : points) out.add_vertex(Point(p.x(), p.y(), p.z()));
-  for (const std::vector<int>& face : faces) {
-    std::vector<VertexIndex> vs;
-    for (int v : face) vs.push_back(VertexIndex(v));
-    CHECK(out.add_face(vs) != Mesh::null_face()) << "a split panel is not manifold";
-  }
-  mesh = std::move(out);
-  return split;
-}
 
 // relayout: auto on an unsuitable net: its surface's conjugate layout
 // becomes the net solved.
@@ -150,6 +118,35 @@ void SuggestRelayout(HookContext& c) {
       "along a conjugate field and planarise that (a new net, about as many faces), from the "
       "archgeo folder:\n  " + command + "\n(or relayout: auto in this spec)";
   c.headline += "WAY OUT: " + line + "\n";
+}
+
+int SplitBentPanels(Mesh& mesh, double margin_degrees) {
+  std::vector<Eigen::Vector3d> points;
+  for (VertexIndex v : mesh.vertices()) {
+    const Point& p = mesh.point(v);
+    points.emplace_back(p.x(), p.y(), p.z());
+  }
+  std::vector<std::vector<int>> faces;
+  for (FaceIndex f : mesh.faces()) {
+    std::vector<int> face;
+    for (VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) face.push_back(int(v.idx()));
+    faces.push_back(face);
+  }
+  int split = 0;
+  // A split that leaves a corner under 5° (validity.min_corner_degrees'
+  // default) would trade the bent corner for a sliver: the corner stays.
+  SplitReflexCorners(points, std::vector<bool>(points.size(), false), -margin_degrees, &faces, &split,
+                     5.0);
+  if (split == 0) return 0;
+  Mesh out;
+  for (const Eigen::Vector3d& p : points) out.add_vertex(Point(p.x(), p.y(), p.z()));
+  for (const std::vector<int>& face : faces) {
+    std::vector<VertexIndex> vs;
+    for (int v : face) vs.push_back(VertexIndex(v));
+    CHECK(out.add_face(vs) != Mesh::null_face()) << "a split panel is not manifold";
+  }
+  mesh = std::move(out);
+  return split;
 }
 
 }  // namespace archgeo

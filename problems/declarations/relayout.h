@@ -28,6 +28,16 @@
 
 namespace archgeo {
 
+// Splits the panels of a layout with a corner straight or bent inward to
+// within the convexity barrier's margin (degrees) from that corner
+// (fields/layout_cleanup.h SplitReflexCorners, boundary corners included;
+// the extraction splits only interior ones beyond extraction.reflex_margin).
+// The barrier holds every corner the net has inside the margin but lets a
+// corner already outside it get worse by the margin: a layout corner at 180°
+// on a straight or concave stretch of the boundary would end reflex. Returns
+// how many were split.
+int SplitBentPanels(Mesh& mesh, double margin_degrees);
+
 // The command that lays out `net`'s surface anew (the spec's mesh file,
 // absolute; target faces = the net's faces).
 std::string RelayoutCommand(const Settings& s, const Mesh& net);
