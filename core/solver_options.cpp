@@ -112,8 +112,9 @@ std::vector<Key> SolverKeys() {
              "dense linear algebra for the dense solvers" + kLeanIgnores),
       choice("preconditioner_type", "jacobi",
              Names<ceres::PreconditionerType>(&ceres::PreconditionerTypeToString, ceres::SUBSET),
-             "preconditioner of the iterative solvers (cgnr, iterative_schur; subset: with "
-             "subset_preconditioner_parts)" + kLeanRefusesOther("jacobi")),
+             "preconditioner of the iterative solvers (cgnr: identity, jacobi or subset; "
+             "iterative_schur: any but subset; subset: with subset_preconditioner_parts)" +
+                 kLeanRefusesOther("jacobi")),
       choice("trust_region_strategy_type", "levenberg_marquardt",
              Names<ceres::TrustRegionStrategyType>(&ceres::TrustRegionStrategyTypeToString,
                                                    ceres::DOGLEG),
@@ -160,7 +161,9 @@ std::vector<Key> SolverKeys() {
       number("eta", 0.1, 0, 1, "iterative solvers: forcing sequence (relative accuracy)"),
       flag("use_postordering", false, "sparse Cholesky: postorder the elimination tree" + kLeanIgnores),
       flag("dynamic_sparsity", false, "re-analyse the Jacobian's sparsity every iteration" + kLeanIgnores),
-      flag("use_mixed_precision_solves", false, "single-precision factorisation + refinement" + kLeanIgnores),
+      flag("use_mixed_precision_solves", false,
+           "single-precision factorisation + refinement (sparse Cholesky only with eigen_sparse: "
+           "this Ceres has no single-precision SuiteSparse or CXSparse one)" + kLeanIgnores),
       integer("max_num_refinement_iterations", 0, 0, 1000, "iterative refinement steps" + kLeanIgnores),
       flag("use_explicit_schur_complement", false, "iterative_schur: form the Schur complement" + kLeanIgnores),
       integer("pcg_above", 0, 0, 1000000000,
@@ -176,6 +179,33 @@ std::vector<Key> SolverKeys() {
              "extrapolated from the last two, falls below this (or function_tolerance, if "
              "larger); the next round goes on from there"),
   };
+}
+
+// Combinations Ceres' own IsValid accepts but aborts on when it solves
+// (Debian's Ceres 2.1): refused here, naming the key.
+static void CheckSupportedHere(const Settings& s, const ceres::Solver::Options& o) {
+  const bool sparse_cholesky = o.linear_solver_type == ceres::SPARSE_NORMAL_CHOLESKY ||
+                               o.linear_solver_type == ceres::SPARSE_SCHUR;
+  if (o.use_mixed_precision_solves && sparse_cholesky &&
+      o.sparse_linear_algebra_library_type != ceres::EIGEN_SPARSE) {
+    throw s.Error("solver.use_mixed_precision_solves",
+                  "this Ceres has no single-precision " +
+                      s.String("solver.sparse_linear_algebra_library_type") +
+                      " Cholesky: mixed precision needs sparse_linear_algebra_library_type: "
+                      "eigen_sparse or a dense linear solver");
+  }
+  const ceres::PreconditionerType p = o.preconditioner_type;
+  if (o.linear_solver_type == ceres::CGNR && p != ceres::IDENTITY && p != ceres::JACOBI &&
+      p != ceres::SUBSET) {
+    throw s.Error("solver.preconditioner_type",
+                  "linear_solver_type: cgnr works with the identity, jacobi or subset "
+                  "preconditioner, not " + s.String("solver.preconditioner_type"));
+  }
+  if (o.linear_solver_type == ceres::ITERATIVE_SCHUR && p == ceres::SUBSET) {
+    throw s.Error("solver.preconditioner_type",
+                  "linear_solver_type: iterative_schur does not take the subset preconditioner "
+                  "(identity, jacobi, schur_jacobi, cluster_jacobi or cluster_tridiagonal)");
+  }
 }
 
 ceres::Solver::Options SolverOptions(const Settings& s) {
@@ -234,6 +264,7 @@ ceres::Solver::Options SolverOptions(const Settings& s) {
     o.residual_blocks_for_subset_preconditioner.insert(
         reinterpret_cast<ceres::ResidualBlockId>(&o));  // never dereferenced
   }
+  CheckSupportedHere(s, o);
   std::string error;
   const bool valid = o.IsValid(&error);
   o.residual_blocks_for_subset_preconditioner.clear();
