@@ -105,6 +105,20 @@ TEST_F(SpecTest, MalformedYamlNamesTheLine) {
   EXPECT_NE(std::string(e.what()).find("malformed YAML"), std::string::npos);
 }
 
+// A number written non-zero that double precision reads as 0 is refused: a
+// tolerance of 1e-400 would otherwise be "off" (issue 48, item 8); a zero
+// written as such is accepted.
+TEST_F(SpecTest, ANumberThatUnderflowsToZeroIsRefused) {
+  const InputError e =
+      Error("mesh: a.obj\nproblem: planar_quads\ntolerance:\n  pq_normalized_max: 1e-400\n");
+  EXPECT_EQ(e.line(), 4);
+  EXPECT_EQ(e.key(), "tolerance.pq_normalized_max");
+  EXPECT_NE(std::string(e.what()).find("underflows to 0"), std::string::npos) << e.what();
+  EXPECT_EQ(Error("mesh: a.obj\n", {"schedule.max_seconds=-0.5e-999"}).key(), "schedule.max_seconds");
+  const std::string zero = Write("mesh: a.obj\nproblem: planar_quads\ntolerance:\n  pq_normalized_max: 0.0e-5\n");
+  EXPECT_EQ(ReadSpec(zero).settings.Number("tolerance.pq_normalized_max"), 0.0);
+}
+
 TEST_F(SpecTest, UnknownKeyNamesLineAndKey) {
   const InputError e = Error("mesh: a.obj\nsolver:\n  treads: 2\n");
   EXPECT_EQ(e.line(), 3);

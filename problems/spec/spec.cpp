@@ -199,6 +199,14 @@ class Reader {
       Fail(node, k.name, "expected a number, got " + Describe(node));
     }
     if (!std::isfinite(value)) Fail(node, k.name, "expected a finite number, got " + Describe(node));
+    // A value written non-zero that reads as 0 (1e-400) would turn a bound
+    // "off" without a word.
+    const std::string text = node.Scalar();
+    const std::string mantissa = text.substr(0, text.find_first_of("eE"));
+    if (value == 0 && mantissa.find_first_of("123456789") != std::string::npos) {
+      Fail(node, k.name, "'" + text + "' underflows to 0 in double precision (the smallest is "
+                         "about 2.2e-308)");
+    }
     if (value < k.lo || value > k.hi) {
       std::ostringstream range;
       range << "must be in [" << k.lo << ", " << k.hi << "], got " << value;
