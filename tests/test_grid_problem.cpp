@@ -561,6 +561,10 @@ TEST_F(GridFiles, BadInputNamesTheKey) {
             "grid.coverage");
   EXPECT_EQ(Error("surface: {name: torus}\ngrid: {type: closed_both, coverage: 0.5}\n").key(),
             "grid.coverage");
+  // 10^10 vertices are refused before anything is allocated (issue 48, item 8).
+  const InputError huge = Error("surface: {name: plane}\ngrid: {nu: 100000, nv: 100000}\n");
+  EXPECT_EQ(huge.key(), "grid.nv");
+  EXPECT_NE(huge.message().find("limits.max_vertices"), std::string::npos) << huge.message();
   try {
     ReadSpec(WriteFile("off.yaml", "problem: grid\nsurface: {name: torus}\noutput: {grid: g.off}\n"));
     ADD_FAILURE() << "an OFF grid file was accepted";

@@ -408,6 +408,16 @@ void Check(const Settings& s) {
     throw s.Error("multiresolution.levels",
                   "a grid cannot be subdivided (its vertices carry surface parameters)");
   }
+  // The grid's size before anything is allocated, as limits.max_vertices
+  // bounds a mesh read from a file.
+  const long long vertices = s.Integer("grid.nu") * s.Integer("grid.nv");
+  if (vertices > s.Integer("limits.max_vertices")) {
+    throw s.Error(s.Given("grid.nv") ? "grid.nv" : "grid.nu",
+                  "grid.nu × grid.nv = " + std::to_string(vertices) +
+                      " vertices, more than limits.max_vertices (" +
+                      std::to_string(s.Integer("limits.max_vertices")) + "; raise it for a "
+                      "bigger grid)");
+  }
   if (s.String("method") == "force" && !(s.Get("fixed") == Value(std::string("none")))) {
     throw s.Error("fixed", "the force method moves every vertex (fixed vertices need "
                            "method: least_squares)");

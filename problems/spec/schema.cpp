@@ -50,7 +50,8 @@ std::vector<Key> CommonKeys(const ProblemDecl& d) {
                            "loop, sqrt3 (triangle meshes), catmull_clark, doo_sabin (any mesh); "
                            "Loop and Catmull-Clark keep vertex ids"));
   keys.push_back(IntegerKey("limits.max_vertices", 50000000, 1, 2000000000,
-                            "refuse input meshes with more vertices (raise it for bigger meshes)"));
+                            "refuse input meshes (and grids) with more vertices (raise it for bigger "
+                            "meshes)"));
   keys.push_back(IntegerKey("limits.max_faces", 50000000, 1, 2000000000,
                             "refuse input meshes with more faces"));
   keys.push_back(IntegerKey("limits.max_face_degree", 1000, 3, 1000000,
