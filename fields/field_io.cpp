@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -82,6 +83,18 @@ Eigen::MatrixXd ReadDmat(const std::string& path, const std::string& key) {
   }
   if (cols == 0 && rows == 0) {
     throw InputError(path, 1, key, "binary DMAT files are not supported; write it as ASCII");
+  }
+  // Every number takes at least two bytes (a digit and a separator): a
+  // header promising more than the file can hold is refused before the
+  // matrix is allocated.
+  std::error_code error;
+  const auto bytes = static_cast<long long>(std::filesystem::file_size(path, error));
+  const long long room = error ? 0 : bytes / 2;
+  if (cols > 0 && rows > room / cols) {
+    throw InputError(path, 1, key,
+                     "the header promises " + std::to_string(rows) + " x " + std::to_string(cols) +
+                         " numbers, more than a file of " + std::to_string(bytes) +
+                         " bytes can hold");
   }
   Eigen::MatrixXd m(rows, cols);
   int line = 2;  // the first number follows the header line

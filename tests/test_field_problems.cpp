@@ -556,6 +556,17 @@ TEST_F(FieldInputTest, QuadMeshesFaceIdsAndTargetFaceCountsAreChecked) {
   // crash in the extraction.
   ExpectInputError("mesh: top.obj\nproblem: level_sets\nterms: {level_set_conjugacy: 1}\n",
                    "terms.level_set_alignment");
+  // A 14-byte DMAT whose header promises 10^10 numbers: refused before the
+  // matrix is allocated (it was std::bad_alloc; issue 48, item 2).
+  WriteFile("huge.dmat", "100000 100000\n");
+  ExpectInputError("mesh: top.obj\nproblem: conjugate_field\nfield: {constraints: huge.dmat}\n",
+                   "field.constraints");
+  try {
+    ReadDmat(Path("huge.dmat"), "field.constraints");
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("more than a file of 14 bytes"), std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace
