@@ -7,12 +7,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <string>
 
 #include "generators/generators.h"
 #include "io/io.h"
 #include "generators/smoothness_surfaces.h"
 #include "mesh/subdivision.h"
 #include "mesh/topology.h"
+#include "core/input_error.h"
 #include "problems/commands/run.h"
 #include "problems/spec/spec.h"
 #include "tests/scratch_dir.h"
@@ -93,6 +96,28 @@ TEST_F(MultiresolutionTest, SolvesSubdividesAndSolvesAgain) {
     const Point& p = out.point(v);
     const double rho = std::hypot(p.x(), p.y());
     EXPECT_NEAR(rho, p.z() < 0.5 ? 1.0 : 0.5, 1e-12) << v.idx();
+  }
+}
+
+// A vertex on no face has no subdivision rule: with multiresolution it is
+// bad input naming the key and the vertex, for every quad scheme (Doo–Sabin
+// crashed on it, Catmull–Clark ended exit 3; issue 48, item 2).
+TEST_F(MultiresolutionTest, AVertexOnNoFaceIsBadInput) {
+  std::string obj = "v 0 0 0\nv 1 0 0\nv 1 1 0.1\nv 0 1 0\nv 5 5 5\nf 1 2 3 4\n";
+  WriteFile("iso.obj", obj);
+  for (const char* scheme : {"catmull_clark", "doo_sabin"}) {
+    SCOPED_TRACE(scheme);
+    try {
+      RunSpec(ReadSpec(WriteFile("spec.yaml", std::string("mesh: iso.obj\n"
+                                                          "multiresolution: {levels: 1, scheme: ") +
+                                                  scheme + "}\noutput: {mesh: out.obj}\n")),
+              {});
+      ADD_FAILURE() << "accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.key(), "multiresolution.levels");
+      EXPECT_NE(e.message().find("vertex 4"), std::string::npos) << e.message();
+    }
+    EXPECT_FALSE(std::filesystem::exists(Path("out.obj")));
   }
 }
 

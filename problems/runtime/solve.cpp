@@ -159,6 +159,18 @@ std::unique_ptr<Solution> Solve(const ProblemSpec& spec, const Mesh& mesh, const
                   scheme + " subdivision needs a triangle mesh; " + spec.mesh() +
                       " has other faces (use catmull_clark or doo_sabin)");
   }
+  // Subdivision rules are defined on the faces around a vertex: a vertex on
+  // no face has none (CGAL's subdivision crashed on one).
+  if (levels > 0) {
+    for (VertexIndex v : input.vertices()) {
+      if (input.is_isolated(v)) {
+        throw s.Error("multiresolution.levels",
+                      spec.mesh() + " has a vertex on no face (vertex " +
+                          std::to_string(v.idx()) + "): subdivision needs every vertex on a "
+                          "face; remove it or solve without multiresolution");
+      }
+    }
+  }
   // Each multiresolution level multiplies the faces (3× for sqrt3, about 4×
   // for the others): refuse levels beyond limits.max_subdivided_faces before
   // any work.
