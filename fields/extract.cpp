@@ -952,6 +952,11 @@ Extraction ExtractQuadMesh(const Mesh& mesh, const LevelSetFunctions& fn,
   CleanUp(options, &soup, &out);
   BuildMesh(&soup, &out);
   CountDegrees(&out);
+  if (out.mesh.number_of_faces() == 0) {  // e.g. a closed surface of four triangles
+    out.error = "the level sets cut out no face (the surface has " +
+                std::to_string(mesh.number_of_faces()) + " triangles; more are needed)";
+    return out;
+  }
   out.ok = true;
   return out;
 }

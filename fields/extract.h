@@ -137,7 +137,7 @@ struct ExtractOptions {
 
 struct Extraction {
   bool ok = false;
-  std::string error;  // why !ok (jumps not integral or inconsistent)
+  std::string error;  // why !ok (jumps not integral or inconsistent, no face cut out)
   Mesh mesh;          // the quad-dominant mesh
   int quads = 0, triangles = 0, pentagons = 0, other_faces = 0;
   std::map<int, int> face_degrees;               // degree → count
