@@ -15,6 +15,7 @@
 #include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
+#include <CGAL/exceptions.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
@@ -102,7 +103,15 @@ Mesh TriangulatedCopy(const Mesh& mesh) {
     if (copy.degree(f) == 4) quads.push_back(f);
   }
   for (FaceIndex f : quads) SplitQuad(copy, copy.halfedge(f));
-  if (!CGAL::Polygon_mesh_processing::triangulate_faces(copy)) {
+  bool triangulated = false;
+  try {
+    triangulated = CGAL::Polygon_mesh_processing::triangulate_faces(copy);
+  } catch (const CGAL::Failure_exception&) {
+    // The constrained triangulation of a nearly degenerate polygon trips a
+    // precondition with the mesh's inexact kernel (an octahedron's layout):
+    // the polygon is left whole, as when triangulate_faces gives up.
+  }
+  if (!triangulated) {
     // A polygon whose projection onto its plane overlaps itself (e.g. a
     // strongly warped face) defeats the constrained Delaunay triangulation:
     // split what is left as a fan from its first corner. Topologically always

@@ -528,6 +528,24 @@ class FieldInputTest : public ScratchDirTest {
   }
 };
 
+// A regular octahedron's layout has a nearly degenerate polygon whose
+// constrained triangulation tripped a CGAL precondition with one thread
+// (exit 1; geometry/reference.h TriangulatedCopy): one and two threads both
+// lay it out (issue 48, item 2).
+TEST_F(FieldInputTest, AnOctahedronIsLaidOutWithOneThreadAsWithTwo) {
+  WriteFile("oct.obj",
+            "v 1 0 0\nv -1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 0 0 -1\nf 1 3 5\nf 3 2 5\n"
+            "f 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\n");
+  for (const char* threads : {"1", "2"}) {
+    SCOPED_TRACE(threads);
+    const std::string spec = WriteFile(
+        "oct.yaml", std::string("mesh: oct.obj\nproblem: level_sets\nsolver: {num_threads: ") +
+                        threads + "}\n");
+    const RunResult run = RunSpec(ReadSpec(spec), {});
+    EXPECT_TRUE(run.exit_code == 0 || run.exit_code == 4 || run.exit_code == 5) << run.summary;
+  }
+}
+
 TEST_F(FieldInputTest, QuadMeshesFaceIdsAndTargetFaceCountsAreChecked) {
   WriteMesh(Path("quads.obj"), QuadGrid(6, 5, RoofSurface, 0, 1));
   WriteMesh(Path("top.obj"), EllipsoidTop(12, 8));
