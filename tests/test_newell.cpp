@@ -39,6 +39,21 @@ TEST(Newell, SkewQuadIsTheSumOfItsTriangles) {
   EXPECT_LT((NewellVector(4, [&](int k) { return p[size_t(k)]; }) - triangles).norm(), 1e-14);
 }
 
+// A unit square 1e8 away from the origin: twice its area along z, to the
+// digits its coordinates keep (Σ p_k × p_{k+1} of absolute positions would
+// lose them all: its terms are 1e16 for a sum of 2).
+TEST(Newell, FarFromTheOriginKeepsItsDigits) {
+  const double far = 1e8;
+  const std::vector<Eigen::Vector3d> square = {{far, far, far},
+                                               {far + 1, far, far},
+                                               {far + 1, far + 1, far},
+                                               {far, far + 1, far}};
+  const Eigen::Vector3d n = NewellVector(4, [&](int k) { return square[size_t(k)]; });
+  EXPECT_NEAR(n.z(), 2.0, 1e-12);
+  EXPECT_NEAR(n.x(), 0.0, 1e-12);
+  EXPECT_NEAR(n.y(), 0.0, 1e-12);
+}
+
 TEST(Newell, PolygonWithoutAreaHasTheZeroNormal) {
   const std::array<V, 3> line = {V(0, 0, 0), V(1, 1, 1), V(2, 2, 2)};
   const auto corner = [&](int k) { return line[size_t(k)]; };

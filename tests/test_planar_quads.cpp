@@ -68,6 +68,25 @@ TEST(PlanarQuads, MeetsTheToleranceOnANoisyGrid) {
   EXPECT_LT(m.surface_distance_max, 0.1);  // mean edge lengths: the canonical unit
 }
 
+// The same grid 1e8 mean edge lengths from the origin gives the same result
+// (issue 48, item 3): its normals and its reference surface are computed
+// relative to each face's first corner (core/newell.h), not from absolute
+// positions, which made every face degenerate.
+TEST(PlanarQuads, FarFromTheOriginAsAtIt) {
+  Case near = NoisyGrid(8, 6, 0.05);
+  Case far = near;
+  for (Mesh* m : {&far.mesh, &far.original}) {
+    for (VertexIndex v : m->vertices()) m->point(v) = m->point(v) + Vector(1e8, -1e8, 1e8);
+  }
+  const auto a = PlanarQuads(near);
+  const auto b = PlanarQuads(far);
+  EXPECT_TRUE(Met(*a));
+  EXPECT_TRUE(Met(*b));
+  EXPECT_NEAR(MaxPlanarity(far.mesh), MaxPlanarity(near.mesh), 1e-6);
+  EXPECT_NEAR(b->loop.objective.at("total"), a->loop.objective.at("total"),
+              1e-4 * a->loop.objective.at("total"));
+}
+
 TEST(PlanarQuads, HexagonsBecomePlanar) {
   Case c = NoisyGrid(8, 6, 0.05);
   // Merge pairs of quads into hexagons by removing a shared interior edge.
