@@ -49,14 +49,7 @@ void Net(HookContext& c) {
     throw s.Error("level_sets", "the layout could not be extracted from the level sets: " +
                                     result->layout.error);
   }
-  c.level_sets = result;
-  c.net.derived = true;
-  c.net.mesh = InFileUnits(result->layout.mesh, result->frame);
-  const int split = SplitBentPanels(c.net.mesh, s.Number("terms.convexity.margin_degrees"));
-  c.net.source.clear();  // layout vertices are not input vertices
-  c.net.details = result->details;
-  c.net.details["net"] = "conjugate layout";
-  c.net.details["split_bent_panels"] = split;
+  UseLayoutAsNet(c, result, "conjugate layout");
   c.net.details["field"] = result->field->details;
   c.net.headline = result->field->headline + result->headline +
                    "solving the layout for planar faces (planar_quads)\n";

@@ -8,6 +8,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -53,13 +54,8 @@ void Relayout(HookContext& c) {
     throw s.Error("relayout", "the net's surface could not be laid out anew (relayout: auto): " +
                                   result->layout.error);
   }
-  c.level_sets = result;
-  c.net.derived = true;
-  c.net.mesh = InFileUnits(result->layout.mesh, result->frame);
-  const int split = SplitBentPanels(c.net.mesh, s.Number("terms.convexity.margin_degrees"));
-  c.net.source.clear();  // layout vertices are not input vertices
-  c.net.details = result->details;
-  c.net.details["net"] = "conjugate layout of the input's surface (relayout: auto)";
+  const int split =
+      UseLayoutAsNet(c, result, "conjugate layout of the input's surface (relayout: auto)");
   const long long after = (long long)c.net.mesh.number_of_faces();
   const int panels_before = Panels(net), panels_after = Panels(c.net.mesh);
   c.details["relayout"] = {{"mode", "auto"},
@@ -118,6 +114,20 @@ void SuggestRelayout(HookContext& c) {
       "along a conjugate field and planarise that (a new net, about as many faces), from the "
       "archgeo folder:\n  " + command + "\n(or relayout: auto in this spec)";
   c.headline += "WAY OUT: " + line + "\n";
+}
+
+int UseLayoutAsNet(HookContext& c, std::shared_ptr<const LevelSetResult> layout,
+                   const std::string& what) {
+  c.net.derived = true;
+  c.net.mesh = InFileUnits(layout->layout.mesh, layout->frame);
+  const int split =
+      SplitBentPanels(c.net.mesh, c.settings->Number("terms.convexity.margin_degrees"));
+  c.net.source.clear();  // layout vertices are not input vertices
+  c.net.details = layout->details;
+  c.net.details["net"] = what;
+  c.net.details["split_bent_panels"] = split;
+  c.level_sets = std::move(layout);
+  return split;
 }
 
 int SplitBentPanels(Mesh& mesh, double margin_degrees) {

@@ -20,6 +20,7 @@
 //            panel count differs
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include "core/settings.h"
@@ -37,6 +38,13 @@ namespace archgeo {
 // on a straight or concave stretch of the boundary would end reflex. Returns
 // how many were split.
 int SplitBentPanels(Mesh& mesh, double margin_degrees);
+
+// Makes `layout` (a level-set layout, problems/declarations/field_pipeline.h)
+// the net the solve starts from, in file units, its bent panels split
+// (SplitBentPanels at terms.convexity.margin_degrees): c.level_sets, c.net
+// with details "net" = `what` and "split_bent_panels". Returns the splits.
+int UseLayoutAsNet(HookContext& c, std::shared_ptr<const LevelSetResult> layout,
+                   const std::string& what);
 
 // The command that lays out `net`'s surface anew (the spec's mesh file,
 // absolute; target faces = the net's faces).
