@@ -39,8 +39,15 @@ std::string MeasureText(const std::map<std::string, double>& measures) {
 // per-iteration tolerance holds (and tells LeanSolve so before it linearises).
 class IterationWatch : public EndingCallback {
  public:
+  // watched: (measure, bound value, whether it is a Tolerance::bound); the
+  // solve ends when all hold and at least one is not a bound.
+  struct Watched {
+    std::string measure;
+    double value;
+    bool bound;
+  };
   IterationWatch(Model& model, const ProgressSink& sink, std::string label,
-                 std::vector<std::pair<std::string, double>> watched)
+                 std::vector<Watched> watched)
       : model_(model), sink_(sink), label_(std::move(label)), watched_(std::move(watched)) {}
 
   bool Ends() override {
@@ -66,23 +73,30 @@ class IterationWatch : public EndingCallback {
 
  private:
   // Whether every watched measure holds at the current values (" name value"
-  // of each into `values`). The state changed since the last report, unless
-  // Ends measured this same step just before it.
+  // of each goal into `values`; a bound is measured only once the goals
+  // hold). The state changed since the last report, unless Ends measured
+  // this same step just before it.
   bool Met(std::string* values) {
     if (!measured_) model_.StateChanged();
-    bool met = !watched_.empty();
-    for (const auto& [measure, bound] : watched_) {
-      const double value = model_.Measure(measure);
-      if (values) *values += "  " + measure + " " + Format("%.3e", value);
-      met = met && value <= bound;
+    bool goals = false, met = true;
+    for (const Watched& w : watched_) {
+      if (w.bound) continue;
+      const double value = model_.Measure(w.measure);
+      if (values) *values += "  " + w.measure + " " + Format("%.3e", value);
+      goals = true;
+      met = met && value <= w.value;
     }
-    return met;
+    if (!goals || !met) return false;
+    for (const Watched& w : watched_) {
+      if (w.bound && model_.Measure(w.measure) > w.value) return false;
+    }
+    return true;
   }
 
   Model& model_;
   const ProgressSink& sink_;
   std::string label_;
-  std::vector<std::pair<std::string, double>> watched_;
+  std::vector<Watched> watched_;
   bool measured_ = false;  // Ends measured the current step
 };
 
@@ -158,6 +172,11 @@ class Loop {
     how_.pcg_above = int(s_.Integer("solver.pcg_above"));
     how_.pcg_function_tolerance = s_.Number("solver.pcg_function_tolerance");
     how_.subset_parts = SubsetParts(s_);
+    for (const Stage& stage : stages_) {
+      for (const Tolerance& t : stage.tolerances) {
+        if (t.bound) all_bounds_.push_back(t);
+      }
+    }
   }
 
   LoopResult Run() {
@@ -207,9 +226,13 @@ class Loop {
                                                                     : stage.name + " round 1");
     }
     plan.factor = stage.factor_key.empty() ? 1.0 : s_.Number(stage.factor_key);
+    const Tolerance* goal = nullptr;
+    for (const Tolerance& t : plan.active) {
+      if (!t.bound && !goal) goal = &t;
+    }
     plan.band = stage.band_key.empty() ? -1.0
-                : plan.active.empty()  ? 0.0
-                                       : s_.Number(stage.band_key) * Bound(s_, plan.active.front());
+                : goal == nullptr      ? 0.0
+                                       : s_.Number(stage.band_key) * Bound(s_, *goal);
     plan.rest_move = stage.rest_move_key.empty() ? stage.rest_move : s_.Number(stage.rest_move_key);
     plan.guard = stage.guard_key.empty() ? 0.0 : s_.Number(stage.guard_key);
     return plan;
@@ -236,7 +259,7 @@ class Loop {
     if (!stage.keep_best.empty()) best_state_ = model_.SaveState();
     best_round_ = round_number_;
     patience_best_ = stage.patience_measure.empty() ? 0 : model_.Measure(stage.patience_measure);
-    if (stage.patience_valid && !model_.Invalid().empty()) {
+    if (stage.patience_valid && !Rejected(plan.active).empty()) {
       patience_best_ = std::numeric_limits<double>::infinity();  // no valid value yet
     }
     last_gain_ = 0;
@@ -333,9 +356,9 @@ class Loop {
       solver.max_solver_time_in_seconds = std::min(solver.max_solver_time_in_seconds,
                                                    std::max(0.0, time_limit_ - Since(start_)));
     }
-    std::vector<std::pair<std::string, double>> watched;
+    std::vector<IterationWatch::Watched> watched;
     for (const Tolerance& t : plan.active) {
-      if (t.per_iteration) watched.push_back({t.measure, Bound(s_, t)});
+      if (t.per_iteration) watched.push_back({t.measure, Bound(s_, t), t.bound});
     }
     IterationWatch watch(model_, options_.progress, label, watched);
     if (options_.progress || !watched.empty()) {
@@ -425,6 +448,11 @@ class Loop {
       result_.stop = "round undone: " + stage.undo_if_worse + " rose";
     }
     row.invalid = model_.Invalid();
+    const std::string broken = BrokenBounds(plan.active);
+    if (!broken.empty() && row.invalid.empty() && GoalsMet(plan.active)) {
+      RecordNeeds(plan.active);
+    }
+    row.invalid += (row.invalid.empty() || broken.empty() ? "" : "; ") + broken;
     row.valid = row.invalid.empty();
     if (row.valid) {
       last_valid_ = model_.SaveState();
@@ -507,17 +535,63 @@ class Loop {
   }
 
   // An invalid final state gives way to the last valid round after the input.
+  // "key value > bound" for each bound of `active` the current state breaks.
+  std::string BrokenBounds(const std::vector<Tolerance>& active) {
+    std::string broken;
+    for (const Tolerance& t : active) {
+      if (!t.bound || Bound(s_, t) <= 0) continue;
+      const double value = model_.Measure(t.measure);
+      if (value <= Bound(s_, t)) continue;
+      broken += (broken.empty() ? "" : "; ") + t.key + " broken (" + t.measure + " " +
+                Format("%.4g", value) + " > " + Format("%.4g", Bound(s_, t)) + ")";
+    }
+    return broken;
+  }
+
+  // Whether every goal (not a bound) of `active` holds, and there is one.
+  bool GoalsMet(const std::vector<Tolerance>& active) {
+    bool goals = false;
+    for (const Tolerance& t : active) {
+      if (t.bound) continue;
+      goals = true;
+      if (model_.Measure(t.measure) > Bound(s_, t)) return false;
+    }
+    return goals;
+  }
+
+  // The goals hold but bounds break: what the goals needed of each bound.
+  void RecordNeeds(const std::vector<Tolerance>& active) {
+    for (const Tolerance& t : active) {
+      if (!t.bound) continue;
+      const double value = model_.Measure(t.measure);
+      const auto it = result_.bound_needs.find(t.key);
+      if (it == result_.bound_needs.end() || value < it->second) result_.bound_needs[t.key] = value;
+    }
+  }
+
+  // Why the current state cannot be an output: the validity checks and the
+  // bounds of `active` ("" if it can).
+  std::string Rejected(const std::vector<Tolerance>& active) {
+    const std::string invalid = model_.Invalid(), broken = BrokenBounds(active);
+    return invalid + (invalid.empty() || broken.empty() ? "" : "; ") + broken;
+  }
+
+  // A final state that breaks a bound (and is otherwise valid) gives way to
+  // the last round that held it, the input included.
   void KeepLastValid() {
     const Key* keep = s_.schema().Find("validity.keep_last_valid");
-    if (!keep || !s_.Bool("validity.keep_last_valid") || model_.Invalid().empty() ||
-        last_valid_round_ <= 0) {
+    const std::string invalid = model_.Invalid();
+    const bool broken = !BrokenBounds(all_bounds_).empty();
+    if (!keep || !s_.Bool("validity.keep_last_valid") || (invalid.empty() && !broken) ||
+        (last_valid_round_ <= 0 && !(invalid.empty() && broken))) {
       return;
     }
     model_.RestoreState(last_valid_);
     model_.StateChanged();
     result_.output_round = last_valid_round_;
     result_.restored_valid = true;
-    result_.stop += "; the last round was invalid: the output is round " +
+    result_.stop += (invalid.empty() ? "; the last round broke a bound: the output is round "
+                                     : "; the last round was invalid: the output is round ") +
                     std::to_string(last_valid_round_) + ", the last valid one";
   }
 
@@ -528,6 +602,7 @@ class Loop {
   RoundSolver how_;
   const std::vector<Stage> stages_;
   const double time_limit_;
+  std::vector<Tolerance> all_bounds_;  // of every stage
   const Clock::time_point start_ = Clock::now();
   LoopResult result_;
   double scale_ = 1;  // continuation, carried from stage to stage

@@ -109,6 +109,10 @@ struct LoopResult {
   int output_round = 0;                     // the round whose state is the output
   std::string stop;                         // why the last stage ended
   bool stalled = false;                     // a stage ended by its stall rule (patience)
+  // Per bound (Tolerance::bound) key: the lowest value of its measure among
+  // the rounds that met every goal tolerance of their stage but broke the
+  // bound (what the goals needed); absent if no round did.
+  std::map<std::string, double> bound_needs;
   bool restored_valid = false;              // the last round was invalid: the output is
                                             // the last valid round (output_round)
 };

@@ -36,6 +36,11 @@ struct Tolerance {
   bool per_iteration = false;  // also checked after every Ceres iteration: the
                                // solve ends the moment the tolerance holds
   bool stops = true;    // false: it only drives continuation (the stage runs on)
+  // A bound (a constraint, e.g. the deviation from the design surface): it
+  // does not end the stage, but the stage's tolerances are met only while it
+  // holds, and a round that breaks it is rejected like an invalid one (never
+  // the output: keep_best, keep_last_valid and patience skip it).
+  bool bound = false;
 };
 
 class HookContext;  // defined by the problem layer (problems/runtime/model.h)

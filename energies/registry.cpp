@@ -44,6 +44,7 @@
   X(smoothed_dihedral_energy)  \
   X(spring)                    \
   X(step)                      \
+  X(surface_band)              \
   X(tangent_plane)             \
   X(tcd_dirichlet)             \
   X(tcd_prescribed_direction)  \

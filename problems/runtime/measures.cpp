@@ -13,6 +13,8 @@
 #include "geometry/hnet.h"
 #include "analysis/metrics.h"
 #include "analysis/smoothness_metrics.h"
+#include "geometry/reference.h"
+#include "mesh/similarity.h"
 
 namespace archgeo {
 namespace {
@@ -77,6 +79,38 @@ std::map<std::string, double> BoundarySpread(HookContext& c) {
            BoundaryEdgeLengthSpread(c.store->mesh()).max_relative_deviation}};
 }
 
+// The deviation from the design: vertices (and face centroids, when the
+// reference is a surface of its own) against the reference surface
+// (canonical frame), as a fraction of the input's diagonal and in file
+// units. Without a `reference` the design is the input's triangulation,
+// known at the input's vertices: the centroid of a non-planar input quad
+// is off it by about half the quad's warp, a property of the input, not a
+// deviation of the result.
+std::map<std::string, double> SurfaceDistance(HookContext& c) {
+  const Mesh& mesh = c.store->mesh();
+  double worst = 0;
+  const auto add = [&](const Vec3& x) {
+    const Vec3 p = c.reference->Closest(x).point;
+    worst = std::max(worst, std::hypot(x[0] - p[0], x[1] - p[1], x[2] - p[2]));
+  };
+  for (VertexIndex v : mesh.vertices()) add(ToVec3(mesh.point(v)));
+  if (!c.settings->String("reference").empty()) {
+    for (FaceIndex f : mesh.faces()) {
+      Vec3 centroid{0, 0, 0};
+      int n = 0;
+      for (VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+        const Point& p = mesh.point(v);
+        centroid = {centroid[0] + p.x(), centroid[1] + p.y(), centroid[2] + p.z()};
+        ++n;
+      }
+      add({centroid[0] / n, centroid[1] / n, centroid[2] / n});
+    }
+  }
+  const double diagonal = PrincipalBoxDiagonal(*c.input) / c.frame.scale;
+  return {{"surface_distance_relative", diagonal > 0 ? worst / diagonal : 0.0},
+          {"surface_distance", worst * c.frame.scale}};
+}
+
 // The net of the load term (energies/load.cpp): its vertex loads and spring
 // rest lengths are constant blocks, its stiffness a setting.
 std::map<std::string, double> ForceBalance(HookContext& c) {
@@ -115,6 +149,8 @@ const std::map<std::string, MeasureGroup>& Groups() {
       {"edge_length_spread", &EdgeSpread},
       {"boundary_spacing_spread", &BoundarySpread},
       {"force_balance_max", &ForceBalance},
+      {"surface_distance_relative", &SurfaceDistance},
+      {"surface_distance", &SurfaceDistance},
   };
   return groups;
 }

@@ -23,6 +23,12 @@
 //                              (MeasureFaceOffsets; includes non-planarity)
 //   edge_length_spread         max |ℓ/mean − 1| over every edge
 //   boundary_spacing_spread    the same over the boundary edges
+//   surface_distance_relative, the largest distance of a vertex (and, with a
+//   surface_distance           `reference` of its own, a face centroid) from
+//                              the reference surface, over the input's
+//                              bounding-box diagonal (PrincipalBoxDiagonal)
+//                              and in file units (problems/declarations/
+//                              design_band.h)
 //   force_balance_max          largest resultant force at a free vertex of the
 //                              load term's net (vertex loads + the springs of
 //                              every edge), over the mean free-vertex load; 0

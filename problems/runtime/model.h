@@ -74,6 +74,7 @@ class HookContext {
   int level = 0;                      // multiresolution level
   ProgressSink progress;
   MeshModel* model = nullptr;
+  const LoopResult* loop = nullptr;   // the last level's loop, for `finish`
   long version = 0;                   // changes whenever the state (positions, blocks) does
 
   nlohmann::json details = nlohmann::json::object();  // the report's problem entries

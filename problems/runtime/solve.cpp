@@ -272,6 +272,7 @@ std::unique_ptr<Solution> Solve(const ProblemSpec& spec, const Mesh& mesh, const
   solved.iterations = iterations;
   solved.seconds = seconds;
   hooks.RecordChecks(true);
+  hooks.loop = &solved;
   if (solved.usable && d.finish) d.finish(hooks);
   sol->details = hooks.details;
   sol->headline = hooks.headline;

@@ -1,0 +1,158 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "energies/surface_band.h"
+
+#include <glog/logging.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Geometry>
+
+#include "core/term.h"
+
+namespace archgeo {
+
+namespace {
+
+constexpr double kInside = 1 - 1e-12;  // Minus clamps |o| to this × B
+
+}  // namespace
+
+BandManifold::BandManifold(const Eigen::Vector3d& point,
+                           const Eigen::Matrix<double, 3, Eigen::Dynamic>& directions, double bound)
+    : point_(point), d_(directions), bound_(bound) {
+  CHECK(d_.cols() == 1 || d_.cols() == 2) << "BandManifold: one or two directions";
+  CHECK(bound_ > 0 && std::isfinite(bound_)) << "BandManifold: bound must be positive";
+}
+
+Eigen::VectorXd BandManifold::Offset(const double* x) const {
+  return d_.transpose() * (Eigen::Map<const Eigen::Vector3d>(x) - point_);
+}
+
+Eigen::VectorXd BandManifold::ToEta(const Eigen::VectorXd& o) const {
+  const double r = std::min(o.norm(), kInside * bound_);
+  if (r < 1e-300) return o;
+  return (bound_ * std::atanh(r / bound_) / o.norm()) * o;
+}
+
+Eigen::VectorXd BandManifold::ToOffset(const Eigen::VectorXd& eta) const {
+  const double rho = eta.norm();
+  if (rho < 1e-300) return eta;
+  // tanh rounds to 1 for large arguments: keep |o| strictly inside.
+  return (std::min(bound_ * std::tanh(rho / bound_), kInside * bound_) / rho) * eta;
+}
+
+Eigen::MatrixXd BandManifold::Derivative(const Eigen::VectorXd& o, bool inverse) const {
+  const int k = int(o.size());
+  const double r = std::min(o.norm(), kInside * bound_);
+  if (r < 1e-12 * bound_) return Eigen::MatrixXd::Identity(k, k);
+  const Eigen::VectorXd u = o / o.norm();
+  const double radial = 1 - (r / bound_) * (r / bound_);  // d|o|/d|η|
+  const double across = r / (bound_ * std::atanh(r / bound_));  // |o| / |η|
+  const Eigen::MatrixXd uu = u * u.transpose();
+  const Eigen::MatrixXd rest = Eigen::MatrixXd::Identity(k, k) - uu;
+  return inverse ? Eigen::MatrixXd(uu / radial + rest / across)
+                 : Eigen::MatrixXd(radial * uu + across * rest);
+}
+
+bool BandManifold::Plus(const double* x, const double* delta, double* x_plus_delta) const {
+  const Eigen::Map<const Eigen::Vector3d> xv(x), dv(delta);
+  const Eigen::VectorXd o = Offset(x);
+  const Eigen::VectorXd moved = ToOffset(ToEta(o) + d_.transpose() * dv);
+  Eigen::Map<Eigen::Vector3d> out(x_plus_delta);
+  out = xv + (dv - d_ * (d_.transpose() * dv)) + d_ * (moved - o);
+  return true;
+}
+
+bool BandManifold::PlusJacobian(const double* x, double* jacobian) const {
+  const Eigen::Matrix3d j = Eigen::Matrix3d::Identity() - d_ * d_.transpose() +
+                            d_ * Derivative(Offset(x), false) * d_.transpose();
+  Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> out(jacobian);
+  out = j;
+  return true;
+}
+
+bool BandManifold::Minus(const double* y, const double* x, double* y_minus_x) const {
+  const Eigen::Map<const Eigen::Vector3d> yv(y), xv(x);
+  const Eigen::Vector3d diff = yv - xv;
+  Eigen::Map<Eigen::Vector3d> out(y_minus_x);
+  out = diff - d_ * (d_.transpose() * diff) + d_ * (ToEta(Offset(y)) - ToEta(Offset(x)));
+  return true;
+}
+
+bool BandManifold::MinusJacobian(const double* x, double* jacobian) const {
+  const Eigen::Matrix3d j = Eigen::Matrix3d::Identity() - d_ * d_.transpose() +
+                            d_ * Derivative(Offset(x), true) * d_.transpose();
+  Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> out(jacobian);
+  out = j;
+  return true;
+}
+
+double BandBound(double distance, double band, double start) {
+  if (distance < start * band) return start * band;
+  if (distance < band) return 0.5 * (distance + band);
+  return 1.001 * distance;
+}
+
+}  // namespace archgeo
+
+// --- term `surface_band` ---------------------------------------------------------
+
+namespace archgeo::terms {
+namespace {
+
+// Two unit vectors orthogonal to the unit (or zero) tangent t.
+Eigen::Matrix<double, 3, Eigen::Dynamic> Across(const Eigen::Vector3d& t) {
+  Eigen::Matrix<double, 3, Eigen::Dynamic> d(3, 2);
+  const Eigen::Vector3d a = t.norm() > 0 ? t.normalized() : Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d helper =
+      std::abs(a.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  d.col(0) = a.cross(helper).normalized();
+  d.col(1) = a.cross(d.col(0)).normalized();
+  return d;
+}
+
+// The band b of vertex v is the problem's constant block "surface_band"
+// (canonical lengths; ≤ 0: no band there).
+void AddSurfaceBand(TermContext& c, size_t i) {
+  const int v = c.elements->Vertices(i)[0];
+  const double band = c.Block("surface_band", v)[0];
+  if (!(band > 0) || c.Fixed(v)) return;
+  const Eigen::Vector3d p(c.ProjectedPoint(v)), dir(c.ProjectedDirection(v));
+  Eigen::Matrix<double, 3, Eigen::Dynamic> d;
+  if (c.OnBoundaryCurve(v)) {
+    d = Across(dir);
+  } else {
+    if (!(dir.norm() > 0)) return;  // a degenerate reference point: no direction to bound
+    d = dir.normalized();
+  }
+  double* x = c.Position(v);
+  const double distance = (d.transpose() * (Eigen::Map<const Eigen::Vector3d>(x) - p)).norm();
+  c.SetManifold(x, new BandManifold(p, d, BandBound(distance, band, c.Number("start"))));
+}
+
+}  // namespace
+
+const TermSpec& surface_band() {
+  static const TermSpec spec = [] {
+    TermSpec t;
+    t.name = "surface_band";
+    t.summary =
+        "constraint: every vertex within the deviation band of the reference surface "
+        "(tolerance.surface_distance_max; a bounded manifold, no residual), re-projected "
+        "every round (on while its weight is > 0)";
+    t.paper = "[archgeo: the design deviation as a hard bound]";
+    t.elements = "vertices";
+    t.needs_projection = true;
+    t.reads = {"surface_band"};
+    t.options = {NumberKey("start", 0.95, 0.01, 1,
+                           "within a round a vertex may go this fraction of the band from the "
+                           "reference's tangent plane (the rest absorbs its curvature)")};
+    t.add = &AddSurfaceBand;
+    return t;
+  }();
+  return spec;
+}
+
+}  // namespace archgeo::terms

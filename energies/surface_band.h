@@ -1,0 +1,82 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Surface band: every vertex stays within a distance b of the design
+// (reference) surface — a constraint, not a penalty: the term adds no
+// residual; it makes each vertex's position a point of a bounded manifold
+// (ceres::Manifold) that cannot leave the band, whatever step the solver
+// takes:
+//
+//   x = p + (I − D Dᵀ) e + D o,   o = B tanh(|η| / B) η / |η|,   |o| < B
+//
+//   [archgeo; the façade brief's "deviation from the design surface" as a
+//    hard bound: Zadravec 2010 §6 and Pellis 2019 §5.1 keep the mesh close
+//    to the reference by penalties only, which bound nothing]
+//
+// p is the closest reference point π(v) at the start of the round; D holds
+// the constrained unit directions: the reference normal n (an interior
+// vertex: o is the signed distance from the tangent plane, |o| < B) or, for
+// a vertex on the reference's boundary curve with tangent t, two unit
+// vectors orthogonal to t (o is the offset from the tangent line, |o| < B:
+// off the surface and across the boundary alike). The tangential part e is
+// free. The solver steps in (e, η): η ∈ ℝᵏ is unbounded and o its radial
+// squashing, so |o| → B only as |η| → ∞. The tangent-space step δ ∈ ℝ³ maps
+// as e ← e + (I − D Dᵀ) δ, η ← η + Dᵀ δ.
+//
+// B = s·b for a vertex within s·b at the start of the round (s =
+// terms.surface_band.start, default 0.95: the rest of the band absorbs the
+// curvature the linearisation misses); a vertex farther out (the reference
+// re-projected, or an input beyond the band) gets B halfway to b, or, beyond
+// b, B = 1.001 |o|: it cannot go farther out, and comes back as the goals
+// allow. The loop then measures the exact distance of every vertex and face
+// centroid (problems/declarations/design_band.h) and never outputs a round
+// beyond b.
+//
+// Units: lengths in the canonical frame; η in lengths, so the Jacobian of
+// Plus is I at o = 0 (the band is invisible to the solver far from its
+// edge). Singular configurations: o = 0 (the radial direction is undefined;
+// the maps are the identity to first order there, handled by the limit);
+// |o| ≥ B is outside the manifold (Minus clamps it just inside). Invariances:
+// rigid motions applied to x, p and D; uniform scaling of x, p and B.
+#ifndef ARCHGEO_ENERGIES_SURFACE_BAND_H_
+#define ARCHGEO_ENERGIES_SURFACE_BAND_H_
+
+#include <ceres/manifold.h>
+
+#include <Eigen/Core>
+
+namespace archgeo {
+
+class BandManifold : public ceres::Manifold {
+ public:
+  // point: p; directions: k = 1 or 2 orthonormal columns (D); bound: B > 0.
+  BandManifold(const Eigen::Vector3d& point, const Eigen::Matrix<double, 3, Eigen::Dynamic>& directions,
+               double bound);
+
+  int AmbientSize() const override { return 3; }
+  int TangentSize() const override { return 3; }
+  bool Plus(const double* x, const double* delta, double* x_plus_delta) const override;
+  bool PlusJacobian(const double* x, double* jacobian) const override;
+  bool Minus(const double* y, const double* x, double* y_minus_x) const override;
+  bool MinusJacobian(const double* x, double* jacobian) const override;
+
+  // The constrained offset o = Dᵀ(x − p) of a position.
+  Eigen::VectorXd Offset(const double* x) const;
+
+ private:
+  Eigen::VectorXd ToEta(const Eigen::VectorXd& o) const;  // inverse squashing
+  Eigen::VectorXd ToOffset(const Eigen::VectorXd& eta) const;
+  // ∂o/∂η at the offset o (k × k), or its inverse.
+  Eigen::MatrixXd Derivative(const Eigen::VectorXd& o, bool inverse) const;
+
+  Eigen::Vector3d point_;
+  Eigen::Matrix<double, 3, Eigen::Dynamic> d_;
+  double bound_;
+};
+
+// The in-round bound B of a vertex at offset distance `distance` from its
+// reference point, for the band b and the start fraction s (see above).
+double BandBound(double distance, double band, double start);
+
+}  // namespace archgeo
+
+#endif  // ARCHGEO_ENERGIES_SURFACE_BAND_H_

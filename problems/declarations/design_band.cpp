@@ -1,0 +1,138 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "problems/declarations/design_band.h"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "geometry/reference.h"
+#include "mesh/similarity.h"
+#include "problems/runtime/model.h"
+
+namespace archgeo {
+namespace {
+
+constexpr double kStart = 0.9;  // "at the band": beyond this fraction of it
+
+// The band in canonical lengths (input mean edge lengths); 0 = none.
+double CanonicalBand(const HookContext& c) {
+  const Settings& s = *c.settings;
+  const double absolute = s.Number("tolerance.surface_distance");
+  if (absolute > 0) return absolute / c.frame.scale;
+  return s.Number("tolerance.surface_distance_max") * PrincipalBoxDiagonal(*c.input) /
+         c.frame.scale;
+}
+
+// The bound as the loop tests it: in file units when given so, else relative.
+Tolerance BandTolerance(const Settings& s) {
+  Tolerance t;
+  const bool absolute = s.Number("tolerance.surface_distance") > 0;
+  t.measure = absolute ? "surface_distance" : "surface_distance_relative";
+  t.key = absolute ? "tolerance.surface_distance" : "tolerance.surface_distance_max";
+  t.per_iteration = true;
+  t.stops = false;
+  t.bound = true;
+  return t;
+}
+
+std::string Percent(double fraction) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g%%", 100 * fraction);
+  return text;
+}
+
+// details.surface_band and, when it binds, a headline line.
+void Report(HookContext& c) {
+  const double band = CanonicalBand(c);
+  if (!(band > 0) || c.loop == nullptr) return;
+  const double diagonal = PrincipalBoxDiagonal(*c.input) / c.frame.scale;
+  const Mesh& mesh = c.store->mesh();
+  int at_band = 0;
+  for (VertexIndex v : mesh.vertices()) {
+    const Vec3 x = ToVec3(mesh.point(v));
+    const Vec3 p = c.reference->Closest(x).point;
+    if (std::hypot(x[0] - p[0], x[1] - p[1], x[2] - p[2]) >= kStart * band) ++at_band;
+  }
+  const double deviation = c.Measure("surface_distance_relative");
+  const Tolerance t = BandTolerance(*c.settings);
+  bool goals_met = true;
+  for (const auto& [key, met] : c.loop->tolerances) goals_met = goals_met && (met || key == t.key);
+  const bool binds = !goals_met && at_band > 0;
+  nlohmann::json j = {{"band_relative", band / diagonal},
+                      {"band", band * c.frame.scale},
+                      {"deviation_relative", deviation},
+                      {"deviation", c.Measure("surface_distance")},
+                      {"vertices_at_band", at_band},
+                      {"binds", binds}};
+  const auto need = c.loop->bound_needs.find(t.key);
+  if (need != c.loop->bound_needs.end()) {
+    const double relative = t.measure == "surface_distance" ? need->second / c.frame.scale / diagonal
+                                                            : need->second;
+    j["goals_needed_relative"] = relative;
+  }
+  c.details["surface_band"] = j;
+  if (!binds) return;
+  std::string line = "BAND BINDS: the goals were missed with " + std::to_string(at_band) +
+                     " vertices at the deviation band (" + Percent(band / diagonal) +
+                     " of the diagonal)";
+  if (j.contains("goals_needed_relative")) {
+    line += "; a round met them at a deviation of " +
+            Percent(j["goals_needed_relative"].get<double>());
+  }
+  c.headline += line + ". Raise tolerance.surface_distance_max to trade deviation for them.\n";
+}
+
+}  // namespace
+
+ProblemDecl WithDesignBand(ProblemDecl d, double relative) {
+  // Beside the problem's other tolerance keys (a template writes each
+  // section once).
+  auto at = d.keys.begin();
+  for (auto k = d.keys.begin(); k != d.keys.end(); ++k) {
+    if (k->name.rfind("tolerance.", 0) == 0) at = k + 1;
+  }
+  std::vector<Key> band;
+  band.push_back(NumberKey(
+      "tolerance.surface_distance_max", relative, 0, 1,
+      "deviation band: every vertex (and face centroid, when `reference` is a surface of "
+      "its own) stays within this fraction of the input's bounding-box diagonal from the "
+      "reference surface (each vertex on a bounded manifold while solving; a round beyond "
+      "it is never the output; docs/methods/design_band.md); 0 = none"));
+  band.push_back(NumberKey("tolerance.surface_distance", 0, 0, 1e300,
+                           "the deviation band in file units; > 0 replaces "
+                           "tolerance.surface_distance_max"));
+  d.keys.insert(at, band.begin(), band.end());
+  d.blocks.push_back({"surface_band", Site::kVertex, 1, FrameMap::kLength, false,
+                      Carry::kReinitialise, false, true,
+                      "the deviation band at the vertex (surface_band term)"});
+  d.terms.push_back({"surface_band", 1000, {}, "", true});
+  Hook init = d.init;
+  d.init = [init](HookContext& c) {
+    const double band = CanonicalBand(c);
+    for (VertexIndex v : c.store->mesh().vertices()) c.store->At("surface_band", int(v.idx()))[0] = band;
+    if (init) init(c);
+  };
+  auto stages = d.stages;
+  d.stages = [stages](const Settings& s) {
+    std::vector<Stage> all = stages(s);
+    const Tolerance t = BandTolerance(s);
+    if (!(s.Number(t.key) > 0)) return all;
+    for (Stage& stage : all) {
+      stage.tolerances.push_back(t);
+      if (!stage.terms.empty()) stage.terms.push_back("surface_band");
+      stage.logged.push_back(t.measure);
+    }
+    return all;
+  };
+  Hook finish = d.finish;
+  d.finish = [finish](HookContext& c) {
+    if (finish) finish(c);
+    Report(c);
+  };
+  return d;
+}
+
+}  // namespace archgeo

@@ -1,0 +1,36 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// archgeo — the deviation band: how far the result may leave the design
+// (reference) surface, enforced by the loop.
+//
+// A façade brief names two numbers: panel flatness and the deviation from
+// the architect's surface. A problem that moves vertices near a design gets
+//   tolerance.surface_distance_max  the band b as a fraction of the input's
+//                                   bounding-box diagonal (default per problem)
+//   tolerance.surface_distance      the band in file units (> 0: replaces it)
+// and three mechanisms:
+//   - the term surface_band (energies/surface_band.h), implicit: within a
+//     round every vertex lies on a bounded manifold around its closest
+//     reference point and cannot leave the band along the reference normal
+//     (on the boundary curve: away from its tangent line), whatever step
+//     the solver takes;
+//   - a bound on the measure surface_distance_relative (surface_distance),
+//     the exact distance of every vertex (and face centroid, with a
+//     `reference` of its own) from the reference: a round beyond it is
+//     rejected like an invalid one (core/problem.h Tolerance::bound), so
+//     the output never leaves the band; a solve ends early only when the
+//     goals and the bound hold;
+//   - the report's details.surface_band: the band, the output's deviation,
+//     how many vertices sit at the band (≥ 0.9 b), and whether it binds (the
+//     goals missed with vertices at the band), with the deviation a round
+//     that met the goals needed, if one did.
+#pragma once
+
+#include "core/problem.h"
+
+namespace archgeo {
+
+// `d` with the band (default `relative` of the diagonal; 0 = off unless set).
+ProblemDecl WithDesignBand(ProblemDecl d, double relative);
+
+}  // namespace archgeo

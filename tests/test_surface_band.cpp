@@ -1,0 +1,145 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The deviation band (problems/declarations/design_band.h): the bounded
+// manifold of energies/surface_band.h (never outside, Plus/Minus inverse,
+// Jacobians against differences) and planar_quads on a noisy roof whose
+// planarisation needs about 0.75% of the diagonal: at a 0.3% band it ends
+// exit 4 (missed) with the band held; at 0.5% it meets the tolerance inside
+// the band (the band shapes the result); at 1% it is not in the way.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "analysis/metrics.h"
+#include "energies/surface_band.h"
+#include "generators/generators.h"
+#include "mesh/similarity.h"
+#include "problems/runtime/solve.h"
+
+namespace archgeo {
+namespace ARCHGEO_UNITY_ID {
+
+using Directions = Eigen::Matrix<double, 3, Eigen::Dynamic>;
+
+Directions Normal() { return Eigen::Vector3d(0.6, 0.0, 0.8); }
+Directions Across() {
+  Directions d(3, 2);
+  d.col(0) = Eigen::Vector3d(1, 0, 0);
+  d.col(1) = Eigen::Vector3d(0, 0.6, 0.8);
+  return d;
+}
+
+Eigen::Vector3d Plus(const BandManifold& m, const Eigen::Vector3d& x, const Eigen::Vector3d& d) {
+  Eigen::Vector3d y;
+  m.Plus(x.data(), d.data(), y.data());
+  return y;
+}
+
+TEST(SurfaceBand, NoStepLeavesTheBand) {
+  const Eigen::Vector3d p(1, 2, 3);
+  std::mt19937 rng(7);
+  std::normal_distribution<double> g(0, 1);
+  for (const Directions& d : {Normal(), Across()}) {
+    const BandManifold m(p, d, 0.2);
+    Eigen::Vector3d x = p + Eigen::Vector3d(0.05, -0.03, 0.1);
+    for (int k = 0; k < 200; ++k) {
+      const Eigen::Vector3d step(g(rng) * 10, g(rng) * 10, g(rng) * 10);
+      x = Plus(m, x, step);
+      ASSERT_LT(m.Offset(x.data()).norm(), 0.2) << "step " << k;
+    }
+  }
+}
+
+TEST(SurfaceBand, TangentialStepsAreFreeAndSmallStepsLinear) {
+  const Eigen::Vector3d p(0, 0, 0);
+  const BandManifold m(p, Normal(), 0.2);
+  const Eigen::Vector3d x(0.3, 1.0, 0.0);  // on the plane: offset 0.18 of 0.2
+  const Eigen::Vector3d tangent(0, 5, 0);   // orthogonal to n
+  EXPECT_NEAR((Plus(m, x, tangent) - (x + tangent)).norm(), 0, 1e-12);
+  // Far from the edge (o = 0) the map is the identity to first order.
+  const Eigen::Vector3d centre(0, 1, 0), tiny(1e-7, 2e-7, -1e-7);
+  EXPECT_NEAR((Plus(m, centre, tiny) - (centre + tiny)).norm(), 0, 1e-16);
+}
+
+TEST(SurfaceBand, JacobiansMatchDifferencesAndMinusInvertsPlus) {
+  const Eigen::Vector3d p(0.1, -0.2, 0.3);
+  for (const Directions& d : {Normal(), Across()}) {
+    const BandManifold m(p, d, 0.25);
+    for (const Eigen::Vector3d& x : {Eigen::Vector3d(p + Eigen::Vector3d(0.1, 0.05, 0.12)),
+                                     Eigen::Vector3d(p + Eigen::Vector3d(0.0, 0.3, 0.0))}) {
+      double plus[9], minus[9];
+      m.PlusJacobian(x.data(), plus);
+      m.MinusJacobian(x.data(), minus);
+      const Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> jp(plus), jm(minus);
+      const double h = 1e-6;
+      for (int c = 0; c < 3; ++c) {
+        const Eigen::Vector3d e = h * Eigen::Vector3d::Unit(c);
+        const Eigen::Vector3d numeric = (Plus(m, x, e) - Plus(m, x, -e)) / (2 * h);
+        EXPECT_NEAR((numeric - jp.col(c)).norm(), 0, 1e-7);
+      }
+      EXPECT_NEAR((jm * jp - Eigen::Matrix3d::Identity()).norm(), 0, 1e-9);
+      const Eigen::Vector3d delta(0.3, -0.7, 0.4);
+      const Eigen::Vector3d y = Plus(m, x, delta);
+      Eigen::Vector3d back;
+      m.Minus(y.data(), x.data(), back.data());
+      EXPECT_NEAR((back - delta).norm(), 0, 1e-9);
+    }
+  }
+}
+
+TEST(SurfaceBand, InRoundBound) {
+  EXPECT_DOUBLE_EQ(BandBound(0.1, 1, 0.95), 0.95);   // inside: s·b
+  EXPECT_DOUBLE_EQ(BandBound(0.97, 1, 0.95), 0.985);  // beyond s·b: halfway to b
+  EXPECT_DOUBLE_EQ(BandBound(2, 1, 0.95), 2.002);     // beyond b: no farther out
+}
+
+// A noisy roof (12 × 10 quads, noise 0.15 mean edges) in its canonical
+// frame; planar_quads with the band `band` against the roof itself.
+struct BandRun {
+  std::unique_ptr<Solution> solution;
+  double deviation = 0;  // of the output, analysis/metrics.h, / the diagonal
+};
+
+BandRun Roof(double band) {
+  Mesh roof = QuadGrid(12, 10, RoofSurface, 0.15, 1);
+  const Mesh original = roof;
+  const ProblemSpec spec = ParseSpec("problem: planar_quads\ntolerance: {surface_distance_max: " +
+                                     std::to_string(band) + "}\n");
+  BandRun r;
+  r.solution = Solve(spec, roof, &original, {});
+  const ReferenceSurface reference(original);
+  const Metrics m = ComputeMetrics(r.solution->output, &reference, &original);
+  r.deviation = m.surface_distance_max / PrincipalBoxDiagonal(original);
+  return r;
+}
+
+bool PlanarityMet(const BandRun& r) {
+  return r.solution->loop.tolerances.at("tolerance.pq_normalized_max");
+}
+
+TEST(SurfaceBand, PlanarQuadsHoldsTheBand) {
+  // Unbounded, the planarisation moves the roof about 0.75% of its diagonal.
+  const BandRun unbounded = Roof(0);
+  ASSERT_TRUE(PlanarityMet(unbounded));
+  ASSERT_GT(unbounded.deviation, 0.006);
+
+  const BandRun tight = Roof(0.003);  // missed: exit 4, the band held
+  EXPECT_FALSE(PlanarityMet(tight));
+  EXPECT_TRUE(tight.solution->loop.tolerances.at("tolerance.surface_distance_max"));
+  EXPECT_LE(tight.deviation, 0.003 + 1e-9);
+  EXPECT_GE(tight.deviation, 0.9 * 0.003);  // at the band: it binds
+  EXPECT_TRUE(tight.solution->details.at("surface_band").at("binds").get<bool>());
+
+  const BandRun within = Roof(0.005);  // met inside the band
+  EXPECT_TRUE(PlanarityMet(within));
+  EXPECT_LE(within.deviation, 0.005 + 1e-9);
+
+  const BandRun loose = Roof(0.01);
+  EXPECT_TRUE(PlanarityMet(loose));
+  EXPECT_LE(loose.deviation, 0.01);
+  EXPECT_FALSE(loose.solution->details.at("surface_band").at("binds").get<bool>());
+}
+
+}  // namespace ARCHGEO_UNITY_ID
+}  // namespace archgeo
