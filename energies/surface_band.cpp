@@ -22,7 +22,7 @@ constexpr double kInside = 1 - 1e-12;  // Minus clamps |o| to this × B
 BandManifold::BandManifold(const Eigen::Vector3d& point,
                            const Eigen::Matrix<double, 3, Eigen::Dynamic>& directions, double bound)
     : point_(point), d_(directions), bound_(bound) {
-  CHECK(d_.cols() == 1 || d_.cols() == 2) << "BandManifold: one or two directions";
+  CHECK(d_.cols() >= 1 && d_.cols() <= 3) << "BandManifold: one to three directions";
   CHECK(bound_ > 0 && std::isfinite(bound_)) << "BandManifold: bound must be positive";
 }
 
@@ -102,17 +102,6 @@ double BandBound(double distance, double band, double start) {
 namespace archgeo::terms {
 namespace {
 
-// Two unit vectors orthogonal to the unit (or zero) tangent t.
-Eigen::Matrix<double, 3, Eigen::Dynamic> Across(const Eigen::Vector3d& t) {
-  Eigen::Matrix<double, 3, Eigen::Dynamic> d(3, 2);
-  const Eigen::Vector3d a = t.norm() > 0 ? t.normalized() : Eigen::Vector3d::UnitZ();
-  const Eigen::Vector3d helper =
-      std::abs(a.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
-  d.col(0) = a.cross(helper).normalized();
-  d.col(1) = a.cross(d.col(0)).normalized();
-  return d;
-}
-
 // The band b of vertex v is the problem's constant block "surface_band"
 // (canonical lengths; ≤ 0: no band there).
 void AddSurfaceBand(TermContext& c, size_t i) {
@@ -120,10 +109,10 @@ void AddSurfaceBand(TermContext& c, size_t i) {
   const double band = c.Block("surface_band", v)[0];
   if (!(band > 0) || c.Fixed(v)) return;
   const Eigen::Vector3d p(c.ProjectedPoint(v)), dir(c.ProjectedDirection(v));
-  Eigen::Matrix<double, 3, Eigen::Dynamic> d;
-  if (c.OnBoundaryCurve(v)) {
-    d = Across(dir);
-  } else {
+  // On the reference's boundary curve: a ball around the curve point (its
+  // tangent line leaves the surface at a corner of the boundary).
+  Eigen::Matrix<double, 3, Eigen::Dynamic> d = Eigen::Matrix3d::Identity();
+  if (!c.OnBoundaryCurve(v)) {
     if (!(dir.norm() > 0)) return;  // a degenerate reference point: no direction to bound
     d = dir.normalized();
   }

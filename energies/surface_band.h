@@ -14,13 +14,13 @@
 //
 // p is the closest reference point π(v) at the start of the round; D holds
 // the constrained unit directions: the reference normal n (an interior
-// vertex: o is the signed distance from the tangent plane, |o| < B) or, for
-// a vertex on the reference's boundary curve with tangent t, two unit
-// vectors orthogonal to t (o is the offset from the tangent line, |o| < B:
-// off the surface and across the boundary alike). The tangential part e is
-// free. The solver steps in (e, η): η ∈ ℝᵏ is unbounded and o its radial
-// squashing, so |o| → B only as |η| → ∞. The tangent-space step δ ∈ ℝ³ maps
-// as e ← e + (I − D Dᵀ) δ, η ← η + Dᵀ δ.
+// vertex: o is the signed distance from the tangent plane, |o| < B, and the
+// tangential part e is free) or, for a vertex on the reference's boundary
+// curve, all three axes (o = x − p, |o| < B: a ball around the closest curve
+// point, since the curve's tangent line leaves the surface where the
+// boundary turns). The solver steps in (e, η): η ∈ ℝᵏ is unbounded and o
+// its radial squashing, so |o| → B only as |η| → ∞. The tangent-space step
+// δ ∈ ℝ³ maps as e ← e + (I − D Dᵀ) δ, η ← η + Dᵀ δ.
 //
 // B = s·b for a vertex within s·b at the start of the round (s =
 // terms.surface_band.start, default 0.95: the rest of the band absorbs the
@@ -48,7 +48,7 @@ namespace archgeo {
 
 class BandManifold : public ceres::Manifold {
  public:
-  // point: p; directions: k = 1 or 2 orthonormal columns (D); bound: B > 0.
+  // point: p; directions: k = 1 to 3 orthonormal columns (D); bound: B > 0.
   BandManifold(const Eigen::Vector3d& point, const Eigen::Matrix<double, 3, Eigen::Dynamic>& directions,
                double bound);
 

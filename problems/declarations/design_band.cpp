@@ -44,6 +44,29 @@ std::string Percent(double fraction) {
   return text;
 }
 
+// After a round: a vertex the tangent-plane model let past the band (the
+// surface curves away under it) is put back on the band's edge, towards its
+// closest reference point; returns how many. The overshoot is a fraction of
+// the band (the manifold holds 0.95 b in the model), so the panels it
+// touches stay as planar as the next round needs.
+int ClampToBand(HookContext& c) {
+  const double band = CanonicalBand(c);
+  if (!(band > 0)) return 0;
+  Mesh& mesh = c.store->mesh();
+  int clamped = 0;
+  for (VertexIndex v : mesh.vertices()) {
+    if (c.fixed[v.idx()]) continue;
+    const Vec3 x = ToVec3(mesh.point(v));
+    const Vec3 p = c.reference->Closest(x).point;
+    const double d = std::hypot(x[0] - p[0], x[1] - p[1], x[2] - p[2]);
+    if (d <= band) continue;
+    const double t = (1 - 1e-9) * band / d;
+    mesh.point(v) = Point(p[0] + t * (x[0] - p[0]), p[1] + t * (x[1] - p[1]), p[2] + t * (x[2] - p[2]));
+    ++clamped;
+  }
+  return clamped;
+}
+
 // details.surface_band and, when it binds, a headline line.
 void Report(HookContext& c) {
   const double band = CanonicalBand(c);
@@ -124,6 +147,11 @@ ProblemDecl WithDesignBand(ProblemDecl d, double relative) {
       stage.tolerances.push_back(t);
       if (!stage.terms.empty()) stage.terms.push_back("surface_band");
       stage.logged.push_back(t.measure);
+      Hook after = stage.after_round;
+      stage.after_round = [after](HookContext& c) {
+        if (after) after(c);
+        ClampToBand(c);
+      };
     }
     return all;
   };

@@ -12,8 +12,11 @@
 //   - the term surface_band (energies/surface_band.h), implicit: within a
 //     round every vertex lies on a bounded manifold around its closest
 //     reference point and cannot leave the band along the reference normal
-//     (on the boundary curve: away from its tangent line), whatever step
+//     (on the boundary curve: a ball around the curve point), whatever step
 //     the solver takes;
+//   - after every round, a vertex the tangent-plane model let past the band
+//     (where the surface curves away under it) is put back on the band's
+//     edge towards its closest reference point;
 //   - a bound on the measure surface_distance_relative (surface_distance),
 //     the exact distance of every vertex (and face centroid, with a
 //     `reference` of its own) from the reference: a round beyond it is
