@@ -30,26 +30,42 @@ Eigen::VectorXd BandManifold::Offset(const double* x) const {
   return d_.transpose() * (Eigen::Map<const Eigen::Vector3d>(x) - point_);
 }
 
+// The radial map |η| → |o|: the identity up to a = B/2, then a smooth
+// saturation to B (C¹ at a): s(ρ) = a + (B − a) tanh((ρ − a)/(B − a)).
+double BandManifold::Radius(double rho) const {
+  const double a = 0.5 * bound_, w = bound_ - a;
+  if (rho <= a) return rho;
+  // tanh rounds to 1 for large arguments: keep |o| strictly inside.
+  return std::min(a + w * std::tanh((rho - a) / w), kInside * bound_);
+}
+
+double BandManifold::Rho(double radius) const {
+  const double a = 0.5 * bound_, w = bound_ - a;
+  const double r = std::min(radius, kInside * bound_);
+  return r <= a ? r : a + w * std::atanh((r - a) / w);
+}
+
 Eigen::VectorXd BandManifold::ToEta(const Eigen::VectorXd& o) const {
-  const double r = std::min(o.norm(), kInside * bound_);
-  if (r < 1e-300) return o;
-  return (bound_ * std::atanh(r / bound_) / o.norm()) * o;
+  const double r = o.norm();
+  if (r <= 0.5 * bound_) return o;
+  return (Rho(r) / r) * o;
 }
 
 Eigen::VectorXd BandManifold::ToOffset(const Eigen::VectorXd& eta) const {
   const double rho = eta.norm();
-  if (rho < 1e-300) return eta;
-  // tanh rounds to 1 for large arguments: keep |o| strictly inside.
-  return (std::min(bound_ * std::tanh(rho / bound_), kInside * bound_) / rho) * eta;
+  if (rho <= 0.5 * bound_) return eta;
+  return (Radius(rho) / rho) * eta;
 }
 
 Eigen::MatrixXd BandManifold::Derivative(const Eigen::VectorXd& o, bool inverse) const {
   const int k = int(o.size());
+  const double a = 0.5 * bound_, w = bound_ - a;
   const double r = std::min(o.norm(), kInside * bound_);
-  if (r < 1e-12 * bound_) return Eigen::MatrixXd::Identity(k, k);
+  if (r <= a) return Eigen::MatrixXd::Identity(k, k);
   const Eigen::VectorXd u = o / o.norm();
-  const double radial = 1 - (r / bound_) * (r / bound_);  // d|o|/d|η|
-  const double across = r / (bound_ * std::atanh(r / bound_));  // |o| / |η|
+  const double t = (r - a) / w;
+  const double radial = 1 - t * t;    // d|o|/d|η|
+  const double across = r / Rho(r);   // |o| / |η|
   const Eigen::MatrixXd uu = u * u.transpose();
   const Eigen::MatrixXd rest = Eigen::MatrixXd::Identity(k, k) - uu;
   return inverse ? Eigen::MatrixXd(uu / radial + rest / across)

@@ -6,7 +6,8 @@
 // (ceres::Manifold) that cannot leave the band, whatever step the solver
 // takes:
 //
-//   x = p + (I − D Dᵀ) e + D o,   o = B tanh(|η| / B) η / |η|,   |o| < B
+//   x = p + (I − D Dᵀ) e + D o,   o = s(|η|) η / |η|,   |o| < B
+//   s(ρ) = ρ (ρ ≤ a = B/2),   a + (B − a) tanh((ρ − a)/(B − a)) beyond
 //
 //   [archgeo; the façade brief's "deviation from the design surface" as a
 //    hard bound: Zadravec 2010 §6 and Pellis 2019 §5.1 keep the mesh close
@@ -19,7 +20,8 @@
 // curve, all three axes (o = x − p, |o| < B: a ball around the closest curve
 // point, since the curve's tangent line leaves the surface where the
 // boundary turns). The solver steps in (e, η): η ∈ ℝᵏ is unbounded and o
-// its radial squashing, so |o| → B only as |η| → ∞. The tangent-space step
+// its radial squashing s, so |o| → B only as |η| → ∞; within B/2, s is the
+// identity (the solver sees no band there). The tangent-space step
 // δ ∈ ℝ³ maps as e ← e + (I − D Dᵀ) δ, η ← η + Dᵀ δ.
 //
 // B = s·b for a vertex within s·b at the start of the round (s =
@@ -27,15 +29,13 @@
 // curvature the linearisation misses); a vertex farther out (the reference
 // re-projected, or an input beyond the band) gets B halfway to b, or, beyond
 // b, B = 1.001 |o|: it cannot go farther out, and comes back as the goals
-// allow. The loop then measures the exact distance of every vertex and face
-// centroid (problems/declarations/design_band.h) and never outputs a round
-// beyond b.
+// allow. After the round a vertex beyond b is put back on the band, and the
+// loop measures the exact distance of every vertex (and face centroid)
+// (problems/declarations/design_band.h) and never outputs a round beyond b.
 //
 // Units: lengths in the canonical frame; η in lengths, so the Jacobian of
-// Plus is I at o = 0 (the band is invisible to the solver far from its
-// edge). Singular configurations: o = 0 (the radial direction is undefined;
-// the maps are the identity to first order there, handled by the limit);
-// |o| ≥ B is outside the manifold (Minus clamps it just inside). Invariances:
+// Plus is I for |o| ≤ B/2. Singular configurations: none inside B/2 (the
+// maps are the identity there); |o| ≥ B is outside the manifold (Minus clamps it just inside). Invariances:
 // rigid motions applied to x, p and D; uniform scaling of x, p and B.
 #ifndef ARCHGEO_ENERGIES_SURFACE_BAND_H_
 #define ARCHGEO_ENERGIES_SURFACE_BAND_H_
@@ -63,6 +63,8 @@ class BandManifold : public ceres::Manifold {
   Eigen::VectorXd Offset(const double* x) const;
 
  private:
+  double Radius(double rho) const;  // |o| of |η|
+  double Rho(double radius) const;  // its inverse
   Eigen::VectorXd ToEta(const Eigen::VectorXd& o) const;  // inverse squashing
   Eigen::VectorXd ToOffset(const Eigen::VectorXd& eta) const;
   // ∂o/∂η at the offset o (k × k), or its inverse.

@@ -86,7 +86,10 @@ TEST_F(InputDefects, ABowTieQuadIsNamedAndTheRunIsNotExitZero) {
 // (no round is rejected for the dart it inherited) and the output keeps the
 // dart: exit 5 with the tolerance met, not exit 3.
 TEST_F(InputDefects, ATwistedGridWithADartIsPlanarisedAndStillNamed) {
-  const RunResult run = Solve(Grid("twisted_dart", 0.02, 0.8, 0.8));
+  // Planarising the twist moves the grid 2.4% of its diagonal: a band that
+  // allows it (the default 1.5% binds: δ_PQ,n 5e-3, exit 4 and 5).
+  const RunResult run =
+      Solve(Grid("twisted_dart", 0.02, 0.8, 0.8), {"tolerance.surface_distance_max=0.03"});
   EXPECT_EQ(run.exit_code, 5) << run.summary;
   EXPECT_TRUE(run.report["tolerances"]["tolerance.pq_normalized_max"]["met"].get<bool>())
       << run.summary;

@@ -18,6 +18,7 @@
 #include "core/input_error.h"
 #include "geometry/reference.h"
 #include "mesh/similarity.h"
+#include "problems/declarations/design_band.h"
 #include "problems/runtime/model.h"
 #include "problems/spec/selection.h"
 
@@ -230,7 +231,8 @@ ProblemDecl CustomProblem(const CustomValue* terms, const std::string& file) {
       }
     }
   };
-  return d;
+  // The deviation band, off unless the spec sets it (design_band.h).
+  return WithDesignBand(std::move(d), 0);
 }
 
 ProblemDecl CustomExample() {

@@ -15,7 +15,9 @@
 namespace archgeo {
 namespace {
 
-constexpr double kStart = 0.9;  // "at the band": beyond this fraction of it
+// "At the band": beyond this fraction of it (the manifold holds 0.95 of it
+// from the tangent plane, which the surface may curve towards).
+constexpr double kAtBand = 0.8;
 
 // The band in canonical lengths (input mean edge lengths); 0 = none.
 double CanonicalBand(const HookContext& c) {
@@ -77,7 +79,7 @@ void Report(HookContext& c) {
   for (VertexIndex v : mesh.vertices()) {
     const Vec3 x = ToVec3(mesh.point(v));
     const Vec3 p = c.reference->Closest(x).point;
-    if (std::hypot(x[0] - p[0], x[1] - p[1], x[2] - p[2]) >= kStart * band) ++at_band;
+    if (std::hypot(x[0] - p[0], x[1] - p[1], x[2] - p[2]) >= kAtBand * band) ++at_band;
   }
   const double deviation = c.Measure("surface_distance_relative");
   const Tolerance t = BandTolerance(*c.settings);
@@ -131,7 +133,9 @@ ProblemDecl WithDesignBand(ProblemDecl d, double relative) {
   d.blocks.push_back({"surface_band", Site::kVertex, 1, FrameMap::kLength, false,
                       Carry::kReinitialise, false, true,
                       "the deviation band at the vertex (surface_band term)"});
-  d.terms.push_back({"surface_band", 1000, {}, "", true});
+  bool listed = false;  // a custom problem may list the term itself
+  for (const TermUse& use : d.terms) listed = listed || use.term == "surface_band";
+  if (!listed) d.terms.push_back({"surface_band", 1000, {}, "", true});
   Hook init = d.init;
   d.init = [init](HookContext& c) {
     const double band = CanonicalBand(c);

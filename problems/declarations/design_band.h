@@ -24,7 +24,7 @@
 //     the output never leaves the band; a solve ends early only when the
 //     goals and the bound hold;
 //   - the report's details.surface_band: the band, the output's deviation,
-//     how many vertices sit at the band (≥ 0.9 b), and whether it binds (the
+//     how many vertices sit at the band (≥ 0.8 b), and whether it binds (the
 //     goals missed with vertices at the band), with the deviation a round
 //     that met the goals needed, if one did.
 #pragma once
