@@ -61,6 +61,7 @@
 #include "core/problem.h"
 #include "geometry/hnet.h"
 #include "geometry/patchwork_io.h"
+#include "problems/declarations/design_band.h"
 #include "problems/declarations/hnet_net.h"
 #include "problems/runtime/model.h"
 #include "problems/declarations/suitability.h"
@@ -292,7 +293,9 @@ ProblemDecl hnet() {
   d.write = &Write;
   d.analyses = {"hnet"};
   d.colors = "kinks";
-  return d;
+  // The deviation band (problems/declarations/design_band.h) only if set;
+  // its examples state one.
+  return WithDesignBand(std::move(d), 0);
 }
 
 }  // namespace archgeo::problems

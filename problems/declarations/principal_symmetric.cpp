@@ -48,6 +48,7 @@
 #include "io/output_files.h"
 #include "geometry/principal_edges.h"
 #include "analysis/smoothness_metrics.h"
+#include "problems/declarations/design_band.h"
 #include "problems/runtime/model.h"
 #include "problems/declarations/suitability.h"
 
@@ -394,7 +395,9 @@ ProblemDecl principal_symmetric() {
                     "mean edge lengths", [](HookContext& c, bool input) {
                       return input ? c.State<Labels>().input_residuals : ResidualPerFace(c);
                     }};
-  return d;
+  // The deviation band (problems/declarations/design_band.h) only if set;
+  // its examples state one.
+  return WithDesignBand(std::move(d), 0);
 }
 
 }  // namespace archgeo::problems

@@ -47,6 +47,7 @@
 
 #include "core/problem.h"
 #include "core/input_error.h"
+#include "problems/declarations/design_band.h"
 #include "problems/runtime/model.h"
 
 namespace archgeo::problems {
@@ -194,7 +195,10 @@ ProblemDecl smooth_mesh() {
   };
   d.analyses = {"smoothness"};
   d.colors = "energy";
-  return d;
+  // The deviation band (problems/declarations/design_band.h) only if set:
+  // tolerance.displacement_relative already keeps every vertex within 0.5%
+  // of the diagonal of its input position, hence of the design.
+  return WithDesignBand(std::move(d), 0);
 }
 
 }  // namespace archgeo::problems

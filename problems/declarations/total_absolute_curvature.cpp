@@ -34,6 +34,7 @@
 #include "core/problem.h"
 #include "analysis/smoothness_metrics.h"
 #include "mesh/topology.h"
+#include "problems/declarations/design_band.h"
 #include "problems/runtime/model.h"
 
 namespace archgeo::problems {
@@ -101,7 +102,9 @@ ProblemDecl total_absolute_curvature() {
   };
   d.analyses = {"smoothness"};
   d.colors = "curvature";
-  return d;
+  // Form finding leaves the start by design: the deviation band only if set
+  // (problems/declarations/design_band.h).
+  return WithDesignBand(std::move(d), 0);
 }
 
 }  // namespace archgeo::problems
