@@ -24,8 +24,10 @@
 //     the output never leaves the band; a solve ends early only when the
 //     goals and the bound hold;
 //   - the report's details.surface_band: the band, the output's deviation,
-//     how many vertices sit at the band (≥ 0.8 b), and whether it binds (the
-//     goals missed with vertices at the band), with the deviation a round
+//     the largest deviation any round reached, how many vertices sit at the
+//     band (≥ 0.8 b), and whether it binds (the goals missed with the output
+//     or a round at the band; the output is the best valid round, which need
+//     not be the one that pressed against the band), with the deviation a round
 //     that met the goals needed, if one did.
 #pragma once
 
