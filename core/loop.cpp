@@ -352,6 +352,9 @@ class Loop {
     *before = model_.SaveState();
 
     ceres::Solver::Options solver = base_;
+    if (stage.max_iterations > 0) {
+      solver.max_num_iterations = std::min(solver.max_num_iterations, stage.max_iterations);
+    }
     if (time_limit_ > 0) {
       solver.max_solver_time_in_seconds = std::min(solver.max_solver_time_in_seconds,
                                                    std::max(0.0, time_limit_ - Since(start_)));

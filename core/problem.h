@@ -101,6 +101,10 @@ struct Stage {
   // (weight 1, ×10 per further round), a vertex beyond the bound is put back
   // inside it unless it is a vertex of a polygon (see problems/runtime/model.h).
   std::string guard_key;
+  // Solver iterations per round at most (0: solver.max_num_iterations); a
+  // stage whose rounds re-aim each round (a level that follows the worst
+  // element) gains more from more, shorter rounds.
+  int max_iterations = 0;
   std::vector<std::string> logged;  // measures in the round log and progress lines
   Hook before_round, after_round;
   // If set, a round runs this instead of building and solving a Ceres problem
