@@ -37,6 +37,7 @@
   X(min_edge_length)           \
   X(on_curve)                  \
   X(pq_diagonal)               \
+  X(pq_worst)                  \
   X(principal_strip)           \
   X(proximity)                 \
   X(saddle_sign)               \

@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Tests for the planar-quad energies (energies/pq_diagonal, face_planarity,
+// Tests for the planar-quad energies (energies/pq_diagonal, pq_worst, face_planarity,
 // fairness, proximity, boundary_proximity, anchor):
 //  (a) autodiff Jacobians against numeric differences (ceres::GradientChecker)
 //      on random well-shaped samples from a fixed seed;
@@ -28,6 +28,7 @@
 #include "energies/face_planarity.h"
 #include "energies/fairness.h"
 #include "energies/pq_diagonal.h"
+#include "energies/pq_worst.h"
 #include "energies/proximity.h"
 
 namespace archgeo {
@@ -165,6 +166,48 @@ TEST(PqDiagonal, InvariantUnderRigidMotionAndScaling) {
           << i << " s=" << s;
     }
   }
+}
+
+// ---------------------------------------------------------------- pq_worst
+
+TEST(PqWorst, GradientMatchesNumeric) {
+  std::mt19937 rng(kSeed + 7);
+  for (int i = 0; i < kNumSamples; ++i) {
+    const auto q = RandomQuad(rng);
+    const double inv_length = 1.0 / MeanDiagonal(q);
+    const double worst = 1.5 * std::abs(PqResidual(q, inv_length)) + 1e-3;
+    for (double power : {2.0, 16.0}) {
+      std::unique_ptr<ceres::CostFunction> cost(
+          MakeAutoDiff(PqWorst(inv_length, 1.0 / worst, power)));
+      SCOPED_TRACE(i);
+      ExpectGradientsMatch(*cost, QuadBlocks(q));
+    }
+  }
+}
+
+// Its square is (|r_PQ| / δ_worst)^p with r_PQ's sign kept: a quad at 0.8 of
+// the worst counts 0.8^16 of it for p = 16, 0.8^2 for p = 2 (pq_diagonal's
+// sum, relative to the worst quad).
+TEST(PqWorst, IsThePNormOfPlanarityRelativeToTheWorstQuad) {
+  std::mt19937 rng(kSeed + 8);
+  for (int i = 0; i < kNumSamples; ++i) {
+    const auto q = RandomQuad(rng);
+    const double inv_length = 1.0 / MeanDiagonal(q);
+    const double r = PqResidual(q, inv_length);
+    const double worst = std::abs(r) / 0.8;
+    for (double power : {2.0, 16.0}) {
+      std::unique_ptr<ceres::CostFunction> cost(
+          MakeAutoDiff(PqWorst(inv_length, 1.0 / worst, power)));
+      const double w = Evaluate(*cost, QuadBlocks(q))[0];
+      EXPECT_NEAR(w * w, std::pow(0.8, power), 1e-12) << i;
+      EXPECT_EQ(std::signbit(w), std::signbit(r)) << i;
+    }
+  }
+  // A planar quad: residual and Jacobian 0 (p > 2), finite.
+  const Vec3 o(0, 0, 0), x(1, 0, 0), y(0, 1, 0);
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(PqWorst(1.0, 10.0, 16)));
+  ExpectFiniteEverywhere(*cost, QuadBlocks({o, x, x + y, y}));
+  EXPECT_EQ(Evaluate(*cost, QuadBlocks({o, x, x + y, y}))[0], 0.0);
 }
 
 TEST(PqDiagonal, KnownValues) {
