@@ -4,7 +4,8 @@
 // the stall rule ends the run early with the reason, a missed tolerance
 // offers the conjugate_layout command for the net's surface, relayout: auto
 // replaces the net by that layout and planarises it, and conjugate_layout
-// takes a quad net as its design surface.
+// takes a quad net as its design surface; relayout: never goes after the
+// worst quads of the DOS pillow.
 //
 // The net: a 16 × 16 grid on the saddle z = 0.6 x² − 0.3 y² whose edges run
 // along the diagonals x = ±y, where II(u, v) = 2(0.6 + 0.3) ≠ 0: far from
@@ -123,6 +124,47 @@ TEST_F(Relayout, ConjugateLayoutTakesAQuadNetAsItsDesignSurface) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.key(), "field.singularities") << e.what();
   }
+}
+
+// relayout: never keeps the net: after the stall the worst-quads stage
+// (problems/declarations/worst_quads.h) goes after the maximum of δ_PQ,n.
+// On the DOS pillow (input 0.0470, every round of the first stage that
+// lowers it folds a crease) it ends below 0.0402, the Shape-Up iteration's
+// best state with every panel convex on this net (libigl's
+// planarize_quad_mesh, benchmarks/planar_quads_stall), with every panel
+// convex and the whole validity passed. The same stage with pq_worst's
+// power 2 (the sum of squares, every quad alike) returns the input.
+class WorstQuads : public ScratchDirTest {
+ protected:
+  RunResult Run(std::vector<std::string> sets) const {
+    sets.push_back("mesh=" ARCHGEO_DATA_DIR "/dos_pillow_1.obj");
+    sets.push_back("relayout=never");
+    sets.push_back("output={mesh: " + Path("out.obj") + ", report: " + Path("r.json") + "}");
+    return RunSpec(ReadSpec(ARCHGEO_SOURCE_DIR "/examples/planar_quads.yaml", sets), {});
+  }
+};
+
+TEST_F(WorstQuads, NeverLowersThePillowsWorstQuadBelowShapeUpsWithConvexPanels) {
+  constexpr double kInput = 0.0470, kShapeUpBestConvex = 0.0402;
+  const RunResult run = Run({});
+  const nlohmann::json& r = run.report;
+  EXPECT_EQ(run.exit_code, 4) << run.summary;
+  EXPECT_NEAR(r.at("before").at("pq_normalized_max").get<double>(), kInput, 5e-5);
+  EXPECT_LT(r.at("after").at("pq_normalized_max").get<double>(), kShapeUpBestConvex);
+  EXPECT_TRUE(r.at("validity").at("valid").get<bool>());
+  EXPECT_EQ(MeasurePanelShapes(ReadMesh(Path("out.obj"))).nonconvex, 0);
+  // The output is a round of the worst-quads stage.
+  const int output = r.at("output_round").get<int>();
+  bool worst = false;
+  for (const nlohmann::json& row : r.at("rounds")) {
+    worst = worst || (row.at("round").get<int>() == output &&
+                      row.at("stage").get<std::string>() == "worst");
+  }
+  EXPECT_TRUE(worst) << "output round " << output;
+
+  const RunResult sum = Run({"terms.pq_worst.power=2"});
+  EXPECT_EQ(sum.exit_code, 4);
+  EXPECT_NEAR(sum.report.at("after").at("pq_normalized_max").get<double>(), kInput, 5e-5);
 }
 
 }  // namespace ARCHGEO_UNITY_ID

@@ -77,6 +77,13 @@ ProblemDecl conjugate_layout() {
   // field stages on Concerthall have more than 100k variables, and their
   // figures (docs/methods/conjugate_layout.md) were measured with it.
   d.defaults.erase("solver.pcg_above");
+  // A layout is near planar: no worst-quads stage (relayout: never's, which
+  // is not a key here), so not its term or its start state either.
+  d.terms.erase(std::remove_if(d.terms.begin(), d.terms.end(),
+                               [](const TermUse& t) { return t.term == "pq_worst"; }),
+                d.terms.end());
+  d.init = nullptr;
+  d.measures.clear();
   std::vector<std::string> planar;
   for (TermUse& t : d.terms) {
     planar.push_back(t.term);

@@ -46,6 +46,7 @@
 #include "core/problem.h"
 #include "problems/declarations/design_band.h"
 #include "problems/declarations/relayout.h"
+#include "problems/declarations/worst_quads.h"
 
 namespace archgeo::problems {
 
@@ -56,6 +57,7 @@ ProblemDecl planar_quads() {
   d.paper = "[Zadravec 2010, §6, eq. 8]";
   d.input = InputKind::kHasPolygons;
   d.terms = {{"pq_diagonal", 10},
+             {"pq_worst", 30, {}, "", true},
              {"face_planarity", 10, {}, "non_triangles"},
              {"boundary_proximity", 10},
              {"proximity", 2, {{"point_weight", 0.01}}},
@@ -113,7 +115,18 @@ ProblemDecl planar_quads() {
       s.patience_valid = true;
     }
     s.logged = {"pq_normalized_max", "E"};
-    return std::vector<Stage>{s};
+    s.terms = {"pq_diagonal", "face_planarity", "boundary_proximity", "proximity", "anchor",
+               "fairness", "dihedral_energy", "convexity", "min_edge_length"};
+    std::vector<Stage> stages{s};
+    // A net kept as it is (relayout: never) that misses the tolerance gets
+    // the worst-quads stage (problems/declarations/worst_quads.h); suggest
+    // and auto end at the stall and hand the net to the conjugate layout.
+    if (settings.schema().Find("relayout") && settings.String("relayout") == "never" &&
+        settings.Number("tolerance.pq_normalized_max") > 0 &&
+        settings.Number("terms.pq_worst.weight") > 0) {
+      stages.push_back(WorstQuadsStage(s));
+    }
+    return stages;
   };
   d.analyses = {"planarity", "smoothness"};
   // Before solving: warn when the quads are far from a conjugate net
@@ -121,6 +134,8 @@ ProblemDecl planar_quads() {
   // net; with relayout: suggest, a missed tolerance ends with the command
   // that does (problems/declarations/relayout.h).
   d.net = &CheckOrRelayout;
+  d.init = &KeepStartState;
+  d.measures[kWorstStagePq] = &WorstStagePq;
   d.finish = &SuggestRelayout;
   // The deviation band (problems/declarations/design_band.h): 1.5% of the
   // diagonal. With today's terms the shared Conjugate net needs 0.65% for
