@@ -49,6 +49,7 @@
 #include <CGAL/boost/graph/iterator.h>
 
 #include "analysis/metrics.h"
+#include "analysis/smoothness_metrics.h"
 #include "analysis/validity.h"
 #include "benchmarks/bench_util.h"
 #include "io/io.h"
@@ -63,14 +64,18 @@ struct Net {
   std::string name, path;
 };
 
-// What the one checker says of a mesh.
+// What the one checker says of a mesh, and its smoothness.
 struct Judged {
   double pq_max = 0;
   int nonconvex = 0;
+  double E = 0;  // Pellis' E = Σ ℓ ℓ* over the bounding-box diagonal
 };
+
+double Diagonal(const Mesh& mesh);
 
 Judged Judge(const Mesh& mesh) {
   Judged j;
+  j.E = archgeo::ComputeEdgeSmoothnessMetrics(mesh).E / Diagonal(mesh);
   const archgeo::PlanarityMeasure p = archgeo::MeasureFacePlanarity(mesh);
   for (archgeo::FaceIndex f : mesh.faces()) {
     if (mesh.degree(f) > 3) j.pq_max = std::max(j.pq_max, p.normalized[f.idx()]);
@@ -294,7 +299,7 @@ int main(int argc, char** argv) {
   if (!compare_only) t1.Print();
 
   std::cout << "\npillow and M2, one checker (δ_PQ,n max over quads; panels not convex)\n\n";
-  bench::Table t2({"net", "input", "Shape-Up best valid (iter, move)", "Shape-Up last (iters)",
+  bench::Table t2({"net", "input (E)", "Shape-Up best valid (iter, move)", "Shape-Up last (iters)",
                    "Shape-Up best archgeo-valid (iter)", "Shape-Up within never's move",
                    "relayout: never (move)", "never, shape terms off (move)",
                    "relayout: auto (panels)", "auto exit, s"});
@@ -312,12 +317,15 @@ int main(int argc, char** argv) {
     };
     const Run on = SolveNet(net.path, {"relayout=auto"});
     const auto cell = [](const Judged& j) { return Fmt("%.3e / %d", j.pq_max, j.nonconvex); };
-    t2.Add({net.name, cell(s.input),
-            cell(s.best_valid) + Fmt(" (%d, %.2f%%)", s.best_iteration, 100 * s.best_move_relative),
+    const auto smooth = [](const Judged& j) { return Fmt(", E %.3f", j.E); };
+    t2.Add({net.name, cell(s.input) + smooth(s.input),
+            cell(s.best_valid) + smooth(s.best_valid) +
+                Fmt(" (%d, %.2f%%)", s.best_iteration, 100 * s.best_move_relative),
             cell(s.last) + Fmt(" (%d)", s.iterations),
             cell(s.best_archgeo_valid) + Fmt(" (%d)", s.best_archgeo_iteration),
             Fmt("%.3e", s.BestWithin(Get(off.report, "/after/displacement_max_relative"))),
-            off.has_mesh ? cell(off.judged) + moved(off) + Fmt(" exit %d", off.process.exit_code)
+            off.has_mesh ? cell(off.judged) + smooth(off.judged) + moved(off) +
+                               Fmt(" exit %d", off.process.exit_code)
                          : "-",
             loose.has_mesh ? cell(loose.judged) + moved(loose) : "-",
             on.has_mesh ? cell(on.judged) + Fmt(" (%d -> %d)",
@@ -335,6 +343,11 @@ int main(int argc, char** argv) {
     check(off.has_mesh && off.judged.nonconvex == 0 && off.judged.pq_max <= s.best_valid.pq_max,
           net.name + Fmt(": relayout: never δ_PQ,n %.3e > Shape-Up best valid %.3e",
                          off.judged.pq_max, s.best_valid.pq_max));
+    // The same movement budget: never moves no vertex further than Shape-Up's best valid state.
+    const double off_move = Get(off.report, "/after/displacement_max_relative");
+    check(off_move <= s.best_move_relative,
+          net.name + Fmt(": relayout: never moves %.2f%% > Shape-Up's %.2f%%", 100 * off_move,
+                         100 * s.best_move_relative));
   }
   t2.Print();
   for (const std::string& r : refusals) std::cout << "archgeo's validity refuses " << r << "\n";
@@ -348,7 +361,8 @@ int main(int argc, char** argv) {
                "(a new net). never's move: archgeo's largest vertex move / bounding-box\n"
                "diagonal; Shape-Up within it: its lowest δ_PQ,n max with every panel convex\n"
                "among its states that move no vertex further. shape terms off: proximity,\n"
-               "anchor and boundary_proximity at weight 0.\n";
+               "anchor and boundary_proximity at weight 0. E: Pellis' E = Σ ℓ ℓ* over the\n"
+               "bounding-box diagonal (visual smoothness; lower is smoother).\n";
   if (!failures.empty()) {
     std::cout << "\nACCEPTANCE FAILED:\n";
     for (const std::string& f : failures) std::cout << "  " << f << "\n";
