@@ -39,7 +39,10 @@
 // Exits 1 when issue 45's acceptance fails: every net that ran exits 4 within
 // 15 s and its output names the suitability figures and the command; pillow
 // and M2 with relayout: auto exit 0 with δ_PQ,n max ≤ 1e-3 and every panel
-// convex; with relayout: never, δ_PQ,n max ≤ the Shape-Up best valid one.
+// convex; with relayout: never (the worst-quads stage after the stall,
+// problems/declarations/worst_quads.h), δ_PQ,n max ≤ the Shape-Up best valid
+// one with every panel convex, moving no vertex further than that state does.
+// Table 2 gives Pellis' E beside δ_PQ,n.
 #include <Eigen/Eigenvalues>
 #include <Eigen/Sparse>
 

@@ -43,6 +43,15 @@
 // within every three rounds (the bubble's first two rounds nothing, its
 // third 31%), and a grid with hexagons 2.7-6% per round for five rounds
 // before it meets the tolerance in one step (tests/test_planar_quads.cpp).
+// Worst quads: the tolerance bounds the maximum of δ_PQ,n, the planarity
+// terms lower the sum of squares, and on a net far from conjugate the two
+// part (the pillow's worst quad gets worse as the sum falls). With
+// relayout: never a run that misses the tolerance goes on with a second
+// stage that lowers a p-norm of δ_PQ,n (pq_worst, p = 16) from the input
+// (problems/declarations/worst_quads.h): pillow 0.0470 → 0.0311, M2 0.0765
+// → 0.0166 with every panel convex, below the Shape-Up iteration's best
+// convex states (0.0402, 0.0218) and moving less
+// (docs/methods/planar_quads.md#the-worst-quads).
 #include "core/problem.h"
 #include "problems/declarations/design_band.h"
 #include "problems/declarations/relayout.h"
