@@ -36,6 +36,7 @@
 #include "io/io.h"
 #include "problems/declarations/field_pipeline.h"
 #include "problems/declarations/relayout.h"
+#include "problems/declarations/worst_quads.h"
 #include "problems/runtime/model.h"
 
 namespace archgeo::problems {
@@ -78,12 +79,11 @@ ProblemDecl conjugate_layout() {
   // figures (docs/methods/conjugate_layout.md) were measured with it.
   d.defaults.erase("solver.pcg_above");
   // A layout is near planar: no worst-quads stage (relayout: never's, which
-  // is not a key here), so not its term or its start state either.
+  // is not a key here), so not its term or its measure either.
   d.terms.erase(std::remove_if(d.terms.begin(), d.terms.end(),
                                [](const TermUse& t) { return t.term == "pq_worst"; }),
                 d.terms.end());
-  d.init = nullptr;
-  d.measures.clear();
+  d.measures.erase(problems::kWorstStagePq);
   std::vector<std::string> planar;
   for (TermUse& t : d.terms) {
     planar.push_back(t.term);

@@ -48,8 +48,8 @@
 // part (the pillow's worst quad gets worse as the sum falls). With
 // relayout: never a run that misses the tolerance goes on with a second
 // stage that lowers a p-norm of δ_PQ,n (pq_worst, p = 16) from the input
-// (problems/declarations/worst_quads.h): pillow 0.0470 → 0.0311, M2 0.0765
-// → 0.0166 with every panel convex, below the Shape-Up iteration's best
+// (problems/declarations/worst_quads.h): pillow 0.0470 → 0.0383, M2 0.0765
+// → 0.0201 with every panel convex, below the Shape-Up iteration's best
 // convex states (0.0402, 0.0218) and moving less
 // (docs/methods/planar_quads.md#the-worst-quads).
 #include "core/problem.h"
@@ -130,9 +130,7 @@ ProblemDecl planar_quads() {
     // A net kept as it is (relayout: never) that misses the tolerance gets
     // the worst-quads stage (problems/declarations/worst_quads.h); suggest
     // and auto end at the stall and hand the net to the conjugate layout.
-    if (settings.schema().Find("relayout") && settings.String("relayout") == "never" &&
-        settings.Number("tolerance.pq_normalized_max") > 0 &&
-        settings.Number("terms.pq_worst.weight") > 0) {
+    if (HasWorstQuadsStage(settings)) {
       stages.push_back(WorstQuadsStage(s));
     }
     return stages;

@@ -37,7 +37,14 @@ double WorstStagePq(HookContext& c) {
                                               : std::numeric_limits<double>::infinity();
 }
 
+bool HasWorstQuadsStage(const Settings& settings) {
+  return settings.schema().Find("relayout") && settings.String("relayout") == "never" &&
+         settings.Number("tolerance.pq_normalized_max") > 0 &&
+         settings.Number("terms.pq_worst.weight") > 0;
+}
+
 void KeepStartState(HookContext& c) {
+  if (!HasWorstQuadsStage(*c.settings)) return;
   WorstQuadsState& s = c.State<WorstQuadsState>();
   s.start = c.model->SaveState();
   s.restarted = false;
@@ -49,7 +56,9 @@ Stage WorstQuadsStage(const Stage& first) {
   s.skip_if_met = true;
   std::replace(s.terms.begin(), s.terms.end(), std::string("pq_diagonal"),
                std::string("pq_worst"));
-  s.continued.clear();
+  // The barriers keep the strength the first stage's continuation gave them
+  // (its scale carries over; no further growth: no factor).
+  s.continued = {"convexity", "min_edge_length"};
   s.factor_key.clear();
   s.band_key.clear();
   s.max_iterations = kWorstRoundIterations;

@@ -29,6 +29,10 @@
 
 namespace archgeo::problems {
 
+// Whether planar_quads runs the stage: relayout: never, a tolerance, and
+// pq_worst on (false where there is no relayout key: conjugate_layout).
+bool HasWorstQuadsStage(const Settings& settings);
+
 // The stage after `first` (planar_quads' stage): pq_worst in place of
 // pq_diagonal, started from the input.
 Stage WorstQuadsStage(const Stage& first);
@@ -40,7 +44,7 @@ inline constexpr const char* kWorstStagePq = "worst_stage_pq_normalized_max";
 double WorstStagePq(HookContext& c);
 
 // planar_quads' init hook: keeps the state at the start of the solve for
-// WorstQuadsStage to start from.
+// WorstQuadsStage to start from (nothing without the stage).
 void KeepStartState(HookContext& c);
 
 }  // namespace archgeo::problems
