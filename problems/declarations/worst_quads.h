@@ -7,7 +7,7 @@
 // face_planarity lower the SUM of squares. On a net close to conjugate both
 // fall together and the first stage meets the tolerance. On a net far from
 // conjugate they part: the sum falls while the worst quad gets worse (the
-// DOS pillow's third round, cost down, max δ_PQ,n 0.0470 → 0.0538), and as
+// DOS pillow's first two rounds, cost down, max δ_PQ,n 0.0470 → 0.0475), and as
 // continuation stiffens the sum the rounds that lower the max fold creases
 // and are refused; the stall rule ends the stage. Then this stage runs:
 //   - from the input (the first stage's rounds leave the net pressed against
