@@ -91,7 +91,9 @@ inline std::vector<double> LinearTicks(double lo, double hi) {
     }
   }
   std::vector<double> ticks;
-  for (double t = std::ceil(lo / step) * step; t <= hi + 1e-9 * step; t += step) ticks.push_back(t);
+  for (double t = std::ceil(lo / step) * step; t <= hi + 1e-9 * step; t += step) {
+    ticks.push_back(std::fabs(t) < 1e-9 * step ? 0.0 : t);  // no "-0"
+  }
   return ticks;
 }
 
@@ -146,7 +148,8 @@ inline std::string RenderSvg(const Chart& c, double width = 680, double panel_he
       lo /= 1.4, hi *= 1.4;
     } else {
       const double pad = hi > lo ? 0.08 * (hi - lo) : std::max(1.0, 0.05 * std::fabs(hi));
-      lo -= pad, hi += pad;
+      lo = lo >= 0 ? std::max(0.0, lo - pad) : lo - pad;  // no negative range for data ≥ 0
+      hi += pad;
     }
     const auto py = [&](double y) {
       const double t = p.log_y ? (std::log(y) - std::log(lo)) / (std::log(hi) - std::log(lo))
@@ -175,7 +178,9 @@ inline std::string RenderSvg(const Chart& c, double width = 680, double panel_he
     if (p.diagonal) {
       s += Line(px(c.x_min), py(c.x_min), px(c.x_max), py(c.x_max), "#888",
                 " stroke-dasharray=\"2 3\"");
-      s += Text(px(c.x_max) - 4, py(c.x_max) + 14, "= band", "end", 10, " fill=\"#666\"");
+      // Labelled above the line, where no point lies when y ≤ x.
+      const double at = c.x_min * std::pow(c.x_max / c.x_min, 0.3);
+      s += Text(px(at), py(at) - 8, "y = x", "end", 10, " fill=\"#666\"");
     }
     for (const ChartLine& l : p.lines) {
       s += Line(left, py(l.at), left + plot_w, py(l.at), l.color, " stroke-dasharray=\"6 4\"");
