@@ -344,6 +344,7 @@ TEST(ChangeText, PercentsAbsoluteChangesAndFactors) {
   EXPECT_EQ(ChangeText(2.0, 1.0), "-50%");
   EXPECT_EQ(ChangeText(-2.0, -1.0), "+50%");
   EXPECT_EQ(ChangeText(0.0, 0.0123), "+0.0123");
+  EXPECT_EQ(ChangeText(4e-18, 0.00296), "+0.00296");  // rounding-level start: zero
   EXPECT_EQ(ChangeText(4.5e-5, 0.0), "-4.5e-05");
   EXPECT_EQ(ChangeText(1.0, 11.0), "+1000%");
   EXPECT_EQ(ChangeText(1.0, 15.2), "x15.2");

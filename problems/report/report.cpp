@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "problems/report/report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -86,7 +87,11 @@ std::string FormatMetrics(const Metrics& before, const Metrics* after, double sc
 std::string ChangeText(double before, double after) {
   if (before == after) return "";
   char text[64];
-  if (before == 0 || after == 0 || !std::isfinite(before) || !std::isfinite(after)) {
+  // A value at rounding level of the other (e.g. 4e-18 of a distance that
+  // is exactly 0 in exact arithmetic) counts as zero: an absolute change.
+  const double scale = 1e-12 * std::max(std::abs(before), std::abs(after));
+  if (std::abs(before) <= scale || std::abs(after) <= scale || !std::isfinite(before) ||
+      !std::isfinite(after)) {
     std::snprintf(text, sizeof text, "%+.3g", after - before);
   } else if ((after - before) / std::abs(before) > 10) {
     std::snprintf(text, sizeof text, "x%.3g", after / before);
