@@ -4,6 +4,7 @@
 #include "analysis/goal_metrics.h"
 
 #include "core/newell.h"
+#include "mesh/eigen_point.h"
 
 #include <algorithm>
 #include <cmath>
@@ -22,17 +23,11 @@ constexpr double kRankThreshold = 1e-12;
 
 using V = Eigen::Vector3d;
 
-V E(const Vec3& x) { return {x[0], x[1], x[2]}; }
-V Position(const Mesh& mesh, VertexIndex v) {
-  const Point& p = mesh.point(v);
-  return {p.x(), p.y(), p.z()};
-}
-
 // Vector area (Newell) of a face: area times unit normal.
 V VectorArea(const Mesh& mesh, FaceIndex f) {
   std::vector<V> p;  // from the source of the face's halfedge
   for (HalfedgeIndex h : mesh.halfedges_around_face(mesh.halfedge(f))) {
-    p.push_back(Position(mesh, mesh.source(h)));
+    p.push_back(EigenPoint(mesh, mesh.source(h)));
   }
   return 0.5 * NewellVector(int(p.size()), [&](int k) { return p[size_t(k)]; });
 }
@@ -41,16 +36,10 @@ V Centroid(const Mesh& mesh, FaceIndex f) {
   V sum = V::Zero();
   int n = 0;
   for (VertexIndex v : mesh.vertices_around_face(mesh.halfedge(f))) {
-    sum += Position(mesh, v);
+    sum += EigenPoint(mesh, v);
     ++n;
   }
   return (1.0 / n) * sum;
-}
-
-double MeanEdgeLength(const Mesh& mesh) {
-  double sum = 0.0;
-  for (EdgeIndex e : mesh.edges()) sum += EdgeLength(mesh, e);
-  return mesh.number_of_edges() > 0 ? sum / mesh.number_of_edges() : 0.0;
 }
 
 double Angle(const V& a, const V& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
@@ -64,7 +53,7 @@ ConicalMeasure MeasureConical(const Mesh& mesh) {
     if (mesh.is_border(v, /*check_all_incident_halfedges=*/true) || mesh.degree(v) != 4) continue;
     std::vector<V> edges;
     for (VertexIndex w : mesh.vertices_around_target(mesh.halfedge(v))) {
-      edges.push_back(Position(mesh, w) - Position(mesh, v));
+      edges.push_back(EigenPoint(mesh, w) - EigenPoint(mesh, v));
     }
     double omega[4];
     for (int k = 0; k < 4; ++k) omega[k] = Angle(edges[k], edges[(k + 1) % 4]);
@@ -104,7 +93,7 @@ FaceOffsetMeasure MeasureFaceOffsets(const Mesh& mesh, double offset) {
   double sum = 0.0;
   for (VertexIndex v : mesh.vertices()) {
     if (mesh.is_border(v, true) || mesh.degree(v) < 4) continue;
-    const V p = Position(mesh, v);
+    const V p = EigenPoint(mesh, v);
     std::vector<Vec3> normals;
     std::vector<double> heights;
     for (FaceIndex f : mesh.faces_around_target(mesh.halfedge(v))) {
@@ -173,7 +162,7 @@ int NonConvexQuads(const Mesh& mesh) {
     if (mesh.degree(f) != 4) continue;
     const V n = VectorArea(mesh, f);
     std::vector<V> p;
-    for (VertexIndex v : mesh.vertices_around_face(mesh.halfedge(f))) p.push_back(Position(mesh, v));
+    for (VertexIndex v : mesh.vertices_around_face(mesh.halfedge(f))) p.push_back(EigenPoint(mesh, v));
     bool convex = n.norm() > 0;
     for (int k = 0; k < 4 && convex; ++k) {
       const V turn = (p[k] - p[(k + 3) % 4]).cross(p[(k + 1) % 4] - p[k]);
@@ -203,13 +192,13 @@ ForceBalanceMeasure MeasureForceBalance(const Mesh& mesh, const std::vector<Vec3
   CHECK_EQ(rest_length.size(), mesh.num_edges()) << "MeasureForceBalance: one rest length per edge";
   std::vector<V> resultant;
   resultant.reserve(loads.size());
-  for (const Vec3& load : loads) resultant.push_back(E(load));
+  for (const Vec3& load : loads) resultant.push_back(EigenVector(load));
   for (EdgeIndex e : mesh.edges()) {
     CHECK(stiffness[e.idx()] > 0 && rest_length[e.idx()] >= 0)
         << "MeasureForceBalance: bad spring on edge " << e.idx();
     const HalfedgeIndex h = mesh.halfedge(e);
     const VertexIndex a = mesh.source(h), b = mesh.target(h);
-    const V d = Position(mesh, b) - Position(mesh, a);  // a → b
+    const V d = EigenPoint(mesh, b) - EigenPoint(mesh, a);  // a → b
     const double length = d.norm();
     const double l0 = rest_length[e.idx()];
     const double tension = l0 == 0      ? stiffness[e.idx()]
@@ -224,7 +213,7 @@ ForceBalanceMeasure MeasureForceBalance(const Mesh& mesh, const std::vector<Vec3
   for (VertexIndex v : mesh.vertices()) {
     if (fixed[v.idx()]) continue;
     ++measure.free_vertices;
-    load_sum += E(loads[v.idx()]).norm();
+    load_sum += EigenVector(loads[v.idx()]).norm();
     const double r = resultant[v.idx()].norm();
     resultant_sum += r;
     measure.max_resultant = std::max(measure.max_resultant, r);

@@ -98,14 +98,6 @@ double AxisAlignedBoxDiagonal(const Mesh& mesh) {
                    CGAL::square(box.zmax() - box.zmin()));
 }
 
-double MeanEdgeLength(const Mesh& mesh) {
-  MaxMean edges;
-  for (EdgeIndex e : mesh.edges()) {
-    edges.Add(Length(mesh.point(mesh.vertex(e, 1)) - mesh.point(mesh.vertex(e, 0))));
-  }
-  return edges.Mean();
-}
-
 // Symmetric Hausdorff distance between the triangulated `mesh` and `triangles`,
 // approximated by sampling each surface (every vertex, and a regular grid on
 // each edge and triangle) and taking the largest distance of a sample to the

@@ -13,13 +13,13 @@
 
 #include "core/solver_options.h"
 #include "core/newell.h"
+#include "mesh/eigen_point.h"
 
 namespace archgeo {
 namespace {
 
 using V = Eigen::Vector3d;
 
-V E(const Vec3& x) { return {x[0], x[1], x[2]}; }
 bool IsZero(const V& a) { return a[0] == 0 && a[1] == 0 && a[2] == 0; }
 Vec3 ToArray(const V& x) { return {x[0], x[1], x[2]}; }
 
@@ -27,11 +27,6 @@ Vec3 ToArray(const V& x) { return {x[0], x[1], x[2]}; }
 constexpr double kSameNormal = 1e-9;
 // Sign tests of the arc-crossing predicate on unit vectors.
 constexpr double kArcSide = 1e-12;
-
-V Position(const Mesh& mesh, VertexIndex v) {
-  const Point& p = mesh.point(v);
-  return {p.x(), p.y(), p.z()};
-}
 
 // Out-halfedges v → w_j of v in counter-clockwise order (seen from the
 // normals' side): face(h_j) lies between w_j and w_{j+1}, and the next
@@ -168,7 +163,7 @@ unsigned char Channel(double x) {
 
 Vec3 FaceNormal(const Mesh& mesh, FaceIndex f) {
   std::vector<V> p;
-  for (VertexIndex v : mesh.vertices_around_face(mesh.halfedge(f))) p.push_back(Position(mesh, v));
+  for (VertexIndex v : mesh.vertices_around_face(mesh.halfedge(f))) p.push_back(EigenPoint(mesh, v));
   const size_t k = p.size();
   V n = V::Zero();
   if (k == 3) {
@@ -204,7 +199,7 @@ Vec3 VertexNormal(const Mesh& mesh, const std::vector<Vec3>& face_normals, Verte
   if (mesh.halfedge(v) == Mesh::null_halfedge()) return {0, 0, 0};
   V sum = V::Zero();
   for (FaceIndex f : mesh.faces_around_target(mesh.halfedge(v))) {
-    if (f != Mesh::null_face()) sum += E(face_normals[f.idx()]);
+    if (f != Mesh::null_face()) sum += EigenVector(face_normals[f.idx()]);
   }
   const double length = sum.norm();
   if (!(length > 1e-12)) return {0, 0, 0};
@@ -226,11 +221,11 @@ EdgeSmoothness MeasureEdgeSmoothness(const Mesh& mesh, const std::vector<Vec3>& 
     const EdgeIndex e(static_cast<EdgeIndex::size_type>(i));
     if (mesh.is_removed(e)) continue;
     const HalfedgeIndex h = mesh.halfedge(e);
-    const double length = (Position(mesh, mesh.target(h)) - Position(mesh, mesh.source(h))).norm();
+    const double length = (EigenPoint(mesh, mesh.target(h)) - EigenPoint(mesh, mesh.source(h))).norm();
     result.length[e.idx()] = length;
     if (mesh.is_border(e)) continue;
-    const V nf = E(face_normals[mesh.face(h).idx()]);
-    const V ng = E(face_normals[mesh.face(mesh.opposite(h)).idx()]);
+    const V nf = EigenVector(face_normals[mesh.face(h).idx()]);
+    const V ng = EigenVector(face_normals[mesh.face(mesh.opposite(h)).idx()]);
     if (IsZero(nf) || IsZero(ng)) continue;
     const double angle = std::atan2(nf.cross(ng).norm(), nf.dot(ng));  // |α_e| [§3]
     result.measured[e.idx()] = 1;
@@ -245,18 +240,18 @@ std::array<double, 2> ShapeOperatorEigenvalues(const Mesh& mesh,
                                                const std::vector<Vec3>& face_normals,
                                                VertexIndex v) {
   CHECK_EQ(face_normals.size(), mesh.num_faces());
-  const V n = E(VertexNormal(mesh, face_normals, v));
+  const V n = EigenVector(VertexNormal(mesh, face_normals, v));
   if (IsZero(n)) return {0, 0};
   // W′_v = ½ Σ (n_f × n_f′)(w − v)ᵀ over measured out-edges   [Pellis 2019, §5.3]
   double w[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-  const V pv = Position(mesh, v);
+  const V pv = EigenPoint(mesh, v);
   for (HalfedgeIndex h : OutHalfedges(mesh, v)) {
     if (mesh.is_border(mesh.edge(h))) continue;
-    const V nf = E(face_normals[mesh.face(h).idx()]);                   // left of v → w
-    const V ng = E(face_normals[mesh.face(mesh.opposite(h)).idx()]);    // right of v → w
+    const V nf = EigenVector(face_normals[mesh.face(h).idx()]);                   // left of v → w
+    const V ng = EigenVector(face_normals[mesh.face(mesh.opposite(h)).idx()]);    // right of v → w
     if (IsZero(nf) || IsZero(ng)) return {0, 0};
     const V s = nf.cross(ng);
-    const V d = Position(mesh, mesh.target(h)) - pv;
+    const V d = EigenPoint(mesh, mesh.target(h)) - pv;
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) w[i][j] += 0.5 * s[i] * d[j];
     }
@@ -288,13 +283,13 @@ VertexStar ClassifyVertexStar(const Mesh& mesh, const std::vector<Vec3>& face_no
   for (HalfedgeIndex h : out) {
     if (mesh.is_border(h)) return star;  // boundary vertex
     const FaceIndex f = mesh.face(h);
-    const V nf = E(face_normals[f.idx()]);
+    const V nf = EigenVector(face_normals[f.idx()]);
     if (IsZero(nf)) return star;
     fn.push_back(nf);
-    w.push_back(Position(mesh, mesh.target(h)) - Position(mesh, v));
+    w.push_back(EigenPoint(mesh, mesh.target(h)) - EigenPoint(mesh, v));
     triangles = triangles && mesh.degree(f) == 3;
   }
-  const V n = E(VertexNormal(mesh, face_normals, v));
+  const V n = EigenVector(VertexNormal(mesh, face_normals, v));
   if (IsZero(n)) return star;
   star.measured = true;
   star.valence = int(out.size());
@@ -324,7 +319,7 @@ SmoothnessMetrics EdgeMetrics(const Mesh& mesh, const std::vector<Vec3>& normals
   m.vertices = int(mesh.number_of_vertices());
   m.faces = int(mesh.number_of_faces());
   m.edges = int(mesh.number_of_edges());
-  for (FaceIndex f : mesh.faces()) m.degenerate_faces += IsZero(E(normals[f.idx()])) ? 1 : 0;
+  for (FaceIndex f : mesh.faces()) m.degenerate_faces += IsZero(EigenVector(normals[f.idx()])) ? 1 : 0;
 
   const EdgeSmoothness edges = MeasureEdgeSmoothness(mesh, normals);
   for (EdgeIndex e : mesh.edges()) {

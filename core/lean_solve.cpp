@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/lean_solve.h"
 
+#include "core/clock.h"
 #include "core/lean_kernels.h"
 #include "core/normal_equations.h"
 #include "core/parallel_parts.h"
@@ -25,8 +26,6 @@
 namespace archgeo {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double Since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 using Vector = Eigen::VectorXd;
 
 // Ceres' loss corrector (Triggs et al. 1999, "Bundle adjustment — a modern
@@ -334,7 +333,7 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
     out.message = "a residual block failed to evaluate at the start";
     return out;
   }
-  out.jacobian_seconds += Since(t);
+  out.jacobian_seconds += SecondsSince(t);
   out.initial_cost = out.final_cost = cost;
   double radius = options.initial_trust_region_radius, decrease_factor = 2.0;
   double last_change = 0;  // the cost change of the last accepted step
@@ -349,7 +348,7 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
       it.gradient_norm = g->norm();
     }
     it.trust_region_radius = radius;
-    it.cumulative_time_in_seconds = Since(start);
+    it.cumulative_time_in_seconds = SecondsSince(start);
     for (ceres::IterationCallback* callback : options.callbacks) {
       const ceres::CallbackReturnType r = (*callback)(it);
       if (r == ceres::SOLVER_TERMINATE_SUCCESSFULLY) {
@@ -366,18 +365,18 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
   };
   {
     ceres::IterationSummary zero;
-    zero.iteration_time_in_seconds = Since(start);
+    zero.iteration_time_in_seconds = SecondsSince(start);
     if (report(zero, &gradient)) {
-      out.seconds = Since(start);
+      out.seconds = SecondsSince(start);
       return out;
     }
   }
   if (gradient.lpNorm<Eigen::Infinity>() <= options.gradient_tolerance) {
-    out.seconds = Since(start);
+    out.seconds = SecondsSince(start);
     return out;
   }
   for (int iteration = 1; iteration <= options.max_num_iterations; ++iteration) {
-    if (Since(start) >= options.max_solver_time_in_seconds) break;
+    if (SecondsSince(start) >= options.max_solver_time_in_seconds) break;
     const auto iteration_start = Clock::now();
     out.iterations = iteration;
     ceres::IterationSummary it;
@@ -393,7 +392,7 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
     out.cg_iterations += it.linear_solver_iterations;
     const double model_change =
         system.ModelChange(gradient, delta, &model_max_norm, &model_norm);
-    it.step_solver_time_in_seconds = Since(t);
+    it.step_solver_time_in_seconds = SecondsSince(t);
     out.linear_solver_seconds += it.step_solver_time_in_seconds;
     it.step_norm = delta.norm();
     const std::vector<double> before = lean.Save();
@@ -401,7 +400,7 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
     double new_cost = 0;
     t = Clock::now();
     it.step_is_valid = model_change < 0.0 && lean.Step(delta) && lean.Cost(&new_cost);
-    out.residual_seconds += Since(t);
+    out.residual_seconds += SecondsSince(t);
     const double rho = it.step_is_valid ? (cost - new_cost) / -model_change : -1.0;
     if (it.step_is_valid) it.relative_decrease = rho;
     const bool small_step =
@@ -430,7 +429,7 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
         // Reported with the model's gradient at the step, g + JᵀJ δ.
         it.gradient_max_norm = model_max_norm;
         it.gradient_norm = model_norm;
-        it.iteration_time_in_seconds = Since(iteration_start);
+        it.iteration_time_in_seconds = SecondsSince(iteration_start);
         report(it, nullptr);
         break;
       }
@@ -440,22 +439,22 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
         out.message = "a residual block failed to evaluate";
         break;
       }
-      out.jacobian_seconds += Since(t);
-      it.iteration_time_in_seconds = Since(iteration_start);
+      out.jacobian_seconds += SecondsSince(t);
+      it.iteration_time_in_seconds = SecondsSince(iteration_start);
       if (report(it, &gradient)) break;
       if (gradient.lpNorm<Eigen::Infinity>() <= options.gradient_tolerance) break;
     } else {
       lean.Restore(before);
       radius /= decrease_factor;
       decrease_factor *= 2.0;
-      it.iteration_time_in_seconds = Since(iteration_start);
+      it.iteration_time_in_seconds = SecondsSince(iteration_start);
       if (report(it, &gradient)) break;
       if (radius < options.min_trust_region_radius) break;
       if (small_step) break;
     }
   }
   out.final_cost = cost;
-  out.seconds = Since(start);
+  out.seconds = SecondsSince(start);
   return out;
 }
 

@@ -12,15 +12,13 @@
 #include <cstdio>
 #include <limits>
 
+#include "core/clock.h"
 #include "core/lean_solve.h"
 #include "core/normal_equations.h"
 #include "core/solver_options.h"
 
 namespace archgeo {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double Since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 std::string Format(const char* format, double value) {
   char text[64];
@@ -264,7 +262,7 @@ class Loop {
     }
     last_gain_ = 0;
     for (int k = 1; k <= plan.rounds; ++k) {
-      if (time_limit_ > 0 && Since(start_) >= time_limit_) {
+      if (time_limit_ > 0 && SecondsSince(start_) >= time_limit_) {
         result_.stop = "schedule.max_seconds reached";
         break;
       }
@@ -295,7 +293,7 @@ class Loop {
         stage.rest_change_measure.empty() ? 0 : model_.Measure(stage.rest_change_measure);
     const auto projection_start = Clock::now();
     model_.BeginRound(projecting);
-    if (projecting) result_.seconds["projection"] += Since(projection_start);
+    if (projecting) result_.seconds["projection"] += SecondsSince(projection_start);
     const std::string label = (stage.name.empty() ? std::string() : stage.name + " ") +
                               "round " + Format("%2.0f", round_number_);
     std::vector<double> before;
@@ -306,7 +304,7 @@ class Loop {
       return RoundEnd::kUnusable;
     }
     RoundLog row = Log(stage, plan, step, before, undo_before);
-    row.seconds = Since(round_start);
+    row.seconds = SecondsSince(round_start);
     result_.log.push_back(row);
     Report(label, row);
     if (row.undone) return RoundEnd::kStop;
@@ -347,7 +345,7 @@ class Loop {
     residuals_.Clear();
     model_.Build(Terms(stage, plan), k, residuals_);
     residuals_.Fit();
-    result_.seconds["build"] += Since(build_start);
+    result_.seconds["build"] += SecondsSince(build_start);
     built_ = true;
     *before = model_.SaveState();
 
@@ -357,7 +355,7 @@ class Loop {
     }
     if (time_limit_ > 0) {
       solver.max_solver_time_in_seconds = std::min(solver.max_solver_time_in_seconds,
-                                                   std::max(0.0, time_limit_ - Since(start_)));
+                                                   std::max(0.0, time_limit_ - SecondsSince(start_)));
     }
     std::vector<IterationWatch::Watched> watched;
     for (const Tolerance& t : plan.active) {

@@ -19,6 +19,7 @@
 
 #include "core/solver_options.h"
 #include "fields/conjugate.h"
+#include "mesh/eigen_point.h"
 
 namespace archgeo {
 namespace {
@@ -26,20 +27,15 @@ namespace {
 constexpr int kMaxRings = 8;
 constexpr int kMaxDegree = 4;
 
-Eigen::Vector3d P(const Mesh& mesh, VertexIndex v) {
-  const Point& p = mesh.point(v);
-  return Eigen::Vector3d(p.x(), p.y(), p.z());
-}
-
 int NumCoefficients(int degree) { return (degree + 1) * (degree + 2) / 2; }
 
 Eigen::Vector3d VertexNormal(const Mesh& mesh, VertexIndex v) {
   Eigen::Vector3d n = Eigen::Vector3d::Zero();
   for (HalfedgeIndex h : mesh.halfedges_around_target(mesh.halfedge(v))) {
     if (mesh.is_border(h)) continue;
-    const Eigen::Vector3d a = P(mesh, mesh.source(h));
-    const Eigen::Vector3d b = P(mesh, mesh.target(h));
-    const Eigen::Vector3d c = P(mesh, mesh.target(mesh.next(h)));
+    const Eigen::Vector3d a = EigenPoint(mesh, mesh.source(h));
+    const Eigen::Vector3d b = EigenPoint(mesh, mesh.target(h));
+    const Eigen::Vector3d c = EigenPoint(mesh, mesh.target(mesh.next(h)));
     n += (b - a).cross(c - b);  // twice the area times the face normal
   }
   return n.normalized();
@@ -283,8 +279,8 @@ std::vector<FaceCurvature> ComputeFaceCurvature(const Mesh& mesh, const FaceFram
   const std::vector<Eigen::Matrix3d> tensors = VertexShapeTensors(mesh, options);
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
   for (VertexIndex v : mesh.vertices()) {
-    lo = lo.cwiseMin(P(mesh, v));
-    hi = hi.cwiseMax(P(mesh, v));
+    lo = lo.cwiseMin(EigenPoint(mesh, v));
+    hi = hi.cwiseMax(EigenPoint(mesh, v));
   }
   const double diagonal = (hi - lo).norm();
   const double flat_curvature = diagonal > 0 ? options.flat_tolerance / diagonal : INFINITY;

@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "fields/face_frames.h"
+#include "mesh/eigen_point.h"
 
 #include <cmath>
 #include <queue>
@@ -12,11 +13,6 @@
 
 namespace archgeo {
 namespace {
-
-Eigen::Vector3d P(const Mesh& mesh, VertexIndex v) {
-  const Point& p = mesh.point(v);
-  return Eigen::Vector3d(p.x(), p.y(), p.z());
-}
 
 std::array<VertexIndex, 3> Corners(const Mesh& mesh, FaceIndex f) {
   const HalfedgeIndex h0 = mesh.halfedge(f);
@@ -46,7 +42,7 @@ FaceFrames ComputeEdgeFrames(const Mesh& mesh) {
   fr.area.resize(n);
   for (FaceIndex f : mesh.faces()) {
     const auto c = Corners(mesh, f);
-    const Eigen::Vector3d p0 = P(mesh, c[0]), p1 = P(mesh, c[1]), p2 = P(mesh, c[2]);
+    const Eigen::Vector3d p0 = EigenPoint(mesh, c[0]), p1 = EigenPoint(mesh, c[1]), p2 = EigenPoint(mesh, c[2]);
     const Eigen::Vector3d cross = (p1 - p0).cross(p2 - p0);
     const double twice_area = cross.norm();
     CHECK(twice_area > 0.0) << "face " << f.idx() << " has zero area";
@@ -69,7 +65,7 @@ std::vector<EdgeTransport> ComputeTransports(const Mesh& mesh, const FaceFrames&
     const HalfedgeIndex h = mesh.halfedge(e, 0);
     const FaceIndex f = mesh.face(h);
     const FaceIndex g = mesh.face(mesh.opposite(h));
-    const Eigen::Vector3d a = P(mesh, mesh.source(h)), b = P(mesh, mesh.target(h));
+    const Eigen::Vector3d a = EigenPoint(mesh, mesh.source(h)), b = EigenPoint(mesh, mesh.target(h));
     const Eigen::Vector3d axis = (b - a).normalized();
     const size_t fi = f.idx(), gi = g.idx();
     const Eigen::AngleAxisd unfold = Unfolding(axis, frames.normal[gi], frames.normal[fi]);
@@ -186,7 +182,7 @@ std::array<Eigen::Vector2d, 3> FaceCorners2D(const Mesh& mesh, const FaceFrames&
                                              FaceIndex f) {
   const auto c = Corners(mesh, f);
   std::array<Eigen::Vector2d, 3> out;
-  for (int k = 0; k < 3; ++k) out[k] = ToFrame(frames, f, P(mesh, c[k]) - frames.centroid[f.idx()]);
+  for (int k = 0; k < 3; ++k) out[k] = ToFrame(frames, f, EigenPoint(mesh, c[k]) - frames.centroid[f.idx()]);
   return out;
 }
 

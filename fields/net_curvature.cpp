@@ -11,6 +11,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "fields/face_curvature.h"
+#include "mesh/eigen_point.h"
 
 namespace archgeo {
 namespace {
@@ -19,11 +20,6 @@ namespace {
 constexpr double kFlat = 1e-6;
 // Principal directions are measured only where |k1 − k2| ≥ this × κ.
 constexpr double kUmbilic = 0.1;
-
-Eigen::Vector3d P(const Mesh& mesh, VertexIndex v) {
-  const Point& p = mesh.point(v);
-  return {p.x(), p.y(), p.z()};
-}
 
 double Degrees(double radians) { return radians * 180.0 / M_PI; }
 
@@ -60,8 +56,8 @@ double LineAngle(const Eigen::Vector2d& x, const Eigen::Vector2d& y) {
 double BboxDiagonal(const Mesh& mesh) {
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(HUGE_VAL), hi = -lo;
   for (VertexIndex v : mesh.vertices()) {
-    lo = lo.cwiseMin(P(mesh, v));
-    hi = hi.cwiseMax(P(mesh, v));
+    lo = lo.cwiseMin(EigenPoint(mesh, v));
+    hi = hi.cwiseMax(EigenPoint(mesh, v));
   }
   return mesh.number_of_vertices() > 0 ? (hi - lo).norm() : 0.0;
 }
@@ -111,7 +107,7 @@ NetCurvatureFigures MeasureNetCurvature(const Mesh& net) {
     int k = 0;
     for (VertexIndex v : net.vertices_around_face(net.halfedge(f))) {
       tensor += 0.25 * S[v.idx()];
-      p[k++] = P(net, v);
+      p[k++] = EigenPoint(net, v);
     }
     const Eigen::Vector3d normal = (p[2] - p[0]).cross(p[3] - p[1]);
     if (normal.norm() == 0) continue;
@@ -163,15 +159,15 @@ PrincipalLabelFigures MeasurePrincipalLabels(const Mesh& mesh,
     Eigen::Vector3d normal = Eigen::Vector3d::Zero();
     for (HalfedgeIndex g : {h, mesh.opposite(h)}) {
       if (mesh.is_border(g)) continue;
-      const Eigen::Vector3d a = P(mesh, mesh.source(g)), b = P(mesh, mesh.target(g)),
-                            c = P(mesh, mesh.target(mesh.next(g)));
+      const Eigen::Vector3d a = EigenPoint(mesh, mesh.source(g)), b = EigenPoint(mesh, mesh.target(g)),
+                            c = EigenPoint(mesh, mesh.target(mesh.next(g)));
       const Eigen::Vector3d n = (b - a).cross(c - b);
       if (n.norm() > 0) normal += n.normalized();
     }
     if (normal.norm() == 0) continue;
     const Tangent t = Restrict(0.5 * (S[i] + S[j]), normal.normalized());
     if (t.kappa() < flat || t.k1 - t.k2 < kUmbilic * t.kappa()) continue;
-    const Eigen::Vector2d e = t.In(P(mesh, VertexIndex(j)) - P(mesh, VertexIndex(i)));
+    const Eigen::Vector2d e = t.In(EigenPoint(mesh, VertexIndex(j)) - EigenPoint(mesh, VertexIndex(i)));
     if (e.norm() == 0) continue;
     ++out.measured;
     const double angle =

@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "fields/singularities.h"
+#include "mesh/eigen_point.h"
 
 #include <cmath>
 #include <functional>
@@ -14,15 +15,10 @@
 namespace archgeo {
 namespace {
 
-Eigen::Vector3d P(const Mesh& mesh, VertexIndex v) {
-  const Point& p = mesh.point(v);
-  return Eigen::Vector3d(p.x(), p.y(), p.z());
-}
-
 double CornerAngle(const Mesh& mesh, HalfedgeIndex h) {  // at target(h) in face(h)
-  const Eigen::Vector3d v = P(mesh, mesh.target(h));
-  const Eigen::Vector3d a = P(mesh, mesh.source(h)) - v;
-  const Eigen::Vector3d b = P(mesh, mesh.target(mesh.next(h))) - v;
+  const Eigen::Vector3d v = EigenPoint(mesh, mesh.target(h));
+  const Eigen::Vector3d a = EigenPoint(mesh, mesh.source(h)) - v;
+  const Eigen::Vector3d b = EigenPoint(mesh, mesh.target(mesh.next(h))) - v;
   return std::atan2(a.cross(b).norm(), a.dot(b));
 }
 
@@ -204,7 +200,7 @@ std::vector<Singularity> Singularities(const Mesh& mesh, const std::vector<doubl
   for (VertexIndex v : mesh.vertices()) {
     const double ind = vertex_index[v.idx()];
     if (ind == 0.0) continue;
-    out.push_back({v, ind, P(mesh, v)});
+    out.push_back({v, ind, EigenPoint(mesh, v)});
   }
   return out;
 }

@@ -16,26 +16,26 @@
 namespace archgeo {
 namespace {
 
-[[noreturn]] void Fail(const std::string& key, const std::string& message) {
+[[noreturn]] void FailKey(const std::string& key, const std::string& message) {
   throw InputError("", 0, key, message);
 }
 
 void RequireFinite(const std::string& key, double x) {
-  if (!std::isfinite(x)) Fail(key, "must be finite, got " + std::to_string(x));
+  if (!std::isfinite(x)) FailKey(key, "must be finite, got " + std::to_string(x));
 }
 void RequirePositive(const std::string& key, double x) {
-  if (!(x > 0) || !std::isfinite(x)) Fail(key, "must be finite and > 0, got " + std::to_string(x));
+  if (!(x > 0) || !std::isfinite(x)) FailKey(key, "must be finite and > 0, got " + std::to_string(x));
 }
-void RequireAtLeast(const std::string& key, int n, int minimum) {
+void RequireCount(const std::string& key, int n, int minimum) {
   if (n < minimum) {
-    Fail(key, "must be at least " + std::to_string(minimum) + ", got " + std::to_string(n));
+    FailKey(key, "must be at least " + std::to_string(minimum) + ", got " + std::to_string(n));
   }
 }
 
 void CheckTorus(double R, double r) {
   RequirePositive("R", R);
   RequirePositive("r", r);
-  if (!(r < R)) Fail("r", "must be smaller than R (a ring torus), got r = " +
+  if (!(r < R)) FailKey("r", "must be smaller than R (a ring torus), got r = " +
                               std::to_string(r) + ", R = " + std::to_string(R));
 }
 
@@ -49,8 +49,8 @@ FaceIndex AddFace(Mesh& mesh, std::initializer_list<VertexIndex> vertices) {
 
 Mesh TorusPrincipalQuads(double R, double r, int n_u, int n_v) {
   CheckTorus(R, r);
-  RequireAtLeast("n_u", n_u, 3);
-  RequireAtLeast("n_v", n_v, 3);
+  RequireCount("n_u", n_u, 3);
+  RequireCount("n_v", n_v, 3);
   Mesh mesh;
   for (int j = 0; j < n_v; ++j) {
     const double v = 2 * M_PI * j / n_v;
@@ -83,14 +83,14 @@ Mesh RevolutionTriangles(const RevolutionProfile& profile, int n_around, int n_r
   RequirePositive("r1", profile.r1);
   RequirePositive("height", profile.height);
   RequireFinite("bulge", profile.bulge);
-  RequireAtLeast("n_around", n_around, 3);
-  RequireAtLeast("n_rings", n_rings, 1);
+  RequireCount("n_around", n_around, 3);
+  RequireCount("n_rings", n_rings, 1);
   Mesh mesh;
   for (int j = 0; j <= n_rings; ++j) {
     const double z = profile.height * j / n_rings;
     const double rho = profile.Radius(z);
     if (!(rho > 0)) {
-      Fail("bulge", "the profile radius must stay > 0, got " + std::to_string(rho) + " at z = " +
+      FailKey("bulge", "the profile radius must stay > 0, got " + std::to_string(rho) + " at z = " +
                         std::to_string(z));
     }
     for (int i = 0; i < n_around; ++i) {
@@ -130,7 +130,7 @@ double LatticeEnergyPerArea(double alpha, double beta, const std::array<double, 
   for (double x : {a[0], a[1]}) RequireFinite("a", x);
   for (double x : {b[0], b[1]}) RequireFinite("b", x);
   const double cell_area = std::abs(a[0] * b[1] - a[1] * b[0]);
-  if (!(cell_area > 0)) Fail("b", "a and b must span a lattice (|a x b| > 0)");
+  if (!(cell_area > 0)) FailKey("b", "a and b must span a lattice (|a x b| > 0)");
 
   if (faces == LatticeFaces::kTrianglesAveraged) {
     return 0.5 * (LatticeEnergyPerArea(alpha, beta, a, b, LatticeFaces::kTrianglesDiagonalAPlusB) +

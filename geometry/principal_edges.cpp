@@ -16,14 +16,10 @@
 
 #include "core/input_error.h"
 #include "io/input_file.h"
+#include "mesh/eigen_point.h"
 
 namespace archgeo {
 namespace {
-
-Eigen::Vector3d P(const Mesh& mesh, VertexIndex v) {
-  const Point& p = mesh.point(v);
-  return {p.x(), p.y(), p.z()};
-}
 
 std::vector<VertexIndex> Ring(const Mesh& mesh, VertexIndex v) {
   std::vector<VertexIndex> ring;
@@ -247,7 +243,7 @@ Mesh PrincipalSymmetricTorus(double R, double r, int n_u, int n_v, double noise,
   if (noise > 0) {
     double mean = 0;
     for (EdgeIndex e : mesh.edges()) {
-      mean += (P(mesh, mesh.vertex(e, 0)) - P(mesh, mesh.vertex(e, 1))).norm();
+      mean += (EigenPoint(mesh, mesh.vertex(e, 0)) - EigenPoint(mesh, mesh.vertex(e, 1))).norm();
     }
     mean /= double(mesh.number_of_edges());
     std::mt19937 rng(seed);
@@ -257,7 +253,7 @@ Mesh PrincipalSymmetricTorus(double R, double r, int n_u, int n_v, double noise,
       do {
         d = Eigen::Vector3d{uniform(rng), uniform(rng), uniform(rng)};  // braces: drawn in order
       } while (d.squaredNorm() > 1);
-      const Eigen::Vector3d p = P(mesh, v) + noise * mean * d;
+      const Eigen::Vector3d p = EigenPoint(mesh, v) + noise * mean * d;
       mesh.point(v) = Point(p[0], p[1], p[2]);
     }
   }

@@ -54,6 +54,12 @@ inline double EdgeLength(const Mesh& mesh, HalfedgeIndex h) {
   return std::sqrt(CGAL::squared_distance(mesh.point(mesh.source(h)), mesh.point(mesh.target(h))));
 }
 inline double EdgeLength(const Mesh& mesh, EdgeIndex e) { return EdgeLength(mesh, mesh.halfedge(e)); }
+// The mean edge length (0 for a mesh without edges).
+inline double MeanEdgeLength(const Mesh& mesh) {
+  double sum = 0.0;
+  for (EdgeIndex e : mesh.edges()) sum += EdgeLength(mesh, e);
+  return mesh.number_of_edges() > 0 ? sum / mesh.number_of_edges() : 0.0;
+}
 inline Point ToPoint(const Vec3& v) { return Point(v[0], v[1], v[2]); }
 
 // Adds (or finds) a per-element block property named `name`, initialised to

@@ -35,7 +35,7 @@ void Scale(Mesh& mesh, double s) {
 }
 
 
-std::string Number(double x) {
+std::string NumberText(double x) {
   std::ostringstream text;
   text << x;
   return text.str();
@@ -45,13 +45,13 @@ std::string Number(double x) {
 void CheckOptions(const GenerateOptions& o, bool is_net) {
   if (!(o.scale >= kMinGenerateScale && o.scale <= kMaxGenerateScale)) {
     throw InputError("--scale", 0, "scale",
-                     "must be in [" + Number(kMinGenerateScale) + ", " +
-                         Number(kMaxGenerateScale) + "], got " + Number(o.scale));
+                     "must be in [" + NumberText(kMinGenerateScale) + ", " +
+                         NumberText(kMaxGenerateScale) + "], got " + NumberText(o.scale));
   }
   if (o.noise && !(*o.noise >= 0 && *o.noise <= kMaxGenerateNoise)) {
     throw InputError("--noise", 0, "noise",
-                     "must be in [0, " + Number(kMaxGenerateNoise) +
-                         "] (mean edge lengths), got " + Number(*o.noise));
+                     "must be in [0, " + NumberText(kMaxGenerateNoise) +
+                         "] (mean edge lengths), got " + NumberText(*o.noise));
   }
   if (o.noise && o.surface != "roof" && o.surface != "torus") {
     throw InputError("--noise", 0, "noise", "noise applies to roof and torus only");

@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "problems/commands/run.h"
+#include "core/clock.h"
 #include "problems/runtime/mesh_inputs.h"
 #include "energies/registry.h"
 
@@ -36,9 +37,6 @@
 
 namespace archgeo {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double Since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 // "before -> after (change %)" of every measure of the first stage's log.
 std::string MeasureHeadline(const LoopResult& r) {
@@ -246,7 +244,7 @@ class SpecRun {
     } else if (!spec_.reference().empty()) {
       reference_mesh_ = std::make_unique<Mesh>(ReadMesh(spec_.reference(), nullptr, limits));
     }
-    seconds_["read"] = Since(start_);
+    seconds_["read"] = SecondsSince(start_);
   }
 
   // The result's validity against the net it came from (analysis/validity.h)
@@ -255,7 +253,7 @@ class SpecRun {
   void SolveAndMeasureInput() {
     const auto solve_start = Clock::now();
     solution_ = Solve(spec_, read_, reference_mesh_.get(), progress_);
-    solve_seconds_ = Since(solve_start);
+    solve_seconds_ = SecondsSince(solve_start);
     seconds_["solve"] = solve_seconds_;
     const Mesh& input = solution_->input;
     if (solution_->loop.usable) {
@@ -276,7 +274,7 @@ class SpecRun {
     }
     scale_ = before_.bbox_diagonal;
     extra_before_ = Analyse(input, d_.analyses, HNetOptionsOf(s_));
-    seconds_["reference_and_metrics_before"] = Since(setup_start);
+    seconds_["reference_and_metrics_before"] = SecondsSince(setup_start);
   }
 
   void ReportSolve() {
@@ -374,7 +372,7 @@ class SpecRun {
         WriteMesh(temporaries_.at("output.mesh"), solution_->output, shown ? &colors : nullptr,
                   s_.Bool("output.ascii_ply"), shown ? &properties : nullptr, &vertex_values);
       });
-      mesh_write_seconds_ = Since(mesh_start);
+      mesh_write_seconds_ = SecondsSince(mesh_start);
     });
   }
 
@@ -387,7 +385,7 @@ class SpecRun {
     extra_after_ = Analyse(output, d_.analyses, HNetOptionsOf(s_));
     run_.report["after"] = MetricsToJson(after_, scale_);
     AnalysisToJson(extra_after_, scale_, run_.report["after"]);
-    seconds_["metrics_after"] = Since(metrics_start);
+    seconds_["metrics_after"] = SecondsSince(metrics_start);
   }
 
   // The mean of the finite values (0 for none).
@@ -443,7 +441,7 @@ class SpecRun {
     const auto write_start = Clock::now();
     const FaceValues face_values = ColorValues(output, false);
     std::future<void> mesh_written = StartMeshWrite(face_values);
-    const double write_seconds = Since(write_start);
+    const double write_seconds = SecondsSince(write_start);
     MeasureOutput();
 
     const auto rest_start = Clock::now();
@@ -459,9 +457,9 @@ class SpecRun {
     rep["details"] = solution_->hooks.details;
     const WorkingNet& net = solution_->net;
     if (!net.details.empty()) rep["details"]["net"] = net.details;  // a net the problem made
-    seconds_["write"] = write_seconds + Since(rest_start);
+    seconds_["write"] = write_seconds + SecondsSince(rest_start);
     seconds_["write_mesh"] = mesh_write_seconds_;
-    seconds_["total"] = Since(start_);
+    seconds_["total"] = SecondsSince(start_);
     for (const auto& [k, v] : solution_->loop.seconds) seconds_[k] = v;
     rep["seconds"] = seconds_;
     if (temporaries_.count("output.report")) {
@@ -485,7 +483,7 @@ class SpecRun {
                       ? (" (" + std::to_string(solved.pcg_rounds) + " rounds by PCG, " +
                          std::to_string(solved.cg_iterations) + " CG steps)").c_str()
                       : "",
-                  Since(start_), solve_seconds_, solved.stop.c_str());
+                  SecondsSince(start_), solve_seconds_, solved.stop.c_str());
     char objective[128];
     std::snprintf(objective, sizeof objective, "objective (canonical frame): %.6e\n",
                   solved.objective.count("total") ? solved.objective.at("total") : 0.0);

@@ -220,7 +220,7 @@ struct FieldState : ProblemState {
 };
 
 // Element sets, the start z_N = e1 and the validated constraints.
-void Init(HookContext& c) {
+void InitConjugateField(HookContext& c) {
   const Settings& s = *c.settings;
   const Mesh& mesh = c.store->mesh();
   FieldState& state = c.State<FieldState>();
@@ -443,7 +443,7 @@ double LineDeg(const V2& a, const V2& b) {
   return std::abs(WrapLineAngle(LineAngle(a) - LineAngle(b))) * 180.0 / M_PI;
 }
 
-void Finish(HookContext& c) {
+void FinishConjugateField(HookContext& c) {
   const Mesh& mesh = c.store->mesh();
   const FieldState& state = c.State<FieldState>();
   const FieldGeometry& geometry = state.geometry;
@@ -548,7 +548,7 @@ void Finish(HookContext& c) {
   c.field = result;
 }
 
-void Write(HookContext& c) {
+void WriteConjugateField(HookContext& c) {
   const auto it = c.temporaries.find("field");
   if (it == c.temporaries.end()) return;
   const auto& result = c.field;
@@ -572,7 +572,7 @@ ProblemDecl conjugate_field() {
     CheckNoMultiresolution(s, "conjugate_field");
     CheckFieldOutputs(s);
   };
-  d.init = &Init;
+  d.init = &InitConjugateField;
   d.stages = [](const Settings& settings) {
     Stage s;
     s.name = "field";
@@ -585,9 +585,9 @@ ProblemDecl conjugate_field() {
     }
     return stages;
   };
-  d.finish = &Finish;
+  d.finish = &FinishConjugateField;
   d.output_keys = {"field"};
-  d.write = &Write;
+  d.write = &WriteConjugateField;
   d.colors = "none";  // the mesh is not changed: the field is the result (output.field)
   return d;
 }

@@ -56,7 +56,7 @@ void Net(HookContext& c) {
                    "solving the layout for planar faces (planar_quads)\n";
 }
 
-void Write(HookContext& c) {
+void WriteConjugateLayout(HookContext& c) {
   const auto& result = c.level_sets;
   if (const auto it = c.temporaries.find("layout"); it != c.temporaries.end()) {
     // The layout as solved: its bent panels split as in Net.
@@ -122,7 +122,7 @@ ProblemDecl conjugate_layout() {
   d.check = &CheckLevelSetKeys;
   d.net = &Net;
   d.output_keys = {"layout", "field"};
-  d.write = &Write;
+  d.write = &WriteConjugateLayout;
   return d;
 }
 

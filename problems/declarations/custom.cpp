@@ -128,7 +128,7 @@ std::string ColorsOf(const std::vector<TermUse>& terms) {
   return "none";
 }
 
-void Finish(HookContext& c) {
+void FinishCustom(HookContext& c) {
   if (On(*c.settings, "load")) FormDetails(c);
   if (On(*c.settings, "on_curve")) CurveDetails(c);
 }
@@ -213,7 +213,7 @@ ProblemDecl CustomProblem(const CustomValue* terms, const std::string& file) {
     if (smooth) s.logged.push_back("E");
     return std::vector<Stage>{s};
   };
-  d.finish = &Finish;
+  d.finish = &FinishCustom;
   // A listed term with nothing to act on is an input error naming it.
   d.init = [](HookContext& c) {
     for (const Key& k : c.settings->schema().keys()) {

@@ -488,7 +488,7 @@ void Net(HookContext& c) {
 }
 
 // Per solve: the (u, v), the element sets, fixed vertices and domain bounds.
-void Init(HookContext& c) {
+void InitGrid(HookContext& c) {
   const Settings& s = *c.settings;
   GridState& g = c.State<GridState>();
   const Grid& grid = g.grid;
@@ -632,7 +632,7 @@ StepResult ForceRound(HookContext& c) {
   return out;
 }
 
-void Finish(HookContext& c) {
+void FinishGrid(HookContext& c) {
   const Settings& s = *c.settings;
   GridState& g = c.State<GridState>();
   const GridQuality& after = Quality(c);
@@ -679,7 +679,7 @@ void Finish(HookContext& c) {
 }
 
 // output.grid: the grid mesh with each vertex's (u, v), positions x(u, v).
-void Write(HookContext& c) {
+void WriteGrid(HookContext& c) {
   const auto it = c.temporaries.find("grid");
   if (it == c.temporaries.end()) return;
   const Surface& surface = SurfaceOf(c);
@@ -781,9 +781,9 @@ ProblemDecl grid() {
   d.output_keys = {"grid"};
   d.check = &Check;
   d.net = &Net;
-  d.init = &Init;
-  d.finish = &Finish;
-  d.write = &Write;
+  d.init = &InitGrid;
+  d.finish = &FinishGrid;
+  d.write = &WriteGrid;
   for (const char* m : kMeasures) {
     d.measures[m] = [name = std::string(m)](HookContext& c) { return Table1(c, name); };
   }

@@ -132,7 +132,7 @@ nlohmann::json HNetJson(const HNet& h) {
           {"mismatch_max", h.mismatch_max}};
 }
 
-void Finish(HookContext& c) {
+void FinishHNet(HookContext& c) {
   const HNet& h = CurrentHNet(c);
   const nlohmann::json summary = HNetJson(h);
   for (const auto& [k, v] : summary.items()) c.details[k] = v;
@@ -160,7 +160,7 @@ void Finish(HookContext& c) {
   }
 }
 
-void Write(HookContext& c) {
+void WriteHNet(HookContext& c) {
   const Settings& s = *c.settings;
   const Mesh& output = *c.output;
   const HNet h = BuildHNet(output, HNetOptionsOf(s));
@@ -289,8 +289,8 @@ ProblemDecl hnet() {
     frame.before_round = &FrameWeights;
     return std::vector<Stage>{anet, frame};
   };
-  d.finish = &Finish;
-  d.write = &Write;
+  d.finish = &FinishHNet;
+  d.write = &WriteHNet;
   d.analyses = {"hnet"};
   d.colors = "kinks";
   // The deviation band (problems/declarations/design_band.h) only if set;

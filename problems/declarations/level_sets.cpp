@@ -93,7 +93,7 @@ BlockDecl Values(const char* name, const char* doc) {
   return {name, Site::kVertex, 1, FrameMap::kLength, false, Carry::kReinitialise, true, false, doc};
 }
 
-void Init(HookContext& c) {
+void InitLevelSets(HookContext& c) {
   const Settings& s = *c.settings;
   LevelSetState& st = St(c);
   st = LevelSetState{};
@@ -304,7 +304,7 @@ V3 Centroid(const Mesh& mesh, FaceIndex f) {
   return c / n;
 }
 
-void Finish(HookContext& c) {
+void FinishLevelSets(HookContext& c) {
   LevelSetState& st = St(c);
   const Mesh& mesh = c.store->mesh();
   auto result = std::make_shared<LevelSetResult>();
@@ -448,7 +448,7 @@ void Finish(HookContext& c) {
   c.level_sets = result;
 }
 
-void Write(HookContext& c) {
+void WriteLevelSets(HookContext& c) {
   const auto& result = c.level_sets;
   if (const auto it = c.temporaries.find("layout"); it != c.temporaries.end()) {
     if (!result->layout.ok) {
@@ -478,7 +478,7 @@ ProblemDecl level_sets() {
     CheckNoMultiresolution(s, "level_sets");
     CheckLevelSetKeys(s);
   };
-  d.init = &Init;
+  d.init = &InitLevelSets;
   d.stages = [](const Settings&) {
     const std::vector<std::string> jumps = {"level_set_jump", "level_set_branch_point"};
     Stage eq5;
@@ -495,9 +495,9 @@ ProblemDecl level_sets() {
     rounded.before_round = &Round;
     return std::vector<Stage>{eq5, eq6, rounded};
   };
-  d.finish = &Finish;
+  d.finish = &FinishLevelSets;
   d.output_keys = {"layout", "field"};
-  d.write = &Write;
+  d.write = &WriteLevelSets;
   d.colors = "none";  // the mesh is not changed: the functions and the layout are the result
   return d;
 }

@@ -154,7 +154,7 @@ void UpdateSaddles(HookContext& c, bool classify) {
 
 // Per level: the labels (followed through Loop subdivision), the element
 // sets, the spheres fitted to the stars, the strip normals, the saddles.
-void Init(HookContext& c) {
+void InitPrincipalSymmetric(HookContext& c) {
   Labels& labels = c.State<Labels>();
   Store& st = *c.store;
   const Mesh& mesh = st.mesh();
@@ -343,7 +343,7 @@ ProblemDecl principal_symmetric() {
   };
   d.net = &Net;
   d.init = [](HookContext& c) {
-    Init(c);
+    InitPrincipalSymmetric(c);
     if (c.level == 0) {
       c.details["conditions_before"] = Json(Measure(c));
       c.State<Labels>().input_residuals = ResidualPerFace(c);

@@ -12,17 +12,12 @@
 #include "geometry/hnet.h"
 #include "analysis/smoothness_metrics.h"
 #include "problems/declarations/hnet_net.h"
+#include "problems/report/report.h"
 
 namespace archgeo {
 namespace {
 
 // Pads to `width` characters as displayed (UTF-8 code points, not bytes).
-std::string Pad(const std::string& text, size_t width) {
-  size_t shown = 0;
-  for (unsigned char c : text) shown += (c & 0xC0) != 0x80;
-  return text + std::string(width > shown ? width - shown : 0, ' ');
-}
-
 std::string Cell(const AnalysisRow& row, double scale) {
   char buf[64];
   switch (row.kind) {
@@ -234,13 +229,13 @@ std::string FormatAnalysis(const AnalysisRows& before, const AnalysisRows* after
         if (r.key == row.key) a = Cell(r, scale);
       }
     }
-    out += Pad(row.label, 32) + Pad(Cell(row, scale), 26) + a + "\n";
+    out += PadColumns(row.label, 32) + PadColumns(Cell(row, scale), 26) + a + "\n";
   }
   if (after) {  // rows only after (e.g. a quantity undefined before)
     for (const AnalysisRow& r : *after) {
       bool seen = false;
       for (const AnalysisRow& b : before) seen |= b.key == r.key;
-      if (!seen) out += Pad(r.label, 32) + Pad("-", 26) + Cell(r, scale) + "\n";
+      if (!seen) out += PadColumns(r.label, 32) + PadColumns("-", 26) + Cell(r, scale) + "\n";
     }
   }
   return out;

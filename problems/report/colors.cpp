@@ -21,15 +21,6 @@ constexpr double kKinkRedDegrees = 1.0;
 // The default tolerance.pq_normalized_max of planar_quads.
 constexpr double kPlanarityRedDefault = 1e-3;
 
-double MeanEdgeLength(const Mesh& mesh) {
-  double sum = 0;
-  for (EdgeIndex e : mesh.edges()) {
-    sum += std::sqrt(
-        CGAL::squared_distance(mesh.point(mesh.vertex(e, 0)), mesh.point(mesh.vertex(e, 1))));
-  }
-  return sum / double(std::max<size_t>(1, mesh.number_of_edges()));
-}
-
 // max over a face's edges of ℓ|α| / mean edge length.
 std::vector<double> Bending(const Mesh& mesh) {
   const EdgeSmoothness edges = MeasureEdgeSmoothness(mesh, FaceNormals(mesh));

@@ -36,12 +36,6 @@ const std::vector<Row>& Rows() {
 }
 
 // Pads to `width` characters as displayed (UTF-8 code points, not bytes).
-std::string Pad(const std::string& text, size_t width) {
-  size_t shown = 0;
-  for (unsigned char c : text) shown += (c & 0xC0) != 0x80;
-  return text + std::string(width > shown ? width - shown : 0, ' ');
-}
-
 std::string Cell(double value, bool length, double scale) {
   char buf[64];
   if (value < 0) return "-";
@@ -73,12 +67,12 @@ std::string FormatMetrics(const Metrics& before, const Metrics* after, double sc
                   after->vertices, after->faces, after->quads, after->triangles, after->polygons);
     out += line;
   }
-  out += Pad("metric", 32) + Pad(after ? "before" : "value", 26) + (after ? "after" : "") + "\n";
+  out += PadColumns("metric", 32) + PadColumns(after ? "before" : "value", 26) + (after ? "after" : "") + "\n";
   for (const Row& row : Rows()) {
     const double b = before.*row.field;
     const double a = after ? (*after).*row.field : -1;
     if (b < 0 && a < 0) continue;
-    out += Pad(row.name, 32) + Pad(Cell(b, row.length, scale), 26) +
+    out += PadColumns(row.name, 32) + PadColumns(Cell(b, row.length, scale), 26) +
            (after ? Cell(a, row.length, scale) : "") + "\n";
   }
   return out;
@@ -99,6 +93,12 @@ std::string ChangeText(double before, double after) {
     std::snprintf(text, sizeof text, "%+ld%%", std::lround(100.0 * (after - before) / std::abs(before)));
   }
   return text;
+}
+
+std::string PadColumns(const std::string& text, size_t width) {
+  size_t shown = 0;
+  for (unsigned char c : text) shown += (c & 0xC0) != 0x80;
+  return text + std::string(width > shown ? width - shown : 0, ' ');
 }
 
 }  // namespace archgeo

@@ -3,6 +3,7 @@
 // archgeo — human-readable tables of metrics, for `solve` and `measure`.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 #include "analysis/metrics.h"
@@ -19,5 +20,8 @@ std::string FormatMetrics(const Metrics& before, const Metrics* after, double sc
 // where a percentage means nothing (from or to zero); "x15.2" (the factor)
 // beyond +1000%. Empty when nothing changed.
 std::string ChangeText(double before, double after);
+
+// `text` padded with spaces to `width` columns (a UTF-8 character is one).
+std::string PadColumns(const std::string& text, size_t width);
 
 }  // namespace archgeo

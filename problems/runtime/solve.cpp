@@ -6,6 +6,7 @@
 
 #include <chrono>
 
+#include "core/clock.h"
 #include "core/solver_options.h"
 #include "core/input_error.h"
 #include "mesh/similarity.h"
@@ -14,9 +15,6 @@
 
 namespace archgeo {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double Since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 // The `fixed` setting on `mesh`. Throws InputError for an index out of range.
 std::vector<bool> FixedVertices(const Settings& s, const Mesh& mesh, const std::string& mesh_path) {
@@ -265,7 +263,7 @@ std::unique_ptr<Solution> Solve(const ProblemSpec& spec, const Mesh& mesh, const
                            {"iterations", solved.iterations},
                            {"objective", solved.objective},
                            {"stop", solved.stop},
-                           {"seconds", Since(level_start)}});
+                           {"seconds", SecondsSince(level_start)}});
     if (!solved.usable) break;
   }
   solved.rounds = rounds;
