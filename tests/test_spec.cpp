@@ -126,6 +126,22 @@ TEST_F(SpecTest, UnknownKeyNamesLineAndKey) {
   EXPECT_NE(std::string(e.what()).find("unknown key"), std::string::npos);
 }
 
+// A mistyped key or choice gets the nearest one (issue 46, item 6): within
+// two edits of the name or of a tail after '_' ("treads" → num_threads).
+TEST_F(SpecTest, AMistypedKeyOrChoiceGetsTheNearestOne) {
+  EXPECT_NE(std::string(Error("mesh: a.obj\nsolver:\n  treads: 2\n").what())
+                .find("unknown key; did you mean 'num_threads'?"),
+            std::string::npos);
+  EXPECT_NE(std::string(Error("mesh: a.obj\nproblem: planar_quads\nterms: {fairnes: 1}\n").what())
+                .find("did you mean 'fairness'?"),
+            std::string::npos);
+  EXPECT_NE(std::string(Error("mesh: a.obj\nsolver: {linear_solver_type: sparse_normal_cholesk}\n").what())
+                .find("did you mean 'sparse_normal_cholesky'?"),
+            std::string::npos);
+  EXPECT_EQ(std::string(Error("mesh: a.obj\nsolver: {frobnicate: 1}\n").what()).find("did you mean"),
+            std::string::npos);
+}
+
 TEST_F(SpecTest, UnknownTopLevelAndTermKeys) {
   EXPECT_EQ(Error("mesh: a.obj\nmesch: b\n").key(), "mesch");
   EXPECT_EQ(Error("mesh: a.obj\nterms: {planarity: 1}\n").key(), "terms.planarity");

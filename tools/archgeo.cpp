@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "bench/bench.h"
+#include "core/closest_name.h"
 #include "core/input_error.h"
 #include "io/output_files.h"
 #include "problems/commands/darboux.h"
@@ -116,22 +117,6 @@ int Measure(const std::string& mesh, const std::string& reference, bool json, bo
 
 namespace {
 
-// The number of single-character edits (insert, delete, replace) from a to b.
-std::size_t EditDistance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
-
 bool IsCommand(CLI::App& app, const std::string& name) {
   for (const CLI::App* command : app.get_subcommands({})) {
     if (command->get_name() == name) return true;
@@ -142,15 +127,9 @@ bool IsCommand(CLI::App& app, const std::string& name) {
 // "'NAME' is not a command; did you mean 'X'? (archgeo help lists them)", the
 // suggestion only for a command within two edits.
 std::string NotACommand(CLI::App& app, const std::string& name) {
-  std::string best;
-  std::size_t best_distance = 3;
-  for (const CLI::App* command : app.get_subcommands({})) {
-    const std::size_t d = EditDistance(name, command->get_name());
-    if (d < best_distance) {
-      best_distance = d;
-      best = command->get_name();
-    }
-  }
+  std::vector<std::string> commands;
+  for (const CLI::App* command : app.get_subcommands({})) commands.push_back(command->get_name());
+  const std::string best = archgeo::ClosestName(name, commands);
   return "'" + name + "' is not a command" + (best.empty() ? "" : "; did you mean '" + best + "'?") +
          " (archgeo help lists them)";
 }

@@ -15,6 +15,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/closest_name.h"
 #include "core/solver_options.h"
 #include "energies/registry.h"
 #include "core/input_error.h"
@@ -178,7 +179,10 @@ class Reader {
           message = "expected a mapping of keys (" + List(schema_.Children(key)) + "), got " +
                     Describe(value);
         } else {
-          message += " (allowed here: " + List(schema_.Children(prefix)) + ")";
+          const std::vector<std::string> allowed = schema_.Children(prefix);
+          const std::string meant = ClosestName(name, allowed);
+          if (!meant.empty()) message += "; did you mean '" + meant + "'?";
+          message += " (allowed here: " + List(allowed) + ")";
         }
         Fail(entry.first, key, message);
       }
@@ -235,7 +239,9 @@ class Reader {
     for (const std::string& c : k.choices) {
       if (c == value) return value;
     }
-    Fail(node, k.name, "'" + value + "' is not one of: " + List(k.choices));
+    const std::string meant = ClosestName(value, k.choices);
+    Fail(node, k.name, "'" + value + "' is not one of: " + List(k.choices) +
+                           (meant.empty() ? "" : "; did you mean '" + meant + "'?"));
   }
 
   std::string Path(const Key& k, const YAML::Node& node) const {
