@@ -2,25 +2,20 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "bench/bench.h"
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <chrono>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <system_error>
 
+#include "bench/child.h"
+#include "bench/jobs.h"
 #include "core/input_error.h"
 #include "io/output_files.h"
 #include "problems/spec/spec.h"
-
-extern char** environ;
 
 namespace archgeo {
 namespace {
@@ -74,6 +69,24 @@ std::string Quote(const std::string& s) {
   return out + "'";
 }
 
+// A path as a YAML double-quoted scalar, for `--set KEY=VALUE` (whose value
+// is YAML): every character kept, '#', ': ', quotes and line breaks included.
+std::string YamlQuoted(const std::string& path) {
+  std::string out = "\"";
+  for (const char c : path) {
+    if (c == '\\' || c == '"') {
+      out += std::string("\\") + c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      char escape[8];
+      std::snprintf(escape, sizeof escape, "\\x%02x", unsigned(static_cast<unsigned char>(c)));
+      out += escape;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
 std::string ReadText(const fs::path& path) {
   std::ifstream in(path);
   std::stringstream text;
@@ -102,7 +115,7 @@ std::string LastLine(const std::string& text) {
 // The spec read with `mesh` (bad spec or mesh: InputError, as `solve` says it).
 ProblemSpec Read(const std::string& spec, const std::string& mesh,
                  const Settings_& settings = {}) {
-  std::vector<std::string> overrides = {"mesh=" + mesh};
+  std::vector<std::string> overrides = {"mesh=" + YamlQuoted(mesh)};
   for (const auto& [k, v] : settings) overrides.push_back(k + "=" + v);
   return ReadSpec(spec, overrides);
 }
@@ -219,12 +232,63 @@ std::string Table(const json& rows) {
   return out;
 }
 
-void WriteOutputs(const json& rows, const std::string& csv_path) {
-  if (csv_path.empty()) return;
-  fs::path json_path = csv_path;
-  json_path.replace_extension(".json");
-  WriteTextFile(csv_path, Csv(rows), "--out");
-  WriteTextFile(json_path.string(), rows.dump(2) + "\n", "--out");
+// Output files of text, staged when added (an input, a folder, a FIFO or a
+// device is refused before anything runs) and put in place together by
+// Commit(): a failure leaves every previous file as it was.
+class StagedTexts {
+ public:
+  explicit StagedTexts(std::vector<std::string> inputs) : staged_(std::move(inputs)) {}
+
+  void Add(const std::string& target, const std::string& key) {
+    files_.push_back({staged_.Stage(target, key), target, key});
+  }
+
+  // texts[i] goes to the i-th file added.
+  void Commit(const std::vector<std::string>& texts) {
+    for (size_t i = 0; i < files_.size(); ++i) {
+      try {
+        WriteTextFile(files_[i].temporary, texts.at(i), files_[i].key);
+      } catch (const InputError& e) {
+        throw InputError(files_[i].target, 0, files_[i].key, e.message());
+      }
+    }
+    staged_.Commit();
+  }
+
+ private:
+  struct File {
+    std::string temporary, target, key;
+  };
+  StagedOutputs staged_;
+  std::vector<File> files_;
+};
+
+// --out R.csv and R.json beside it: names that cannot be equal.
+void AddRowFiles(StagedTexts& outputs, const std::string& csv) {
+  if (csv.empty()) return;
+  std::string extension = fs::path(csv).extension().string();
+  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (extension != ".csv") {
+    throw InputError(csv, 0, "--out", "must end in .csv (the rows go to it as CSV and, as JSON, "
+                                      "to the same name ending in .json)");
+  }
+  outputs.Add(csv, "--out");
+  outputs.Add(fs::path(csv).replace_extension(".json").string(), "--out");
+}
+
+std::vector<std::string> RowTexts(const json& rows) { return {Csv(rows), rows.dump(2) + "\n"}; }
+
+// Every file the runs read: the spec, what it reads with each mesh (the
+// mesh included) and the archgeo binary. No output may name one.
+std::vector<std::string> BenchInputs(const std::string& spec, const std::vector<std::string>& meshes,
+                                     const std::string& self) {
+  std::vector<std::string> inputs = {spec, self};
+  for (const std::string& mesh : meshes) {
+    const std::vector<std::string> read = Read(spec, mesh).InputFiles();
+    inputs.insert(inputs.end(), read.begin(), read.end());
+    inputs.push_back(mesh);
+  }
+  return inputs;
 }
 
 // The validated plan: every combination of the --vary values, in order.
@@ -275,13 +339,11 @@ json RunOnce(const std::string& self, const std::string& spec, const std::string
              const Settings_& settings, int repeat) {
   json record = {{"mesh", Absolute(mesh)}, {"settings", json::object()}, {"repeat", repeat}};
   for (const auto& [k, v] : settings) record["settings"][k] = v;
-  char pattern[] = "/tmp/archgeo_bench.XXXXXX";
-  const char* made = mkdtemp(pattern);
-  if (!made) throw InputError("/tmp", 0, "", "cannot create a scratch folder");
-  const fs::path scratch = made;
+  const ScratchFolder folder;
+  const fs::path scratch = folder.path();
 
   std::vector<std::string> args = {self, "solve", Absolute(spec), "--quiet", "--set",
-                                   "mesh=" + Absolute(mesh)};
+                                   "mesh=" + YamlQuoted(Absolute(mesh))};
   for (const auto& [k, v] : settings) args.insert(args.end(), {"--set", k + "=" + v});
   // Every output the spec writes goes into the scratch folder.
   try {
@@ -291,41 +353,21 @@ json RunOnce(const std::string& self, const std::string& spec, const std::string
       const std::string path = read.settings.String(k.name);
       if (!path.empty()) {
         args.insert(args.end(),
-                    {"--set", k.name + "=" + (scratch / fs::path(path).filename()).string()});
+                    {"--set", k.name + "=" + YamlQuoted((scratch / fs::path(path).filename()).string())});
       }
     }
   } catch (const InputError&) {
     // The run itself reports it.
   }
   const fs::path report = scratch / "report.json";
-  args.insert(args.end(), {"--set", "output.report=" + report.string()});
+  args.insert(args.end(), {"--set", "output.report=" + YamlQuoted(report.string())});
 
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, (scratch / "stdout.txt").c_str(),
-                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, 2, (scratch / "stderr.txt").c_str(),
-                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  const auto start = std::chrono::steady_clock::now();
-  pid_t pid = 0;
-  const int spawned = posix_spawn(&pid, self.c_str(), &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) {
-    fs::remove_all(scratch);
-    throw InputError(self, 0, "", "cannot run the archgeo binary");
-  }
-  int status = 0;
-  rusage usage{};
-  while (wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
-  }
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const int exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  const ChildOutcome child =
+      RunChild(args, (scratch / "stdout.txt").string(), (scratch / "stderr.txt").string());
+  const int exit_code = child.exit_code;
   record["exit_code"] = exit_code;
-  record["wall_s"] = wall;
-  record["peak_memory_mb"] = double(usage.ru_maxrss) / 1024.0;
+  record["wall_s"] = child.wall_s;
+  record["peak_memory_mb"] = child.peak_memory_mb;
   record["command"] = args;
 
   const std::string out = ReadText(scratch / "stdout.txt"), err = ReadText(scratch / "stderr.txt");
@@ -361,7 +403,6 @@ json RunOnce(const std::string& self, const std::string& spec, const std::string
       record["message"] = std::string("unreadable report: ") + e.what();
     }
   }
-  fs::remove_all(scratch);
   return record;
 }
 
@@ -410,75 +451,122 @@ json MergeRecords(const std::vector<json>& records) {
   return rows;
 }
 
-std::string RunBench(const BenchRequest& q) {
-  // Merge the records of a folder.
-  if (!q.collect.empty()) {
-    if (!fs::is_directory(q.collect)) throw InputError(q.collect, 0, "--collect", "not a folder");
-    std::vector<fs::path> files;
-    for (const auto& e : fs::directory_iterator(q.collect)) {
-      if (e.path().extension() == ".json") files.push_back(e.path());
+namespace {
+
+// Which mode the options ask for; combinations that would ignore an option
+// are refused.
+void CheckModes(const BenchRequest& q) {
+  if (!q.out.empty() && (!q.emit_jobs.empty() || !q.record.empty() || !q.run_jobs.empty())) {
+    throw InputError(q.out, 0, "--out", "not with --emit-jobs, --record or --run-jobs (their "
+                                        "records are merged by --collect DIR --out R.csv)");
+  }
+  if (q.job != 0 && q.run_jobs.empty()) throw InputError("", 0, "--job", "only with --run-jobs FILE");
+  if (!q.run_jobs.empty() && (!q.spec.empty() || !q.meshes.empty())) {
+    throw InputError(q.run_jobs, 0, "--run-jobs", "takes no SPEC or --mesh (the job names them)");
+  }
+}
+
+std::string Collect(const BenchRequest& q) {
+  if (!fs::is_directory(q.collect)) throw InputError(q.collect, 0, "--collect", "not a folder");
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(q.collect)) {
+    if (e.path().extension() == ".json") files.push_back(e.path());
+  }
+  std::sort(files.begin(), files.end());
+  if (files.empty()) throw InputError(q.collect, 0, "--collect", "no records (*.json) in it");
+  std::vector<std::string> inputs;
+  for (const fs::path& f : files) inputs.push_back(f.string());
+  StagedTexts outputs(inputs);
+  AddRowFiles(outputs, q.out);
+  std::vector<json> records;
+  for (const fs::path& f : files) {
+    try {
+      records.push_back(json::parse(ReadText(f)));
+      (void)records.back().at("exit_code");
+    } catch (const json::exception& e) {
+      throw InputError(f.string(), 0, "--collect", std::string("not a bench record: ") + e.what());
     }
-    std::sort(files.begin(), files.end());
-    if (files.empty()) throw InputError(q.collect, 0, "--collect", "no records (*.json) in it");
-    std::vector<json> records;
-    for (const fs::path& f : files) {
-      try {
-        records.push_back(json::parse(ReadText(f)));
-        (void)records.back().at("exit_code");
-      } catch (const json::exception& e) {
-        throw InputError(f.string(), 0, "--collect", std::string("not a bench record: ") + e.what());
+  }
+  const json rows = MergeRecords(records);
+  if (!q.out.empty()) outputs.Commit(RowTexts(rows));
+  return Table(rows) + (q.out.empty() ? "" : "wrote " + q.out + "\n");
+}
+
+// One run into one record (--record, or a job of --run-jobs). `key` names
+// the record's option; `also_read` are inputs beyond the run's (the job file).
+std::string RecordRun(const std::string& self, const BenchJob& job, const std::string& key,
+                      const std::vector<std::string>& also_read) {
+  BenchRequest check;
+  check.spec = job.spec;
+  check.meshes = {job.mesh};
+  check.repeat = job.repeat;
+  Validate(check, {job.settings});
+  std::vector<std::string> inputs = BenchInputs(job.spec, {job.mesh}, self);
+  inputs.insert(inputs.end(), also_read.begin(), also_read.end());
+  // Made here, not by Stage(): a job that fails never removes the folder
+  // other jobs write into.
+  std::error_code ignored;  // Stage() reports a folder that cannot be made
+  fs::create_directories(fs::path(job.record).parent_path(), ignored);
+  StagedTexts output(inputs);
+  output.Add(job.record, key);
+  const json record = RunOnce(self, job.spec, job.mesh, job.settings, job.repeat);
+  output.Commit({record.dump(2) + "\n"});
+  return "wrote " + job.record + " (exit code " + std::to_string(record["exit_code"].get<int>()) + ")\n";
+}
+
+std::string EmitJobs(const BenchRequest& q, const std::vector<Settings_>& plan) {
+  fs::path records = q.records;
+  if (records.empty()) records = fs::path(q.emit_jobs).replace_extension("").string() + "_runs";
+  records = Absolute(records.string());
+  if (fs::exists(records) && !fs::is_directory(records)) {
+    throw InputError(records.string(), 0, "--records", "exists and is not a folder");
+  }
+  StagedTexts output(BenchInputs(q.spec, q.meshes, q.self));
+  output.Add(q.emit_jobs, "--emit-jobs");
+  std::string jobs;
+  int index = 0;
+  for (const Settings_& s : plan) {
+    for (const std::string& mesh : q.meshes) {
+      ++index;
+      for (int r = 1; r <= q.repeat; ++r) {
+        char name[64];
+        std::snprintf(name, sizeof name, "run-%04d-r%d.json", index, r);
+        jobs += JobLine({Absolute(q.spec), Absolute(mesh), s, r, (records / name).string()});
       }
     }
-    const json rows = MergeRecords(records);
-    WriteOutputs(rows, q.out);
-    return Table(rows) + (q.out.empty() ? "" : "wrote " + q.out + "\n");
+  }
+  output.Commit({jobs});
+  const std::string count = std::to_string(index * q.repeat);
+  return "wrote " + count + " jobs to " + q.emit_jobs + "; each writes its record into " +
+         records.string() + "\nrun them (job K is `archgeo bench --run-jobs JOBS --job K`), e.g.:\n" +
+         "  seq " + count + " | xargs -P 2 -n 1 " + Quote(q.self) + " bench --run-jobs " +
+         Quote(Absolute(q.emit_jobs)) + " --job\nthen: archgeo bench --collect " +
+         Quote(records.string()) + " --out results.csv\n";
+}
+
+}  // namespace
+
+std::string RunBench(const BenchRequest& q) {
+  CheckModes(q);
+  if (!q.collect.empty()) return Collect(q);
+  if (!q.run_jobs.empty()) {
+    const std::string jobs = Absolute(q.run_jobs);
+    return RecordRun(q.self, ReadJob(q.run_jobs, q.job), "--run-jobs", {jobs});
   }
   if (q.spec.empty()) throw InputError("", 0, "SPEC", "give a spec (or --collect DIR)");
-
-  // One run into one record (what an emitted job does).
   if (!q.record.empty()) {
     if (q.meshes.size() != 1) throw InputError("", 0, "--mesh", "--record runs one mesh");
-    Settings_ settings;
-    for (const std::string& s : q.sets) settings.push_back(ParseSet(s));
-    BenchRequest check = q;
-    check.vary.clear();
-    Validate(check, {settings});
-    const json record = RunOnce(q.self, q.spec, q.meshes[0], settings, q.repeat);
-    WriteTextFile(q.record, record.dump(2) + "\n", "--record");
-    return "wrote " + q.record + " (exit code " + std::to_string(record["exit_code"].get<int>()) + ")\n";
+    BenchJob job{q.spec, q.meshes[0], {}, q.repeat, q.record};
+    for (const std::string& s : q.sets) job.settings.push_back(ParseSet(s));
+    return RecordRun(q.self, job, "--record", {});
   }
 
   const std::vector<Settings_> plan = Combinations(q);
   Validate(q, plan);
+  if (!q.emit_jobs.empty()) return EmitJobs(q, plan);
 
-  // Jobs for a scheduler.
-  if (!q.emit_jobs.empty()) {
-    fs::path records = q.records;
-    if (records.empty()) records = fs::path(q.emit_jobs).replace_extension("").string() + "_runs";
-    records = Absolute(records.string());
-    std::string jobs;
-    int index = 0;
-    for (const Settings_& s : plan) {
-      for (const std::string& mesh : q.meshes) {
-        ++index;
-        for (int r = 1; r <= q.repeat; ++r) {
-          char name[64];
-          std::snprintf(name, sizeof name, "run-%04d-r%d.json", index, r);
-          std::string line = "mkdir -p " + Quote(records.string()) + " && " + Quote(q.self) +
-                             " bench " + Quote(Absolute(q.spec)) + " --mesh " + Quote(Absolute(mesh));
-          for (const auto& [k, v] : s) line += " --set " + Quote(k + "=" + v);
-          line += " --repeat " + std::to_string(r) + " --record " + Quote((records / name).string());
-          jobs += line + "\n";
-        }
-      }
-    }
-    WriteTextFile(q.emit_jobs, jobs, "--emit-jobs");
-    return "wrote " + std::to_string(index * q.repeat) + " jobs to " + q.emit_jobs +
-           "; each writes its record into " + records.string() +
-           "\nrun them, e.g.: xargs -P 2 -I{} sh -c {} < " + q.emit_jobs +
-           "\nthen: archgeo bench --collect " + records.string() + " --out results.csv\n";
-  }
-
+  StagedTexts outputs(BenchInputs(q.spec, q.meshes, q.self));
+  AddRowFiles(outputs, q.out);
   std::vector<json> records;
   for (const Settings_& s : plan) {
     for (const std::string& mesh : q.meshes) {
@@ -486,7 +574,7 @@ std::string RunBench(const BenchRequest& q) {
     }
   }
   const json rows = MergeRecords(records);
-  WriteOutputs(rows, q.out);
+  if (!q.out.empty()) outputs.Commit(RowTexts(rows));
   return Table(rows) + (q.out.empty() ? "" : "wrote " + q.out + "\n");
 }
 

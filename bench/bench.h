@@ -15,13 +15,21 @@
 // (tolerances met, each tolerance's measure after the solve, the objective)
 // from its report. Records of one (settings, mesh) are merged into a row:
 // wall time median, min and max over the repeats. Rows go to the table
-// printed, to OUT (CSV) and to OUT with .json. A run that fails is a row
-// with its exit code and message; the sweep goes on.
+// printed, to OUT (CSV; the name must end in .csv) and to OUT with .json. A
+// run that fails is a row with its exit code and message; the sweep goes on.
 //
-// Beyond one machine: --emit-jobs JOBS writes one self-contained shell
-// command per run (for GNU parallel, xargs -P or a Slurm job array: see
-// docs/bench.md); each writes its record into the records folder
-// (--records, default JOBS without extension + "_runs"), and
+// Outputs (OUT and its .json, the job file, a record) are written as `solve`
+// writes its own (io/output_files.h): staged before any run, refused if they
+// name an input (the spec, a mesh, a file the spec reads, a record being
+// collected, the job file) or exist and are not regular files, and put in
+// place all together, so a failure leaves the previous files as they were.
+// A signal stops the running child and removes the scratch folder
+// (bench/child.h).
+//
+// Beyond one machine: --emit-jobs JOBS writes one job per line, as data
+// (bench/jobs.h); `archgeo bench --run-jobs JOBS --job K` runs job K and
+// writes its record into the records folder (--records, default JOBS
+// without extension + "_runs"); runners pass only K (docs/bench.md), and
 // `archgeo bench --collect DIR` merges the records into the same rows.
 #pragma once
 
@@ -44,6 +52,8 @@ struct BenchRequest {
   std::string records;                  // folder of the emitted jobs' records
   std::string collect;                  // merge the records of this folder
   std::string record;                   // run once (settings from `sets`) into this record
+  std::string run_jobs;                 // a job file of --emit-jobs ...
+  int job = 0;                          // ... and the job of it to run (from 1)
   std::string self;                     // the archgeo binary
 };
 

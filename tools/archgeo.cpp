@@ -13,6 +13,7 @@
 //   archgeo render MESH... --out VIEW.png|VIEW.html [--value NAME] [--color-max X] [--titles A,B]
 //   archgeo bench SPEC --mesh M... [--vary 'KEY=[A,B]']... [--repeat N] [--out R.csv]
 //                        [--emit-jobs JOBS.txt [--records DIR]]
+//   archgeo bench --run-jobs JOBS.txt --job K
 //   archgeo bench --collect DIR [--out R.csv]
 //   archgeo help [COMMAND]      (the same text as --help)
 //   archgeo --version
@@ -36,6 +37,7 @@
 #include <vector>
 
 #include "bench/bench.h"
+#include "bench/child.h"
 #include "core/closest_name.h"
 #include "core/input_error.h"
 #include "io/output_files.h"
@@ -306,10 +308,16 @@ int main(int argc, char** argv) {
   bench->add_option("--repeat", bench_request.repeat, "Runs of each setting and mesh (wall time: "
                                                       "median, min, max)")
       ->capture_default_str();
-  bench->add_option("--out", bench_request.out, "CSV of the rows; the same rows as JSON beside it "
-                                                "(.json)");
+  bench->add_option("--out", bench_request.out, "CSV of the rows (a name ending in .csv); the same "
+                                                "rows as JSON beside it (.json)");
   bench->add_option("--emit-jobs", bench_request.emit_jobs,
-                    "Write one shell command per run to this file instead of running them");
+                    "Write one job per run (a line of data, not a command) to this file instead "
+                    "of running them; --run-jobs runs them");
+  bench->add_option("--run-jobs", bench_request.run_jobs,
+                    "Run one job of this file from --emit-jobs (the one --job names) and write "
+                    "its record");
+  bench->add_option("--job", bench_request.job, "The job of --run-jobs to run, from 1")
+      ->check(CLI::PositiveNumber);
   bench->add_option("--records", bench_request.records,
                     "Folder the emitted jobs write their records into (default: JOBS_runs)");
   bench->add_option("--collect", bench_request.collect,
@@ -354,6 +362,8 @@ int main(int argc, char** argv) {
       char resolved[4096];
       const ssize_t n = readlink("/proc/self/exe", resolved, sizeof resolved - 1);
       if (n > 0) bench_request.self.assign(resolved, size_t(n));
+      // A signal also stops the running child and removes its scratch folder.
+      archgeo::InstallBenchSignalHandling();
       std::cout << archgeo::RunBench(bench_request);
       return 0;
     }
