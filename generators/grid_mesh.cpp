@@ -6,13 +6,13 @@
 #include <cctype>
 #include <cerrno>
 #include <cstring>
-#include <fstream>
 #include <iomanip>
 
 #include <CGAL/Surface_mesh/IO/PLY.h>
 #include <glog/logging.h>
 
 #include "core/input_error.h"
+#include "io/output_stream.h"
 
 namespace archgeo {
 namespace {
@@ -26,7 +26,7 @@ std::string Extension(const std::string& path) {
   return ext;
 }
 
-void WriteObj(std::ofstream& out, const Mesh& mesh, const std::vector<Eigen::Vector2d>& uv) {
+void WriteObj(std::ostream& out, const Mesh& mesh, const std::vector<Eigen::Vector2d>& uv) {
   out << std::setprecision(17);
   out << "# archgeo grid: vt = the surface parameter (u, v) of the vertex of the same index\n";
   for (VertexIndex v : mesh.vertices()) {
@@ -46,7 +46,7 @@ void WriteObj(std::ofstream& out, const Mesh& mesh, const std::vector<Eigen::Vec
 // Through a fresh Surface_mesh with only points, faces and "v:u", "v:v":
 // CGAL's Surface_mesh PLY writer writes every double vertex property map
 // "v:NAME" as "property double NAME".
-bool WritePly(std::ofstream& out, const Mesh& mesh, const std::vector<Eigen::Vector2d>& uv,
+bool WritePly(std::ostream& out, const Mesh& mesh, const std::vector<Eigen::Vector2d>& uv,
               bool ascii) {
   Mesh clean;
   for (VertexIndex v : mesh.vertices()) clean.add_vertex(mesh.point(v));
@@ -101,7 +101,7 @@ void WriteGridMesh(const std::string& path, const Mesh& mesh,
     throw InputError(path, 0, "",
                      "a grid with its (u, v) is written as .ply or .obj, not '." + ext + "'");
   }
-  std::ofstream out(path, std::ios::binary);
+  NoFollowOfstream out(path);
   if (!out) throw InputError(path, 0, "", std::string("cannot open for writing: ") + std::strerror(errno));
   bool ok = true;
   if (ext == "obj") {

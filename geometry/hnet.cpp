@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <fstream>
 #include <limits>
 #include <queue>
 
@@ -19,6 +18,7 @@
 #include <glog/logging.h>
 
 #include "core/input_error.h"
+#include "io/output_stream.h"
 #include "mesh/topology.h"
 
 namespace archgeo {
@@ -529,7 +529,7 @@ Polylines PatchRulings(const Mesh& mesh, const HNet& hnet, int per_family, int p
 }
 
 void WritePolylinesObj(const std::string& path, const std::vector<std::vector<Vec3>>& lines) {
-  std::ofstream file(path);
+  NoFollowOfstream file(path);
   if (!file) throw InputError(path, 0, "", "cannot open the polyline file for writing");
   file.precision(17);
   file << "# archgeo polylines: " << lines.size() << " lines\n";

@@ -6,15 +6,15 @@
 
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 
 #include "core/input_error.h"
+#include "io/output_stream.h"
 
 namespace archgeo {
 namespace {
 
 template <typename T>
-void Put(std::ofstream& out, T value) {
+void Put(std::ostream& out, T value) {
   char bytes[sizeof(T)];
   std::memcpy(bytes, &value, sizeof(T));  // little-endian hosts only (x86-64, arm64)
   out.write(bytes, sizeof(T));
@@ -40,7 +40,7 @@ void WritePatchworkPly(const std::string& path, const SampledPatchwork& patchwor
     if (index[v] >= 0) order[index[v]] = int(v);
   }
 
-  std::ofstream out(path, std::ios::binary);
+  NoFollowOfstream out(path);
   if (!out) throw InputError(path, 0, "", "cannot write the patchwork");
   out << "ply\nformat " << (ascii ? "ascii" : "binary_little_endian") << " 1.0\n"
       << "comment archgeo H-net patchwork (rational bilinear patches, Shi 2014)\n"

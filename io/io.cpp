@@ -43,12 +43,12 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <type_traits>
 
 #include "core/input_error.h"
 #include "io/input_file.h"
+#include "io/output_stream.h"
 #include "io/soup_halfedges.h"
 #include "io/soup_readers.h"
 #include "io/text_scan.h"
@@ -400,7 +400,7 @@ void WriteMesh(const std::string& path, const Mesh& mesh, const std::vector<Rgb>
                     " (a uchar vertex count) can store");
     }
   }
-  std::ofstream out(path, std::ios::binary);
+  NoFollowOfstream out(path);
   if (!out) FailInput(path, 0, std::string("cannot open for writing: ") + std::strerror(errno));
   const auto precision = CGAL::parameters::stream_precision(17);
   bool ok = false;

@@ -10,9 +10,9 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 
 #include "core/input_error.h"
+#include "io/output_stream.h"
 #include "render/colormap.h"
 #include "render/picture.h"
 
@@ -186,7 +186,7 @@ void WriteHtmlView(const std::string& path, const std::vector<PicturePanel>& pan
     data.replace(at, 2, "<\\/");
   }
   page.replace(page.find("@DATA@"), 6, data);
-  std::ofstream out(path, std::ios::binary);
+  NoFollowOfstream out(path);
   if (!out) {
     throw InputError(path, 0, key, std::string("cannot open for writing: ") + std::strerror(errno));
   }

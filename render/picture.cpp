@@ -6,13 +6,16 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <numeric>
 
 #include "core/input_error.h"
 #include "core/newell.h"
+#include "io/output_stream.h"
 #include "render/colormap.h"
 
 namespace archgeo {
@@ -176,6 +179,13 @@ void DrawPanel(cairo_t* cr, const PicturePanel& panel, const Camera& camera, dou
   Text(cr, cx, y0 + 44, Summary(panel, colours.red_at), 13, false, true);
 }
 
+// cairo's PNG stream writer into a stdio file.
+cairo_status_t WritePngBytes(void* file, const unsigned char* data, unsigned int length) {
+  return std::fwrite(data, 1, length, static_cast<std::FILE*>(file)) == length
+             ? CAIRO_STATUS_SUCCESS
+             : CAIRO_STATUS_WRITE_ERROR;
+}
+
 }  // namespace
 
 std::array<std::array<double, 3>, 3> DefaultCamera(const PicturePanel& panel,
@@ -232,12 +242,24 @@ void WritePicture(const std::string& path, const std::vector<PicturePanel>& pane
                         "; red at " + Number(scale.red_at) +
                         (scale.red_from.empty() ? "" : " (" + scale.red_from + ")"),
        13);
-  const cairo_status_t status = cairo_surface_write_to_png(surface, path.c_str());
+  std::FILE* file = FopenNoFollow(path);
+  const int open_error = errno;
+  const cairo_status_t status =
+      file == nullptr ? CAIRO_STATUS_WRITE_ERROR
+                      : cairo_surface_write_to_png_stream(surface, &WritePngBytes, file);
+  const bool closed = file != nullptr && std::fclose(file) == 0;
   cairo_destroy(cr);
   cairo_surface_destroy(surface);
-  if (status != CAIRO_STATUS_SUCCESS) {
+  if (file == nullptr) {
     throw InputError(path, 0, key,
-                     std::string("cannot write the PNG picture: ") + cairo_status_to_string(status));
+                     std::string("cannot open for writing: ") + std::strerror(open_error));
+  }
+  if (status != CAIRO_STATUS_SUCCESS || !closed) {
+    throw InputError(path, 0, key,
+                     std::string("cannot write the PNG picture: ") +
+                         cairo_status_to_string(status == CAIRO_STATUS_SUCCESS
+                                                    ? CAIRO_STATUS_WRITE_ERROR
+                                                    : status));
   }
 }
 
