@@ -13,11 +13,14 @@
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <system_error>
 
 #include "core/input_error.h"
+#include "io/output_journal.h"
+#include "io/output_stream.h"
 
 namespace archgeo {
 namespace {
@@ -96,6 +99,38 @@ void Terminate(int sig) {
   raise(sig);  // delivered when the handler returns (the signal is blocked in it)
 }
 
+// A signal held back during Commit(): one a handler deferred, or one still
+// pending in this thread (blocked here, and in every other thread); 0 if none.
+int HeldSignal() {
+  if (const int sig = deferred_signal.exchange(0)) return sig;
+  sigset_t pending;
+  sigpending(&pending);
+  for (int s : {SIGINT, SIGTERM, SIGHUP}) {
+    if (sigismember(&pending, s)) return s;
+  }
+  return 0;
+}
+
+// Ends the process by `sig` from Commit() (signals blocked there).
+[[noreturn]] void TerminateFromCommit(int sig) {
+  RemoveRegistered();
+  signal(sig, SIG_DFL);
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, sig);
+  raise(sig);
+  pthread_sigmask(SIG_UNBLOCK, &set, nullptr);
+  _exit(128 + sig);  // not reached: the default action ends the process
+}
+
+// ARCHGEO_TEST_PAUSE_AFTER_RENAME=k: Commit() stops itself (SIGSTOP) once k
+// renames are done (k = 0: journal and backups written, nothing renamed), for
+// the tests that SIGKILL a commit half way. -1 when unset.
+int PauseAfterRename() {
+  const char* value = std::getenv("ARCHGEO_TEST_PAUSE_AFTER_RENAME");
+  return value != nullptr && *value != '\0' ? std::atoi(value) : -1;
+}
+
 void OnSignal(int sig) {
   int idle = 0;
   if (state.compare_exchange_strong(idle, 2)) {
@@ -115,14 +150,11 @@ bool SameFile(const std::string& a, const std::string& b) {
   return fs::equivalent(a, b, error);  // false (with `error` set) if either is missing
 }
 
-// Distinguishes the temporaries of all StagedOutputs in this process.
-std::atomic<unsigned> next_temporary{0};
-
 std::string Errno() { return std::strerror(errno); }
 
 // Flushes a written file to disk; false with errno set on failure.
 bool SyncFile(const std::string& path) {
-  const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  const int fd = open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
   if (fd < 0) return false;
   const bool ok = fsync(fd) == 0;
   const int saved = errno;
@@ -138,8 +170,37 @@ void SyncFolder(const fs::path& folder) {
   close(fd);
 }
 
-std::string BackupOf(const std::string& target) {
-  return target + ".bak-" + std::to_string(getpid());
+std::string KindOfFile(mode_t mode) {
+  return S_ISLNK(mode)    ? "a symbolic link"
+         : S_ISDIR(mode)  ? "a folder"
+         : S_ISCHR(mode)  ? "a character device"
+         : S_ISBLK(mode)  ? "a block device"
+         : S_ISFIFO(mode) ? "a FIFO"
+         : S_ISSOCK(mode) ? "a socket"
+                          : "a special file";
+}
+
+// Refuses a target that exists and is not a regular file, a symbolic link
+// included (never followed, never replaced).
+void CheckTarget(const std::string& target, const std::string& key) {
+  struct stat info;
+  if (lstat(target.c_str(), &info) != 0 || S_ISREG(info.st_mode)) return;
+  std::string what = KindOfFile(info.st_mode);
+  if (S_ISLNK(info.st_mode)) {
+    std::error_code error;
+    const fs::path to = fs::read_symlink(target, error);
+    if (!error) what += " to '" + to.string() + "'";
+  }
+  throw InputError(target, 0, key,
+                   "the output path exists and is not a regular file (" + what +
+                       "); outputs are written as regular files only, and a link is neither "
+                       "followed nor replaced");
+}
+
+std::string Absolute(const std::string& path) {
+  std::error_code error;
+  const fs::path absolute = fs::absolute(path, error);
+  return error ? path : absolute.lexically_normal().string();
 }
 
 }  // namespace
@@ -174,18 +235,7 @@ std::string StagedOutputs::Stage(const std::string& target, const std::string& k
       throw InputError(target, 0, key, "the same output file is given twice");
     }
   }
-  struct stat info;
-  if (stat(target.c_str(), &info) == 0 && !S_ISREG(info.st_mode)) {
-    throw InputError(target, 0, key,
-                     std::string("the output path exists and is not a regular file (") +
-                         (S_ISDIR(info.st_mode)    ? "a folder"
-                          : S_ISCHR(info.st_mode)  ? "a character device"
-                          : S_ISBLK(info.st_mode)  ? "a block device"
-                          : S_ISFIFO(info.st_mode) ? "a FIFO"
-                          : S_ISSOCK(info.st_mode) ? "a socket"
-                                                   : "a special file") +
-                         "); outputs are written as regular files only");
-  }
+  CheckTarget(target, key);
   std::error_code error;
   const fs::path folder = fs::path(target).parent_path();
   if (!folder.empty()) {
@@ -204,14 +254,34 @@ std::string StagedOutputs::Stage(const std::string& target, const std::string& k
                        "cannot create the folder '" + folder.string() + "': " + error.message());
     }
   }
-  // Keeps the extension: writers choose the format from it.
+  RecoverOutputs(folder.string());  // what a killed run left here
+  CheckTarget(target, key);         // as the recovery left it
+  staged_.push_back(CreateTemporary(target, key));
+  slots_.push_back(Register(staged_.back().temporary, false));
+  return staged_.back().temporary;
+}
+
+// The temporary, created here (exclusively, never through a link) with an
+// unpredictable name that keeps the extension: writers choose the format from it.
+StagedOutputs::Staged StagedOutputs::CreateTemporary(const std::string& target,
+                                                     const std::string& key) {
   const fs::path path(target);
-  const std::string temporary = (folder / path.stem()).string() + ".tmp-" +
-                                std::to_string(getpid()) + "-" +
-                                std::to_string(next_temporary++) + path.extension().string();
-  staged_.push_back({temporary, target, key});
-  slots_.push_back(Register(temporary, false));
-  return temporary;
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    Staged s{(path.parent_path() / path.stem()).string() + TemporaryMark(RandomToken()) +
+                 path.extension().string(),
+             target, key};
+    const int fd = open(s.temporary.c_str(),
+                        O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC | O_NOCTTY, 0666);
+    if (fd < 0 && errno == EEXIST) continue;
+    if (fd < 0) throw InputError(target, 0, key, "cannot create a file beside it: " + Errno());
+    struct stat info;
+    fstat(fd, &info);
+    close(fd);
+    s.device = std::uint64_t(info.st_dev);
+    s.inode = std::uint64_t(info.st_ino);
+    return s;
+  }
+  throw InputError(target, 0, key, "cannot create a temporary beside it: every name taken");
 }
 
 void StagedOutputs::Write(const std::string& target, const std::string& key,
@@ -225,36 +295,63 @@ void StagedOutputs::Write(const std::string& target, const std::string& key,
   }
 }
 
-void StagedOutputs::Commit() {
-  CHECK(!committed_) << "Commit() called twice";
-  // 1. Every output complete and on disk before anything is replaced.
+// Every temporary still the file Stage() created (not swapped for a link or
+// another file), written and flushed to disk; every target still one Stage()
+// accepts.
+void StagedOutputs::CheckAndSync() const {
   for (const Staged& s : staged_) {
-    CHECK(fs::exists(s.temporary)) << "staged output " << s.target << " was never written";
+    struct stat info;
+    if (lstat(s.temporary.c_str(), &info) != 0 || !S_ISREG(info.st_mode) ||
+        std::uint64_t(info.st_dev) != s.device || std::uint64_t(info.st_ino) != s.inode) {
+      throw InputError(s.target, 0, s.key,
+                       "its temporary '" + s.temporary +
+                           "' was removed or replaced by another file before the commit; "
+                           "nothing was replaced");
+    }
+    CheckTarget(s.target, s.key);
     if (!SyncFile(s.temporary)) {
       throw InputError(s.target, 0, s.key, "cannot write the output to disk: " + Errno());
     }
   }
-  // 2. No signal handler runs its cleanup from here to the end of the renames.
+}
+
+void StagedOutputs::Commit() {
+  CHECK(!committed_) << "Commit() called twice";
+  // 1. Every output complete and on disk before anything is replaced.
+  CheckAndSync();
+  // 2. No signal handler runs its cleanup from here to the end of the commit.
   int idle = 0;
   while (!state.compare_exchange_weak(idle, 1)) {
     if (idle == 2) pause();  // a handler is ending the process
     idle = 0;
   }
   BlockSignals block;
-  std::vector<std::string> backups(staged_.size());
-  std::string failure;
-  size_t failed = staged_.size();
-  for (size_t i = 0; i < staged_.size() && failure.empty(); ++i) {
+  // 3. The journal, then a hard-linked backup of every existing target.
+  const std::string token = RandomToken();
+  std::vector<JournalEntry> entries;
+  for (const Staged& s : staged_) {
     struct stat info;
-    if (stat(staged_[i].target.c_str(), &info) != 0) continue;  // a new output
-    backups[i] = BackupOf(staged_[i].target);
-    unlink(backups[i].c_str());  // a stale backup of an earlier run with our pid
-    if (link(staged_[i].target.c_str(), backups[i].c_str()) != 0) {
+    const bool exists = lstat(s.target.c_str(), &info) == 0;
+    entries.push_back({Absolute(s.target), Absolute(s.temporary),
+                       exists ? Absolute(s.target) + BackupMark(token) : std::string(), s.device,
+                       s.inode});
+  }
+  std::string failure;
+  size_t failed = 0;
+  CommitJournal journal;
+  if (!journal.Write(entries, token)) {
+    failure = "cannot write the commit journal beside it: " + Errno();
+  }
+  for (size_t i = 0; i < staged_.size() && failure.empty(); ++i) {
+    if (!entries[i].backup.empty() &&
+        link(staged_[i].target.c_str(), entries[i].backup.c_str()) != 0) {
       failure = "cannot keep a backup of the old output while replacing it: " + Errno();
       failed = i;
-      backups[i].clear();
     }
   }
+  // 4. The renames, each atomic.
+  const int pause_after = PauseAfterRename();
+  if (failure.empty() && pause_after == 0) raise(SIGSTOP);
   size_t renamed = 0;
   for (size_t i = 0; i < staged_.size() && failure.empty(); ++i) {
     if (rename(staged_[i].temporary.c_str(), staged_[i].target.c_str()) != 0) {
@@ -264,32 +361,36 @@ void StagedOutputs::Commit() {
     }
     ++renamed;
     if (rename_hook_) rename_hook_(int(i), staged_[i].target);
+    if (pause_after == int(i) + 1) raise(SIGSTOP);
   }
-  if (!failure.empty()) {
-    // Roll back: the old outputs return, the new ones that had none go.
-    for (size_t i = 0; i < renamed; ++i) {
-      if (!backups[i].empty()) {
-        rename(backups[i].c_str(), staged_[i].target.c_str());
-        backups[i].clear();
-      } else {
-        unlink(staged_[i].target.c_str());
-      }
+  // 5. A failure or a signal held back so far: every output returns to its
+  // old content. Else the commit point (the primary journal goes), then the
+  // backups.
+  const int sig = HeldSignal();
+  if (!failure.empty() || sig != 0) {
+    RollBackOutputs({entries.begin(), entries.begin() + long(renamed)});
+    for (size_t i = renamed; i < entries.size(); ++i) {
+      if (!entries[i].backup.empty()) unlink(entries[i].backup.c_str());  // never replaced
     }
-  }
-  for (const std::string& b : backups) {
-    if (!b.empty()) unlink(b.c_str());
+    journal.Remove();
+  } else {
+    journal.Committed();
+    for (const JournalEntry& e : entries) {
+      if (!e.backup.empty()) unlink(e.backup.c_str());
+    }
+    journal.Remove();
   }
   for (const Staged& s : staged_) SyncFolder(fs::path(s.target).parent_path());
+  if (sig != 0) {
+    state.store(2);
+    TerminateFromCommit(sig);
+  }
   if (failure.empty()) {
     committed_ = true;
     for (int slot : slots_) Unregister(slot);
     slots_.clear();
   }
   state.store(0);
-  if (const int sig = deferred_signal.exchange(0)) {
-    idle = 0;
-    if (state.compare_exchange_strong(idle, 2)) Terminate(sig);
-  }
   if (!failure.empty()) {
     const Staged& s = staged_[failed];
     throw InputError(s.target, 0, s.key, failure + " (every output keeps its old content)");
@@ -297,7 +398,7 @@ void StagedOutputs::Commit() {
 }
 
 void WriteTextFile(const std::string& path, const std::string& text, const std::string& key) {
-  std::FILE* file = std::fopen(path.c_str(), "wb");
+  std::FILE* file = FopenNoFollow(path);
   if (!file) throw InputError(path, 0, key, "cannot open for writing: " + Errno());
   const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size() &&
                        std::fflush(file) == 0 && fsync(fileno(file)) == 0;
