@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <filesystem>
 #include <set>
@@ -187,13 +188,15 @@ std::string BackupMark(const std::string& token) {
 }
 
 bool CommitJournal::Write(const std::vector<JournalEntry>& entries, const std::string& token) {
-  std::vector<std::string> folders;  // the first output's folder last: the primary
-  for (auto it = entries.rbegin(); it != entries.rend(); ++it) {
-    const std::string folder = fs::path(it->target).parent_path().string();
-    bool seen = false;
-    for (const std::string& f : folders) seen |= f == folder;
-    if (!seen) folders.push_back(folder);
+  std::vector<std::string> folders;
+  for (const JournalEntry& e : entries) {
+    const std::string folder = fs::path(e.target).parent_path().string();
+    if (std::find(folders.begin(), folders.end(), folder) == folders.end()) {
+      folders.push_back(folder);
+    }
   }
+  if (folders.empty()) return true;
+  std::rotate(folders.begin(), folders.begin() + 1, folders.end());  // the primary last
   std::vector<std::string> copies;
   const std::string name = kJournalPrefix + std::to_string(getpid()) + "-" + token;
   for (const std::string& f : folders) copies.push_back((fs::path(f) / name).string());
