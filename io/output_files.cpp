@@ -152,17 +152,6 @@ bool SameFile(const std::string& a, const std::string& b) {
 
 std::string Errno() { return std::strerror(errno); }
 
-// Flushes a written file to disk; false with errno set on failure.
-bool SyncFile(const std::string& path) {
-  const int fd = open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
-  if (fd < 0) return false;
-  const bool ok = fsync(fd) == 0;
-  const int saved = errno;
-  close(fd);
-  errno = saved;
-  return ok;
-}
-
 void SyncFolder(const fs::path& folder) {
   const int fd = open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (fd < 0) return;
@@ -209,6 +198,7 @@ StagedOutputs::StagedOutputs(std::vector<std::string> protected_paths)
     : protected_paths_(std::move(protected_paths)) {}
 
 StagedOutputs::~StagedOutputs() {
+  for (const Staged& s : staged_) close(s.fd);
   if (committed_) return;
   for (const Staged& s : staged_) {
     std::error_code ignored;  // a temporary never written does not exist
@@ -274,9 +264,11 @@ StagedOutputs::Staged StagedOutputs::CreateTemporary(const std::string& target,
                         O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC | O_NOCTTY, 0666);
     if (fd < 0 && errno == EEXIST) continue;
     if (fd < 0) throw InputError(target, 0, key, "cannot create a file beside it: " + Errno());
+    // Kept open until the end: the inode cannot be freed and its number
+    // given to a file put in the temporary's place.
+    s.fd = fd;
     struct stat info;
     fstat(fd, &info);
-    close(fd);
     s.device = std::uint64_t(info.st_dev);
     s.inode = std::uint64_t(info.st_ino);
     return s;
@@ -309,7 +301,7 @@ void StagedOutputs::CheckAndSync() const {
                            "nothing was replaced");
     }
     CheckTarget(s.target, s.key);
-    if (!SyncFile(s.temporary)) {
+    if (fsync(s.fd) != 0) {
       throw InputError(s.target, 0, s.key, "cannot write the output to disk: " + Errno());
     }
   }

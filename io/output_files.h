@@ -18,8 +18,10 @@
 //    a link (O_CREAT|O_EXCL|O_NOFOLLOW; a name taken is drawn again), and
 //    the writers open it without following a link (io/output_stream.h).
 //    Commit() checks that every temporary is still the regular file Stage()
-//    created (same device and inode) and every target still one Stage()
-//    accepts; else it throws InputError naming the target, nothing replaced.
+//    created (same device and inode; Stage() keeps it open, so its inode
+//    number cannot pass to a file put in its place) and every target still
+//    one Stage() accepts; else it throws InputError naming the target,
+//    nothing replaced.
 //  - Nothing is replaced before every output has been written completely:
 //    Commit() first flushes every temporary to disk (fsync).
 //  - Commit() then writes a journal into each folder it writes to
@@ -95,6 +97,7 @@ class StagedOutputs {
   struct Staged {
     std::string temporary, target, key;
     std::uint64_t device = 0, inode = 0;  // the temporary as created
+    int fd = -1;                          // open on it from Stage() to the end
   };
   Staged CreateTemporary(const std::string& target, const std::string& key);
   void CheckAndSync() const;

@@ -38,8 +38,10 @@ class CliKillTest : public ScratchDirTest {
  protected:
   void SetUp() override {
     ScratchDirTest::SetUp();
+    // A tolerance the input meets: no iteration, the run is its outputs.
     spec_ = WriteFile("spec.yaml", "mesh: " + std::string(ARCHGEO_SOURCE_DIR) +
                                        "/examples/roof_grid.obj\nproblem: planar_quads\n"
+                                       "tolerance:\n  pq_normalized_max: 0.05\n"
                                        "output:\n  mesh: out/m.ply\n  report: out/r.json\n"
                                        "  image: out/i.png\n");
     fs::create_directories(Path("out"));
