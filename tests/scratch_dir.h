@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 namespace archgeo {
@@ -28,6 +29,13 @@ class ScratchDirTest : public ::testing::Test {
   std::string WriteFile(const std::string& name, const std::string& text) const {
     std::ofstream(Path(name)) << text;
     return Path(name);
+  }
+  // The whole content of a file (empty if it cannot be read).
+  static std::string ReadFile(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
   }
 
   std::filesystem::path dir_;

@@ -33,13 +33,6 @@ namespace ARCHGEO_UNITY_ID {
 
 namespace fs = std::filesystem;
 
-std::string Slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 class OutputsTest : public ScratchDirTest {
  protected:
   // No temporaries, backups or journals anywhere under the scratch folder.
@@ -106,7 +99,7 @@ TEST_F(OutputsTest, AWriterNeverFollowsALinkSwappedForItsTemporary) {
                InputError);
   NoFollowOfstream stream(mesh);
   EXPECT_FALSE(stream);
-  EXPECT_EQ(Slurp(victim), "victim");
+  EXPECT_EQ(ReadFile(victim), "victim");
 }
 
 // A temporary replaced (by a link or another file) after it was written:
@@ -136,9 +129,9 @@ TEST_F(OutputsTest, ATemporaryReplacedBeforeTheCommitIsAnErrorAndNothingIsReplac
     }
     fs::remove(temporary);
   }
-  EXPECT_EQ(Slurp(a), "old a");
-  EXPECT_EQ(Slurp(b), "old b");
-  EXPECT_EQ(Slurp(victim), "victim");
+  EXPECT_EQ(ReadFile(a), "old a");
+  EXPECT_EQ(ReadFile(b), "old b");
+  EXPECT_EQ(ReadFile(victim), "victim");
   ExpectNoLeftovers();
 }
 
@@ -164,7 +157,7 @@ TEST_F(OutputsTest, ASymbolicLinkIsRefusedAsAnOutputAndKept) {
     EXPECT_THROW(outputs.Stage("/dev/stdout", "output.report"), InputError);
     EXPECT_TRUE(fs::is_symlink("/dev/stdout"));
   }
-  EXPECT_EQ(Slurp(victim), "victim");
+  EXPECT_EQ(ReadFile(victim), "victim");
   EXPECT_FALSE(fs::exists(Path("nowhere.json")));
   ExpectNoLeftovers();
 }
@@ -223,7 +216,7 @@ TEST_F(OutputsTest, AFailedRenameRestoresEveryOldOutput) {
       EXPECT_NE(e.message().find("old content"), std::string::npos) << e.what();
     }
   }
-  EXPECT_EQ(Slurp(a), "old a");  // restored from its backup
+  EXPECT_EQ(ReadFile(a), "old a");  // restored from its backup
   fs::remove_all(b);
   ExpectNoLeftovers();
 }
@@ -267,8 +260,8 @@ TEST_F(OutputsTest, ASignalDuringTheCommitRollsItBackAndEndsTheProcess) {
         std::_Exit(0);  // not reached: the held signal ends the process
       },
       ::testing::KilledBySignal(SIGTERM), "");
-  EXPECT_EQ(Slurp(a), "old a");
-  EXPECT_EQ(Slurp(b), "old b");
+  EXPECT_EQ(ReadFile(a), "old a");
+  EXPECT_EQ(ReadFile(b), "old b");
   EXPECT_FALSE(fs::exists(Path("new")));
   ExpectNoLeftovers();
 }
@@ -298,14 +291,14 @@ TEST_F(OutputsTest, AKilledCommitIsRolledBackByTheNextStageIntoEitherFolder) {
             std::_Exit(0);
           },
           ::testing::KilledBySignal(SIGKILL), "");
-      EXPECT_EQ(Slurp(targets[0]), "new");  // the first rename done: all old no more
-      EXPECT_EQ(Slurp(targets[1]), kill_after >= 1 ? "new" : "old b");
+      EXPECT_EQ(ReadFile(targets[0]), "new");  // the first rename done: all old no more
+      EXPECT_EQ(ReadFile(targets[1]), kill_after >= 1 ? "new" : "old b");
       {
         StagedOutputs recovering;
         recovering.Stage(next);
       }
-      EXPECT_EQ(Slurp(targets[0]), "old a") << kill_after << " " << next;
-      EXPECT_EQ(Slurp(targets[1]), "old b") << kill_after << " " << next;
+      EXPECT_EQ(ReadFile(targets[0]), "old a") << kill_after << " " << next;
+      EXPECT_EQ(ReadFile(targets[1]), "old b") << kill_after << " " << next;
       EXPECT_FALSE(fs::exists(targets[2])) << kill_after << " " << next;
       ExpectNoLeftovers();
     }
@@ -331,7 +324,7 @@ TEST_F(OutputsTest, TheNextStageRemovesOnlyWhatDeadProcessesLeft) {
   }
   for (const std::string& p : gone) EXPECT_FALSE(fs::exists(p)) << p;
   for (const std::string& p : kept) EXPECT_TRUE(fs::exists(p)) << p;
-  EXPECT_EQ(Slurp(Path("mesh.ply")), "new mesh");
+  EXPECT_EQ(ReadFile(Path("mesh.ply")), "new mesh");
 }
 
 // A SIGINT while the outputs are being written removes the temporaries and
@@ -348,7 +341,7 @@ TEST_F(OutputsTest, ASignalBeforeTheCommitLeavesTheOldOutputs) {
         std::_Exit(0);  // not reached
       },
       ::testing::KilledBySignal(SIGINT), "");
-  EXPECT_EQ(Slurp(a), "old a");
+  EXPECT_EQ(ReadFile(a), "old a");
   EXPECT_FALSE(fs::exists(Path("made")));
   ExpectNoLeftovers();
 }
@@ -398,7 +391,7 @@ TEST_F(OutputsCliTest, AReportThatDoesNotFitIsAnErrorAndTheOldOutputsStay) {
   EXPECT_EQ(o.code, 2) << o.output;
   EXPECT_NE(o.output.find(Path("o.json") + ": key 'output.report'"), std::string::npos) << o.output;
   EXPECT_EQ(o.output.find("wrote"), std::string::npos) << o.output;
-  EXPECT_EQ(Slurp(old_report), "old report");
+  EXPECT_EQ(ReadFile(old_report), "old report");
   ExpectNoLeftovers();
 }
 
@@ -415,7 +408,7 @@ TEST_F(OutputsCliTest, ADeviceIsRefusedAsAnOutput) {
 TEST_F(OutputsCliTest, ThePrincipalEdgesInputIsNeverOverwritten) {
   fs::copy_file(Example("principal_torus.obj"), Path("torus.obj"));
   fs::copy_file(Example("principal_torus_edges.txt"), Path("edges.txt"));
-  const std::string edges = Slurp(Path("edges.txt"));
+  const std::string edges = ReadFile(Path("edges.txt"));
   const std::string spec =
       WriteFile("spec.yaml",
                 "mesh: torus.obj\nproblem: principal_symmetric\nprincipal_edges: edges.txt\n"
@@ -423,7 +416,7 @@ TEST_F(OutputsCliTest, ThePrincipalEdgesInputIsNeverOverwritten) {
   const Outcome o = Shell(Archgeo() + " solve " + spec + " --quiet");
   EXPECT_EQ(o.code, 2) << o.output;
   EXPECT_NE(o.output.find("refusing to overwrite the input file"), std::string::npos) << o.output;
-  EXPECT_EQ(Slurp(Path("edges.txt")), edges);
+  EXPECT_EQ(ReadFile(Path("edges.txt")), edges);
 }
 
 // SIGINT stops a long solve within a second; the old outputs stay and no
@@ -440,15 +433,15 @@ TEST_F(OutputsCliTest, SigintStopsASolveAndLeavesTheOldOutputs) {
       "; wait $!; echo $? > " + Path("status");
   std::thread runner([&] { Shell("bash -c '" + command + "'"); });
   std::this_thread::sleep_for(std::chrono::milliseconds(2500));  // the solve is running
-  const pid_t pid = std::stoi(Slurp(pid_file));
+  const pid_t pid = std::stoi(ReadFile(pid_file));
   const auto sent = std::chrono::steady_clock::now();
   kill(pid, SIGINT);
   runner.join();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
   EXPECT_LT(seconds, 1.0);
-  EXPECT_EQ(std::stoi(Slurp(Path("status"))), 128 + SIGINT);
-  EXPECT_EQ(Slurp(old_report), "old report");
+  EXPECT_EQ(std::stoi(ReadFile(Path("status"))), 128 + SIGINT);
+  EXPECT_EQ(ReadFile(old_report), "old report");
   EXPECT_FALSE(fs::exists(Path("new")));
   ExpectNoLeftovers();
 }
