@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -17,9 +18,12 @@ class ScratchDirTest : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = std::filesystem::temp_directory_path() /
-           ("archgeo_" + std::to_string(::getpid()) + "_" + test->test_suite_name() + "_" +
-            test->name());
+    // Parameterised tests are named "Prefix/Suite" and "Name/0": one folder, not a tree
+    // whose parent would outlive TearDown.
+    std::string name = std::string("archgeo_") + std::to_string(::getpid()) + "_" +
+                       test->test_suite_name() + "_" + test->name();
+    std::replace(name.begin(), name.end(), '/', '_');
+    dir_ = std::filesystem::temp_directory_path() / name;
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
   }
