@@ -37,16 +37,29 @@ constexpr int kForwarded[3] = {SIGINT, SIGTERM, SIGHUP};
 struct sigaction handlers_before[3];
 std::atomic<bool> bench_handlers_installed{false};
 
-// Blocks the forwarded signals in this thread while alive.
-class ForwardedSignalsBlocked {
+// A forwarded signal that arrived in another thread while this one was
+// between spawning a child (or creating the scratch folder) and recording it:
+// the handler there leaves it here, and the end of the section raises it again
+// in this thread, where the handler then sees the child and the folder.
+std::atomic<bool> recording{false};
+std::atomic<int> deferred_signal{0};
+
+// While alive: the forwarded signals are blocked in this thread, and a
+// handler running in another thread defers them (see above). One at a time.
+class RecordingSection {
  public:
-  ForwardedSignalsBlocked() {
+  RecordingSection() {
     sigset_t set;
     sigemptyset(&set);
     for (int s : kForwarded) sigaddset(&set, s);
     pthread_sigmask(SIG_BLOCK, &set, &before_);
+    recording.store(true);
   }
-  ~ForwardedSignalsBlocked() { pthread_sigmask(SIG_SETMASK, &before_, nullptr); }
+  ~RecordingSection() {
+    recording.store(false);
+    pthread_sigmask(SIG_SETMASK, &before_, nullptr);
+    if (const int sig = deferred_signal.exchange(0)) raise(sig);
+  }
   const sigset_t& before() const { return before_; }
 
  private:
@@ -106,6 +119,15 @@ void EmptyScratchFolder(const char* folder) {
 
 void OnBenchSignal(int sig, siginfo_t* info, void* context) {
   const int saved_errno = errno;
+  if (recording.load()) {
+    // Another thread is recording a child or the folder: it raises `sig`
+    // again when done, unless it finished first and left the signal here.
+    deferred_signal.store(sig);
+    if (recording.load() || deferred_signal.exchange(0) == 0) {
+      errno = saved_errno;
+      return;
+    }
+  }
   const pid_t child = running_child.exchange(0);
   if (child > 0) StopChild(child, sig);
   if (scratch_live.exchange(false)) EmptyScratchFolder(scratch_path);
@@ -133,7 +155,7 @@ ScratchFolder::ScratchFolder() {
   if (pattern.size() >= sizeof scratch_path) {
     throw InputError(base.string(), 0, "TMPDIR", "the temporary folder's path is too long");
   }
-  ForwardedSignalsBlocked blocked;  // the folder is registered before a signal can see it
+  RecordingSection blocked;  // the folder is registered before a signal can see it
   if (scratch_live.load()) throw std::logic_error("one bench scratch folder at a time");
   if (!mkdtemp(pattern.data())) {
     throw InputError(base.string(), 0, "TMPDIR",
@@ -172,7 +194,7 @@ ChildOutcome RunChild(const std::vector<std::string>& argv, const std::string& s
   int spawned = 0;
   {
     // A signal before running_child is set would miss the child.
-    ForwardedSignalsBlocked blocked;
+    RecordingSection blocked;
     posix_spawnattr_setsigmask(&attributes, &blocked.before());
     spawned = posix_spawn(&pid, argv[0].c_str(), &actions, &attributes, args.data(), environ);
     if (spawned == 0) running_child.store(pid);
@@ -193,7 +215,7 @@ ChildOutcome RunChild(const std::vector<std::string>& argv, const std::string& s
   int status = 0;
   rusage usage{};
   {
-    ForwardedSignalsBlocked blocked;
+    RecordingSection blocked;
     running_child.store(0);
     while (wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
     }
