@@ -76,7 +76,9 @@ Eigen::Matrix3d TensorOf(const MongeForm& monge) {
 // One vertex's shape tensor Σ k d dᵀ from a degree-`degree` jet fitted to
 // `points` (the vertex first), oriented so that its normal agrees with
 // `normal`: CGAL's Monge_via_jet_fitting with its Jacobi SVD, as
-// Monge_form::comply_wrt_given_normal orients it.
+// Monge_form::comply_wrt_given_normal orients it. Its preconditions (degree
+// 2..4, d' = 2 ≤ d, at least as many points as coefficients) are checked by
+// ShapeTensors before every call, so this file is built without CGAL_DEBUG.
 Eigen::Matrix3d SvdJetTensor(const std::vector<Point>& points, int degree,
                              const Eigen::Vector3d& normal) {
   using Fitting = CGAL::Monge_via_jet_fitting<Kernel, Kernel, CGAL::Eigen_svd>;

@@ -48,7 +48,7 @@ Tangent Restrict(const Eigen::Matrix3d& S, const Eigen::Vector3d& n) {
 }
 
 // Angle (degrees, 0..90) between the lines of two non-zero plane vectors.
-double LineAngle(const Eigen::Vector2d& x, const Eigen::Vector2d& y) {
+double LineAngleBetween(const Eigen::Vector2d& x, const Eigen::Vector2d& y) {
   const double c = std::abs(x.normalized().dot(y.normalized()));
   return Degrees(std::acos(std::min(1.0, c)));
 }
@@ -128,7 +128,7 @@ NetCurvatureFigures MeasureNetCurvature(const Mesh& net) {
     const double theta = std::atan(std::sqrt(-t.k1 / t.k2));
     const Eigen::Vector2d a(std::cos(theta), std::sin(theta)), b(std::cos(theta), -std::sin(theta));
     const auto nearest = [&](const Eigen::Vector2d& x) {
-      return std::min(LineAngle(x, a), LineAngle(x, b));
+      return std::min(LineAngleBetween(x, a), LineAngleBetween(x, b));
     };
     const double angle = std::max(nearest(u), nearest(v));
     angle_sum += angle;
@@ -170,8 +170,8 @@ PrincipalLabelFigures MeasurePrincipalLabels(const Mesh& mesh,
     const Eigen::Vector2d e = t.In(EigenPoint(mesh, VertexIndex(j)) - EigenPoint(mesh, VertexIndex(i)));
     if (e.norm() == 0) continue;
     ++out.measured;
-    const double angle =
-        std::min(LineAngle(e, Eigen::Vector2d(1, 0)), LineAngle(e, Eigen::Vector2d(0, 1)));
+    const double angle = std::min(LineAngleBetween(e, Eigen::Vector2d(1, 0)),
+                                  LineAngleBetween(e, Eigen::Vector2d(0, 1)));
     sum += angle;
     out.angle_max = std::max(out.angle_max, angle);
   }
