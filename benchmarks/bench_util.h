@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// archgeo benchmarks — shared helpers (header-only: benchmarks/CMakeLists.txt
-// builds every .cpp here into its own program).
+// archgeo benchmarks — shared helpers (header-only; every .cpp here is one
+// program of build/benchmarks/archgeo_benchmarks, see program.h).
 //
 //   Solve(...)        one `archgeo solve` in process (ReadSpec + RunSpec), no outputs
 //   RunProcess(...)   a subprocess with wall-clock and CPU time, peak RSS and a timeout

@@ -35,8 +35,9 @@
 
 #include "benchmarks/bench_util.h"
 #include "benchmarks/svg_chart.h"
+#include "benchmarks/program.h"
 
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 using bench::Fmt;
 using bench::Get;
@@ -226,9 +227,8 @@ bench::Chart TradeoffChart(const std::vector<Run>& runs, const std::string& mesh
   return c;
 }
 
-}  // namespace
 
-int main(int argc, char** argv) {
+int Main(int argc, char** argv) {
   const std::vector<std::string> args = bench::Init(
       argc, argv, {{"--mesh", true}, {"--bands", true}, {"--svg", true}, {"--timeout", true}});
   std::string mesh = bench::Data("libigl_inspired_mesh_quads_Conjugate.off"), svg;
@@ -280,3 +280,7 @@ int main(int argc, char** argv) {
   }
   return 0;
 }
+
+}  // namespace ARCHGEO_UNITY_ID
+
+ARCHGEO_BENCHMARK_PROGRAM(deviation_tradeoff, ARCHGEO_UNITY_ID::Main);

@@ -25,8 +25,9 @@
 
 #include "benchmarks/bench_util.h"
 #include "problems/commands/generate.h"
+#include "benchmarks/program.h"
 
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 using bench::Fmt;
 using bench::Get;
@@ -60,9 +61,8 @@ bool conical_ok(const bench::Json& r) {
          Get(r, "/after/face_offset_miss") <= 1e-3;
 }
 
-}  // namespace
 
-int main(int argc, char** argv) {
+int Main(int argc, char** argv) {
   bench::Init(argc, argv);
   archgeo::ConfigureThreading();
   bool ok = true;
@@ -144,3 +144,7 @@ int main(int argc, char** argv) {
   net.Print();
   return ok ? 0 : 1;
 }
+
+}  // namespace ARCHGEO_UNITY_ID
+
+ARCHGEO_BENCHMARK_PROGRAM(goal_examples, ARCHGEO_UNITY_ID::Main);

@@ -40,12 +40,13 @@
 #include <vector>
 
 #include "analysis/validity.h"
-#include "bench_util.h"
+#include "benchmarks/bench_util.h"
 #include "problems/runtime/model.h"
 #include "problems/runtime/solve.h"
 #include "problems/spec/spec.h"
+#include "benchmarks/program.h"
 
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 using bench::Fmt;
 using Json = nlohmann::json;
@@ -172,9 +173,8 @@ std::string Versus(const Measures& q, const PaperRow& p) {
              ratios[worst]);
 }
 
-}  // namespace
 
-int main(int argc, char** argv) {
+int Main(int argc, char** argv) {
   // bench::Init takes the --set arguments and refuses any other it is not given here.
   const std::vector<std::string> args =
       bench::Init(argc, argv, {{"--scene", true}, {"--method", true}, {"--no-timing"}});
@@ -286,3 +286,7 @@ int main(int argc, char** argv) {
   }
   return valid && covered ? 0 : 1;
 }
+
+}  // namespace ARCHGEO_UNITY_ID
+
+ARCHGEO_BENCHMARK_PROGRAM(grids_table1, ARCHGEO_UNITY_ID::Main);

@@ -26,8 +26,9 @@
 #include <glog/logging.h>
 
 #include "generators/smoothness_surfaces.h"
+#include "benchmarks/program.h"
 
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 using archgeo::LatticeEnergyPerArea;
 using archgeo::LatticeFaces;
@@ -77,9 +78,8 @@ bool Curve(double alpha, double beta) {
   return ok && minima >= 4;
 }
 
-}  // namespace
 
-int main(int argc, char** argv) {
+int Main(int argc, char** argv) {
   google::InitGoogleLogging(argv[0]);
   FLAGS_logtostderr = true;
   if (argc > 1) {
@@ -96,3 +96,7 @@ int main(int argc, char** argv) {
   std::printf("\n%s\n", ok ? "PASS" : "FAIL");
   return ok ? 0 : 1;
 }
+
+}  // namespace ARCHGEO_UNITY_ID
+
+ARCHGEO_BENCHMARK_PROGRAM(pellis_fig11, ARCHGEO_UNITY_ID::Main);

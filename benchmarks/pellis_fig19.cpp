@@ -31,8 +31,9 @@
 #include "benchmarks/bench_util.h"
 #include "io/io.h"
 #include "generators/smoothness_surfaces.h"
+#include "benchmarks/program.h"
 
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 using bench::Fmt;
 
@@ -63,9 +64,8 @@ std::string WriteRevolution(const std::string& name, double r0, double r1, int n
   return path;
 }
 
-}  // namespace
 
-int main(int argc, char** argv) {
+int Main(int argc, char** argv) {
   bench::Init(argc, argv);
   const std::string spec = bench::Source("examples/total_absolute_curvature.yaml");
   std::vector<Case> cases = {
@@ -142,3 +142,7 @@ int main(int argc, char** argv) {
               100 * kAcceptance, accepted ? "met" : "NOT met");
   return accepted ? 0 : 1;
 }
+
+}  // namespace ARCHGEO_UNITY_ID
+
+ARCHGEO_BENCHMARK_PROGRAM(pellis_fig19, ARCHGEO_UNITY_ID::Main);

@@ -36,8 +36,9 @@
 #include "benchmarks/bench_util.h"
 #include "io/io.h"
 #include "geometry/principal_edges.h"
+#include "benchmarks/program.h"
 
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 struct Case {
   std::string label, path, stands_for;
@@ -61,9 +62,8 @@ void WritePrincipalExample(const std::string& dir) {
               dir.c_str(), size_t(torus.number_of_vertices()), dir.c_str(), principal.size());
 }
 
-}  // namespace
 
-int main(int argc, char** argv) {
+int Main(int argc, char** argv) {
   const std::vector<std::string> args =
       bench::Init(argc, argv, {{"--write-principal-example", true}, {"--quick"}});
   if (args.size() == 2 && args[0] == "--write-principal-example") {
@@ -170,3 +170,7 @@ int main(int argc, char** argv) {
   std::printf("\n%s\n", ok ? "acceptance: pass" : "acceptance: FAIL");
   return ok ? 0 : 1;
 }
+
+}  // namespace ARCHGEO_UNITY_ID
+
+ARCHGEO_BENCHMARK_PROGRAM(pellis_fig20, ARCHGEO_UNITY_ID::Main);

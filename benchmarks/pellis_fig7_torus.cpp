@@ -18,8 +18,11 @@
 
 #include "analysis/smoothness_metrics.h"
 #include "generators/smoothness_surfaces.h"
+#include "benchmarks/program.h"
 
-int main(int argc, char** argv) {
+namespace ARCHGEO_UNITY_ID {
+
+int Main(int argc, char** argv) {
   google::InitGoogleLogging(argv[0]);
   FLAGS_logtostderr = true;
   if (argc > 1) {
@@ -58,3 +61,7 @@ int main(int argc, char** argv) {
   std::printf("%s\n", ok ? "PASS" : "FAIL");
   return ok ? 0 : 1;
 }
+
+}  // namespace ARCHGEO_UNITY_ID
+
+ARCHGEO_BENCHMARK_PROGRAM(pellis_fig7_torus, ARCHGEO_UNITY_ID::Main);

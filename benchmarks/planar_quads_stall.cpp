@@ -56,8 +56,9 @@
 #include "analysis/validity.h"
 #include "benchmarks/bench_util.h"
 #include "io/io.h"
+#include "benchmarks/program.h"
 
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 using bench::Fmt;
 using bench::Get;
@@ -249,9 +250,8 @@ Run SolveNet(const std::string& mesh, const std::vector<std::string>& extra) {
 
 std::string Sci(double x) { return std::isnan(x) ? "-" : Fmt("%.3e", x); }
 
-}  // namespace
 
-int main(int argc, char** argv) {
+int Main(int argc, char** argv) {
   const std::vector<std::string> args =
       bench::Init(argc, argv, {{"--unseen", true}, {"--compare-only"}});
   std::string unseen;
@@ -373,3 +373,7 @@ int main(int argc, char** argv) {
   }
   return 0;
 }
+
+}  // namespace ARCHGEO_UNITY_ID
+
+ARCHGEO_BENCHMARK_PROGRAM(planar_quads_stall, ARCHGEO_UNITY_ID::Main);

@@ -26,6 +26,7 @@
 // scratch folder (see bench::Scratch()).
 #include "benchmarks/bench_util.h"
 #include "bench/bench.h"
+#include "benchmarks/program.h"
 
 #include <algorithm>
 #include <array>
@@ -34,7 +35,7 @@
 #include <string>
 #include <vector>
 
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 using bench::Fmt;
 using bench::Get;
@@ -60,9 +61,8 @@ double Exponent(double x1, double y1, double x2, double y2) {
   return std::log(y2 / y1) / std::log(x2 / x1);
 }
 
-}  // namespace
 
-int main(int argc, char** argv) {
+int Main(int argc, char** argv) {
   std::vector<int> sizes = {100, 316};
   double timeout = 600;
   int seeds = 1;
@@ -180,3 +180,7 @@ int main(int argc, char** argv) {
          "ru_maxrss); max move: the largest vertex displacement, % of the bounding-box diagonal;\n"
          "seed: the roof's noise seed (archgeo generate --seed); CG steps: all PCG rounds'.\n";
 }
+
+}  // namespace ARCHGEO_UNITY_ID
+
+ARCHGEO_BENCHMARK_PROGRAM(scaling, ARCHGEO_UNITY_ID::Main);

@@ -39,14 +39,15 @@
 #include <cstring>
 #include <random>
 
-#include "bench_util.h"
+#include "benchmarks/bench_util.h"
 #include "generators/asymptotic_nets.h"
 #include "geometry/hnet.h"
 #include "io/io.h"
 #include "analysis/metrics.h"
 #include "geometry/reference.h"
+#include "benchmarks/program.h"
 
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 using archgeo::AsymptoticTestNet;
 using bench::Fmt;
@@ -96,9 +97,8 @@ double BboxDiagonal(const std::string& path) {
   return archgeo::ComputeMetrics(m, nullptr, nullptr).bbox_diagonal;
 }
 
-}  // namespace
 
-int main(int argc, char** argv) {
+int Main(int argc, char** argv) {
   const std::vector<std::string> args = bench::Init(argc, argv, {{"--quick"}});
   const bool quick = !args.empty();  // --quick, the only flag
   const std::string spec = bench::Source("examples/hnet.yaml");
@@ -251,3 +251,7 @@ int main(int argc, char** argv) {
   std::printf("\nall acceptance bounds hold\n");
   return 0;
 }
+
+}  // namespace ARCHGEO_UNITY_ID
+
+ARCHGEO_BENCHMARK_PROGRAM(shi_table1, ARCHGEO_UNITY_ID::Main);

@@ -23,8 +23,9 @@
 #include "benchmarks/bench_util.h"
 #include "io/io.h"
 #include "mesh/subdivision.h"
+#include "benchmarks/program.h"
 
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 using bench::Fmt;
 using bench::Get;
@@ -44,9 +45,8 @@ std::string SubdividedConcerthall() {
   return path;
 }
 
-}  // namespace
 
-int main(int argc, char** argv) {
+int Main(int argc, char** argv) {
   // bench::Init takes the --set arguments and refuses any other it is not given here.
   const std::vector<std::string> args =
       bench::Init(argc, argv, {{"--mesh", true}, {"--timeout", true}});
@@ -139,3 +139,7 @@ int main(int argc, char** argv) {
   std::printf("%s\n", ok ? "acceptance: pass" : "acceptance: FAIL");
   return ok ? 0 : 1;
 }
+
+}  // namespace ARCHGEO_UNITY_ID
+
+ARCHGEO_BENCHMARK_PROGRAM(smooth_scale, ARCHGEO_UNITY_ID::Main);

@@ -20,8 +20,9 @@
 #include "benchmarks/bench_util.h"
 #include "energies/pq_diagonal.h"
 #include "problems/commands/generate.h"
+#include "benchmarks/program.h"
 
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 using bench::Fmt;
 using bench::Get;
@@ -162,7 +163,6 @@ void RegisterBenchmarks() {
       ->Arg(1);
 }
 
-}  // namespace
 
 // The BLAS under CHOLMOD: archgeo links OpenBLAS; LD_PRELOAD puts another
 // BLAS's dgemm_ & co. first (the report's "blas" names the one that served).
@@ -205,7 +205,7 @@ void PrintBlasTable(const std::string& mesh) {
   table.Print(std::cout);
 }
 
-int main(int argc, char** argv) {
+int Main(int argc, char** argv) {
   bench::InitLogging(argv[0]);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
@@ -254,3 +254,7 @@ int main(int argc, char** argv) {
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
 }
+
+}  // namespace ARCHGEO_UNITY_ID
+
+ARCHGEO_BENCHMARK_PROGRAM(solver_settings, ARCHGEO_UNITY_ID::Main);

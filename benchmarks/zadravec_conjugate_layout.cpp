@@ -20,8 +20,9 @@
 // diagonal; for our layouts the displacement is measured from the layout (the
 // PQ step's input), as it is for libigl's layouts.
 #include "benchmarks/bench_util.h"
+#include "benchmarks/program.h"
 
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 using bench::Fmt;
 using bench::Get;
@@ -38,9 +39,8 @@ struct Row {
   bool ours;  // a conjugate_layout run (the layout's figures are in "net")
 };
 
-}  // namespace
 
-int main(int argc, char** argv) {
+int Main(int argc, char** argv) {
   const std::vector<std::string> args = bench::Init(argc, argv, {{"--quick"}});
   const bool quick = !args.empty();  // --quick, the only flag
   std::vector<std::string> failures;
@@ -118,3 +118,7 @@ int main(int argc, char** argv) {
   }
   return 0;
 }
+
+}  // namespace ARCHGEO_UNITY_ID
+
+ARCHGEO_BENCHMARK_PROGRAM(zadravec_conjugate_layout, ARCHGEO_UNITY_ID::Main);

@@ -14,8 +14,9 @@
 // Times are wall-clock on whatever machine runs this (the paper: a dual-core
 // 2.4 GHz MacBook Pro, 2010).
 #include "benchmarks/bench_util.h"
+#include "benchmarks/program.h"
 
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 using bench::Fmt;
 using bench::Get;
@@ -149,9 +150,8 @@ void CommandTable() {
                "this kind of machine).\n";
 }
 
-}  // namespace
 
-int main(int argc, char** argv) {
+int Main(int argc, char** argv) {
   const std::vector<std::string> args = bench::Init(argc, argv, {{"--quick"}});
   const bool quick = !args.empty();  // --quick, the only flag
   std::cout << "BLAS: " << archgeo::BlasLibrary() << "\n\n";
@@ -159,3 +159,7 @@ int main(int argc, char** argv) {
   if (!quick) CommandTable();  // timed: not an acceptance
   return ok ? 0 : 1;
 }
+
+}  // namespace ARCHGEO_UNITY_ID
+
+ARCHGEO_BENCHMARK_PROGRAM(zadravec_fig10, ARCHGEO_UNITY_ID::Main);

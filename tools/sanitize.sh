@@ -30,8 +30,7 @@ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARCHGEO_PYTH
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" "${launcher[@]}" >/dev/null
 
 # The tool and the tests only (not the benchmarks).
-targets=(archgeo)
-for source in tests/test_*.cpp; do targets+=("$(basename "$source" .cpp)"); done
+targets=(archgeo tests_energies tests_mesh tests_fields tests_problems tests_cli)
 jobs=${ARCHGEO_JOBS:-$(nproc)}
 cmake --build "$build" -j "$jobs" --target "${targets[@]}"
 
