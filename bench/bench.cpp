@@ -568,9 +568,24 @@ std::string RunBench(const BenchRequest& q) {
   StagedTexts outputs(BenchInputs(q.spec, q.meshes, q.self));
   AddRowFiles(outputs, q.out);
   std::vector<json> records;
+  const int runs = int(plan.size() * q.meshes.size()) * q.repeat;
   for (const Settings_& s : plan) {
     for (const std::string& mesh : q.meshes) {
-      for (int r = 1; r <= q.repeat; ++r) records.push_back(RunOnce(q.self, q.spec, mesh, s, r));
+      for (int r = 1; r <= q.repeat; ++r) {
+        const std::string run = "run " + std::to_string(records.size() + 1) + " of " +
+                                std::to_string(runs) + ": " + fs::path(mesh).filename().string();
+        if (q.progress) {
+          std::string note = run;
+          for (const auto& [key, value] : s) note += ", " + key + "=" + value;
+          q.progress(note + (q.repeat > 1 ? ", repeat " + std::to_string(r) : ""));
+        }
+        records.push_back(RunOnce(q.self, q.spec, mesh, s, r));
+        if (q.progress) {
+          q.progress(run + " done: exit code " +
+                     std::to_string(records.back().value("exit_code", -1)) + ", " +
+                     Number(records.back().value("wall_s", 0.0), "%.2f") + " s");
+        }
+      }
     }
   }
   const json rows = MergeRecords(records);

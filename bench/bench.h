@@ -39,6 +39,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/progress.h"
+
 namespace archgeo {
 
 struct BenchRequest {
@@ -55,6 +57,7 @@ struct BenchRequest {
   std::string run_jobs;                 // a job file of --emit-jobs ...
   int job = 0;                          // ... and the job of it to run (from 1)
   std::string self;                     // the archgeo binary
+  ProgressSink progress;                // a note before and after each run ("run i of N ...")
 };
 
 // Does what the request asks and returns the text to print (the table, or

@@ -239,7 +239,7 @@ int Main(int argc, char** argv) {
             << kRounds << ":\n";
   const std::vector<Setting> omp = {
       {"dynamic ON (ConfigureThreading)", {}},
-      {"dynamic OFF (omp_set_dynamic(0))", {}, [](const std::string&) { omp_set_dynamic(0); }}};
+      {"dynamic OFF (omp_set_dynamic(0))", {}, [](const archgeo::ProgressEvent&) { omp_set_dynamic(0); }}};
   const std::vector<bench::Json> omp_reports = RunSettings(conjugate, omp);
   omp_set_dynamic(1);
   PrintTable(omp, omp_reports);

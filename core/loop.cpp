@@ -44,9 +44,12 @@ class IterationWatch : public EndingCallback {
     double value;
     bool bound;
   };
+  // `where`: the round's event fields (kind, round, stage, goal and target);
+  // each iteration adds its number, the goal's value and the time.
   IterationWatch(Model& model, const ProgressSink& sink, std::string label,
-                 std::vector<Watched> watched)
-      : model_(model), sink_(sink), label_(std::move(label)), watched_(std::move(watched)) {}
+                 std::vector<Watched> watched, ProgressEvent where, Clock::time_point start)
+      : model_(model), sink_(sink), label_(std::move(label)), watched_(std::move(watched)),
+        where_(std::move(where)), start_(start) {}
 
   bool Ends() override {
     measured_ = false;  // a new step
@@ -64,7 +67,15 @@ class IterationWatch : public EndingCallback {
       std::snprintf(line, sizeof line, "%s  iter %3d  cost %.6e%s  |gradient| %.2e  |step| %.2e  %.3f s",
                     label_.c_str(), s.iteration, s.cost, values.c_str(), s.gradient_max_norm,
                     s.step_norm, s.cumulative_time_in_seconds);
-      sink_(line);
+      ProgressEvent event = where_;
+      event.kind = ProgressEvent::Kind::kIteration;
+      event.line = line;
+      event.iteration = s.iteration;
+      for (const Watched& w : watched_) {  // measured per iteration: cheap
+        if (!w.bound && w.measure == event.measure) event.value = model_.Measure(w.measure);
+      }
+      event.elapsed = SecondsSince(start_);
+      sink_(event);
     }
     return met ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
   }
@@ -95,6 +106,8 @@ class IterationWatch : public EndingCallback {
   const ProgressSink& sink_;
   std::string label_;
   std::vector<Watched> watched_;
+  ProgressEvent where_;
+  Clock::time_point start_;
   bool measured_ = false;  // Ends measured the current step
 };
 
@@ -306,7 +319,7 @@ class Loop {
     RoundLog row = Log(stage, plan, step, before, undo_before);
     row.seconds = SecondsSince(round_start);
     result_.log.push_back(row);
-    Report(label, row);
+    Report(label, row, Where(stage, plan, k));
     if (row.undone) return RoundEnd::kStop;
     return Continue(stage, plan, k, row, step, change_before) ? RoundEnd::kNext : RoundEnd::kStop;
   }
@@ -361,7 +374,7 @@ class Loop {
     for (const Tolerance& t : plan.active) {
       if (t.per_iteration) watched.push_back({t.measure, Bound(s_, t), t.bound});
     }
-    IterationWatch watch(model_, options_.progress, label, watched);
+    IterationWatch watch(model_, options_.progress, label, watched, Where(stage, plan, k), start_);
     if (options_.progress || !watched.empty()) {
       solver.callbacks.push_back(&watch);
       solver.update_state_every_iteration = true;
@@ -462,13 +475,33 @@ class Loop {
     return row;
   }
 
-  void Report(const std::string& label, const RoundLog& row) const {
+  void Report(const std::string& label, const RoundLog& row, ProgressEvent event) const {
     if (!options_.progress) return;
     char line[160];
     std::snprintf(line, sizeof line, "%s done: %d iterations  cost %.6e  max move %.2e  %.2f s%s",
                   label.c_str(), row.iterations, row.cost, row.max_move, row.seconds,
                   row.undone ? "  UNDONE" : "");
-    options_.progress(line + MeasureText(row.measures) + (row.valid ? "" : "  INVALID"));
+    event.kind = ProgressEvent::Kind::kRound;
+    event.line = line + MeasureText(row.measures) + (row.valid ? "" : "  INVALID");
+    if (!event.measure.empty()) event.value = model_.Measure(event.measure);
+    event.elapsed = SecondsSince(start_);
+    options_.progress(event);
+  }
+
+  // Round k of `stage`: the fields every event of the round carries.
+  ProgressEvent Where(const Stage& stage, const StagePlan& plan, int k) const {
+    ProgressEvent event;
+    event.stage = stage.name;
+    event.round = round_number_;
+    event.stage_round = k;
+    event.stage_rounds = plan.rounds;
+    for (const Tolerance& t : plan.active) {
+      if (t.bound) continue;
+      event.measure = t.measure;
+      event.target = Bound(s_, t);
+      break;
+    }
+    return event;
   }
 
   // After a round: keep the best, then the stop criteria (patience, the

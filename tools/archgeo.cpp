@@ -3,7 +3,7 @@
 // archgeo — command-line tool. Parses arguments and prints; all work is in
 // problems/ and mesh/.
 //
-//   archgeo solve SPEC.yaml [--set KEY=VALUE ...] [--quiet]
+//   archgeo solve SPEC.yaml [--set KEY=VALUE ...] [--quiet | --log]
 //   archgeo spec PROBLEM [--keys]
 //   archgeo measure MESH [--reference REF] [--json] [--all]
 //   archgeo generate OUT [--surface NAME] [--nu N] [--nv N] [--noise X] [--scale S]
@@ -33,6 +33,7 @@
 #include <algorithm>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -50,16 +51,30 @@
 #include "problems/commands/run.h"
 #include "problems/spec/schema.h"
 #include "problems/spec/spec.h"
+#include "tools/progress_line.h"
 
 namespace {
 
 constexpr int kBadInput = 2;
 
-int Solve(const std::string& spec_path, const std::vector<std::string>& overrides, bool quiet) {
+// Where progress goes: nothing (--quiet); one line rewritten in place when
+// stderr is a terminal (unless --log); otherwise every event's log line.
+archgeo::ProgressSink Progress(bool quiet, bool log, std::unique_ptr<archgeo::ProgressLine>* line) {
+  if (quiet) return {};
+  if (!log && isatty(STDERR_FILENO)) {
+    *line = std::make_unique<archgeo::ProgressLine>(stderr);
+    archgeo::ProgressLine* display = line->get();
+    return [display](const archgeo::ProgressEvent& event) { display->Show(event); };
+  }
+  return [](const archgeo::ProgressEvent& event) { std::cerr << event.line << "\n"; };
+}
+
+int Solve(const std::string& spec_path, const std::vector<std::string>& overrides, bool quiet,
+          bool log) {
   const archgeo::ProblemSpec spec = archgeo::ReadSpec(spec_path, overrides);
-  archgeo::ProgressSink progress;
-  if (!quiet) progress = [](const std::string& line) { std::cerr << line << "\n"; };
-  const archgeo::RunResult run = archgeo::RunSpec(spec, progress);
+  std::unique_ptr<archgeo::ProgressLine> line;
+  const archgeo::RunResult run = archgeo::RunSpec(spec, Progress(quiet, log, &line));
+  if (line) line->Clear();
   std::cout << run.summary;
   if (run.exit_code == 0 || run.exit_code == 4 || run.exit_code == 5) {
     for (const archgeo::Key& k : spec.settings.schema().keys()) {
@@ -177,7 +192,11 @@ int main(int argc, char** argv) {
                     "Override a spec key by dotted path, e.g. --set mesh=roof.obj "
                     "--set solver.num_threads=1 (repeatable; paths relative to the current folder)")
       ->allow_extra_args(false);
-  solve->add_flag("-q,--quiet", quiet, "No progress lines (one per Ceres iteration otherwise)");
+  bool log = false;
+  solve->add_flag("-q,--quiet", quiet, "No progress (one line updated in place on a terminal, "
+                                      "the log otherwise)");
+  solve->add_flag("--log", log, "Progress as the log: a line per solver iteration and round, "
+                                "also on a terminal");
 
   std::string problem_name;
   bool keys_only = false;
@@ -354,7 +373,7 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (*solve) return Solve(spec_path, overrides, quiet);
+    if (*solve) return Solve(spec_path, overrides, quiet, log);
     if (*spec) return Spec(problem_name, keys_only, common_keys);
     if (*terms) return Terms();
     if (*bench) {
@@ -364,7 +383,11 @@ int main(int argc, char** argv) {
       if (n > 0) bench_request.self.assign(resolved, size_t(n));
       // A signal also stops the running child and removes its scratch folder.
       archgeo::InstallBenchSignalHandling();
-      std::cout << archgeo::RunBench(bench_request);
+      std::unique_ptr<archgeo::ProgressLine> line;
+      bench_request.progress = Progress(false, false, &line);
+      const std::string table = archgeo::RunBench(bench_request);
+      if (line) line->Clear();
+      std::cout << table;
       return 0;
     }
     if (*render) {

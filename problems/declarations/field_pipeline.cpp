@@ -259,7 +259,14 @@ Mesh InFileUnits(const Mesh& mesh, const Similarity& frame) {
 
 ProgressSink Prefixed(const ProgressSink& progress, const std::string& prefix) {
   if (!progress) return progress;
-  return [progress, prefix](const std::string& line) { progress(prefix + line); };
+  return [progress, prefix](const ProgressEvent& event) {
+    ProgressEvent prefixed = event;
+    prefixed.line = prefix + event.line;
+    // The stage as "conjugate_field" or "level_sets relax" (the prefix's name).
+    const std::string name = prefix.substr(0, prefix.find(':'));
+    prefixed.stage = event.stage.empty() ? name : name + " " + event.stage;
+    progress(prefixed);
+  };
 }
 
 }  // namespace archgeo
