@@ -112,7 +112,9 @@ TEST_P(ExampleReport, ValidatesAgainstTheSchema) {
       {"principal_symmetric", "co_spherical_residual"},
       {"grid", "orthogonality_degrees"},
       {"hnet", "kink_degrees"}};
-  if (shown.count(problem)) EXPECT_EQ(value, shown.at(problem)) << GetParam();
+  if (shown.count(problem)) {
+    EXPECT_EQ(value, shown.at(problem)) << GetParam();
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, ExampleReport, ::testing::ValuesIn(Examples()),

@@ -304,10 +304,11 @@ int main(int argc, char** argv) {
                      "tolerance; bending the first mesh's largest value; kinks 1 degree)");
   render->add_option("--titles", render_request.titles, "One title per mesh (default: file names)")
       ->delimiter(',');
-  render->add_option("--width", render_request.options.panel_width, "Pixels per panel, across")
+  render->add_option("--width", render_request.options.panel_width,
+                     "Pixels per panel, across (PNG; the HTML page fills the window)")
       ->capture_default_str()
       ->check(CLI::Range(200, 4000));
-  render->add_option("--height", render_request.options.panel_height, "Pixels per panel, down")
+  render->add_option("--height", render_request.options.panel_height, "Pixels per panel, down (PNG)")
       ->capture_default_str()
       ->check(CLI::Range(200, 4000));
   render->add_option("--tilt", render_request.options.tilt_degrees,
