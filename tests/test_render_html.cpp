@@ -201,5 +201,47 @@ TEST_F(RenderHtml, AFaceIdInTheAddressIsPinnedWithItsValue) {
   EXPECT_NE(none.find("<span id=\"pinned\"></span>"), std::string::npos) << none;
 }
 
+// Hovering and clicking in a real browser: a page that holds the view in a
+// frame sends pointer events to the middle of a quad near the left canvas's
+// centre and to its empty corner, and writes what the view then shows.
+TEST_F(RenderHtml, HoverShowsAndAClickPinsTheFaceUnderThePointer) {
+  Render();
+  WriteFile("frame.html", R"(<!DOCTYPE html><html><body>
+<iframe id="f" src="view.html" width="1200" height="800"></iframe><pre id="out"></pre><script>
+document.getElementById("f").addEventListener("load", () => {
+  const w = document.getElementById("f").contentWindow, d = w.document;
+  const c = d.getElementById("c0"), r = c.getBoundingClientRect();
+  const at = (x, y) => ({clientX: r.left + x, clientY: r.top + y, bubbles: true, button: 0});
+  const click = (x, y) => {
+    c.dispatchEvent(new w.PointerEvent("pointermove", at(x, y)));
+    const tip = d.getElementById("tip").style.display == "none" ? "" :
+                d.getElementById("tip").textContent;
+    c.dispatchEvent(new w.PointerEvent("pointerdown", at(x, y)));
+    c.dispatchEvent(new w.PointerEvent("pointerup", at(x, y)));
+    return "tip[" + tip + "] pinned[" + d.getElementById("pinned").textContent + "] hash[" +
+           w.location.hash + "]\n";
+  };
+  document.getElementById("out").textContent =
+      click(r.width / 2 + 7, r.height / 2 + 5) + click(3, 3);
+});
+</script></body></html>)");
+  std::string output;
+  ASSERT_EQ(Shell("timeout 120 " + std::string(kChromium) +
+                      " --headless=new --no-sandbox --disable-gpu --allow-file-access-from-files"
+                      " --virtual-time-budget=5000 --user-data-dir=" + Path("profile") +
+                      " --dump-dom 'file://" + Path("frame.html") + "' 2>/dev/null", &output),
+            0);
+  const size_t first = output.find("tip[face ");
+  ASSERT_NE(first, std::string::npos) << output;
+  const int face = std::stoi(output.substr(first + 9));
+  EXPECT_GE(face, 0);
+  EXPECT_LT(face, 64);
+  const std::string id = "face " + std::to_string(face) + ": planarity";
+  EXPECT_NE(output.find("pinned[pinned twisted.obj \u2014 " + id), std::string::npos) << output;
+  EXPECT_NE(output.find("hash[#face=" + std::to_string(face) + "]"), std::string::npos) << output;
+  // The corner holds no face: no tip, and the click there unpins.
+  EXPECT_NE(output.find("tip[] pinned[] hash[]"), std::string::npos) << output;
+}
+
 }  // namespace
 }  // namespace archgeo
