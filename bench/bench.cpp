@@ -13,6 +13,7 @@
 
 #include "bench/child.h"
 #include "bench/jobs.h"
+#include "core/format_number.h"
 #include "core/input_error.h"
 #include "io/output_files.h"
 #include "problems/spec/spec.h"
@@ -120,11 +121,7 @@ ProblemSpec Read(const std::string& spec, const std::string& mesh,
   return ReadSpec(spec, overrides);
 }
 
-std::string Number(double x, const char* format = "%.4g") {
-  char text[64];
-  std::snprintf(text, sizeof text, format, x);
-  return text;
-}
+std::string Number(double x, const char* format = "%.4g") { return FormatNumber(format, x); }
 
 std::string SettingsText(const json& settings) {
   std::string text;

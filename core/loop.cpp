@@ -13,6 +13,7 @@
 #include <limits>
 
 #include "core/clock.h"
+#include "core/format_number.h"
 #include "core/lean_solve.h"
 #include "core/normal_equations.h"
 #include "core/solver_options.h"
@@ -20,16 +21,10 @@
 namespace archgeo {
 namespace {
 
-std::string Format(const char* format, double value) {
-  char text[64];
-  std::snprintf(text, sizeof text, format, value);
-  return text;
-}
-
 // "  name value" for each logged measure.
 std::string MeasureText(const std::map<std::string, double>& measures) {
   std::string text;
-  for (const auto& [name, value] : measures) text += "  " + name + " " + Format("%.4g", value);
+  for (const auto& [name, value] : measures) text += "  " + name + " " + FormatNumber("%.4g", value);
   return text;
 }
 
@@ -91,7 +86,7 @@ class IterationWatch : public EndingCallback {
     for (const Watched& w : watched_) {
       if (w.bound) continue;
       const double value = model_.Measure(w.measure);
-      if (values) *values += "  " + w.measure + " " + Format("%.3e", value);
+      if (values) *values += "  " + w.measure + " " + FormatNumber("%.3e", value);
       goals = true;
       met = met && value <= w.value;
     }
@@ -308,7 +303,7 @@ class Loop {
     model_.BeginRound(projecting);
     if (projecting) result_.seconds["projection"] += SecondsSince(projection_start);
     const std::string label = (stage.name.empty() ? std::string() : stage.name + " ") +
-                              "round " + Format("%2.0f", round_number_);
+                              "round " + FormatNumber("%2.0f", round_number_);
     std::vector<double> before;
     const StepResult step = stage.step ? Step(stage, &before) : Solve(stage, plan, k, label, &before);
     if (!step.usable || !model_.Finite()) {
@@ -531,7 +526,7 @@ class Loop {
     if (!plan.active.empty() && !met) scale_ *= plan.factor;  // continuation
     if (plan.stopping) return true;
     if (plan.rest_move > 0 && row.max_move < plan.rest_move) {
-      result_.stop = "at rest (max move below " + Format("%g", plan.rest_move) + ")";
+      result_.stop = "at rest (max move below " + FormatNumber("%g", plan.rest_move) + ")";
       return false;
     }
     if (!stage.rest_change_measure.empty()) {
@@ -563,8 +558,8 @@ class Loop {
     if (!(fraction > 0) || rounds <= 0 || k - last_gain_ < rounds) return false;
     result_.stalled = true;
     result_.stop = "stalled: no gain in " + std::string(stage.patience_valid ? "the best valid " : "") +
-                   stage.patience_measure + " (" + Format("%.4g", patience_best_) + ") by more than " +
-                   Format("%g", 100 * fraction) + "% in " + std::to_string(rounds) + " rounds";
+                   stage.patience_measure + " (" + FormatNumber("%.4g", patience_best_) + ") by more than " +
+                   FormatNumber("%g", 100 * fraction) + "% in " + std::to_string(rounds) + " rounds";
     return true;
   }
 
@@ -577,7 +572,7 @@ class Loop {
       const double value = model_.Measure(t.measure);
       if (value <= Bound(s_, t)) continue;
       broken += (broken.empty() ? "" : "; ") + t.key + " broken (" + t.measure + " " +
-                Format("%.4g", value) + " > " + Format("%.4g", Bound(s_, t)) + ")";
+                FormatNumber("%.4g", value) + " > " + FormatNumber("%.4g", Bound(s_, t)) + ")";
     }
     return broken;
   }

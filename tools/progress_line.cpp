@@ -8,16 +8,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/format_number.h"
+
 namespace archgeo {
 namespace {
 
-std::string Printf(const char* format, double x) {
-  char text[64];
-  std::snprintf(text, sizeof text, format, x);
-  return text;
-}
-
-std::string Seconds(double s) { return s < 10 ? Printf("%.1f s", s) : Printf("%.0f s", s); }
+std::string Seconds(double s) { return s < 10 ? FormatNumber("%.1f s", s) : FormatNumber("%.0f s", s); }
 
 }  // namespace
 
@@ -74,8 +70,8 @@ std::string ProgressLine::Text(const ProgressEvent& event) const {
     text += " done";
   }
   if (!event.measure.empty() && !std::isnan(event.value)) {
-    text += "  " + event.measure + " " + Printf("%.2e", event.value);
-    if (!std::isnan(event.target)) text += " (goal " + Printf("%.0e", event.target) + ")";
+    text += "  " + event.measure + " " + FormatNumber("%.2e", event.value);
+    if (!std::isnan(event.target)) text += " (goal " + FormatNumber("%.0e", event.target) + ")";
   }
   text += "  " + Seconds(event.elapsed);
   return text + Estimate(event);
