@@ -236,13 +236,29 @@ std::shared_ptr<const LevelSetResult> SolveLevelSets(const Settings& parent, con
   return level_sets;
 }
 
+namespace {
+
+// Whether the field key `key` names faces: given, and not an empty list or
+// path (`archgeo spec` writes `singularities: []`).
+bool NamesFaces(const Settings& s, const std::string& key) {
+  if (!s.schema().Find(key) || !s.Given(key)) return false;
+  const nlohmann::json all = s.SectionJson("field");
+  const std::string name = key.substr(std::string("field.").size());
+  if (!all.contains(name)) return true;
+  const nlohmann::json& value = all[name];
+  return !(value.is_null() || (value.is_array() && value.empty()) ||
+           (value.is_string() && value.get<std::string>().empty()));
+}
+
+}  // namespace
+
 Mesh DesignSurface(const Settings& parent, const Mesh& mesh) {
   bool triangles = true;
   for (FaceIndex f : mesh.faces()) triangles = triangles && mesh.degree(f) == 3;
   if (triangles) return mesh;
   for (const char* key : {"field.singularities", "field.moves", "field.directions",
                           "field.constraints"}) {
-    if (parent.schema().Find(key) && parent.Given(key)) {
+    if (NamesFaces(parent, key)) {
       throw parent.Error(key, "names faces of a triangle mesh, but the mesh has polygons (its "
                               "triangulation is the design surface): give the design surface as "
                               "a triangle mesh to use this key");
