@@ -5,6 +5,11 @@
 // its boundary polylines (AABB tree of segments).
 #include "geometry/reference.h"
 
+// CGAL's checks are on here (CMakeLists.txt), and its constrained
+// triangulation warns on stderr, for CGAL's developers, that an exact number
+// type would be faster with another class: not the user's concern.
+#define CGAL_NO_CDT_2_WARNING
+
 #include <algorithm>
 #include <array>
 #include <cmath>
