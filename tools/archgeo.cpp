@@ -6,6 +6,8 @@
 //   archgeo solve SPEC.yaml [--set KEY=VALUE ...] [--quiet | --log]
 //   archgeo spec PROBLEM [--keys]
 //   archgeo measure MESH [--reference REF] [--json] [--all]
+//   archgeo spectral MESH --list [--count K] [--laplacian cotangent|normalised]
+//                        [--charts N | --edge-length L]
 //   archgeo generate OUT [--surface NAME] [--nu N] [--nv N] [--noise X] [--scale S]
 //                        [--seed K] [--refinement K] [--reference REF_OUT]
 //   archgeo darboux NET OUT.ply [--c C] [--minus] [--projective 16 numbers]
@@ -49,6 +51,7 @@
 #include "energies/registry.h"
 #include "problems/declarations/registry.h"
 #include "problems/commands/run.h"
+#include "problems/commands/spectral.h"
 #include "problems/spec/schema.h"
 #include "problems/spec/spec.h"
 #include "tools/progress_line.h"
@@ -178,8 +181,8 @@ int main(int argc, char** argv) {
 
   std::string help_topic;
   CLI::App* help = app.add_subcommand("help", "Print the help of archgeo or of one command");
-  help->add_option("command", help_topic, "A command (solve, spec, terms, measure, generate, "
-                                          "darboux, render, bench)");
+  help->add_option("command", help_topic, "A command (solve, spec, terms, measure, spectral, "
+                                          "generate, darboux, render, bench)");
 
   std::string spec_path;
   std::vector<std::string> overrides;
@@ -231,6 +234,27 @@ int main(int argc, char** argv) {
                     "Print every metric, also those that do not describe this mesh (A-net, "
                     "H-net and conical rows of a net that is none of these; saddles of a quad "
                     "mesh)");
+
+  archgeo::SpectralRequest spectral_request;
+  bool spectral_list = false;
+  CLI::App* spectral = app.add_subcommand(
+      "spectral", "The lowest Laplacian eigenfunctions of a triangle mesh with their critical "
+                  "points: the candidates of spectral quad meshing");
+  spectral->add_option("mesh", spectral_request.mesh, "Design surface (OBJ, OFF, PLY; polygons "
+                                                      "are triangulated)")
+      ->required();
+  spectral->add_flag("--list", spectral_list, "Print every candidate eigenfunction (required)")
+      ->required();
+  spectral->add_option("--count", spectral_request.count,
+                       "Eigenpairs to compute, the constant one included")
+      ->capture_default_str();
+  spectral->add_option("--laplacian", spectral_request.laplacian,
+                       "cotangent (area-weighted, thesis §4.1.5) or normalised (§6.1.3)")
+      ->capture_default_str();
+  spectral->add_option("--charts", spectral_request.charts,
+                       "Mark the eigenfunction whose complex has the nearest number of charts");
+  spectral->add_option("--edge-length", spectral_request.edge_length,
+                       "Mark the one whose charts are nearest this size (file units)");
 
   std::string grid_path;
   archgeo::GenerateOptions gen;
@@ -397,6 +421,10 @@ int main(int argc, char** argv) {
     }
     if (*generate) {
       std::cout << archgeo::GenerateSurface(grid_path, gen).summary;
+      return 0;
+    }
+    if (*spectral) {
+      std::cout << archgeo::SpectralList(spectral_request);
       return 0;
     }
     if (*darboux) {

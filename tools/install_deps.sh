@@ -9,7 +9,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libceres-dev libsuitesparse-dev libeigen3-dev libgoogle-glog-dev libgflags-dev
-  libcgal-dev libgmp-dev libmpfr-dev libtbb-dev
+  libcgal-dev libgmp-dev libmpfr-dev libtbb-dev libspectra-dev
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev googletest libbenchmark-dev
   libopenblas0-pthread libopenblas-pthread-dev

@@ -1,0 +1,128 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "problems/commands/spectral.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+
+#include "core/input_error.h"
+#include "geometry/reference.h"
+#include "io/io.h"
+#include "mesh/eigen_point.h"
+#include "spectral/eigenpairs.h"
+
+namespace archgeo {
+namespace {
+
+struct SpectralMesh {
+  std::vector<Eigen::Vector3d> points;
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<std::vector<int>> rings;  // one-rings in cyclic order
+  std::vector<bool> closed;             // interior vertex
+  double area = 0;
+  int euler = 0;
+  bool has_boundary = false;
+};
+
+SpectralMesh Arrays(const Mesh& mesh) {
+  SpectralMesh out;
+  for (VertexIndex v : mesh.vertices()) out.points.push_back(EigenPoint(mesh, v));
+  for (FaceIndex f : mesh.faces()) {
+    std::array<int, 3> t{};
+    int c = 0;
+    for (VertexIndex v : mesh.vertices_around_face(mesh.halfedge(f))) t[size_t(c++)] = int(v.idx());
+    out.triangles.push_back(t);
+    out.area += 0.5 * (out.points[t[1]] - out.points[t[0]])
+                          .cross(out.points[t[2]] - out.points[t[0]])
+                          .norm();
+  }
+  out.rings.resize(mesh.number_of_vertices());
+  out.closed.resize(mesh.number_of_vertices());
+  for (VertexIndex v : mesh.vertices()) {
+    out.closed[v.idx()] = !mesh.is_border(v);
+    out.has_boundary = out.has_boundary || mesh.is_border(v);
+    if (mesh.is_isolated(v)) continue;
+    for (VertexIndex u : mesh.vertices_around_target(mesh.halfedge(v))) {
+      out.rings[v.idx()].push_back(int(u.idx()));
+    }
+  }
+  out.euler = int(mesh.number_of_vertices()) - int(mesh.number_of_edges()) +
+              int(mesh.number_of_faces());
+  return out;
+}
+
+std::string Row(const char* format, int k, double lambda, const CriticalPoints& c) {
+  char line[160];
+  std::snprintf(line, sizeof line, format, k, lambda, c.maxima, c.minima, c.saddles,
+                c.multi_saddles, c.maxima + c.minima - c.saddles);
+  return line;
+}
+
+}  // namespace
+
+std::vector<SpectralCandidate> SpectralCandidates(const Mesh& triangles, int count,
+                                                  LaplacianKind kind) {
+  const SpectralMesh m = Arrays(triangles);
+  const Laplacian laplacian = BuildLaplacian(m.points, m.triangles, kind);
+  const Eigenpairs pairs = LowestEigenpairs(laplacian.stiffness, laplacian.mass, count);
+  std::vector<SpectralCandidate> out;
+  for (int k = 1; k < count; ++k) {
+    out.push_back({k, pairs.values[k], FindCriticalPoints(m.rings, m.closed, pairs.vectors.col(k))});
+  }
+  return out;
+}
+
+std::string SpectralList(const SpectralRequest& q) {
+  if (q.laplacian != "cotangent" && q.laplacian != "normalised") {
+    throw InputError("", 0, "--laplacian", "must be cotangent or normalised");
+  }
+  if (q.charts < 0 || q.edge_length < 0 || !std::isfinite(q.edge_length)) {
+    throw InputError("", 0, q.charts < 0 ? "--charts" : "--edge-length", "must be positive");
+  }
+  const Mesh mesh = TriangulatedCopy(ReadMesh(q.mesh));
+  const SpectralMesh m = Arrays(mesh);
+  if (q.count < 2 || q.count >= int(m.points.size())) {
+    throw InputError(q.mesh, 0, "--count",
+                     "must be at least 2 and below the mesh's " + std::to_string(m.points.size()) +
+                         " vertices");
+  }
+  std::vector<SpectralCandidate> candidates;
+  try {
+    candidates = SpectralCandidates(mesh, q.count,
+                                    q.laplacian == "cotangent" ? LaplacianKind::kCotangent
+                                                               : LaplacianKind::kNormalised);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(q.mesh, 0, "--laplacian", e.what());
+  } catch (const std::runtime_error& e) {
+    throw InputError(q.mesh, 0, "--count", e.what());
+  }
+  const int target = q.charts > 0       ? q.charts
+                     : q.edge_length > 0 ? int(std::lround(m.area / (q.edge_length * q.edge_length)))
+                                         : 0;
+  std::string text = "spectral: " + q.laplacian + " Laplacian of " + q.mesh + " (" +
+                     std::to_string(m.points.size()) + " vertices, " +
+                     std::to_string(m.triangles.size()) + " triangles, Euler characteristic " +
+                     std::to_string(m.euler) + (m.has_boundary ? ", with boundary" : ", closed") +
+                     ")\n";
+  text += "   k  eigenvalue    max   min  saddles (multi)  max+min-saddles\n";
+  int best = -1, best_gap = 0;
+  for (const SpectralCandidate& c : candidates) {
+    text += Row("%4d  %10.4e  %5d %5d  %7d (%d)  %d", c.k, c.eigenvalue, c.critical) + "\n";
+    const int gap = std::abs(c.critical.saddles - target);
+    if (target > 0 && (best < 0 || gap < best_gap)) {
+      best = c.k;
+      best_gap = gap;
+    }
+  }
+  text += "charts: one per saddle (the Morse-Smale complex of eigenfunction k)";
+  text += m.has_boundary ? "; boundary vertices are not classified\n"
+                         : "; a closed surface has max+min-saddles = " + std::to_string(m.euler) + "\n";
+  if (target > 0) {
+    text += "closest to " + std::to_string(target) + " charts: k = " + std::to_string(best) + "\n";
+  }
+  return text;
+}
+
+}  // namespace archgeo
