@@ -32,7 +32,7 @@ TEST(Spectral, UnitSphereEigenvaluesAreLTimesLPlusOneWithMultiplicity2LPlus1) {
     }
   }
   for (const SpectralCandidate& s : c) {
-    EXPECT_EQ(s.critical.maxima + s.critical.minima - s.critical.saddles, 2) << "k " << s.k;
+    EXPECT_EQ(s.critical.EulerSum(), 2) << "k " << s.k;
   }
 }
 
@@ -41,10 +41,25 @@ TEST(Spectral, TorusEigenfunctionsHaveAsManySaddlesAsExtrema) {
   const std::vector<SpectralCandidate> c = SpectralCandidates(torus, 40, LaplacianKind::kCotangent);
   int with_saddles = 0;
   for (const SpectralCandidate& s : c) {
-    EXPECT_EQ(s.critical.maxima + s.critical.minima - s.critical.saddles, 0) << "k " << s.k;
+    EXPECT_EQ(s.critical.EulerSum(), 0) << "k " << s.k;
     with_saddles += s.critical.saddles >= 4;
   }
   EXPECT_GT(with_saddles, 20);
+}
+
+// An open surface (Concerthall, a disc: χ = 1): boundary critical points
+// classified on the surface doubled across its (Neumann) boundary count half.
+TEST(Spectral, ConcerthallEigenfunctionsSumToItsEulerCharacteristic) {
+  const Mesh hall = TriangulatedCopy(ReadMesh(ARCHGEO_DATA_DIR "/directional_Concerthall.off"));
+  ASSERT_EQ(int(hall.number_of_vertices()) - int(hall.number_of_edges()) +
+                int(hall.number_of_faces()), 1);
+  const std::vector<SpectralCandidate> c = SpectralCandidates(hall, 60, LaplacianKind::kCotangent);
+  int eight_charts = 0;
+  for (const SpectralCandidate& s : c) {
+    EXPECT_EQ(s.critical.EulerSum(), 1) << "k " << s.k;
+    eight_charts += s.critical.saddles + s.critical.boundary_saddles / 2 >= 8;
+  }
+  EXPECT_GT(eight_charts, 20);
 }
 
 TEST(Spectral, NormalisedLaplacianEigenvaluesLieBetweenZeroAndTwo) {

@@ -44,7 +44,14 @@ SpectralMesh Arrays(const Mesh& mesh) {
     out.closed[v.idx()] = !mesh.is_border(v);
     out.has_boundary = out.has_boundary || mesh.is_border(v);
     if (mesh.is_isolated(v)) continue;
-    for (VertexIndex u : mesh.vertices_around_target(mesh.halfedge(v))) {
+    // A boundary vertex's ring runs over its faces from one boundary
+    // neighbour to the other: after the border halfedge into v, whose
+    // source and the next one's span the gap.
+    HalfedgeIndex start = mesh.halfedge(v);
+    for (HalfedgeIndex h : mesh.halfedges_around_target(mesh.halfedge(v))) {
+      if (mesh.is_border(h)) start = mesh.opposite(mesh.next(h));
+    }
+    for (VertexIndex u : mesh.vertices_around_target(start)) {
       out.rings[v.idx()].push_back(int(u.idx()));
     }
   }
@@ -53,10 +60,11 @@ SpectralMesh Arrays(const Mesh& mesh) {
   return out;
 }
 
-std::string Row(const char* format, int k, double lambda, const CriticalPoints& c) {
+std::string Row(int k, double lambda, const CriticalPoints& c) {
   char line[160];
-  std::snprintf(line, sizeof line, format, k, lambda, c.maxima, c.minima, c.saddles,
-                c.multi_saddles, c.maxima + c.minima - c.saddles);
+  std::snprintf(line, sizeof line, "%4d  %10.4e  %5d %5d  %7d (%d)  %3d %3d %3d  %g", k, lambda,
+                c.maxima, c.minima, c.saddles, c.multi_saddles, c.boundary_maxima,
+                c.boundary_minima, c.boundary_saddles, c.EulerSum());
   return line;
 }
 
@@ -106,19 +114,22 @@ std::string SpectralList(const SpectralRequest& q) {
                      std::to_string(m.triangles.size()) + " triangles, Euler characteristic " +
                      std::to_string(m.euler) + (m.has_boundary ? ", with boundary" : ", closed") +
                      ")\n";
-  text += "   k  eigenvalue    max   min  saddles (multi)  max+min-saddles\n";
+  text += "   k  eigenvalue    max   min  saddles (multi)  boundary max min saddles  "
+          "euler\n";
   int best = -1, best_gap = 0;
   for (const SpectralCandidate& c : candidates) {
-    text += Row("%4d  %10.4e  %5d %5d  %7d (%d)  %d", c.k, c.eigenvalue, c.critical) + "\n";
-    const int gap = std::abs(c.critical.saddles - target);
+    text += Row(c.k, c.eigenvalue, c.critical) + "\n";
+    const int charts = c.critical.saddles + c.critical.boundary_saddles / 2;
+    const int gap = std::abs(charts - target);
     if (target > 0 && (best < 0 || gap < best_gap)) {
       best = c.k;
       best_gap = gap;
     }
   }
-  text += "charts: one per saddle (the Morse-Smale complex of eigenfunction k)";
-  text += m.has_boundary ? "; boundary vertices are not classified\n"
-                         : "; a closed surface has max+min-saddles = " + std::to_string(m.euler) + "\n";
+  text += "charts: one per saddle, half per boundary saddle (the Morse-Smale complex of "
+          "eigenfunction k); euler: max + "
+          "min - saddles, boundary points counted half, = " + std::to_string(m.euler) +
+          " (the Euler characteristic) for every k\n";
   if (target > 0) {
     text += "closest to " + std::to_string(target) + " charts: k = " + std::to_string(best) + "\n";
   }
