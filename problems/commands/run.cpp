@@ -29,6 +29,7 @@
 #include "analysis/validity.h"
 #include "problems/report/analysis.h"
 #include "problems/report/colors.h"
+#include "problems/report/fabrication.h"
 #include "problems/declarations/hnet_net.h"
 #include "problems/report/picture.h"
 #include "problems/runtime/model.h"
@@ -129,7 +130,11 @@ void CheckOutputName(const Settings& s, const std::string& key) {
       {"output.image", {".png", ".html"}},
       {"output.patchwork", {".ply"}},
       {"output.rulings", {".obj"}},
-      {"output.field", {".ply"}}};
+      {"output.field", {".ply"}},
+      {"output.panels", {".csv"}},
+      {"output.nodes", {".csv"}},
+      {"output.beams", {".csv"}},
+      {"output.cutting", {".dxf"}}};
   const auto format = kFormats.find(key);
   if (format == kFormats.end()) return;
   std::string extension = std::filesystem::path(path).extension().string();
@@ -207,6 +212,7 @@ class SpecRun {
   // Outputs are checked and staged before any work; no output may name an
   // input (the spec, the mesh, the reference, files the problem reads).
   void StageOutputs() {
+    CheckFabricationSettings(s_);
     for (const Key& k : s_.schema().keys()) {
       if (k.type != Type::kOutputPath || s_.String(k.name).empty()) continue;
       CheckOutputName(s_, k.name);
@@ -424,11 +430,17 @@ class SpecRun {
     }
     HookContext& hooks = solution_->hooks;
     for (const auto& [key, temporary] : temporaries_) {
-      if (key != "output.mesh" && key != "output.report" && key != "output.image") {
+      if (key != "output.mesh" && key != "output.report" && key != "output.image" &&
+          !IsFabricationOutput(key)) {
         hooks.temporaries[key.substr(std::string("output.").size())] = temporary;
       }
     }
     if (d_.write && !hooks.temporaries.empty()) Writing([&] { d_.write(hooks); });
+    Writing([&] {
+      const nlohmann::json fabrication =
+          WriteFabrication(solution_->output, s_, temporaries_, &fabrication_headline_);
+      if (!fabrication.is_null()) run_.report["fabrication"] = fabrication;
+    });
   }
 
   // The per-face value of the colours, the PLY properties and the picture;
@@ -488,6 +500,7 @@ class SpecRun {
     std::snprintf(objective, sizeof objective, "objective (canonical frame): %.6e\n",
                   solved.objective.count("total") ? solved.objective.at("total") : 0.0);
     return head + solution_->net.headline + ToleranceLines() + ValidityLines() +
+           fabrication_headline_ +
            solution_->headline + MeasureHeadline(solved) + objective +
            FormatMetrics(before_, &after_, scale_) +
            FormatAnalysis(extra_before_, &extra_after_, scale_);
@@ -567,6 +580,7 @@ class SpecRun {
   double scale_ = 0;
   double solve_seconds_ = 0;
   double mesh_write_seconds_ = 0;
+  std::string fabrication_headline_;  // output.cutting's warning, if any
   nlohmann::json seconds_ = nlohmann::json::object();
   RunResult run_;
 };

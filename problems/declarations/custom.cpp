@@ -19,6 +19,7 @@
 #include "geometry/reference.h"
 #include "mesh/similarity.h"
 #include "problems/declarations/design_band.h"
+#include "problems/declarations/flatness.h"
 #include "problems/runtime/model.h"
 #include "problems/spec/selection.h"
 
@@ -232,6 +233,10 @@ ProblemDecl CustomProblem(const CustomValue* terms, const std::string& file) {
     }
   };
   // The deviation band, off unless the spec sets it (design_band.h).
+  // Flatness in millimetres where a term drives δ_PQ,n (flatness.h).
+  if (std::find(driven.begin(), driven.end(), "pq_normalized_max") != driven.end()) {
+    d = WithFlatness(std::move(d));
+  }
   return WithDesignBand(std::move(d), 0);
 }
 

@@ -54,6 +54,7 @@
 // (docs/methods/planar_quads.md#the-worst-quads).
 #include "core/problem.h"
 #include "problems/declarations/design_band.h"
+#include "problems/declarations/flatness.h"
 #include "problems/declarations/relayout.h"
 #include "problems/declarations/worst_quads.h"
 
@@ -148,7 +149,8 @@ ProblemDecl planar_quads() {
   // diagonal. With today's terms the shared Conjugate net needs 0.65% for
   // δ_PQ,n ≤ 1e-3 and Smooth 1.03%; at 0.3% both end exit 4 with the band
   // binding (docs/methods/design_band.md).
-  return WithDesignBand(d, 0.015);
+  // Flatness in millimetres beside δ_PQ,n (problems/declarations/flatness.h).
+  return WithDesignBand(WithFlatness(d), 0.015);
 }
 
 }  // namespace archgeo::problems

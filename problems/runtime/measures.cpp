@@ -8,6 +8,8 @@
 #include <cmath>
 
 #include "energies/total_absolute_curvature.h"
+#include "fabrication/panels.h"
+#include "fabrication/units.h"
 #include "mesh/elements.h"
 #include "analysis/goal_metrics.h"
 #include "geometry/hnet.h"
@@ -24,6 +26,24 @@ std::map<std::string, double> Planarity(HookContext& c) {
   const double max =
       p.normalized.empty() ? 0.0 : *std::max_element(p.normalized.begin(), p.normalized.end());
   return {{"pq_normalized_max", max}};
+}
+
+// The largest distance of a panel corner from its best-fit plane
+// (fabrication/panels.h), in millimetres through `units` (0 without them:
+// CheckFabricationSettings refuses the tolerance then).
+std::map<std::string, double> Flatness(HookContext& c) {
+  const Mesh& mesh = c.store->mesh();
+  double worst = 0;
+  std::vector<Eigen::Vector3d> corners;
+  for (FaceIndex f : mesh.faces()) {
+    corners.clear();
+    for (VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+      const Point& p = mesh.point(v);
+      corners.emplace_back(p.x(), p.y(), p.z());
+    }
+    worst = std::max(worst, PanelFlatness(corners));
+  }
+  return {{"flatness_mm", worst * c.frame.scale * MillimetresPerUnit(c.settings->String("units"))}};
 }
 
 std::map<std::string, double> EdgeSmoothness(HookContext& c) {
@@ -135,6 +155,7 @@ std::map<std::string, double> ForceBalance(HookContext& c) {
 const std::map<std::string, MeasureGroup>& Groups() {
   static const std::map<std::string, MeasureGroup> groups = {
       {"pq_normalized_max", &Planarity},
+      {"flatness_mm", &Flatness},
       {"E", &EdgeSmoothness},
       {"E_prime", &EdgeSmoothness},
       {"self_intersecting_pyramids", &StarSmoothness},

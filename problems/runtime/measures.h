@@ -5,6 +5,10 @@
 // lengths). Measures computed together form a group (one pass):
 //
 //   pq_normalized_max          max over faces of δ_PQ,n (analysis/metrics.h)
+//   flatness_mm                max over faces of the largest distance of a
+//                              corner from the face's best-fit plane, in
+//                              millimetres through `units` (fabrication/
+//                              panels.h; problems/declarations/flatness.h)
 //   E, E_prime,                Pellis §3: Σ ℓ ℓ*, Σ ℓ|α|; normal pyramids
 //   self_intersecting_pyramids,  and bad saddles (analysis/smoothness_metrics.h)
 //   bad_saddles

@@ -10,6 +10,7 @@
 
 #include "core/solver_options.h"
 #include "energies/registry.h"
+#include "fabrication/units.h"
 #include "mesh/elements.h"
 #include "problems/declarations/registry.h"
 
@@ -32,6 +33,9 @@ std::vector<Key> CommonKeys(const ProblemDecl& d) {
                          "surface to stay close to (default: the input mesh itself)"));
   keys.push_back(ChoiceKey("problem", "planar_quads", ProblemNames(),
                            "the problem (`archgeo spec NAME` lists its keys)"));
+  keys.push_back(ChoiceKey("units", "none", LengthUnitNames(),
+                           "the mesh's length unit: tolerances and sheets in millimetres are "
+                           "converted through it (docs/fabrication.md); none = not said"));
   Key fixed = ChoiceKey("fixed", "none", {"none", "corners", "boundary"},
                         "hard-fixed vertices: none, corners, boundary, or a list of 0-based "
                         "vertex indices");
@@ -111,6 +115,31 @@ std::vector<Key> CommonKeys(const ProblemDecl& d) {
                          "misreads binary face properties)"));
   keys.push_back(BoolKey("output.blocks", false,
                          "the report lists every output variable block per element (file units)"));
+  keys.push_back(PathKey("output.panels", Type::kOutputPath,
+                         "the panel table (.csv): per face its vertices, flatness, area, edges, "
+                         "corner angles, diagonals and tolerances met (docs/fabrication.md); "
+                         "empty: not written"));
+  keys.push_back(PathKey("output.cutting", Type::kOutputPath,
+                         "every panel flattened into its best-fit plane, with its id, laid out "
+                         "on sheets for cutting (.dxf, R12; needs `units`); empty: not written"));
+  Key sheet;
+  sheet.name = "cutting.sheet";
+  sheet.type = Type::kNumbers;
+  sheet.size = 2;
+  sheet.lo = 1e-6;
+  sheet.hi = 1e9;
+  sheet.fallback = std::vector<double>{3000, 6000};
+  sheet.doc = "width and height of a sheet in millimetres (output.cutting)";
+  keys.push_back(sheet);
+  keys.push_back(NumberKey("cutting.gap", 10, 0, 1e9,
+                           "millimetres between panels and from the sheet's edges (output.cutting)"));
+  keys.push_back(PathKey("output.nodes", Type::kOutputPath,
+                         "node axes (.csv): per vertex its area-weighted normal, or the cone's "
+                         "axis where the run made the mesh conical (docs/fabrication.md); empty: "
+                         "not written"));
+  keys.push_back(PathKey("output.beams", Type::kOutputPath,
+                         "beams (.csv): per edge its length, the plane of its node axes and their "
+                         "twist (docs/fabrication.md); empty: not written"));
   for (const std::string& k : d.output_keys) {
     keys.push_back(PathKey("output." + k, Type::kOutputPath,
                            "the problem's `" + k + "` output; empty: not written"));
