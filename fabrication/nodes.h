@@ -30,10 +30,10 @@
 namespace archgeo {
 
 struct NodeAxis {
-  Eigen::Vector3d axis = Eigen::Vector3d::Zero();  // unit
+  Eigen::Vector3d axis = Eigen::Vector3d::Zero();    // unit
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // the area-weighted vertex normal
-  bool cone = false;       // axis is the cone's
-  double conical = -1;     // the conical residual (radians; −1 where not a 4-face interior vertex)
+  bool cone = false;                                 // axis is the cone's
+  double conical = -1;  // the conical residual (radians; −1 where not a 4-face interior vertex)
   double offset_factor = 0;  // cone: 1 / cos φ (the face offset by d meets the axis at
                              // v + d · factor · axis); 0 elsewhere
 };

@@ -24,7 +24,8 @@ double RelativeChange(double changed, double original) {
 }
 
 Eigen::Vector3d PanelNewell(const std::vector<Eigen::Vector3d>& corners) {
-  return NewellVector(int(corners.size()), [&](int k) -> const Eigen::Vector3d& { return corners[size_t(k)]; });
+  return NewellVector(int(corners.size()),
+                      [&](int k) -> const Eigen::Vector3d& { return corners[size_t(k)]; });
 }
 
 // The side the panel's projected triangle (q0, qa, qb) turns to: +1 or −1.
@@ -86,7 +87,8 @@ PanelGeometry MeasurePanel(const std::vector<Eigen::Vector3d>& corners) {
     const Eigen::Vector3d edge = corners[(k + 1) % n] - corners[k];
     g.edges.push_back(edge.norm());
     const Eigen::Vector3d projected = edge - normal.dot(edge) * normal;
-    g.projection_change = std::max(g.projection_change, RelativeChange(projected.norm(), edge.norm()));
+    g.projection_change =
+        std::max(g.projection_change, RelativeChange(projected.norm(), edge.norm()));
     const Eigen::Vector3d previous = corners[(k + n - 1) % n] - corners[k];
     const Eigen::Vector3d cross = edge.cross(previous);
     const double angle = std::atan2(cross.norm(), edge.dot(previous)) * kDegreesPerRadian;
@@ -100,7 +102,8 @@ PanelGeometry MeasurePanel(const std::vector<Eigen::Vector3d>& corners) {
       sum += g.diagonals.back();
     }
   }
-  if (!g.diagonals.empty() && sum > 0) g.flatness_relative = g.flatness / (sum / double(g.diagonals.size()));
+  if (!g.diagonals.empty() && sum > 0)
+    g.flatness_relative = g.flatness / (sum / double(g.diagonals.size()));
   return g;
 }
 
@@ -129,7 +132,8 @@ FlatOutline FlattenPanel(const std::vector<Eigen::Vector3d>& corners) {
                                (corners[k] - corners[k - 1]).norm(), side);
   }
   // The rigid motion (no reflection) that best lays it onto the projection.
-  Eigen::Vector2d developed_mean = Eigen::Vector2d::Zero(), projected_mean = Eigen::Vector2d::Zero();
+  Eigen::Vector2d developed_mean = Eigen::Vector2d::Zero(),
+                  projected_mean = Eigen::Vector2d::Zero();
   for (size_t k = 0; k < n; ++k) developed_mean += developed[k], projected_mean += projected[k];
   developed_mean /= double(n);
   projected_mean /= double(n);

@@ -13,8 +13,8 @@
 namespace archgeo {
 
 struct PlainMesh {
-  std::vector<Eigen::Vector3d> points;    // vertex i, in the mesh's unit
-  std::vector<std::vector<int>> faces;    // face f: its vertex ids, in order
+  std::vector<Eigen::Vector3d> points;  // vertex i, in the mesh's unit
+  std::vector<std::vector<int>> faces;  // face f: its vertex ids, in order
   // Per vertex: its faces in cyclic order around it, and whether it is on
   // the boundary. Empty when no caller needs them (panels alone).
   std::vector<std::vector<int>> vertex_faces;

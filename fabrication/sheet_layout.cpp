@@ -67,8 +67,8 @@ bool FitsSheet(const Eigen::Vector2d& size, const Eigen::Vector2d& sheet, double
 
 SheetLayout LayOutOnSheets(const std::vector<std::vector<Eigen::Vector2d>>& outlines,
                            const Eigen::Vector2d& sheet, double gap) {
-  CHECK(sheet.x() > 0 && sheet.y() > 0 && gap >= 0) << "LayOutOnSheets: sheet " << sheet.transpose()
-                                                    << ", gap " << gap;
+  CHECK(sheet.x() > 0 && sheet.y() > 0 && gap >= 0)
+      << "LayOutOnSheets: sheet " << sheet.transpose() << ", gap " << gap;
   const size_t count = outlines.size();
   std::vector<Turned> turned;
   for (const auto& outline : outlines) turned.push_back(SmallestRectangle(outline));

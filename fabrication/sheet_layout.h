@@ -15,8 +15,8 @@
 namespace archgeo {
 
 struct PlacedOutline {
-  int panel = 0;  // index into the outlines given
-  int sheet = 0;  // 0-based
+  int panel = 0;                         // index into the outlines given
+  int sheet = 0;                         // 0-based
   std::vector<Eigen::Vector2d> corners;  // in the sheet's frame (origin: its lower-left corner)
   Eigen::Vector2d low = Eigen::Vector2d::Zero(), high = Eigen::Vector2d::Zero();  // its rectangle
 };

@@ -147,8 +147,8 @@ void WriteCuttingDxf(const std::string& path, const SheetLayout& layout,
         {0, 0}, {sheet.x(), 0}, {sheet.x(), sheet.y()}, {0, sheet.y()}};
     DxfPolyline(out, border, origins.back(), "SHEETS");
     DxfText(out, "sheet " + std::to_string(origins.size()),
-            origins.back() + Eigen::Vector2d(0.5 * sheet.x(), -0.03 * sheet.y()),
-            0.02 * sheet.y(), "SHEETS");
+            origins.back() + Eigen::Vector2d(0.5 * sheet.x(), -0.03 * sheet.y()), 0.02 * sheet.y(),
+            "SHEETS");
     x += sheet.x() * 1.1;
   }
   for (size_t i = 0; i < layout.outlines.size(); ++i) {

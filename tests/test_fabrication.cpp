@@ -59,8 +59,8 @@ TEST(MeasurePanel, RectangleAndLShapeHaveTheirAnglesDiagonalsAndArea) {
   EXPECT_NEAR(r.projection_change, 0.0, 1e-12);
   // An L of six corners: one reflex corner of 270°, angles summing to 720°,
   // 6·3/2 = 9 diagonals.
-  const PanelGeometry l = MeasurePanel(
-      MovedAll({{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}}));
+  const PanelGeometry l =
+      MeasurePanel(MovedAll({{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}}));
   EXPECT_NEAR(l.angles[3], 270.0, 1e-9);
   double sum = 0;
   for (double a : l.angles) sum += a;
@@ -106,7 +106,8 @@ TEST(FlattenPanel, PlanarHexagonIsCongruent) {
   EXPECT_LE(flat.change, 1e-12);
   for (size_t i = 0; i < 6; ++i) {
     for (size_t j = i + 1; j < 6; ++j) {
-      EXPECT_NEAR((flat.corners[j] - flat.corners[i]).norm(), (corners[j] - corners[i]).norm(), 1e-9);
+      EXPECT_NEAR((flat.corners[j] - flat.corners[i]).norm(), (corners[j] - corners[i]).norm(),
+                  1e-9);
     }
   }
 }
@@ -114,16 +115,19 @@ TEST(FlattenPanel, PlanarHexagonIsCongruent) {
 // Whether segments ab and cd cross or touch.
 bool SegmentsMeet(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
                   const Eigen::Vector2d& d) {
-  const auto side = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& r) {
+  const auto side = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q,
+                       const Eigen::Vector2d& r) {
     const double x = (q - p).x() * (r - p).y() - (q - p).y() * (r - p).x();
     return x > 0 ? 1 : x < 0 ? -1 : 0;
   };
   // r on the segment pq, given that the three are collinear.
-  const auto within = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& r) {
+  const auto within = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q,
+                         const Eigen::Vector2d& r) {
     return r.x() >= std::min(p.x(), q.x()) && r.x() <= std::max(p.x(), q.x()) &&
            r.y() >= std::min(p.y(), q.y()) && r.y() <= std::max(p.y(), q.y());
   };
-  const int c_side = side(a, b, c), d_side = side(a, b, d), a_side = side(c, d, a), b_side = side(c, d, b);
+  const int c_side = side(a, b, c), d_side = side(a, b, d), a_side = side(c, d, a),
+            b_side = side(c, d, b);
   if (c_side * d_side < 0 && a_side * b_side < 0) return true;
   return (c_side == 0 && within(a, b, c)) || (d_side == 0 && within(a, b, d)) ||
          (a_side == 0 && within(c, d, a)) || (b_side == 0 && within(c, d, b));
@@ -164,7 +168,8 @@ TEST(LayOutOnSheets, RandomPanelsFitTheirSheetsApartAndUnchanged) {
     }
     for (size_t a = 0; a < outlines[i].size(); ++a) {  // congruent: turned and moved only
       for (size_t b = a + 1; b < outlines[i].size(); ++b) {
-        EXPECT_NEAR((p.corners[b] - p.corners[a]).norm(), (outlines[i][b] - outlines[i][a]).norm(), 1e-9);
+        EXPECT_NEAR((p.corners[b] - p.corners[a]).norm(), (outlines[i][b] - outlines[i][a]).norm(),
+                    1e-9);
       }
     }
   }
@@ -201,7 +206,8 @@ PlainMesh Torus(int nu, int nv) {
     }
   }
   for (int i = 0; i < nu; ++i) {
-    for (int j = 0; j < nv; ++j) m.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+    for (int j = 0; j < nv; ++j)
+      m.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
   }
   for (int i = 0; i < nu; ++i) {
     for (int j = 0; j < nv; ++j) {  // faces (i, j), (i−1, j), (i−1, j−1), (i, j−1): cyclic
@@ -225,9 +231,10 @@ TEST(NodeAxes, ConicalTorusNetGetsItsConeAxesAndUntwistedBeams) {
     std::vector<double> cosines;
     for (int f : torus.vertex_faces[v]) {
       const std::vector<int>& q = torus.faces[size_t(f)];
-      const Eigen::Vector3d normal = (torus.points[size_t(q[2])] - torus.points[size_t(q[0])])
-                                         .cross(torus.points[size_t(q[3])] - torus.points[size_t(q[1])])
-                                         .normalized();
+      const Eigen::Vector3d normal =
+          (torus.points[size_t(q[2])] - torus.points[size_t(q[0])])
+              .cross(torus.points[size_t(q[3])] - torus.points[size_t(q[1])])
+              .normalized();
       cosines.push_back(normal.dot(n.axis));
     }
     for (double c : cosines) EXPECT_NEAR(c, cosines[0], 1e-12);
@@ -249,9 +256,10 @@ TEST(NodeAxes, ConicalTorusNetGetsItsConeAxesAndUntwistedBeams) {
     double low = 2, high = -2;
     for (int f : torus.vertex_faces[v]) {
       const std::vector<int>& q = torus.faces[size_t(f)];
-      const Eigen::Vector3d normal = (torus.points[size_t(q[2])] - torus.points[size_t(q[0])])
-                                         .cross(torus.points[size_t(q[3])] - torus.points[size_t(q[1])])
-                                         .normalized();
+      const Eigen::Vector3d normal =
+          (torus.points[size_t(q[2])] - torus.points[size_t(q[0])])
+              .cross(torus.points[size_t(q[3])] - torus.points[size_t(q[1])])
+              .normalized();
       low = std::min(low, normal.dot(normals[v].axis));
       high = std::max(high, normal.dot(normals[v].axis));
     }
@@ -262,7 +270,8 @@ TEST(NodeAxes, ConicalTorusNetGetsItsConeAxesAndUntwistedBeams) {
   PlainMesh moved = torus;
   std::mt19937 random(3);
   std::uniform_real_distribution<double> shift(-50, 50);
-  for (Eigen::Vector3d& p : moved.points) p += Eigen::Vector3d(shift(random), shift(random), shift(random));
+  for (Eigen::Vector3d& p : moved.points)
+    p += Eigen::Vector3d(shift(random), shift(random), shift(random));
   double twist = 0;
   for (const Beam& b : Beams(moved, NodeAxes(moved, 0))) twist = std::max(twist, b.twist_degrees);
   EXPECT_GT(twist, 0.1);

@@ -72,7 +72,8 @@ double CornerToPlane(const std::vector<Eigen::Vector3d>& corners) {
   Eigen::MatrixXd centred(corners.size(), 3);
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   for (const auto& c : corners) mean += c / double(corners.size());
-  for (size_t k = 0; k < corners.size(); ++k) centred.row(Eigen::Index(k)) = (corners[k] - mean).transpose();
+  for (size_t k = 0; k < corners.size(); ++k)
+    centred.row(Eigen::Index(k)) = (corners[k] - mean).transpose();
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(centred, Eigen::ComputeFullV);
   const Eigen::Vector3d normal = svd.matrixV().col(2);
   double worst = 0;
@@ -101,7 +102,8 @@ std::vector<DxfEntity> ReadDxfEntities(const std::string& text) {
     if (!in_entities || code != 0) continue;
     if (value == "ENDSEC") break;
     std::map<int, std::string> g;
-    for (size_t j = i + 1; j < groups.size() && groups[j].first != 0; ++j) g[groups[j].first] = groups[j].second;
+    for (size_t j = i + 1; j < groups.size() && groups[j].first != 0; ++j)
+      g[groups[j].first] = groups[j].second;
     if (value == "POLYLINE") {
       entities.push_back({"POLYLINE", g[8], "", {}, (std::stoi(g[70]) & 1) != 0});
       polyline = &entities.back();
@@ -134,16 +136,19 @@ bool Inside(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Vector2d& 
 
 bool Cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
            const Eigen::Vector2d& d) {
-  const auto side = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& r) {
+  const auto side = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q,
+                       const Eigen::Vector2d& r) {
     const double x = (q - p).x() * (r - p).y() - (q - p).y() * (r - p).x();
     return x > 0 ? 1 : x < 0 ? -1 : 0;
   };
   // r on the segment pq, given that the three are collinear.
-  const auto within = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& r) {
+  const auto within = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q,
+                         const Eigen::Vector2d& r) {
     return r.x() >= std::min(p.x(), q.x()) && r.x() <= std::max(p.x(), q.x()) &&
            r.y() >= std::min(p.y(), q.y()) && r.y() <= std::max(p.y(), q.y());
   };
-  const int c_side = side(a, b, c), d_side = side(a, b, d), a_side = side(c, d, a), b_side = side(c, d, b);
+  const int c_side = side(a, b, c), d_side = side(a, b, d), a_side = side(c, d, a),
+            b_side = side(c, d, b);
   if (c_side * d_side < 0 && a_side * b_side < 0) return true;
   return (c_side == 0 && within(a, b, c)) || (d_side == 0 && within(a, b, d)) ||
          (a_side == 0 && within(c, d, a)) || (b_side == 0 && within(c, d, b));
@@ -171,10 +176,10 @@ class FabricationOutputs : public ScratchDirTest {
     ASSERT_EQ(g.code, 0) << g.output;
   }
   Outcome Solve(const std::string& extra) const {
-    return Shell(std::string(ARCHGEO_BINARY) + " solve " ARCHGEO_SOURCE_DIR
-                 "/examples/planar_quads.yaml --set mesh=" + Path("roof.obj") +
-                 " --set output.mesh=" + Path("out.obj") + " --set output.image= --set output.report=" +
-                 Path("report.json") + " " + extra);
+    return Shell(std::string(ARCHGEO_BINARY) +
+                 " solve " ARCHGEO_SOURCE_DIR "/examples/planar_quads.yaml --set mesh=" +
+                 Path("roof.obj") + " --set output.mesh=" + Path("out.obj") +
+                 " --set output.image= --set output.report=" + Path("report.json") + " " + extra);
   }
   nlohmann::json Report() const { return nlohmann::json::parse(ReadFile(Path("report.json"))); }
 };
@@ -184,14 +189,19 @@ class FabricationOutputs : public ScratchDirTest {
 // the panels' edge lengths to 1e-9 and no two overlap, the node axes are the
 // area-weighted vertex normals.
 TEST_F(FabricationOutputs, PlanarQuadsExampleInMillimetres) {
-  const Outcome o = Solve("--set units=mm --set tolerance.flatness_mm=2 --set output.panels=" +
-                          Path("panels.csv") + " --set output.cutting=" + Path("panels.dxf") +
-                          " --set output.nodes=" + Path("nodes.csv"));
+  const Outcome o = Solve(
+      "--set units=mm --set tolerance.flatness_mm=2 --set output.panels=" + Path("panels.csv") +
+      " --set output.cutting=" + Path("panels.dxf") + " --set output.nodes=" + Path("nodes.csv"));
   ASSERT_EQ(o.code, 0) << o.output;
   const Mesh mesh = ReadMesh(Path("out.obj"));
   ASSERT_EQ(mesh.number_of_faces(), 80u);
   const nlohmann::json report = Report();
   EXPECT_TRUE(report["tolerances"]["tolerance.flatness_mm"]["met"].get<bool>());
+  const Outcome schema = Shell("/usr/bin/python3 " ARCHGEO_SOURCE_DIR
+                               "/tests/test_report_schema_validate.py " ARCHGEO_SOURCE_DIR
+                               "/docs/report.schema.json " +
+                               Path("report.json"));
+  EXPECT_EQ(schema.code, 0) << schema.output;
 
   // panels.csv
   const Csv panels = ReadCsv(ReadFile(Path("panels.csv")));
@@ -212,14 +222,16 @@ TEST_F(FabricationOutputs, PlanarQuadsExampleInMillimetres) {
     worst = std::max(worst, flatness);
     const std::vector<double> edges = Numbers(row.at("edges"));
     ASSERT_EQ(edges.size(), 4u);
-    for (size_t k = 0; k < 4; ++k) EXPECT_NEAR(edges[k] / (corners[(k + 1) % 4] - corners[k]).norm(), 1, 1e-12);
+    for (size_t k = 0; k < 4; ++k)
+      EXPECT_NEAR(edges[k] / (corners[(k + 1) % 4] - corners[k]).norm(), 1, 1e-12);
     const std::vector<double> diagonals = Numbers(row.at("diagonals"));
     EXPECT_NEAR(diagonals[1], (corners[3] - corners[1]).norm(), 1e-9);
     double angles = 0;
     for (double a : Numbers(row.at("angles_degrees"))) angles += a;
     EXPECT_NEAR(angles, 360.0, 0.1);  // a near-planar convex quad
     EXPECT_EQ(row.at("meets_flatness_mm"), std::stod(row.at("flatness_mm")) <= 2 ? "yes" : "no");
-    EXPECT_EQ(row.at("meets_pq_normalized_max"), std::stod(row.at("pq_normalized")) <= 1e-3 ? "yes" : "no");
+    EXPECT_EQ(row.at("meets_pq_normalized_max"),
+              std::stod(row.at("pq_normalized")) <= 1e-3 ? "yes" : "no");
   }
   EXPECT_GT(worst, 0.01);  // near-planar, not planar: the outlines below are developed
   EXPECT_NEAR(report["fabrication"]["flatness_max_mm"].get<double>(), worst, 1e-9 * 840);
@@ -302,22 +314,27 @@ TEST_F(FabricationOutputs, FlatnessInMillimetresIsEnforced) {
   ASSERT_EQ(o.code, 0) << o.output;
   EXPECT_LE(Report()["fabrication"]["flatness_max_mm"].get<double>(), bound);
   EXPECT_TRUE(Report()["tolerances"]["tolerance.flatness_mm"]["met"].get<bool>());
-  for (const auto& row : ReadCsv(ReadFile(Path("panels.csv"))).rows) EXPECT_EQ(row.at("meets_flatness_mm"), "yes");
+  for (const auto& row : ReadCsv(ReadFile(Path("panels.csv"))).rows)
+    EXPECT_EQ(row.at("meets_flatness_mm"), "yes");
   // The same roof in metres: the tolerance in mm is converted (0.05 mm = 5e-5 m).
   ASSERT_EQ(Shell(std::string(ARCHGEO_BINARY) + " generate " + Path("roof.obj") +
-                  " --nu 10 --nv 8 --noise 0.1 --scale 4").code, 0);
+                  " --nu 10 --nv 8 --noise 0.1 --scale 4")
+                .code,
+            0);
   ASSERT_EQ(Solve("--set units=m --set tolerance.flatness_mm=0.05" + panels).code, 0);
   EXPECT_LE(Report()["fabrication"]["flatness_max"].get<double>(), 5e-5);
   EXPECT_NEAR(Report()["fabrication"]["flatness_max_mm"].get<double>(),
               1000 * Report()["fabrication"]["flatness_max"].get<double>(), 1e-12);
   // δ_PQ,n ≤ 0.5 holds from the start, flatness 1e-9 mm not after one round:
   // exit 4 for the flatness alone.
-  const Outcome missed = Solve("--set units=m --set tolerance.pq_normalized_max=0.5 "
-                               "--set tolerance.flatness_mm=1e-9 --set schedule.outer_iterations=1");
+  const Outcome missed = Solve(
+      "--set units=m --set tolerance.pq_normalized_max=0.5 "
+      "--set tolerance.flatness_mm=1e-9 --set schedule.outer_iterations=1");
   EXPECT_EQ(missed.code, 4) << missed.output;
   EXPECT_TRUE(Report()["tolerances"]["tolerance.pq_normalized_max"]["met"].get<bool>());
   EXPECT_FALSE(Report()["tolerances"]["tolerance.flatness_mm"]["met"].get<bool>());
-  EXPECT_NE(missed.output.find("tolerance tolerance.flatness_mm <= 1e-09: NOT met"), std::string::npos)
+  EXPECT_NE(missed.output.find("tolerance tolerance.flatness_mm <= 1e-09: NOT met"),
+            std::string::npos)
       << missed.output;
 }
 
@@ -339,11 +356,14 @@ TEST_F(FabricationOutputs, MillimetresWithoutUnitsAreRefused) {
 // with the conical term: its nodes get the cones' axes and its beams no twist.
 TEST_F(FabricationOutputs, ConicalNetGetsConeAxes) {
   ASSERT_EQ(Shell(std::string(ARCHGEO_BINARY) + " generate " + Path("torus.obj") +
-                  " --surface torus --nu 24 --nv 12").code, 0);
-  const std::string spec = WriteFile("conical.yaml",
-                                     "problem: custom\nmesh: torus.obj\nterms: {conical: 1, pq_diagonal: 1, anchor: 0.01}\n"
-                                     "tolerance: {conical_max: 1.0e-6, pq_normalized_max: 1.0e-6}\n"
-                                     "output: {nodes: nodes.csv, beams: beams.csv}\n");
+                  " --surface torus --nu 24 --nv 12")
+                .code,
+            0);
+  const std::string spec = WriteFile(
+      "conical.yaml",
+      "problem: custom\nmesh: torus.obj\nterms: {conical: 1, pq_diagonal: 1, anchor: 0.01}\n"
+      "tolerance: {conical_max: 1.0e-6, pq_normalized_max: 1.0e-6}\n"
+      "output: {nodes: nodes.csv, beams: beams.csv}\n");
   const Outcome o = Shell(std::string(ARCHGEO_BINARY) + " solve " + spec);
   ASSERT_EQ(o.code, 0) << o.output;
   const Csv nodes = ReadCsv(ReadFile(Path("nodes.csv")));

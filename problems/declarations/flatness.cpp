@@ -27,7 +27,8 @@ ProblemDecl WithFlatness(ProblemDecl d) {
     if (!(s.Number("tolerance.flatness_mm") > 0)) return all;
     for (Stage& stage : all) {
       bool planarity = false;
-      for (const Tolerance& t : stage.tolerances) planarity = planarity || t.measure == "pq_normalized_max";
+      for (const Tolerance& t : stage.tolerances)
+        planarity = planarity || t.measure == "pq_normalized_max";
       if (!planarity) continue;
       stage.tolerances.push_back({"flatness_mm", "tolerance.flatness_mm", /*per_iteration=*/true});
       stage.logged.push_back("flatness_mm");

@@ -36,7 +36,8 @@ PlainMesh PlainCopy(const Mesh& mesh) {
   }
   for (FaceIndex f : mesh.faces()) {
     std::vector<int> ids;
-    for (VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) ids.push_back(int(v.idx()));
+    for (VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      ids.push_back(int(v.idx()));
     plain.faces.push_back(ids);
   }
   for (EdgeIndex e : mesh.edges()) {
@@ -73,7 +74,8 @@ std::vector<PanelRecord> PanelTable(const Mesh& mesh, const PlainMesh& plain, co
     row.outline_change = outlines->back().change;
     row.pq_normalized = plain.faces[f].size() > 3 ? planarity.normalized[f] : 0.0;
     if (pq_bound > 0) row.meets.push_back({"pq_normalized_max", row.pq_normalized <= pq_bound});
-    if (flat_bound > 0) row.meets.push_back({"flatness_mm", row.geometry.flatness * mm <= flat_bound});
+    if (flat_bound > 0)
+      row.meets.push_back({"flatness_mm", row.geometry.flatness * mm <= flat_bound});
     rows.push_back(row);
   }
   return rows;
@@ -89,8 +91,9 @@ bool IsFabricationOutput(const std::string& key) {
 void CheckFabricationSettings(const Settings& s) {
   if (MillimetresPerUnit(s.String("units")) > 0) return;
   if (BoundOf(s, "tolerance.flatness_mm") > 0) {
-    throw s.Error("tolerance.flatness_mm",
-                  "a tolerance in millimetres needs the mesh's unit: set `units` (mm, cm, m, in, ft)");
+    throw s.Error(
+        "tolerance.flatness_mm",
+        "a tolerance in millimetres needs the mesh's unit: set `units` (mm, cm, m, in, ft)");
   }
   if (!s.String("output.cutting").empty()) {
     throw s.Error("output.cutting",
@@ -125,7 +128,8 @@ nlohmann::json WriteFabrication(const Mesh& output, const Settings& s,
     const auto it = temporaries.find(key);
     return it == temporaries.end() ? std::string() : it->second;
   };
-  if (!file("output.panels").empty()) WritePanelsCsv(file("output.panels"), panels, mm, "output.panels");
+  if (!file("output.panels").empty())
+    WritePanelsCsv(file("output.panels"), panels, mm, "output.panels");
   if (!file("output.cutting").empty()) {
     CHECK_GT(mm, 0) << "CheckFabricationSettings lets output.cutting through without units";
     const std::vector<double> sheet = s.Numbers("cutting.sheet");
