@@ -122,17 +122,6 @@ std::vector<Key> CommonKeys(const ProblemDecl& d) {
   keys.push_back(PathKey("output.cutting", Type::kOutputPath,
                          "every panel flattened into its best-fit plane, with its id, laid out "
                          "on sheets for cutting (.dxf, R12; needs `units`); empty: not written"));
-  Key sheet;
-  sheet.name = "cutting.sheet";
-  sheet.type = Type::kNumbers;
-  sheet.size = 2;
-  sheet.lo = 1e-6;
-  sheet.hi = 1e9;
-  sheet.fallback = std::vector<double>{3000, 6000};
-  sheet.doc = "width and height of a sheet in millimetres (output.cutting)";
-  keys.push_back(sheet);
-  keys.push_back(NumberKey("cutting.gap", 10, 0, 1e9,
-                           "millimetres between panels and from the sheet's edges (output.cutting)"));
   keys.push_back(PathKey("output.nodes", Type::kOutputPath,
                          "node axes (.csv): per vertex its area-weighted normal, or the cone's "
                          "axis where the run made the mesh conical (docs/fabrication.md); empty: "
@@ -144,6 +133,17 @@ std::vector<Key> CommonKeys(const ProblemDecl& d) {
     keys.push_back(PathKey("output." + k, Type::kOutputPath,
                            "the problem's `" + k + "` output; empty: not written"));
   }
+  Key sheet;
+  sheet.name = "cutting.sheet";
+  sheet.type = Type::kNumbers;
+  sheet.size = 2;
+  sheet.lo = 1e-6;
+  sheet.hi = 1e9;
+  sheet.fallback = std::vector<double>{3000, 6000};
+  sheet.doc = "width and height of a sheet in millimetres (output.cutting)";
+  keys.push_back(sheet);
+  keys.push_back(NumberKey("cutting.gap", 10, 0, 1e9,
+                           "millimetres between panels and from the sheet's edges (output.cutting)"));
   return keys;
 }
 
