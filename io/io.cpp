@@ -10,7 +10,8 @@
 //     polygon soup, every count checked against the file size and `limits`
 //     before anything is allocated, the line of every record kept. (CGAL's
 //     own soup readers are not used: soup_readers.h says why.)
-//  3. CheckSoup: non-finite points, faces with fewer than 3 vertices,
+//  3. CheckSoup: non-finite points, coordinates beyond core/magnitude.h's
+//     bounds, faces with fewer than 3 vertices,
 //     out-of-range or repeated indices, degenerate faces.
 //  3b. WeldCoincidentVertices (io/weld.h) when limits.weld_distance > 0:
 //     a per-face-vertices export becomes one surface; the weld's result is
@@ -40,6 +41,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -47,6 +49,7 @@
 #include <type_traits>
 
 #include "core/input_error.h"
+#include "core/magnitude.h"
 #include "io/input_file.h"
 #include "io/output_stream.h"
 #include "io/soup_halfedges.h"
@@ -145,26 +148,56 @@ void CheckFaceIndices(const std::string& path, const Soup& soup, std::size_t j, 
 }
 
 // Face `j` has no coincident consecutive vertices and a non-zero (vector)
-// area, relative to the squared bounding-box diagonal.
+// area, relative to the squared bounding-box diagonal. Its corners are
+// taken relative to its first one in units of the diagonal, so a mesh
+// scaled by 1e±100 is judged as the original (an area's squared length is
+// a length to the fourth power: it would underflow or overflow).
 void CheckFaceShape(const std::string& path, const Soup& soup, std::size_t j, int line,
                     double diagonal) {
   constexpr double kRelativeArea = 1e-14;
-  const double tiny = kRelativeArea * diagonal * diagonal;
   const auto& polygon = soup.polygons[j];
   const std::string face = "face " + std::to_string(j);
   const Point& origin = soup.points[polygon[0]];
+  const auto corner = [&](std::size_t k) { return (soup.points[polygon[k]] - origin) / diagonal; };
   Vector twice_area(0, 0, 0);
   for (std::size_t k = 0; k < polygon.size(); ++k) {
-    const std::size_t a = polygon[k], b = polygon[(k + 1) % polygon.size()];
-    if ((soup.points[b] - soup.points[a]).squared_length() <= tiny) {
+    const std::size_t next = (k + 1) % polygon.size();
+    if ((corner(next) - corner(k)).squared_length() <= kRelativeArea) {
       FailInput(path, line,
-                face + " is degenerate: its vertices " + std::to_string(a) + " and " +
-                    std::to_string(b) + " coincide");
+                face + " is degenerate: its vertices " + std::to_string(polygon[k]) + " and " +
+                    std::to_string(polygon[next]) + " coincide");
     }
-    twice_area = twice_area + CGAL::cross_product(soup.points[a] - origin, soup.points[b] - origin);
+    twice_area = twice_area + CGAL::cross_product(corner(k), corner(next));
   }
-  if (0.5 * std::sqrt(twice_area.squared_length()) <= tiny) {
+  if (0.5 * std::sqrt(twice_area.squared_length()) <= kRelativeArea) {
     FailInput(path, line, face + " is degenerate: zero area (collinear vertices)");
+  }
+}
+
+// Coordinates whose squares stay normal doubles: every length, area and
+// distance is computed from differences and squares of them.
+void CheckMagnitude(const std::string& path, const Soup& soup, const LineMap& lines,
+                    double diagonal) {
+  for (std::size_t i = 0; i < soup.points.size(); ++i) {
+    const Point& p = soup.points[i];
+    for (int k = 0; k < 3; ++k) {
+      if (std::abs(p[k]) >= kMaxCoordinate) {
+        char value[32];
+        std::snprintf(value, sizeof value, "%g", p[k]);
+        FailInput(path, lines.Vertex(i),
+                  "vertex " + std::to_string(i) + " has the coordinate " + value +
+                      ": coordinates must lie within ±1e150 (their squares would overflow); "
+                      "scale the mesh down");
+      }
+    }
+  }
+  if (diagonal > 0 && diagonal < kMinDiagonal) {
+    char value[32];
+    std::snprintf(value, sizeof value, "%g", diagonal);
+    FailInput(path, 0,
+              std::string("the mesh is ") + value +
+                  " across (bounding-box diagonal): at least 1e-150 is needed (squared lengths "
+                  "would underflow); scale the mesh up");
   }
 }
 
@@ -178,6 +211,7 @@ void CheckSoup(const std::string& path, const Soup& soup, const LineMap& lines) 
     }
   }
   const double diagonal = BoundingBoxDiagonal(soup.points);
+  CheckMagnitude(path, soup, lines, diagonal);
   for (std::size_t j = 0; j < soup.polygons.size(); ++j) {
     CheckFaceIndices(path, soup, j, lines.Face(j));
     CheckFaceShape(path, soup, j, lines.Face(j), diagonal);

@@ -29,7 +29,8 @@ struct ReadInfo {
 // a missing path or one that is not a regular file (a FIFO, a device, a
 // socket, a directory: refused without opening it for reading, see
 // io/input_file.h), an unreadable file, an unknown extension, a parse
-// error, non-finite coordinates, a face index out of range (OBJ: 1-based, or
+// error, non-finite coordinates, a coordinate of magnitude 1e150 or more or
+// a mesh less than 1e-150 across (core/magnitude.h), a face index out of range (OBJ: 1-based, or
 // negative = relative to the vertices read so far), a face with fewer than 3
 // distinct vertices, a degenerate face (zero area), an empty mesh (no faces),
 // a non-manifold or non-orientable mesh (one that cannot be a Surface_mesh
