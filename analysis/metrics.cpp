@@ -414,6 +414,16 @@ Metrics ComputeMetrics(const Mesh& mesh, const ReferenceSurface* reference, cons
   return m;
 }
 
+Metrics ScaleLengths(Metrics m, double factor) {
+  for (double* length : {&m.bbox_diagonal, &m.aabb_diagonal, &m.mean_edge_length, &m.pq_max,
+                         &m.pq_mean, &m.prox_max, &m.boundary_prox_max, &m.surface_distance_max,
+                         &m.surface_distance_mean, &m.hausdorff, &m.displacement_max,
+                         &m.displacement_mean}) {
+    if (*length != -1) *length *= factor;
+  }
+  return m;
+}
+
 nlohmann::json MetricsToJson(const Metrics& m, double scale) {
   CHECK_GT(scale, 0.0) << "MetricsToJson: scale must be positive";
   nlohmann::json json;

@@ -59,6 +59,11 @@ struct MetricsOptions {
 Metrics ComputeMetrics(const Mesh& mesh, const ReferenceSurface* reference, const Mesh* original,
                        const MetricsOptions& options = {});
 
+// `m` with every length multiplied by `factor`: the metrics of a mesh
+// measured in a frame whose unit is `factor` file units (mesh/similarity.h
+// LocalFrame), in file units. Entries that are -1 (not computed) stay -1.
+Metrics ScaleLengths(Metrics m, double factor);
+
 // JSON object: every entry in file units, and for lengths also
 // "<name>_relative" = value / `scale` (normally the input's bbox diagonal).
 // Entries that are -1 (not computed) are written as null.

@@ -29,6 +29,17 @@ struct Similarity {
 // (the sign is arbitrary only for a mesh symmetric about that axis).
 Similarity CanonicalFrame(const Mesh& mesh);
 
+// The frame meshes are measured in: the centroid as origin, the axes of the
+// file, and as unit the power of two nearest the mean edge length (1 for a
+// mesh without edges). Positions are combined near the origin at unit
+// scale (a mesh 1e8 edge lengths away, or scaled by 1e±100, is measured as
+// the original), and a length measured in it maps back to file units
+// exactly: times `scale`, a power of two.
+Similarity LocalFrame(const Mesh& mesh);
+
+// `mesh` with every vertex at s.ToCanonical.
+Mesh InFrame(const Similarity& s, Mesh mesh);
+
 // Diagonal of the bounding box aligned with the principal axes of the
 // vertices: invariant under rotation, translation and reflection, and it
 // scales with the mesh. Precondition: at least one vertex.

@@ -100,15 +100,17 @@ nlohmann::json RoundsJson(const nlohmann::json& rounds) {
 }
 
 // Per-face values (file order of the output's faces) and per-vertex
-// displacement (when the output has the input's vertices), for output.arrays.
-nlohmann::json ArraysJson(const FaceValues& values, const Mesh& output, const Mesh& input) {
+// displacement (when the output has the input's vertices; meshes in a frame
+// of unit `scale` file units, displacements in file units), for output.arrays.
+nlohmann::json ArraysJson(const FaceValues& values, const Mesh& output, const Mesh& input,
+                          double scale) {
   nlohmann::json face = nlohmann::json::array();
   for (FaceIndex f : output.faces()) face.push_back(values.values[f.idx()]);
   nlohmann::json arrays = {{"face", {{values.name, face}}}, {"vertex", nlohmann::json::object()}};
   if (output.number_of_vertices() == input.number_of_vertices()) {
     nlohmann::json displacement = nlohmann::json::array();
     for (VertexIndex v : output.vertices()) {
-      displacement.push_back(std::sqrt(CGAL::squared_distance(output.point(v), input.point(v))));
+      displacement.push_back(scale * std::sqrt(CGAL::squared_distance(output.point(v), input.point(v))));
     }
     arrays["vertex"]["displacement"] = displacement;
   }
@@ -171,16 +173,17 @@ nlohmann::json UnitsJson(bool derived, double scale) {
                         "edge length), at the last linearisation"}};
 }
 
-// The per-vertex displacement from the input (file units) as a PLY
-// property, when the output has the input's vertices.
-std::vector<PlyValues> DisplacementValues(const Mesh& output, const Mesh& input) {
+// The per-vertex displacement from the input as a PLY property, when the
+// output has the input's vertices (meshes in a frame of unit `scale` file
+// units, displacements in file units).
+std::vector<PlyValues> DisplacementValues(const Mesh& output, const Mesh& input, double scale) {
   std::vector<PlyValues> values;
   if (output.number_of_vertices() != input.number_of_vertices()) return values;
   PlyValues& d = values.emplace_back();
   d.name = "displacement";
   d.values.assign(output.num_vertices(), 0.0);
   for (VertexIndex v : output.vertices()) {
-    d.values[v.idx()] = std::sqrt(CGAL::squared_distance(output.point(v), input.point(v)));
+    d.values[v.idx()] = scale * std::sqrt(CGAL::squared_distance(output.point(v), input.point(v)));
   }
   return values;
 }
@@ -256,30 +259,38 @@ class SpecRun {
   // The result's validity against the net it came from (analysis/validity.h)
   // needs no reference: it is checked on a second thread while the
   // reference's trees are built and the input is measured (mostly serial).
+  // Everything is measured in the input's local frame (mesh/similarity.h
+  // LocalFrame) and its lengths reported in file units.
   void SolveAndMeasureInput() {
     const auto solve_start = Clock::now();
     solution_ = Solve(spec_, read_, reference_mesh_.get(), progress_);
     solve_seconds_ = SecondsSince(solve_start);
     seconds_["solve"] = solve_seconds_;
-    const Mesh& input = solution_->input;
+    local_ = LocalFrame(solution_->input);
+    input_ = InFrame(local_, solution_->input);
     if (solution_->loop.usable) {
+      output_ = InFrame(local_, solution_->output);
       validity_check_ = std::async(std::launch::async, [this] {
-        return CheckValidity(solution_->output, &solution_->input, LimitsOf(s_), true);
+        return CheckValidity(output_, &input_, LimitsOf(s_), true);
       });
     }
     const auto setup_start = Clock::now();
-    reference_ = std::make_unique<ReferenceSurface>(reference_mesh_ ? *reference_mesh_ : input);
+    reference_ = std::make_unique<ReferenceSurface>(
+        reference_mesh_ ? InFrame(local_, *reference_mesh_) : input_);
     // Without a separate reference the input is its own reference surface:
     // every vertex lies on it, so its distances to it are 0 and need not be
     // measured.
-    before_ = ComputeMetrics(input, reference_mesh_ ? reference_.get() : nullptr, &input);
+    before_ = ScaleLengths(
+        ComputeMetrics(input_, reference_mesh_ ? reference_.get() : nullptr, &input_),
+        local_.scale);
     if (!reference_mesh_) {
       before_.prox_max = before_.surface_distance_max = before_.surface_distance_mean = 0;
       before_.boundary_prox_max = reference_->HasBoundary() ? 0 : -1;
       before_.hausdorff = 0;
     }
     scale_ = before_.bbox_diagonal;
-    extra_before_ = Analyse(input, d_.analyses, HNetOptionsOf(s_));
+    extra_before_ = Analyse(input_, d_.analyses, HNetOptionsOf(s_));
+    ScaleLengths(extra_before_, local_.scale);
     seconds_["reference_and_metrics_before"] = SecondsSince(setup_start);
   }
 
@@ -372,8 +383,7 @@ class SpecRun {
       const bool shown = face_values.name != "none";  // else no colours, no face property
       const FaceColors colors = ColorsOf(face_values);
       const std::vector<PlyValues> properties = {{face_values.name, face_values.values}};
-      const std::vector<PlyValues> vertex_values =
-          DisplacementValues(solution_->output, solution_->input);
+      const std::vector<PlyValues> vertex_values = DisplacementValues(output_, input_, local_.scale);
       Writing([&] {
         WriteMesh(temporaries_.at("output.mesh"), solution_->output, shown ? &colors : nullptr,
                   s_.Bool("output.ascii_ply"), shown ? &properties : nullptr, &vertex_values);
@@ -384,11 +394,11 @@ class SpecRun {
 
   void MeasureOutput() {
     const auto metrics_start = Clock::now();
-    const Mesh& output = solution_->output;
-    const Mesh& input = solution_->input;
-    const bool same_vertices = output.number_of_vertices() == input.number_of_vertices();
-    after_ = ComputeMetrics(output, reference_.get(), same_vertices ? &input : nullptr);
-    extra_after_ = Analyse(output, d_.analyses, HNetOptionsOf(s_));
+    const bool same_vertices = output_.number_of_vertices() == input_.number_of_vertices();
+    after_ = ScaleLengths(ComputeMetrics(output_, reference_.get(), same_vertices ? &input_ : nullptr),
+                          local_.scale);
+    extra_after_ = Analyse(output_, d_.analyses, HNetOptionsOf(s_));
+    ScaleLengths(extra_after_, local_.scale);
     run_.report["after"] = MetricsToJson(after_, scale_);
     AnalysisToJson(extra_after_, scale_, run_.report["after"]);
     seconds_["metrics_after"] = SecondsSince(metrics_start);
@@ -404,11 +414,11 @@ class SpecRun {
     return n > 0 ? sum / n : 0.0;
   }
 
-  // The per-face quantity the problem lowers, on the input or the output,
-  // at the input's scale.
+  // The per-face quantity the problem lowers, on the input or the output
+  // (in the local frame), at the input's scale.
   FaceValues ColorValues(const Mesh& mesh, bool input) {
     const ProblemDecl::StateColors& own = d_.state_colors;
-    if (!own.values) return ComputeFaceValues(d_.colors, mesh, &solution_->input, &s_);
+    if (!own.values) return ComputeFaceValues(d_.colors, mesh, &input_, &s_);
     HookContext& hooks = solution_->hooks;
     const std::vector<double> before = own.values(hooks, true);
     return StateFaceValues(own.name, own.label, own.units,
@@ -417,12 +427,11 @@ class SpecRun {
 
   // The picture and the problem's own outputs (ProblemDecl::write).
   void WriteOtherOutputs(const FaceValues& face_values, const FaceValues& before) {
-    const Mesh& input = solution_->input;
     if (temporaries_.count("output.image")) {
       const bool shown = face_values.name != "none";  // else grey faces
       std::vector<PicturePanel> panels = {
-          PanelOf(input, shown ? before.values : std::vector<double>{}, "input"),
-          PanelOf(solution_->output, shown ? face_values.values : std::vector<double>{}, "output")};
+          PanelOf(input_, shown ? before.values : std::vector<double>{}, "input"),
+          PanelOf(output_, shown ? face_values.values : std::vector<double>{}, "output")};
       Writing([&] {
         WriteView(temporaries_.at("output.image"), panels, ScaleOf(face_values), {},
                   "output.image");
@@ -451,19 +460,21 @@ class SpecRun {
     run_.exit_code = tolerances_met ? 0 : 4;
     const Mesh& output = solution_->output;
     const auto write_start = Clock::now();
-    const FaceValues face_values = ColorValues(output, false);
+    const FaceValues face_values = ColorValues(output_, false);
     std::future<void> mesh_written = StartMeshWrite(face_values);
     const double write_seconds = SecondsSince(write_start);
     MeasureOutput();
 
     const auto rest_start = Clock::now();
     nlohmann::json& rep = run_.report;
-    const FaceValues before = ColorValues(solution_->input, true);
+    const FaceValues before = ColorValues(input_, true);
     rep["colors"] = {{"value", face_values.name},   {"label", face_values.label},
                      {"units", face_values.units},  {"red_at", face_values.red_at},
                      {"red_from", face_values.red_from},
                      {"mean_before", Mean(before.values)}, {"mean_after", Mean(face_values.values)}};
-    if (s_.Bool("output.arrays")) rep["arrays"] = ArraysJson(face_values, output, solution_->input);
+    if (s_.Bool("output.arrays")) {
+      rep["arrays"] = ArraysJson(face_values, output_, input_, local_.scale);
+    }
     WriteOtherOutputs(face_values, before);
     if (mesh_written.valid()) mesh_written.get();
     rep["details"] = solution_->hooks.details;
@@ -572,6 +583,8 @@ class SpecRun {
   Mesh read_;
   std::unique_ptr<Mesh> reference_mesh_;
   std::unique_ptr<Solution> solution_;
+  Similarity local_;    // the frame input_ and output_ are measured in
+  Mesh input_, output_;  // the solution's input and output in local_
   std::future<Validity> validity_check_;
   Validity validity_;
   std::unique_ptr<ReferenceSurface> reference_;
@@ -600,26 +613,31 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const M
 
 RunResult MeasureFiles(const std::string& mesh_path, const std::string& reference_path,
                        bool all) {
-  const Mesh mesh = ReadMesh(mesh_path);
+  // Measured in the mesh's local frame (mesh/similarity.h LocalFrame), the
+  // reference in the same frame; lengths reported in file units.
+  const Mesh read = ReadMesh(mesh_path);
+  const Similarity local = LocalFrame(read);
+  const Mesh mesh = InFrame(local, read);
+  std::optional<Mesh> input;  // the reference, in the mesh's frame
+  if (!reference_path.empty()) input = InFrame(local, ReadMesh(reference_path));
   RunResult run;
   Metrics metrics;
-  if (reference_path.empty()) {
+  if (!input) {
     metrics = ComputeMetrics(mesh, nullptr, nullptr);
   } else {
-    const Mesh reference_mesh = ReadMesh(reference_path);
-    const ReferenceSurface reference(reference_mesh);
-    const bool same = reference_mesh.number_of_vertices() == mesh.number_of_vertices();
-    metrics = ComputeMetrics(mesh, &reference, same ? &reference_mesh : nullptr);
+    const ReferenceSurface reference(*input);
+    const bool same = input->number_of_vertices() == mesh.number_of_vertices();
+    metrics = ComputeMetrics(mesh, &reference, same ? &*input : nullptr);
   }
-  const AnalysisRows analysis = Analyse(mesh, ApplicableAnalyses(mesh));
+  metrics = ScaleLengths(metrics, local.scale);
+  AnalysisRows analysis = Analyse(mesh, ApplicableAnalyses(mesh));
+  ScaleLengths(analysis, local.scale);
   // The validity checks of `archgeo solve` (default limits): against the
   // reference when it has the mesh's topology (an output and its input),
   // else those of the mesh alone (panels, short edges, self-intersections).
   std::string validity_text;
   nlohmann::json validity_json;
   {
-    std::optional<Mesh> input;
-    if (!reference_path.empty()) input = ReadMesh(reference_path);
     const bool paired = input && input->number_of_vertices() == mesh.number_of_vertices() &&
                         input->number_of_faces() == mesh.number_of_faces();
     const Validity v = CheckValidity(mesh, paired ? &*input : nullptr, ValidityLimits{}, true);

@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 
 #include "fields/layout_cleanup.h"
+#include "mesh/similarity.h"
 #include "problems/declarations/field_pipeline.h"
 #include "problems/declarations/suitability.h"
 
@@ -131,10 +132,14 @@ int UseLayoutAsNet(HookContext& c, std::shared_ptr<const LevelSetResult> layout,
 }
 
 int SplitBentPanels(Mesh& mesh, double margin_degrees) {
+  // Corners judged in the mesh's local frame (mesh/similarity.h): the same
+  // for a layout far from the origin or at any scale (cross products of
+  // file units scaled by 1e100 overflow).
+  const Similarity local = LocalFrame(mesh);
   std::vector<Eigen::Vector3d> points;
   for (VertexIndex v : mesh.vertices()) {
-    const Point& p = mesh.point(v);
-    points.emplace_back(p.x(), p.y(), p.z());
+    const Vec3 p = local.ToCanonical(ToVec3(mesh.point(v)));
+    points.emplace_back(p[0], p[1], p[2]);
   }
   std::vector<std::vector<int>> faces;
   for (FaceIndex f : mesh.faces()) {
@@ -149,7 +154,7 @@ int SplitBentPanels(Mesh& mesh, double margin_degrees) {
                      5.0);
   if (split == 0) return 0;
   Mesh out;
-  for (const Eigen::Vector3d& p : points) out.add_vertex(Point(p.x(), p.y(), p.z()));
+  for (VertexIndex v : mesh.vertices()) out.add_vertex(mesh.point(v));
   for (const std::vector<int>& face : faces) {
     std::vector<VertexIndex> vs;
     for (int v : face) vs.push_back(VertexIndex(v));

@@ -209,6 +209,12 @@ AnalysisRows RowsThatApply(const Mesh& mesh, const AnalysisRows& rows) {
   return kept;
 }
 
+void ScaleLengths(AnalysisRows& rows, double factor) {
+  for (AnalysisRow& row : rows) {
+    if (row.kind == AnalysisRow::Kind::kLength) row.value *= factor;
+  }
+}
+
 void AnalysisToJson(const AnalysisRows& rows, double scale, nlohmann::json& json) {
   for (const AnalysisRow& row : rows) {
     if (row.kind == AnalysisRow::Kind::kCount && std::isfinite(row.value)) {

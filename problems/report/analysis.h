@@ -57,6 +57,10 @@ AnalysisRows Analyse(const Mesh& mesh, const std::set<std::string>& names,
 // no second count of non-convex quads (the panels row has them).
 AnalysisRows RowsThatApply(const Mesh& mesh, const AnalysisRows& rows);
 
+// Multiplies every length row by `factor` (rows measured in a frame whose
+// unit is `factor` file units, mesh/similarity.h LocalFrame).
+void ScaleLengths(AnalysisRows& rows, double factor);
+
 // Adds every row to `json` (lengths also as "<key>_relative" = value / scale).
 void AnalysisToJson(const AnalysisRows& rows, double scale, nlohmann::json& json);
 

@@ -9,6 +9,7 @@
 #include "core/input_error.h"
 #include "io/io.h"
 #include "io/output_files.h"
+#include "mesh/similarity.h"
 
 namespace archgeo {
 
@@ -58,6 +59,10 @@ std::string RenderFiles(const RenderRequest& r) {
   }
   std::vector<Mesh> meshes;
   for (const std::string& path : r.meshes) meshes.push_back(ReadMesh(path));
+  // Drawn and measured in the first mesh's local frame: the picture is the
+  // same for a mesh far from the origin or at any scale.
+  const Similarity local = LocalFrame(meshes.front());
+  for (Mesh& mesh : meshes) mesh = InFrame(local, std::move(mesh));
   std::string value = r.value;
   if (value == "auto") {
     value = "bending";
