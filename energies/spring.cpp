@@ -6,6 +6,7 @@
 
 #include <glog/logging.h>
 
+#include "core/magnitude.h"
 #include "core/term.h"
 #include "energies/autodiff_impl.h"
 
@@ -96,7 +97,7 @@ const TermSpec& spring() {
                   "contraction), at the start of the solve (original), `length`, or zero"),
         NumberKey("fraction", 1, 0, 1e6,
                   "multiplies the rest length (mean, current, original, length)"),
-        NumberKey("length", 0, 0, 1e30, "rest length for rest: length (file units)")};
+        NumberKey("length", 0, 0, kMaxCoordinate, "rest length for rest: length (file units)")};
     t.begin = &BeginSpring;
     t.add = &AddSpring;
     return t;

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/input_error.h"
+#include "core/magnitude.h"
 
 namespace archgeo {
 namespace {
@@ -181,6 +182,13 @@ Named Entry(const std::string& name, S defaults) {
       }
       if (!std::isfinite(value)) {
         throw InputError(where.file, where.line, where.ParameterKey(key), "must be finite");
+      }
+      if (std::abs(value) >= kMaxSurfaceParameter ||
+          (value != 0 && std::abs(value) < kMinSurfaceParameter)) {
+        throw InputError(where.file, where.line, where.ParameterKey(key),
+                         "must be 0 or between 1e-75 and 1e75 in magnitude, got " + Number(value) +
+                             ": the grid multiplies four of the surface's lengths, which would "
+                             "overflow or underflow (core/magnitude.h)");
       }
       const bool below = field->min_open ? value <= field->min : value < field->min;
       const bool above = field->max_open ? value >= field->max : value > field->max;

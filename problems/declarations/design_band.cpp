@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/magnitude.h"
 #include "geometry/reference.h"
 #include "mesh/similarity.h"
 #include "problems/runtime/model.h"
@@ -137,7 +138,7 @@ ProblemDecl WithDesignBand(ProblemDecl d, double relative) {
       "its own) stays within this fraction of the input's bounding-box diagonal from the "
       "reference surface (each vertex on a bounded manifold while solving; a round beyond "
       "it is never the output; docs/methods/design_band.md); 0 = none"));
-  band.push_back(NumberKey("tolerance.surface_distance", 0, 0, 1e300,
+  band.push_back(NumberKey("tolerance.surface_distance", 0, 0, kMaxCoordinate,
                            "the deviation band in file units; > 0 replaces "
                            "tolerance.surface_distance_max"));
   d.keys.insert(at, band.begin(), band.end());

@@ -7,6 +7,7 @@
 #include <cctype>
 
 #include "core/input_error.h"
+#include "core/magnitude.h"
 #include "geometry/reference.h"
 #include "io/io.h"
 #include "problems/declarations/registry.h"
@@ -117,7 +118,7 @@ std::vector<Key> LevelSetKeys() {
   return {IntegerKey("level_sets.target_faces", 1600, 1, 100000000,
                      "faces the layout should have: the spacing is Δw = sqrt(Σ_f A_f sin∠(v, w) "
                      "/ target_faces)"),
-          NumberKey("level_sets.edge_length", 0, 0, 1e30,
+          NumberKey("level_sets.edge_length", 0, 0, kMaxCoordinate,
                     "the spacing Δw of the level sets in file units (the layout's edge length) "
                     "instead of target_faces; 0 = from target_faces"),
           ChoiceKey("level_sets.rounding", "even", {"even", "odd"},

@@ -728,9 +728,10 @@ ProblemDecl grid() {
       IntegerKey("grid.nv", 20, 2, 1000000, "vertices along v (≥ 2; ≥ 3 when closed in v)"),
       ChoiceKey("grid.type", "open", {"open", "closed_u", "closed_v", "closed_both"},
                 "open (C0), closed in u or v (C1, on a periodic direction), closed_both (C2)"),
-      NumberKey("grid.ideal_length", 0, 0, 1e300,
-                "the ideal edge length L (file units); 0: the mean edge length of the initial "
-                "grid [§3] (closed in one direction: of the closed lines)"),
+      NumberKey("grid.ideal_length", 0, 0, 1e75,
+                "the ideal edge length L (file units, below 1e75 as the surface's parameters); "
+                "0: the mean edge length of the initial grid [§3] (closed in one direction: of "
+                "the closed lines)"),
       ChoiceKey("grid.anchor", "auto", {"auto", "centre", "none"},
                 "least squares: centre: the centre vertex keeps its (u, v) (an open direction "
                 "with a free boundary has nothing else that holds the grid on its patch); "
