@@ -5,6 +5,9 @@
 #include <CGAL/subdivision_method_3.h>
 #include <glog/logging.h>
 
+#include <array>
+#include <vector>
+
 namespace archgeo {
 
 bool CanSubdivide(const Mesh& mesh, const std::string& scheme) {
@@ -38,6 +41,33 @@ Mesh Subdivide(const Mesh& mesh, const std::string& scheme) {
     S::DooSabin_subdivision(out, once);
   }
   out.collect_garbage();
+  return out;
+}
+
+Mesh MidpointSubdivision(const Mesh& triangles) {
+  CHECK(!triangles.has_garbage()) << "MidpointSubdivision: the mesh has removed elements";
+  Mesh out;
+  for (VertexIndex v : triangles.vertices()) out.add_vertex(triangles.point(v));
+  std::vector<VertexIndex> midpoint(triangles.num_edges());
+  for (EdgeIndex e : triangles.edges()) {
+    const Point& a = triangles.point(triangles.vertex(e, 0));
+    const Point& b = triangles.point(triangles.vertex(e, 1));
+    midpoint[e.idx()] = out.add_vertex(CGAL::midpoint(a, b));
+  }
+  for (FaceIndex f : triangles.faces()) {
+    CHECK_EQ(triangles.degree(f), 3u) << "MidpointSubdivision: face " << f.idx() << " is not a triangle";
+    const HalfedgeIndex h0 = triangles.halfedge(f);
+    const HalfedgeIndex h1 = triangles.next(h0), h2 = triangles.next(h1);
+    const VertexIndex a = triangles.source(h0), b = triangles.target(h0), c = triangles.target(h1);
+    const VertexIndex ab = midpoint[triangles.edge(h0).idx()];
+    const VertexIndex bc = midpoint[triangles.edge(h1).idx()];
+    const VertexIndex ca = midpoint[triangles.edge(h2).idx()];
+    for (const std::array<VertexIndex, 3>& child :
+         {std::array<VertexIndex, 3>{a, ab, ca}, std::array<VertexIndex, 3>{ab, b, bc},
+          std::array<VertexIndex, 3>{ca, bc, c}, std::array<VertexIndex, 3>{ab, bc, ca}}) {
+      CHECK(out.add_face(child[0], child[1], child[2]) != Mesh::null_face());
+    }
+  }
   return out;
 }
 

@@ -22,4 +22,11 @@ bool CanSubdivide(const Mesh& mesh, const std::string& scheme);
 // property vectors would be invalid anyway). Precondition: CanSubdivide.
 Mesh Subdivide(const Mesh& mesh, const std::string& scheme);
 
+// Each triangle split into four at its edge midpoints: the same surface
+// (every new vertex lies on an old edge), four times the faces. Vertices
+// keep their indices (midpoints appended in edge order); the children of
+// face f are faces 4f .. 4f + 3. Precondition: a triangle mesh without
+// removed elements.
+Mesh MidpointSubdivision(const Mesh& triangles);
+
 }  // namespace archgeo

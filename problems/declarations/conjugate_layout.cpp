@@ -44,15 +44,26 @@ namespace {
 
 void Net(HookContext& c) {
   const Settings& s = *c.settings;
+  int refinements = 0;
+  const Mesh design = DesignSurface(s, *c.input, 0, &refinements);
   const std::shared_ptr<const LevelSetResult> result =
-      SolveLevelSets(s, DesignSurface(s, *c.input), c.progress);
+      SolveLevelSets(s, design, c.progress, SplitDesignOverrides(s, refinements));
   if (!result->layout.ok) {
     throw s.Error("level_sets", "the layout could not be extracted from the level sets: " +
                                     result->layout.error);
   }
   UseLayoutAsNet(c, result, "conjugate layout");
   c.net.details["field"] = result->field->details;
-  c.net.headline = result->field->headline + result->headline +
+  c.net.details["design_surface"] = {{"triangles", design.number_of_faces()},
+                                     {"midpoint_splits", refinements}};
+  const std::string split =
+      refinements == 0 ? ""
+                       : "design surface: each triangle split at its edge midpoints " +
+                             std::to_string(refinements) + " time(s), " +
+                             std::to_string(design.number_of_faces()) +
+                             " triangles (at least two per layout face: the level sets are "
+                             "linear on each)\n";
+  c.net.headline = split + result->field->headline + result->headline +
                    "solving the layout for planar faces (planar_quads)\n";
 }
 

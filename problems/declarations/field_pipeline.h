@@ -94,8 +94,22 @@ std::shared_ptr<const LevelSetResult> SolveLevelSets(
 // diagonal, CGAL's triangulate_faces for other polygons).
 // Keys that name faces (field.singularities, .moves, .directions,
 // .constraints) refer to a triangle mesh: with polygons they are refused
-// (InputError on the key).
-Mesh DesignSurface(const Settings& parent, const Mesh& mesh);
+// (InputError on the key). Without them, a design surface with fewer than
+// two triangles per face of the layout asked for (`layout_faces`, or 0:
+// level_sets.target_faces or the count level_sets.edge_length gives) has
+// its triangles split at their edge midpoints (mesh/subdivision.h
+// MidpointSubdivision: the same surface) until it has, within
+// limits.max_subdivided_faces: the level-set functions are linear on each
+// triangle, and a layout finer than them bends its lines at every triangle
+// edge. `refinements` (if not null) receives the number of splits.
+Mesh DesignSurface(const Settings& parent, const Mesh& mesh, long long layout_faces = 0,
+                   int* refinements = nullptr);
+
+// What SolveLevelSets needs on a design surface split `refinements` times:
+// jets.rings doubled per split (at most 8), so that each vertex's jet covers
+// as much of the surface as before the split (inside a flat triangle a
+// 2-ring of the split mesh sees a plane).
+std::map<std::string, Value> SplitDesignOverrides(const Settings& parent, int refinements);
 
 // `mesh` (canonical frame) in file units.
 Mesh InFileUnits(const Mesh& mesh, const Similarity& frame);

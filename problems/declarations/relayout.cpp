@@ -8,6 +8,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <utility>
 #include <vector>
 
@@ -39,6 +40,17 @@ int Panels(const Mesh& mesh) {
 }
 
 
+// The level sets of the net's surface for a layout of `faces` faces (on its
+// design surface, split where it is coarser: field_pipeline.h).
+std::shared_ptr<const LevelSetResult> LayOutNet(const Settings& s, const Mesh& net, long long faces,
+                                                const ProgressSink& progress) {
+  int refinements = 0;
+  const Mesh design = DesignSurface(s, net, faces, &refinements);
+  std::map<std::string, Value> overrides = SplitDesignOverrides(s, refinements);
+  overrides["level_sets.target_faces"] = faces;
+  return SolveLevelSets(s, design, progress, overrides);
+}
+
 // relayout: auto on an unsuitable net: its surface's conjugate layout
 // becomes the net solved.
 void Relayout(HookContext& c) {
@@ -50,7 +62,7 @@ void Relayout(HookContext& c) {
                std::to_string(faces) + " target faces)");
   }
   const std::shared_ptr<const LevelSetResult> result =
-      SolveLevelSets(s, DesignSurface(s, net), c.progress, {{"level_sets.target_faces", faces}});
+      LayOutNet(s, net, faces, c.progress);
   if (!result->layout.ok) {
     throw s.Error("relayout", "the net's surface could not be laid out anew (relayout: auto): " +
                                   result->layout.error);

@@ -66,7 +66,8 @@ std::vector<Key> CommonKeys(const ProblemDecl& d) {
                            "weld input vertices closer than this (in mean edge lengths) into one, "
                            "as a per-face-vertices export needs (io/weld.h); 0: never"));
   keys.push_back(IntegerKey("limits.max_subdivided_faces", 20000000, 1, 2000000000,
-                            "refuse a multiresolution level with more faces"));
+                            "refuse a multiresolution level with more faces; also bounds the splitting of a "
+                            "layout's design surface (conjugate_layout)"));
   keys.push_back(NumberKey("validity.max_reflex_degrees", 10, 0, 180,
                            "a panel corner bent inward by more than this makes the result "
                            "invalid (see allow_input_defects)"));
