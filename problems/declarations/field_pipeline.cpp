@@ -261,6 +261,11 @@ bool NamesFaces(const Settings& s, const std::string& key) {
 // against 2.1e-3 on the same surface split once, and 218 solver
 // iterations of the planar step against 21).
 constexpr double kTrianglesPerLayoutFace = 2;
+// A design of fewer triangles is not split: it holds too little of a
+// surface to be laid out finer than itself (a closed tetrahedron's level
+// sets cut out no face, an input error; split, they cut a layout of its
+// flat faces that the planar step cannot resolve in minutes).
+constexpr int kFewestTrianglesToSplit = 100;
 
 // The layout's face count asked for: `faces` if given, else
 // level_sets.target_faces, or with level_sets.edge_length the design's area
@@ -307,7 +312,7 @@ Mesh DesignSurface(const Settings& parent, const Mesh& mesh, long long layout_fa
   }
   Mesh design = triangles ? mesh : TriangulatedCopy(mesh);
   int split = 0;
-  if (!NamesDesignFaces(parent)) {
+  if (!NamesDesignFaces(parent) && int(design.number_of_faces()) >= kFewestTrianglesToSplit) {
     const double wanted = kTrianglesPerLayoutFace * LayoutFacesAskedFor(parent, design, layout_faces);
     const double most = double(parent.Integer("limits.max_subdivided_faces"));
     while (double(design.number_of_faces()) < wanted &&

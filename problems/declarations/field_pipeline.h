@@ -94,8 +94,8 @@ std::shared_ptr<const LevelSetResult> SolveLevelSets(
 // diagonal, CGAL's triangulate_faces for other polygons).
 // Keys that name faces (field.singularities, .moves, .directions,
 // .constraints) refer to a triangle mesh: with polygons they are refused
-// (InputError on the key). Without them, a design surface with fewer than
-// two triangles per face of the layout asked for (`layout_faces`, or 0:
+// (InputError on the key). Without them, a design surface of at least 100
+// triangles but fewer than two per face of the layout asked for (`layout_faces`, or 0:
 // level_sets.target_faces or the count level_sets.edge_length gives) has
 // its triangles split at their edge midpoints (mesh/subdivision.h
 // MidpointSubdivision: the same surface) until it has, within
