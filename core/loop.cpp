@@ -42,11 +42,13 @@ class IterationWatch : public EndingCallback {
   // `where`: the round's event fields (kind, round, stage, goal and target);
   // each iteration adds its number, the goal's value and the time.
   IterationWatch(Model& model, const ProgressSink& sink, std::string label,
-                 std::vector<Watched> watched, ProgressEvent where, Clock::time_point start)
+                 std::vector<Watched> watched, ProgressEvent where, Clock::time_point start,
+                 const std::atomic<bool>* stop)
       : model_(model), sink_(sink), label_(std::move(label)), watched_(std::move(watched)),
-        where_(std::move(where)), start_(start) {}
+        where_(std::move(where)), start_(start), stop_(stop) {}
 
   bool Ends() override {
+    if (Stopping()) return true;
     measured_ = false;  // a new step
     const bool met = Met(nullptr);
     measured_ = true;
@@ -72,10 +74,12 @@ class IterationWatch : public EndingCallback {
       event.elapsed = SecondsSince(start_);
       sink_(event);
     }
-    return met ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
+    return met || Stopping() ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
   }
 
  private:
+  bool Stopping() const { return stop_ && stop_->load(); }
+
   // Whether every watched measure holds at the current values (" name value"
   // of each goal into `values`; a bound is measured only once the goals
   // hold). The state changed since the last report, unless Ends measured
@@ -104,6 +108,7 @@ class IterationWatch : public EndingCallback {
   ProgressEvent where_;
   Clock::time_point start_;
   bool measured_ = false;  // Ends measured the current step
+  const std::atomic<bool>* stop_;
 };
 
 // ½ Σ w r² per objective part and in total, at the current state.
@@ -190,6 +195,7 @@ class Loop {
     last_valid_ = model_.SaveState();
     for (const Stage& stage : stages_) {
       if (!RunStage(stage)) return result_;
+      if (result_.stopped) break;
     }
     KeepLastValid();
     for (const Stage& stage : stages_) {
@@ -290,6 +296,8 @@ class Loop {
 
   enum class RoundEnd { kNext, kStop, kUnusable };
 
+  bool Stopping() const { return options_.stop && options_.stop->load(); }
+
   // Round k of the stage: its step or Ceres solve, then the round's log row
   // and the stage's stop criteria.
   RoundEnd Round(const Stage& stage, const StagePlan& plan, int k, bool projecting) {
@@ -315,6 +323,11 @@ class Loop {
     row.seconds = SecondsSince(round_start);
     result_.log.push_back(row);
     Report(label, row, Where(stage, plan, k));
+    if (Stopping()) {
+      result_.stopped = true;
+      result_.stop = "stopped by request";
+      return RoundEnd::kStop;
+    }
     if (row.undone) return RoundEnd::kStop;
     return Continue(stage, plan, k, row, step, change_before) ? RoundEnd::kNext : RoundEnd::kStop;
   }
@@ -369,8 +382,9 @@ class Loop {
     for (const Tolerance& t : plan.active) {
       if (t.per_iteration) watched.push_back({t.measure, Bound(s_, t), t.bound});
     }
-    IterationWatch watch(model_, options_.progress, label, watched, Where(stage, plan, k), start_);
-    if (options_.progress || !watched.empty()) {
+    IterationWatch watch(model_, options_.progress, label, watched, Where(stage, plan, k), start_,
+                         options_.stop);
+    if (options_.progress || !watched.empty() || options_.stop) {
       solver.callbacks.push_back(&watch);
       solver.update_state_every_iteration = true;
     }
@@ -611,8 +625,9 @@ class Loop {
     const Key* keep = s_.schema().Find("validity.keep_last_valid");
     const std::string invalid = model_.Invalid();
     const bool broken = !BrokenBounds(all_bounds_).empty();
-    if (!keep || !s_.Bool("validity.keep_last_valid") || (invalid.empty() && !broken) ||
-        (last_valid_round_ <= 0 && !(invalid.empty() && broken))) {
+    const bool keeping = result_.stopped || (keep && s_.Bool("validity.keep_last_valid"));
+    if (!keeping || (invalid.empty() && !broken) ||
+        (last_valid_round_ <= 0 && !result_.stopped && !(invalid.empty() && broken))) {
       return;
     }
     model_.RestoreState(last_valid_);

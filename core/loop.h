@@ -18,6 +18,7 @@
 // implements it over the CGAL store, the reference and the measures).
 #pragma once
 
+#include <atomic>
 #include <functional>
 #include <map>
 #include <memory>
@@ -115,12 +116,18 @@ struct LoopResult {
   std::map<std::string, double> bound_needs;
   bool restored_valid = false;              // the last round was invalid: the output is
                                             // the last valid round (output_round)
+  bool stopped = false;                     // LoopOptions::stop ended the run
 };
 
 struct LoopOptions {
   const Settings* settings = nullptr;  // the problem's settings (weights, schedule, solver)
   std::vector<const TermSpec*> terms;  // the problem's terms, in residual order
   ProgressSink progress;
+  // When set and true (another thread, a signal handler or the progress sink
+  // may set it), the solve ends after the current Ceres iteration, no further
+  // round or stage runs, and the output is the last valid state (as
+  // validity.keep_last_valid, whatever its value). Null: never stops.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 // Runs `declaration` on `model`. Never throws for a failed solve (see

@@ -99,21 +99,52 @@ nlohmann::json RoundsJson(const nlohmann::json& rounds) {
   return out;
 }
 
-// Per-face values (file order of the output's faces) and per-vertex
-// displacement (when the output has the input's vertices; meshes in a frame
-// of unit `scale` file units, displacements in file units), for output.arrays.
+// The per-face planarity of every measure report (δ_PQ, δ_PQ,n and warp of
+// analysis/metrics.h, the values whose max and mean the report's metrics
+// are) into `face` as "pq", "pq_normalized" and "warp", when `mesh` has a
+// face of 4 or more sides (triangles: 0). `mesh` is in a frame of unit
+// `scale` file units; δ_PQ is reported in file units.
+void PlanarityArrays(const Mesh& mesh, double scale, nlohmann::json& face) {
+  bool polygons = false;
+  for (FaceIndex f : mesh.faces()) polygons = polygons || mesh.degree(f) >= 4;
+  if (!polygons) return;
+  const PlanarityMeasure planarity = MeasureFacePlanarity(mesh);
+  const std::pair<const char*, const std::vector<double>*> arrays[] = {
+      {"pq", &planarity.distance}, {"pq_normalized", &planarity.normalized},
+      {"warp", &planarity.warp}};
+  for (const auto& [name, values] : arrays) {
+    if (face.contains(name)) continue;
+    const double unit = std::string(name) == "pq" ? scale : 1.0;
+    nlohmann::json& out = face[name] = nlohmann::json::array();
+    for (FaceIndex f : mesh.faces()) out.push_back(unit * (*values)[f.idx()]);
+  }
+}
+
+// The per-vertex distance from `original` (file units; both meshes in a
+// frame of unit `scale`), when it has the mesh's vertices, into `vertex` as
+// "displacement".
+void DisplacementArray(const Mesh& mesh, const Mesh& original, double scale,
+                       nlohmann::json& vertex) {
+  if (mesh.number_of_vertices() != original.number_of_vertices()) return;
+  nlohmann::json displacement = nlohmann::json::array();
+  for (VertexIndex v : mesh.vertices()) {
+    displacement.push_back(scale *
+                           std::sqrt(CGAL::squared_distance(mesh.point(v), original.point(v))));
+  }
+  vertex["displacement"] = displacement;
+}
+
+// Per-face values (file order of the output's faces: the colours' value and
+// the planarity) and per-vertex displacement (when the output has the
+// input's vertices), for output.arrays; meshes in a frame of unit `scale`.
 nlohmann::json ArraysJson(const FaceValues& values, const Mesh& output, const Mesh& input,
                           double scale) {
-  nlohmann::json face = nlohmann::json::array();
-  for (FaceIndex f : output.faces()) face.push_back(values.values[f.idx()]);
-  nlohmann::json arrays = {{"face", {{values.name, face}}}, {"vertex", nlohmann::json::object()}};
-  if (output.number_of_vertices() == input.number_of_vertices()) {
-    nlohmann::json displacement = nlohmann::json::array();
-    for (VertexIndex v : output.vertices()) {
-      displacement.push_back(scale * std::sqrt(CGAL::squared_distance(output.point(v), input.point(v))));
-    }
-    arrays["vertex"]["displacement"] = displacement;
-  }
+  nlohmann::json face = nlohmann::json::object();
+  nlohmann::json& shown = face[values.name] = nlohmann::json::array();
+  for (FaceIndex f : output.faces()) shown.push_back(values.values[f.idx()]);
+  PlanarityArrays(output, scale, face);
+  nlohmann::json arrays = {{"face", face}, {"vertex", nlohmann::json::object()}};
+  DisplacementArray(output, input, scale, arrays["vertex"]);
   return arrays;
 }
 
@@ -194,9 +225,10 @@ std::vector<PlyValues> DisplacementValues(const Mesh& output, const Mesh& input,
 // report's `seconds`.
 class SpecRun {
  public:
-  SpecRun(const ProblemSpec& spec, const ProgressSink& progress, const MeshInputs& meshes)
+  SpecRun(const ProblemSpec& spec, const ProgressSink& progress, const MeshInputs& meshes,
+          const std::atomic<bool>* stop)
       : spec_(spec), s_(spec.settings), d_(*spec.declaration), progress_(progress),
-        meshes_(meshes) {}
+        meshes_(meshes), stop_(stop) {}
 
   RunResult Run() {
     StageOutputs();
@@ -208,6 +240,7 @@ class SpecRun {
     WriteAndMeasureOutput();
     if (!validity_.valid()) run_.exit_code = 5;  // panels as defective as the input's
     run_.summary = Summary();
+    if (run_.stopped) run_.summary += "stopped by request: the outputs were not written\n";
     return run_;
   }
 
@@ -263,7 +296,7 @@ class SpecRun {
   // LocalFrame) and its lengths reported in file units.
   void SolveAndMeasureInput() {
     const auto solve_start = Clock::now();
-    solution_ = Solve(spec_, read_, reference_mesh_.get(), progress_);
+    solution_ = Solve(spec_, read_, reference_mesh_.get(), progress_, stop_);
     solve_seconds_ = SecondsSince(solve_start);
     seconds_["solve"] = solve_seconds_;
     local_ = LocalFrame(solution_->input);
@@ -490,7 +523,8 @@ class SpecRun {
         WriteTextFile(temporaries_.at("output.report"), rep.dump(2) + "\n", "output.report");
       });
     }
-    staged_.Commit();
+    run_.stopped = solution_->loop.stopped;
+    if (!run_.stopped) staged_.Commit();  // else the temporaries go with staged_
     if (meshes_.output) *meshes_.output = output;
   }
 
@@ -577,6 +611,7 @@ class SpecRun {
   const ProblemDecl& d_;
   const ProgressSink& progress_;
   const MeshInputs& meshes_;
+  const std::atomic<bool>* stop_;
   StagedOutputs staged_{Inputs(spec_)};
   std::map<std::string, std::string> temporaries_;  // output key -> staged file
   ReadInfo info_;
@@ -604,15 +639,16 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress) {
   return RunSpec(spec, progress, MeshInputs{});
 }
 
-RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const MeshInputs& meshes) {
+RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const MeshInputs& meshes,
+                  const std::atomic<bool>* stop) {
   ConfigureThreading();
   CHECK(spec.declaration) << "RunSpec: the spec has no problem (use ReadSpec)";
   SolverOptions(spec.settings);  // a combination Ceres rejects fails before any work
-  return SpecRun(spec, progress, meshes).Run();
+  return SpecRun(spec, progress, meshes, stop).Run();
 }
 
 RunResult MeasureFiles(const std::string& mesh_path, const std::string& reference_path,
-                       bool all) {
+                       bool all, bool arrays) {
   // Measured in the mesh's local frame (mesh/similarity.h LocalFrame), the
   // reference in the same frame; lengths reported in file units.
   const Mesh read = ReadMesh(mesh_path);
@@ -661,6 +697,12 @@ RunResult MeasureFiles(const std::string& mesh_path, const std::string& referenc
                 {"metrics", MetricsToJson(metrics, metrics.bbox_diagonal)}};
   AnalysisToJson(analysis, metrics.bbox_diagonal, run.report["metrics"]);
   if (!validity_json.is_null()) run.report["validity"] = validity_json;
+  if (arrays) {
+    nlohmann::json& a = run.report["arrays"] = {{"face", nlohmann::json::object()},
+                                                {"vertex", nlohmann::json::object()}};
+    PlanarityArrays(mesh, local.scale, a["face"]);
+    if (input) DisplacementArray(mesh, *input, local.scale, a["vertex"]);
+  }
   run.summary = FormatMetrics(metrics, nullptr, metrics.bbox_diagonal) +
                 FormatAnalysis(all ? analysis : RowsThatApply(mesh, analysis), nullptr,
                                metrics.bbox_diagonal) +

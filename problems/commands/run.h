@@ -5,6 +5,7 @@
 // one loop, measure before and after, write the outputs atomically.
 #pragma once
 
+#include <atomic>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -26,19 +27,28 @@ struct RunResult {
   int exit_code = 0;
   nlohmann::json report;   // the JSON run report (also written to output.report)
   std::string summary;     // human-readable summary for the terminal
+  bool stopped = false;    // the stop request ended the solve: nothing was written
 };
 
 // Throws InputError for bad input (nothing is written then).
 RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress);
 
 // Meshes in memory instead of the spec's files (the public API, python/):
-// problems/runtime/mesh_inputs.h.
+// problems/runtime/mesh_inputs.h. `stop` (may be null): when it turns true
+// the solve ends after the current iteration with the last valid state
+// (core/loop.h, LoopOptions::stop), which is measured and reported (exit 0
+// or 4 as usual, "stop": "stopped by request") but not written: the
+// outputs stay as they were, as when `archgeo solve` is interrupted.
 struct MeshInputs;
-RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const MeshInputs& meshes);
+RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const MeshInputs& meshes,
+                  const std::atomic<bool>* stop = nullptr);
 
 // `archgeo measure`: metrics of `mesh_path`, against `reference_path` if not
-// empty (displacement too when the vertex counts agree). Throws InputError.
+// empty (displacement too when the vertex counts agree). `arrays`: the report
+// gets "arrays" as output.arrays gives a solve's (per-face planarity, the
+// per-vertex displacement from a reference with the mesh's vertices).
+// Throws InputError.
 RunResult MeasureFiles(const std::string& mesh_path, const std::string& reference_path,
-                       bool all = false);
+                       bool all = false, bool arrays = false);
 
 }  // namespace archgeo

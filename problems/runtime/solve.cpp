@@ -132,7 +132,7 @@ Mesh InFileFrame(const Mesh& input, const Mesh& solved, const Mesh& start,
 }  // namespace
 
 std::unique_ptr<Solution> Solve(const ProblemSpec& spec, const Mesh& mesh, const Mesh* reference,
-                                const ProgressSink& progress) {
+                                const ProgressSink& progress, const std::atomic<bool>* stop) {
   CHECK(spec.declaration) << "Solve: the spec has no problem (use ReadSpec)";
   const ProblemDecl& d = *spec.declaration;
   const Settings& s = spec.settings;
@@ -243,6 +243,7 @@ std::unique_ptr<Solution> Solve(const ProblemSpec& spec, const Mesh& mesh, const
     options.settings = &s;
     options.terms = terms;
     options.progress = progress;
+    options.stop = stop;
     solved = RunLoop(d, options, *sol->model);
     fixed = hooks.fixed;
     work = sol->store->mesh();
@@ -264,7 +265,7 @@ std::unique_ptr<Solution> Solve(const ProblemSpec& spec, const Mesh& mesh, const
                            {"objective", solved.objective},
                            {"stop", solved.stop},
                            {"seconds", SecondsSince(level_start)}});
-    if (!solved.usable) break;
+    if (!solved.usable || solved.stopped) break;
   }
   solved.rounds = rounds;
   solved.iterations = iterations;

@@ -39,8 +39,10 @@ struct Solution {
 
 // Solves `spec`'s problem on `mesh` (file units; the spec's `mesh` key only
 // names it in messages) against `reference` (null: the net itself).
-// Throws InputError for unsuitable input.
+// `stop` (may be null): LoopOptions::stop; a stop also ends multiresolution
+// before its next level. Throws InputError for unsuitable input.
 std::unique_ptr<Solution> Solve(const ProblemSpec& spec, const Mesh& mesh, const Mesh* reference,
-                                const ProgressSink& progress);
+                                const ProgressSink& progress,
+                                const std::atomic<bool>* stop = nullptr);
 
 }  // namespace archgeo
