@@ -6,6 +6,7 @@
 #include <glog/logging.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -35,9 +36,18 @@ auto Translated(F&& f) -> decltype(f()) {
   }
 }
 
+// Where line `line` of ToMesh's OFF text is in `data`: "vertex i" or "face j".
+std::string RowOf(const MeshData& data, int line) {
+  const long row = long(line) - 3;  // line 1: OFF, line 2: the counts
+  if (row < 0) return "";
+  const long vertices = long(data.vertices.size());
+  return row < vertices ? "vertex " + std::to_string(row) : "face " + std::to_string(row - vertices);
+}
+
 Mesh ToMesh(const MeshData& data, const std::string& name) {
   // Through the readers' own checks (indices, degenerate faces, manifold,
-  // orientation): an OFF text in memory.
+  // orientation): an OFF text in memory. Its errors name `name` and the
+  // vertex or face, not the text's lines.
   std::string off = "OFF\n" + std::to_string(data.vertices.size()) + " " +
                     std::to_string(data.faces.size()) + " 0\n";
   char buf[96];
@@ -50,7 +60,13 @@ Mesh ToMesh(const MeshData& data, const std::string& name) {
     for (int v : f) off += " " + std::to_string(v);
     off += "\n";
   }
-  return ReadMeshFromMemory(name + ".off", off);
+  try {
+    return ReadMeshFromMemory(name + ".off", off);
+  } catch (const InputError& e) {
+    if (e.file() != name + ".off") throw;
+    const std::string row = RowOf(data, e.line());
+    throw InputError(name, 0, e.key(), (row.empty() ? "" : row + ": ") + e.message());
+  }
 }
 
 MeshData ToData(const Mesh& mesh) {
@@ -85,13 +101,15 @@ SolveResult FromRun(const RunResult& run, const Mesh& output) {
   if (run.exit_code == 0 || run.exit_code == 4 || run.exit_code == 5) r.mesh = ToData(output);
   r.report = run.report.dump(2);
   r.summary = run.summary;
+  r.stopped = run.stopped;
   return r;
 }
 
 }  // namespace
 
 SolveResult Solve(const std::string& spec_yaml, const MeshData& mesh, const MeshData* reference,
-                  const std::vector<std::string>& overrides, const std::string& spec_name) {
+                  const std::vector<std::string>& overrides, const std::string& spec_name,
+                  const SolveControl& control) {
   QuietLogging();
   return Translated([&] {
     const ProblemSpec spec = ParseSpec(spec_yaml, spec_name, overrides);
@@ -99,22 +117,25 @@ SolveResult Solve(const std::string& spec_yaml, const MeshData& mesh, const Mesh
     std::unique_ptr<Mesh> ref;
     if (reference) ref = std::make_unique<Mesh>(ToMesh(*reference, "<reference>"));
     Mesh output;
-    const RunResult run = RunSpec(spec, nullptr, MeshInputs{&input, ref.get(), &output});
+    const RunResult run =
+        RunSpec(spec, control.progress, MeshInputs{&input, ref.get(), &output}, control.stop);
     return FromRun(run, output);
   });
 }
 
-SolveResult SolveFile(const std::string& spec_path, const std::vector<std::string>& overrides) {
+SolveResult SolveFile(const std::string& spec_path, const std::vector<std::string>& overrides,
+                      const SolveControl& control) {
   QuietLogging();
   return Translated([&] {
     const ProblemSpec spec = ReadSpec(spec_path, overrides);
     Mesh output;
-    const RunResult run = RunSpec(spec, nullptr, MeshInputs{nullptr, nullptr, &output});
+    const RunResult run =
+        RunSpec(spec, control.progress, MeshInputs{nullptr, nullptr, &output}, control.stop);
     return FromRun(run, output);
   });
 }
 
-std::string Measure(const MeshData& mesh, const MeshData* reference) {
+std::string Measure(const MeshData& mesh, const MeshData* reference, bool arrays) {
   QuietLogging();
   return Translated([&] {
     // MeasureFiles reads files: the meshes go through a private folder.
@@ -136,7 +157,7 @@ std::string Measure(const MeshData& mesh, const MeshData* reference) {
       reference_path = (dir / "reference.off").string();
       WriteMesh(reference_path, ToMesh(*reference, "<reference>"));
     }
-    nlohmann::json report = MeasureFiles(mesh_path, reference_path).report;
+    nlohmann::json report = MeasureFiles(mesh_path, reference_path, false, arrays).report;
     report["mesh"] = "<memory>";
     report["reference"] = reference ? "<memory>" : "";
     return report.dump(2);
@@ -168,6 +189,50 @@ MeshData Generate(const SurfaceOptions& o) {
     const std::string path = (dir / "generated.off").string();
     GenerateSurface(path, g);
     return ToData(ReadMesh(path));
+  });
+}
+
+MeshData ReadMeshFile(const std::string& path) {
+  QuietLogging();
+  return Translated([&] { return ToData(ReadMesh(path)); });
+}
+
+namespace {
+
+// `named` as PLY properties of `count` elements (faces or vertices).
+std::vector<PlyValues> PlyValuesOf(const std::vector<NamedValues>& named, size_t count,
+                                   const std::string& path, const char* what) {
+  std::vector<PlyValues> values;
+  for (const NamedValues& n : named) {
+    if (n.values.size() != count) {
+      throw InputError(path, 0, n.name,
+                       std::to_string(n.values.size()) + " values for " +
+                           std::to_string(count) + " " + what);
+    }
+    values.push_back({n.name, n.values});
+  }
+  return values;
+}
+
+}  // namespace
+
+void WriteMeshFile(const std::string& path, const MeshData& mesh,
+                   const std::vector<NamedValues>& face_values,
+                   const std::vector<NamedValues>& vertex_values) {
+  QuietLogging();
+  Translated([&] {
+    CheckMeshExtension(path);
+    std::string extension = fs::path(path).extension().string();
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if ((!face_values.empty() || !vertex_values.empty()) && extension != ".ply") {
+      throw InputError(path, 0, "", "per-face and per-vertex values are written to .ply only");
+    }
+    const Mesh m = ToMesh(mesh, "<mesh>");
+    const std::vector<PlyValues> faces = PlyValuesOf(face_values, mesh.faces.size(), path, "faces");
+    const std::vector<PlyValues> vertices =
+        PlyValuesOf(vertex_values, mesh.vertices.size(), path, "vertices");
+    WriteMesh(path, m, nullptr, false, faces.empty() ? nullptr : &faces,
+              vertices.empty() ? nullptr : &vertices);
   });
 }
 

@@ -15,6 +15,8 @@
 #pragma once
 
 #include <array>
+#include <atomic>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -51,6 +53,21 @@ struct SolveResult {
   MeshData mesh;        // the result in file units (same vertex order and faces)
   std::string report;   // the JSON report (docs/report.schema.json)
   std::string summary;  // the text the CLI prints
+  bool stopped = false;  // SolveControl::stop ended the solve (the spec's outputs not written)
+};
+
+// How a caller follows and stops a solve.
+struct SolveControl {
+  // Called with each progress line (one per solver iteration, round or
+  // stage; no newline) on the thread that called Solve. Empty: none.
+  std::function<void(const std::string& line)> progress;
+  // When it turns true (from any thread, a signal handler or `progress`),
+  // the solve ends after the current solver iteration: no further round,
+  // stage or multiresolution level runs, the result is the last valid state
+  // (measured and reported as usual, report "stop": "stopped by request",
+  // SolveResult::stopped), and the spec's output files are not written.
+  // Null: never stops.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 // Solves the problem of the YAML spec `spec_yaml` on `mesh` (its `mesh` key
@@ -60,17 +77,45 @@ struct SolveResult {
 // CLI, relative to the current folder. Throws Error.
 // `spec_name` names the spec in messages and anchors its relative paths
 // (e.g. the path of the YAML file the text came from).
+// Errors in `mesh` or `reference` name them "<mesh>" / "<reference>" and the
+// vertex or face (e.g. "<mesh>: face 12: ..."), not a file.
 SolveResult Solve(const std::string& spec_yaml, const MeshData& mesh,
                   const MeshData* reference = nullptr,
                   const std::vector<std::string>& overrides = {},
-                  const std::string& spec_name = "<spec>");
+                  const std::string& spec_name = "<spec>", const SolveControl& control = {});
 
 // `archgeo solve SPEC.yaml --set ...`: the spec's files, the result read back.
-SolveResult SolveFile(const std::string& spec_path, const std::vector<std::string>& overrides = {});
+SolveResult SolveFile(const std::string& spec_path, const std::vector<std::string>& overrides = {},
+                      const SolveControl& control = {});
 
 // `archgeo measure --json`: the metrics report (JSON) of `mesh`, against
-// `reference` if given. Throws Error.
-std::string Measure(const MeshData& mesh, const MeshData* reference = nullptr);
+// `reference` if given. `arrays`: the report gets "arrays" (per-face "pq",
+// "pq_normalized", "warp" when the mesh has faces of 4 or more sides; the
+// per-vertex "displacement" from a reference with the mesh's vertex count),
+// the values whose max and mean its metrics are. Throws Error.
+std::string Measure(const MeshData& mesh, const MeshData* reference = nullptr,
+                    bool arrays = false);
+
+// A mesh file (.obj, .off, .ply) read by the CLI's readers with their
+// default limits (the `limits.*` keys' defaults): same checks, same repairs
+// (faces re-oriented, coincident vertices welded), file order of vertices
+// and faces. Throws Error naming the file and line.
+MeshData ReadMeshFile(const std::string& path);
+
+// A scalar per face or per vertex (indexed as MeshData's faces / vertices).
+struct NamedValues {
+  std::string name;  // a PLY property name: letters, digits, '_'
+  std::vector<double> values;
+};
+
+// Writes `mesh` as the CLI writes its output meshes (format from the
+// extension; full double precision; PLY binary). `face_values` and
+// `vertex_values` become float properties of a PLY's faces and vertices;
+// they need a .ply path. Throws Error (a bad extension, a count that is not
+// the mesh's, an unwritable path; nothing is written then).
+void WriteMeshFile(const std::string& path, const MeshData& mesh,
+                   const std::vector<NamedValues>& face_values = {},
+                   const std::vector<NamedValues>& vertex_values = {});
 
 // `archgeo generate`: an analytic test mesh (see `archgeo generate --help`).
 struct SurfaceOptions {
