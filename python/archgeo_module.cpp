@@ -1,14 +1,18 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// archgeo — the Python module `archgeo` (pybind11, numpy arrays in and out)
-// over the public C++ API (api/archgeo/archgeo.h). Input errors raise
-// archgeo.InputError (a ValueError) with the CLI's message.
+// archgeo — the extension module `archgeo._archgeo` (pybind11): converts
+// numpy arrays to the public C++ API's meshes (api/archgeo/archgeo.h), calls
+// it and converts back. The package's __init__.py (python/archgeo/) builds
+// the Python interface on it (Result, keyword arguments, exceptions).
+// Input errors raise archgeo.InputError (a ValueError) with the CLI's
+// message and its file, line and key.
+#include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include <fstream>
-#include <sstream>
+#include <atomic>
+#include <optional>
 
 #include "archgeo/archgeo.h"
 
@@ -50,7 +54,7 @@ py::array_t<double> Vertices(const archgeo::MeshData& mesh) {
   return out;
 }
 
-// Quads/triangles only: an (m, k) array; mixed polygons: a list of lists.
+// Faces of one size: an (m, k) array; mixed polygons: a list of lists.
 py::object Faces(const archgeo::MeshData& mesh) {
   bool uniform = !mesh.faces.empty();
   for (const auto& f : mesh.faces) uniform = uniform && f.size() == mesh.faces.front().size();
@@ -64,77 +68,172 @@ py::object Faces(const archgeo::MeshData& mesh) {
   return std::move(out);
 }
 
-py::object Json(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
+py::object MeshTuple(const archgeo::MeshData& mesh) {
+  return py::make_tuple(Vertices(mesh), Faces(mesh));
+}
 
-// A spec: a dict (sent as JSON, which is YAML), YAML text, or a .yaml path.
-std::pair<std::string, std::string> SpecText(const py::object& spec) {
-  if (py::isinstance<py::dict>(spec)) {
-    return {py::module_::import("json").attr("dumps")(spec).cast<std::string>(), "<spec>"};
+// {name: values} (numpy arrays or sequences) as the API's named values.
+std::vector<archgeo::NamedValues> Named(const py::dict& values) {
+  std::vector<archgeo::NamedValues> named;
+  for (const auto& [name, array] : values) {
+    const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
+    if (!a || a.ndim() != 1) throw py::value_error("values must be one-dimensional arrays");
+    named.push_back({name.cast<std::string>(), std::vector<double>(a.data(), a.data() + a.size())});
   }
-  const std::string s = spec.cast<std::string>();
-  const bool path = s.find('\n') == std::string::npos &&
-                    (s.size() > 5 && (s.substr(s.size() - 5) == ".yaml" ||
-                                      s.substr(s.size() - 4) == ".yml"));
-  if (!path) return {s, "<spec>"};
-  std::ifstream in(s);
-  if (!in) throw archgeo::Error(s + ": cannot read the spec file", s, 0, "");
-  std::stringstream text;
-  text << in.rdbuf();
-  return {text.str(), s};
+  return named;
+}
+
+// The Python error now set (taken off the interpreter), as an object.
+py::object TakeError() {
+  PyObject *type, *value, *traceback;
+  PyErr_Fetch(&type, &value, &traceback);
+  PyErr_NormalizeException(&type, &value, &traceback);
+  if (traceback) PyException_SetTraceback(value, traceback);
+  Py_XDECREF(type);
+  Py_XDECREF(traceback);
+  return py::reinterpret_steal<py::object>(value);
+}
+
+// One solve with the GIL released. Each progress line goes to `on_line`
+// (with the GIL); after it, pending signals are handled (a SIGINT raises
+// KeyboardInterrupt there). Such an error, or one `on_line` raises, or
+// `on_line` returning False, sets the stop flag: the solve ends after the
+// current iteration with the last valid state, and the error is handed back
+// for the caller to raise with that result.
+class GuardedSolve {
+ public:
+  explicit GuardedSolve(py::object on_line) : on_line_(std::move(on_line)) {}
+
+  // (status, V or None, F or None, report JSON, summary, stopped, error or None)
+  py::tuple Run(const std::function<archgeo::SolveResult(const archgeo::SolveControl&)>& solve) {
+    archgeo::SolveControl control;
+    control.stop = &stop_;
+    control.progress = [this](const std::string& line) { Line(line); };
+    archgeo::SolveResult r;
+    {
+      py::gil_scoped_release release;
+      r = solve(control);
+    }
+    const bool has_mesh = !r.mesh.vertices.empty();
+    return py::make_tuple(r.status, has_mesh ? py::object(Vertices(r.mesh)) : py::none(),
+                          has_mesh ? Faces(r.mesh) : py::none(), r.report, r.summary, r.stopped,
+                          error_ ? *error_ : py::none());
+  }
+
+ private:
+  void Line(const std::string& line) {
+    if (stop_.load()) return;
+    py::gil_scoped_acquire gil;
+    if (!on_line_.is_none()) {
+      try {
+        const py::object answer = on_line_(line);
+        if (answer.is(py::bool_(false))) stop_ = true;
+      } catch (py::error_already_set& e) {
+        e.restore();
+        Stop(TakeError());
+        return;
+      }
+    }
+    if (PyErr_CheckSignals() != 0) Stop(TakeError());
+  }
+
+  void Stop(py::object error) {
+    error_ = std::move(error);
+    stop_ = true;
+  }
+
+  py::object on_line_;
+  std::atomic<bool> stop_{false};
+  std::optional<py::object> error_;
+};
+
+std::optional<archgeo::MeshData> Optional(const py::handle& v, const py::handle& f) {
+  if (v.is_none()) return std::nullopt;
+  return ToMesh(v, f);
+}
+
+// Raises archgeo.InputError with the error's file, line and key as attributes.
+void RaiseInputError(const py::handle& type, const archgeo::Error& e) {
+  py::object error = type(e.what());
+  error.attr("file") = e.file();
+  error.attr("line") = e.line();
+  error.attr("key") = e.key();
+  PyErr_SetObject(type.ptr(), error.ptr());
 }
 
 }  // namespace
 
-PYBIND11_MODULE(archgeo, m) {
-  m.doc() = "archgeo: optimisation of freeform-architecture meshes (planar quads, smooth "
-            "meshes, principal-symmetric and H-nets). Meshes are numpy arrays in file units.";
+PYBIND11_MODULE(_archgeo, m) {
+  m.doc() = "archgeo's extension module: the C++ API on numpy arrays (use the package archgeo).";
   static py::exception<archgeo::Error> input_error(m, "InputError", PyExc_ValueError);
+  input_error.doc() =
+      "An error in the user's input (a spec key, a mesh file, V or F): the message the command "
+      "line prints; attributes file, line (0: unknown) and key ('' when none).";
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const archgeo::Error& e) {
-      input_error(e.what());
+      RaiseInputError(input_error, e);
     }
   });
 
   m.def(
       "solve",
-      [](const py::object& spec, const py::handle& v, const py::handle& f,
-         const py::object& reference, const std::vector<std::string>& overrides) {
-        const auto [text, name] = SpecText(spec);
+      [](const std::string& text, const std::string& name, const py::handle& v, const py::handle& f,
+         const py::handle& ref_v, const py::handle& ref_f,
+         const std::vector<std::string>& overrides, const py::object& on_line) {
         const archgeo::MeshData mesh = ToMesh(v, f);
-        archgeo::MeshData ref;
-        if (!reference.is_none()) {
-          const py::tuple t = reference.cast<py::tuple>();
-          ref = ToMesh(t[0], t[1]);
-        }
-        archgeo::SolveResult r;
-        {
-          py::gil_scoped_release release;
-          r = archgeo::Solve(text, mesh, reference.is_none() ? nullptr : &ref, overrides, name);
-        }
-        py::dict report = Json(r.report);
-        report["status"] = r.status;
-        return py::make_tuple(r.mesh.vertices.empty() ? py::object(py::none()) : Vertices(r.mesh),
-                              report);
+        const std::optional<archgeo::MeshData> ref = Optional(ref_v, ref_f);
+        return GuardedSolve(on_line).Run([&](const archgeo::SolveControl& control) {
+          return archgeo::Solve(text, mesh, ref ? &*ref : nullptr, overrides, name, control);
+        });
       },
-      py::arg("spec"), py::arg("V"), py::arg("F"), py::arg("reference") = py::none(),
-      py::arg("overrides") = std::vector<std::string>{},
-      "Solve a problem on (V, F). spec: a dict of spec keys, YAML text or a .yaml path "
-      "(its relative paths anchor there; its `mesh` key is ignored). reference: (V, F) of the "
-      "surface to stay close to. overrides: ['key=value', ...] as `archgeo solve --set`. "
-      "Returns (V_out, report): V_out None when no valid result (report['status'] 3).");
+      py::arg("text"), py::arg("name"), py::arg("V"), py::arg("F"), py::arg("reference_V"),
+      py::arg("reference_F"), py::arg("overrides"), py::arg("on_line"),
+      "archgeo::Solve on (V, F): (status, V, F, report JSON, summary, stopped, error).");
+  m.def(
+      "solve_file",
+      [](const std::string& path, const std::vector<std::string>& overrides,
+         const py::object& on_line) {
+        return GuardedSolve(on_line).Run([&](const archgeo::SolveControl& control) {
+          return archgeo::SolveFile(path, overrides, control);
+        });
+      },
+      py::arg("path"), py::arg("overrides"), py::arg("on_line"),
+      "archgeo::SolveFile: the spec's own mesh; returns as solve.");
   m.def(
       "measure",
-      [](const py::handle& v, const py::handle& f, const py::object& reference) {
+      [](const py::handle& v, const py::handle& f, const py::handle& ref_v,
+         const py::handle& ref_f) {
         const archgeo::MeshData mesh = ToMesh(v, f);
-        if (reference.is_none()) return Json(archgeo::Measure(mesh));
-        const py::tuple t = reference.cast<py::tuple>();
-        const archgeo::MeshData ref = ToMesh(t[0], t[1]);
-        return Json(archgeo::Measure(mesh, &ref));
+        const std::optional<archgeo::MeshData> ref = Optional(ref_v, ref_f);
+        py::gil_scoped_release release;
+        return archgeo::Measure(mesh, ref ? &*ref : nullptr, true);
       },
-      py::arg("V"), py::arg("F"), py::arg("reference") = py::none(),
-      "Metrics of (V, F) as `archgeo measure --json` (reference: (V, F) or None).");
+      py::arg("V"), py::arg("F"), py::arg("reference_V"), py::arg("reference_F"),
+      "archgeo::Measure with arrays: the report as JSON text.");
+  m.def(
+      "read_mesh",
+      [](const std::string& path) {
+        archgeo::MeshData mesh;
+        {
+          py::gil_scoped_release release;
+          mesh = archgeo::ReadMeshFile(path);
+        }
+        return MeshTuple(mesh);
+      },
+      py::arg("path"), "archgeo::ReadMeshFile: (V, F).");
+  m.def(
+      "write_mesh",
+      [](const std::string& path, const py::handle& v, const py::handle& f,
+         const py::dict& face_values, const py::dict& vertex_values) {
+        const archgeo::MeshData mesh = ToMesh(v, f);
+        const auto faces = Named(face_values), vertices = Named(vertex_values);
+        py::gil_scoped_release release;
+        archgeo::WriteMeshFile(path, mesh, faces, vertices);
+      },
+      py::arg("path"), py::arg("V"), py::arg("F"), py::arg("face_values"),
+      py::arg("vertex_values"), "archgeo::WriteMeshFile.");
   m.def(
       "generate",
       [](const std::string& surface, int nu, int nv, double noise, double scale, unsigned seed,
@@ -147,15 +246,14 @@ PYBIND11_MODULE(archgeo, m) {
         o.scale = scale;
         o.seed = seed;
         o.refinement = refinement;
-        const archgeo::MeshData mesh = archgeo::Generate(o);
-        return py::make_tuple(Vertices(mesh), Faces(mesh));
+        return MeshTuple(archgeo::Generate(o));
       },
       py::arg("surface") = "roof", py::arg("nu") = 20, py::arg("nv") = 15, py::arg("noise") = 0.1,
       py::arg("scale") = 1.0, py::arg("seed") = 1u, py::arg("refinement") = 1,
-      "An analytic test mesh as (V, F), as `archgeo generate`.");
+      "An analytic test mesh as (V, F), as `archgeo generate` (see its --help for the "
+      "surfaces).");
   m.def("problems", &archgeo::Problems, "The problem names.");
-  m.def(
-      "keys", [](const std::string& problem) { return Json(archgeo::ProblemKeys(problem)); },
-      py::arg("problem"), "A problem's spec keys: [{name, default, doc}, ...].");
+  m.def("keys", &archgeo::ProblemKeys, py::arg("problem"),
+        "A problem's spec keys as JSON text: [{name, default, doc}, ...].");
   m.attr("__version__") = archgeo::Version();
 }

@@ -1,12 +1,7 @@
 # SPDX-FileCopyrightText: The archgeo authors
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Tests of the Python module archgeo (python/archgeo_module.cpp).
-
-Run by ctest (test python_archgeo, with PYTHONPATH at the built module,
-ARCHGEO_BINARY and ARCHGEO_SOURCE_DIR set) or by hand:
-  PYTHONPATH=build-py/python ARCHGEO_BINARY=build-py/archgeo \
-  ARCHGEO_SOURCE_DIR=. /usr/bin/python3 -m pytest -q python/tests
-"""
+"""The package against the command line: the same solve, the same errors,
+keys and generated meshes (see conftest.py for how the tests run)."""
 import json
 import os
 import subprocess
@@ -16,28 +11,7 @@ import numpy as np
 import pytest
 
 import archgeo
-
-SOURCE = os.environ.get("ARCHGEO_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
-BINARY = os.environ.get("ARCHGEO_BINARY", "archgeo")
-CONJUGATE = os.path.join(SOURCE, "..", "shared", "data",
-                         "libigl_inspired_mesh_quads_Conjugate.off")
-GENTLE = os.path.join(SOURCE, "examples", "planar_quads_gentle.yaml")
-
-
-def read_off(path):
-    """Vertices (n, 3) and faces (lists) of an OFF file."""
-    tokens = open(path).read().split()
-    assert tokens[0] == "OFF"
-    nv, nf = int(tokens[1]), int(tokens[2])
-    at = 4
-    V = np.array(tokens[at:at + 3 * nv], dtype=float).reshape(nv, 3)
-    at += 3 * nv
-    F = []
-    for _ in range(nf):
-        k = int(tokens[at])
-        F.append([int(t) for t in tokens[at + 1:at + 1 + k]])
-        at += 1 + k
-    return V, F
+from conftest import BINARY, CONJUGATE, GENTLE, SOURCE, read_off
 
 
 def read_obj_vertices(path):
@@ -53,6 +27,13 @@ def test_problems_and_keys():
         archgeo.keys("no_such_problem")
 
 
+def test_solve_docstring_comes_from_the_schema():
+    doc = archgeo.solve.__doc__
+    for k in archgeo.keys("planar_quads"):
+        assert f"  {k['name']} = {json.dumps(k['default'])}   [" in doc
+    assert "solver.max_num_iterations" in doc and "terms.pq_diagonal.weight" in doc
+
+
 def test_generate_gives_numpy_arrays():
     V, F = archgeo.generate("roof", nu=4, nv=3, scale=2.0)
     assert V.shape == (20, 3) and V.dtype == np.float64
@@ -60,19 +41,19 @@ def test_generate_gives_numpy_arrays():
     assert F.min() == 0 and F.max() == 19
 
 
-@pytest.mark.skipif(not os.path.exists(CONJUGATE), reason="../shared/data not present")
 def test_solve_conjugate_equals_the_cli(tmp_path):
     V, F = read_off(CONJUGATE)
-    off = ["output.mesh=", "output.report=", "solver.num_threads=1"]
-    V_out, report = archgeo.solve(GENTLE, V, F, overrides=off)
+    result = archgeo.solve(GENTLE, V, F, output__mesh="", output__report="",
+                           solver__num_threads=1)
+    report = result.report
     assert report["schema_version"] == 1 and report["problem"] == "planar_quads"
-    assert report["status"] in (0, 4)
-    assert V_out.shape == V.shape
+    assert result.exit_code in (0, 4) and result.valid
+    assert result.V.shape == V.shape and result.V.dtype == np.float64
     out = tmp_path / "cli.obj"
     subprocess.run([BINARY, "solve", GENTLE, "--quiet", "--set", f"output.mesh={out}",
                     "--set", "output.report=", "--set", "solver.num_threads=1"], check=False)
     V_cli = read_obj_vertices(out)
-    assert np.max(np.abs(V_out - V_cli)) <= 1e-12
+    assert np.max(np.abs(result.V - V_cli)) <= 1e-12
     # The solve did something: planarity improved.
     assert report["after"]["pq_normalized_max"] < report["before"]["pq_normalized_max"]
 
@@ -84,20 +65,37 @@ def test_input_errors_carry_the_cli_message(tmp_path):
     with pytest.raises(archgeo.InputError) as error:
         archgeo.solve(str(spec), V, F)
     assert isinstance(error.value, ValueError)
+    assert (error.value.file, error.value.line, error.value.key) == (str(spec), 3, "not_a_key")
     cli = subprocess.run([BINARY, "solve", str(spec)], capture_output=True, text=True)
     assert cli.returncode == 2
     assert cli.stderr.strip() == "archgeo: error: " + str(error.value)
-    assert "not_a_key" in str(error.value)
 
 
-def test_measure_dict():
+def test_measure_dict_and_per_face_arrays():
     V, F = archgeo.generate("roof", nu=5, nv=4)
     m = archgeo.measure(V, F)
     assert m["schema_version"] == 1 and m["archgeo"] == "measure"
     assert m["metrics"]["faces"] == 20 and isinstance(m["metrics"]["faces"], int)
+    pq = m["face_values"]["pq_normalized"]
+    assert pq.shape == (20,) and pq.dtype == np.float64
+    assert pq.max() == m["metrics"]["pq_normalized_max"]
+    assert abs(pq.mean() - m["metrics"]["pq_normalized_mean"]) <= 1e-15
+    assert m["face_values"]["pq"].max() == m["metrics"]["pq_max"]
+    # Per face: the diagonal distance over the mean diagonal (conftest-free check).
+    q = V[F[7]]
+    d1, d2 = q[2] - q[0], q[3] - q[1]
+    n = np.cross(d1, d2)
+    distance = abs(np.dot(q[1] - q[0], n)) / np.linalg.norm(n)
+    mean_diagonal = 0.5 * (np.linalg.norm(d1) + np.linalg.norm(d2))
+    assert abs(pq[7] - distance / mean_diagonal) <= 1e-12
     flat = V.copy()
     flat[:, 2] = 0
-    assert archgeo.measure(flat, F)["metrics"]["pq_normalized_max"] < 1e-12
+    assert archgeo.measure(flat, F)["face_values"]["pq_normalized"].max() < 1e-12
+    # Against a reference with the same vertices: the displacement per vertex.
+    moved = V.copy()
+    moved[3, 2] += 0.25
+    d = archgeo.measure(moved, F, reference=(V, F))["vertex_values"]["displacement"]
+    assert d.shape == (len(V),) and abs(d[3] - 0.25) <= 1e-12 and np.count_nonzero(d) == 1
 
 
 def test_compas_style_example(tmp_path):

@@ -1,0 +1,314 @@
+# SPDX-FileCopyrightText: The archgeo authors
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""archgeo: optimisation of freeform-architecture meshes (planar quads, smooth
+meshes, principal-symmetric and H-nets, grids) on numpy arrays.
+
+Meshes are V, an (n, 3) float64 array of vertex positions in file units, and
+F, an (m, k) integer array of 0-based vertex indices or a list of polygons.
+
+    import archgeo
+    V, F = archgeo.read_mesh("roof.off")
+    result = archgeo.solve({"problem": "planar_quads"}, V, F,
+                           on_iteration=lambda info: print(info["line"]))
+    result.face_values["pq_normalized"].max()   # == result.report["after"]["pq_normalized_max"]
+
+docs/python.md has an example per problem family.
+"""
+import json
+import os
+import time
+
+import numpy as np
+
+from . import _archgeo
+from ._archgeo import InputError, __version__, generate, problems
+
+__all__ = ["InputError", "NoValidResult", "Result", "solve", "measure", "read_mesh",
+           "write_mesh", "from_compas", "to_compas", "generate", "problems", "keys",
+           "__version__"]
+
+
+class NoValidResult(RuntimeError):
+    """The solve found no usable or no valid result (the command line's exit
+    status 3; nothing was written). `result` is the Result (V is None) with
+    the report saying why."""
+
+    def __init__(self, message, result):
+        super().__init__(message)
+        self.result = result
+
+
+class Result:
+    """The outcome of archgeo.solve.
+
+    V               (n, 3) float64: the optimised vertices, file units (None
+                    when there is no valid result)
+    F               the faces of V: (m, k) int64, or a list for mixed polygons
+    face_values     {name: (m,) float64}: per-face values of the result, the
+                    same numbers the report's metrics are the max and mean of:
+                    "pq_normalized" (δ_PQ,n), "pq" (diagonal distance, file
+                    units), "warp" on meshes with quads or larger faces, and
+                    the problem's colour value (e.g. "energy_share")
+    vertex_values   {name: (n,) float64}: "displacement" from the input (file
+                    units) when the result has the input's vertices
+    report          the JSON report (docs/report.schema.json) as a dict
+    exit_code       the command line's exit status: 0 valid and every
+                    tolerance met, 4 valid with a tolerance missed, 5 written
+                    with panels as defective as the input's
+    valid           the result passed every validity check
+    tolerances_met  every tolerance of the problem was met
+    stopped         the solve was stopped (Ctrl-C, an exception or False
+                    from on_iteration) and this is the last valid state; the
+                    spec's output files were then not written
+    summary         the text `archgeo solve` prints
+    """
+
+    def __init__(self, status, V, F, report, summary, stopped):
+        arrays = report.pop("arrays", {"face": {}, "vertex": {}})
+        self.V = V
+        self.F = F
+        self.face_values = {k: np.asarray(v, dtype=float) for k, v in arrays["face"].items()}
+        self.vertex_values = {k: np.asarray(v, dtype=float) for k, v in arrays["vertex"].items()}
+        self.report = report
+        self.exit_code = status
+        self.valid = bool(report.get("validity", {}).get("valid", False))
+        self.tolerances_met = all(t["met"] for t in report.get("tolerances", {}).values())
+        self.stopped = stopped
+        self.summary = summary
+
+    def to_compas(self):
+        """The result as COMPAS mesh data: {"vertices": [...], "faces": [...]}."""
+        return to_compas(self.V, self.F)
+
+    def __repr__(self):
+        return (f"Result(exit_code={self.exit_code}, valid={self.valid}, "
+                f"tolerances_met={self.tolerances_met}, stopped={self.stopped})")
+
+
+def keys(problem):
+    """A problem's spec keys: [{"name", "default", "doc"}, ...]."""
+    return json.loads(_archgeo.keys(problem))
+
+
+def _input_error(message, key=""):
+    """An InputError raised from Python (no file or line)."""
+    error = InputError(message)
+    error.file, error.line, error.key = "", 0, key
+    return error
+
+
+def _yaml(value):
+    """A value as YAML text (JSON is YAML) for a "key=value" override."""
+    if isinstance(value, np.generic):
+        value = value.item()
+    if isinstance(value, np.ndarray):
+        value = value.tolist()
+    return json.dumps(value)
+
+
+def _overrides(prefix, values, out):
+    """Keyword arguments and nested dicts as ["dotted.key=value", ...]:
+    solver__max_num_iterations=50 and solver={"max_num_iterations": 50} are
+    the same key."""
+    for name, value in values.items():
+        key = prefix + name.replace("__", ".")
+        if isinstance(value, dict):
+            _overrides(key + ".", value, out)
+        else:
+            out.append(f"{key}={_yaml(value)}")
+    return out
+
+
+def _is_spec_path(spec):
+    return "\n" not in spec and spec.lower().endswith((".yaml", ".yml"))
+
+
+def _mesh(V, F):
+    """(V, F) from arrays, COMPAS data (a dict, a .json path, an object with
+    to_vertices_and_faces()) given as V with F None."""
+    if F is None:
+        if V is None:
+            return None, None
+        return from_compas(V)
+    return np.asarray(V, dtype=float), F
+
+
+class _Progress:
+    """on_iteration's info: {"line": the progress line, "elapsed": seconds
+    since the solve began}."""
+
+    def __init__(self, on_iteration):
+        self.on_iteration = on_iteration
+        self.start = time.monotonic()
+
+    def __call__(self, line):
+        if self.on_iteration is None:
+            return None
+        return self.on_iteration({"line": line, "elapsed": time.monotonic() - self.start})
+
+
+def solve(spec, V=None, F=None, *, reference=None, on_iteration=None, **keys):
+    """Solves a problem and returns a Result.
+
+    spec          a dict of spec keys, YAML text, or the path of a .yaml spec
+                  (its relative paths anchor at its folder; with V given its
+                  `mesh` key only names the mesh in messages)
+    V, F          the mesh: V (n, 3) float64, F (m, k) int or a list of
+                  polygons; or COMPAS mesh data as V (a dict with "vertices"
+                  and "faces", a .json path, or an object with
+                  to_vertices_and_faces()) and F None; both None: the spec's
+                  `mesh` file
+    reference     the surface to stay close to: (V, F) or COMPAS data (None:
+                  the mesh itself, or the spec's `reference`)
+    on_iteration  called with a dict {"line": progress text, "elapsed": s}
+                  per solver iteration, round and stage; returning False
+                  stops the solve with the last valid state (Result.stopped)
+    **keys        any spec key: solver__max_num_iterations=50 (the dots as
+                  "__") or solver={"max_num_iterations": 50}; they override
+                  the spec's (as `archgeo solve --set`)
+
+    Output keys (output.mesh, output.report, ...) are written as by
+    `archgeo solve`, relative to the spec's folder for a spec path, else to
+    the current folder.
+
+    Ctrl-C (SIGINT) stops the solve after the current iteration: the
+    KeyboardInterrupt is raised once the solve has returned, with the last
+    valid state as its `result` attribute (the output files are not
+    written). An exception raised by on_iteration stops the solve the same
+    way and is raised with `result`.
+
+    Raises InputError (attributes file, line, key) for a bad spec key or
+    mesh, NoValidResult when there is no usable or valid result.
+    """
+    overrides = _overrides("", keys, ["output.arrays=true"])
+    on_line = _Progress(on_iteration)
+    V, F = _mesh(V, F)
+    if isinstance(spec, dict):
+        text, name = json.dumps(spec), "<spec>"
+    elif _is_spec_path(spec):
+        if V is None:
+            return _result(_archgeo.solve_file(spec, overrides, on_line))
+        with open(spec, encoding="utf-8") as f:
+            text, name = f.read(), spec
+    else:
+        text, name = spec, "<spec>"
+    if V is None:
+        raise _input_error("solve: no mesh (give V and F, or a spec path with a `mesh` key)", "mesh")
+    if isinstance(reference, tuple):
+        ref_V, ref_F = _mesh(reference[0], reference[1])
+    else:
+        ref_V, ref_F = _mesh(reference, None)
+    return _result(_archgeo.solve(text, name, V, F, ref_V, ref_F, overrides, on_line))
+
+
+def _result(answer):
+    status, V, F, report, summary, stopped, error = answer
+    result = Result(status, V, F, json.loads(report), summary, stopped)
+    if error is not None:
+        error.result = result
+        raise error
+    if status == 3:
+        raise NoValidResult(result.report.get("message", "no valid result") + "\n" + summary,
+                            result)
+    return result
+
+
+def measure(V, F=None, reference=None):
+    """The metrics of a mesh as `archgeo measure --json` (a dict), against
+    `reference` ((V, F) or COMPAS data) if given, with per-face and per-vertex
+    arrays: m["face_values"] {"pq", "pq_normalized", "warp"} (faces of 4 or
+    more sides; the values whose max and mean m["metrics"] holds) and
+    m["vertex_values"] {"displacement"} (a reference with the same vertex
+    count)."""
+    V, F = _mesh(V, F)
+    ref_V, ref_F = (None, None)
+    if isinstance(reference, tuple):
+        ref_V, ref_F = _mesh(reference[0], reference[1])
+    elif reference is not None:
+        ref_V, ref_F = _mesh(reference, None)
+    report = json.loads(_archgeo.measure(V, F, ref_V, ref_F))
+    arrays = report.pop("arrays")
+    report["face_values"] = {k: np.asarray(v, dtype=float) for k, v in arrays["face"].items()}
+    report["vertex_values"] = {k: np.asarray(v, dtype=float) for k, v in arrays["vertex"].items()}
+    return report
+
+
+def read_mesh(path):
+    """(V, F) of a mesh file: .obj, .off, .ply with the command line's
+    readers and limits (faces re-oriented, coincident vertices welded, as
+    `archgeo solve` reads them), or .json COMPAS mesh data."""
+    if str(path).lower().endswith(".json"):
+        return from_compas(path)
+    return _archgeo.read_mesh(os.fspath(path))
+
+
+def write_mesh(path, V, F, vertex_values=None, **face_values):
+    """Writes (V, F) as .obj, .off or .ply (as `archgeo solve` writes its
+    meshes: full double precision, binary PLY) or .json (COMPAS mesh data).
+    Keyword arguments are per-face arrays (e.g. pq_normalized=...), written
+    as float face properties of a PLY (or keys of the JSON);
+    `vertex_values` ({name: (n,) array}) as float vertex properties."""
+    vertex_values = vertex_values or {}
+    if str(path).lower().endswith(".json"):
+        data = to_compas(V, F)
+        data.update({k: np.asarray(v, dtype=float).tolist() for k, v in face_values.items()})
+        data.update({k: np.asarray(v, dtype=float).tolist() for k, v in vertex_values.items()})
+        with open(path, "w", encoding="utf-8") as f:
+            json.dump(data, f)
+        return
+    _archgeo.write_mesh(os.fspath(path), V, F, face_values, vertex_values)
+
+
+def from_compas(data):
+    """(V, F) from COMPAS mesh data: a dict {"vertices": [[x, y, z], ...],
+    "faces": [[i, j, k, ...], ...]} (mesh.to_vertices_and_faces() as JSON),
+    the path of such a .json file, or an object with to_vertices_and_faces()
+    (a compas.datastructures.Mesh)."""
+    if hasattr(data, "to_vertices_and_faces"):
+        vertices, faces = data.to_vertices_and_faces()
+    else:
+        if isinstance(data, (str, os.PathLike)):
+            with open(data, encoding="utf-8") as f:
+                data = json.load(f)
+        vertices, faces = data["vertices"], data["faces"]
+    V = np.asarray(vertices, dtype=float)
+    if V.ndim != 2 or V.shape[1] != 3:
+        raise _input_error("COMPAS mesh data: 'vertices' must be a list of [x, y, z]")
+    return V, [list(map(int, f)) for f in faces]
+
+
+def to_compas(V, F):
+    """COMPAS mesh data {"vertices": [...], "faces": [...]} of (V, F), for
+    compas.datastructures.Mesh.from_vertices_and_faces(**data)."""
+    faces = F.tolist() if isinstance(F, np.ndarray) else [list(map(int, f)) for f in F]
+    return {"vertices": np.asarray(V, dtype=float).tolist(), "faces": faces}
+
+
+def _keys_doc():
+    """Every problem's keys, for solve's docstring: "name = default
+    [problems]" and the key's documentation."""
+    found = {}
+    names = []
+    for problem in problems():
+        try:
+            problem_keys = keys(problem)
+        except InputError:  # custom: its keys follow the terms it composes
+            continue
+        names.append(problem)
+        for k in problem_keys:
+            entry = found.setdefault(k["name"], {"default": k["default"], "doc": k["doc"],
+                                                 "problems": []})
+            entry["problems"].append(problem)
+    lines = ["", "Spec keys (from the settings schema; archgeo.keys(PROBLEM) gives one "
+                 "problem's, docs/keys.md the tables):"]
+    for name in sorted(found):
+        entry = found[name]
+        where = ("every problem" if len(entry["problems"]) == len(names)
+                 else ", ".join(entry["problems"]))
+        lines.append(f"  {name} = {json.dumps(entry['default'])}   [{where}]")
+        if entry["doc"]:
+            lines.append(f"      {entry['doc']}")
+    return "\n".join(lines)
+
+
+solve.__doc__ += _keys_doc()
