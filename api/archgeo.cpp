@@ -113,12 +113,14 @@ SolveResult Solve(const std::string& spec_yaml, const MeshData& mesh, const Mesh
   QuietLogging();
   return Translated([&] {
     const ProblemSpec spec = ParseSpec(spec_yaml, spec_name, overrides);
-    const Mesh input = ToMesh(mesh, "<mesh>");
+    // No mesh: a problem that makes its own (grid), or the spec's `mesh` file.
+    const bool none = mesh.vertices.empty() && mesh.faces.empty();
+    const Mesh input = none ? Mesh() : ToMesh(mesh, "<mesh>");
     std::unique_ptr<Mesh> ref;
     if (reference) ref = std::make_unique<Mesh>(ToMesh(*reference, "<reference>"));
     Mesh output;
     const RunResult run =
-        RunSpec(spec, control.progress, MeshInputs{&input, ref.get(), &output}, control.stop);
+        RunSpec(spec, control.progress, MeshInputs{none ? nullptr : &input, ref.get(), &output}, control.stop);
     return FromRun(run, output);
   });
 }
@@ -182,7 +184,7 @@ MeshData Generate(const SurfaceOptions& o) {
     g.surface = o.surface;
     g.nu = o.nu;
     g.nv = o.nv;
-    g.noise = o.noise;
+    if (o.noise >= 0) g.noise = o.noise;
     g.scale = o.scale;
     g.seed = o.seed;
     g.refinement = o.refinement;

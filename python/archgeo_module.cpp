@@ -182,7 +182,7 @@ PYBIND11_MODULE(_archgeo, m) {
       [](const std::string& text, const std::string& name, const py::handle& v, const py::handle& f,
          const py::handle& ref_v, const py::handle& ref_f,
          const std::vector<std::string>& overrides, const py::object& on_line) {
-        const archgeo::MeshData mesh = ToMesh(v, f);
+        const archgeo::MeshData mesh = Optional(v, f).value_or(archgeo::MeshData{});
         const std::optional<archgeo::MeshData> ref = Optional(ref_v, ref_f);
         return GuardedSolve(on_line).Run([&](const archgeo::SolveControl& control) {
           return archgeo::Solve(text, mesh, ref ? &*ref : nullptr, overrides, name, control);
@@ -190,7 +190,8 @@ PYBIND11_MODULE(_archgeo, m) {
       },
       py::arg("text"), py::arg("name"), py::arg("V"), py::arg("F"), py::arg("reference_V"),
       py::arg("reference_F"), py::arg("overrides"), py::arg("on_line"),
-      "archgeo::Solve on (V, F): (status, V, F, report JSON, summary, stopped, error).");
+      "archgeo::Solve on (V, F) (V None: no mesh): (status, V, F, report JSON, summary, "
+      "stopped, error).");
   m.def(
       "solve_file",
       [](const std::string& path, const std::vector<std::string>& overrides,
@@ -236,22 +237,22 @@ PYBIND11_MODULE(_archgeo, m) {
       py::arg("vertex_values"), "archgeo::WriteMeshFile.");
   m.def(
       "generate",
-      [](const std::string& surface, int nu, int nv, double noise, double scale, unsigned seed,
-         int refinement) {
+      [](const std::string& surface, int nu, int nv, std::optional<double> noise, double scale,
+         unsigned seed, int refinement) {
         archgeo::SurfaceOptions o;
         o.surface = surface;
         o.nu = nu;
         o.nv = nv;
-        o.noise = noise;
+        if (noise) o.noise = *noise;
         o.scale = scale;
         o.seed = seed;
         o.refinement = refinement;
         return MeshTuple(archgeo::Generate(o));
       },
-      py::arg("surface") = "roof", py::arg("nu") = 20, py::arg("nv") = 15, py::arg("noise") = 0.1,
+      py::arg("surface") = "roof", py::arg("nu") = 20, py::arg("nv") = 15, py::arg("noise") = py::none(),
       py::arg("scale") = 1.0, py::arg("seed") = 1u, py::arg("refinement") = 1,
       "An analytic test mesh as (V, F), as `archgeo generate` (see its --help for the "
-      "surfaces).");
+      "surfaces; noise None: the surface's default).");
   m.def("problems", &archgeo::Problems, "The problem names.");
   m.def("keys", &archgeo::ProblemKeys, py::arg("problem"),
         "A problem's spec keys as JSON text: [{name, default, doc}, ...].");

@@ -77,7 +77,8 @@ struct SolveControl {
 // CLI, relative to the current folder. Throws Error.
 // `spec_name` names the spec in messages and anchors its relative paths
 // (e.g. the path of the YAML file the text came from).
-// Errors in `mesh` or `reference` name them "<mesh>" / "<reference>" and the
+// An empty `mesh` (no vertices, no faces): the spec's `mesh` file, or none
+// for a problem that makes its own (grid). Errors in `mesh` or `reference` name them "<mesh>" / "<reference>" and the
 // vertex or face (e.g. "<mesh>: face 12: ..."), not a file.
 SolveResult Solve(const std::string& spec_yaml, const MeshData& mesh,
                   const MeshData* reference = nullptr,
@@ -121,7 +122,8 @@ void WriteMeshFile(const std::string& path, const MeshData& mesh,
 struct SurfaceOptions {
   std::string surface = "roof";
   int nu = 20, nv = 15;
-  double noise = 0.1, scale = 1.0;
+  double noise = -1;  // < 0: the surface's default (roof 0.1, torus 0, the nets none)
+  double scale = 1.0;
   unsigned seed = 1;
   int refinement = 1;
 };

@@ -157,7 +157,7 @@ def solve(spec, V=None, F=None, *, reference=None, on_iteration=None, **keys):
                   polygons; or COMPAS mesh data as V (a dict with "vertices"
                   and "faces", a .json path, or an object with
                   to_vertices_and_faces()) and F None; both None: the spec's
-                  `mesh` file
+                  `mesh` file, or none for a problem that makes its own (grid)
     reference     the surface to stay close to: (V, F) or COMPAS data (None:
                   the mesh itself, or the spec's `reference`)
     on_iteration  called with a dict {"line": progress text, "elapsed": s}
@@ -192,8 +192,6 @@ def solve(spec, V=None, F=None, *, reference=None, on_iteration=None, **keys):
             text, name = f.read(), spec
     else:
         text, name = spec, "<spec>"
-    if V is None:
-        raise _input_error("solve: no mesh (give V and F, or a spec path with a `mesh` key)", "mesh")
     if isinstance(reference, tuple):
         ref_V, ref_F = _mesh(reference[0], reference[1])
     else:
