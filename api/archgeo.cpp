@@ -95,6 +95,28 @@ void QuietLogging() {
   FLAGS_logtostderr = true;
 }
 
+// The engine's progress events as the API's.
+ProgressSink SinkOf(const SolveControl& control) {
+  if (!control.progress) return {};
+  return [progress = control.progress](const ProgressEvent& e) {
+    SolveProgress p;
+    p.kind = e.kind == ProgressEvent::Kind::kIteration ? "iteration"
+             : e.kind == ProgressEvent::Kind::kRound   ? "round"
+                                                       : "note";
+    p.line = e.line;
+    p.stage = e.stage;
+    p.round = e.round;
+    p.stage_round = e.stage_round;
+    p.stage_rounds = e.stage_rounds;
+    p.iteration = e.iteration;
+    p.measure = e.measure;
+    p.value = e.value;
+    p.target = e.target;
+    p.elapsed = e.elapsed;
+    progress(p);
+  };
+}
+
 SolveResult FromRun(const RunResult& run, const Mesh& output) {
   SolveResult r;
   r.status = run.exit_code;
@@ -120,7 +142,7 @@ SolveResult Solve(const std::string& spec_yaml, const MeshData& mesh, const Mesh
     if (reference) ref = std::make_unique<Mesh>(ToMesh(*reference, "<reference>"));
     Mesh output;
     const RunResult run =
-        RunSpec(spec, control.progress, MeshInputs{none ? nullptr : &input, ref.get(), &output}, control.stop);
+        RunSpec(spec, SinkOf(control), MeshInputs{none ? nullptr : &input, ref.get(), &output}, control.stop);
     return FromRun(run, output);
   });
 }
@@ -132,7 +154,7 @@ SolveResult SolveFile(const std::string& spec_path, const std::vector<std::strin
     const ProblemSpec spec = ReadSpec(spec_path, overrides);
     Mesh output;
     const RunResult run =
-        RunSpec(spec, control.progress, MeshInputs{nullptr, nullptr, &output}, control.stop);
+        RunSpec(spec, SinkOf(control), MeshInputs{nullptr, nullptr, &output}, control.stop);
     return FromRun(run, output);
   });
 }

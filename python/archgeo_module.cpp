@@ -12,6 +12,7 @@
 #include <pybind11/stl.h>
 
 #include <atomic>
+#include <cmath>
 #include <optional>
 
 #include "archgeo/archgeo.h"
@@ -94,21 +95,39 @@ py::object TakeError() {
   return py::reinterpret_steal<py::object>(value);
 }
 
-// One solve with the GIL released. Each progress line goes to `on_line`
-// (with the GIL); after it, pending signals are handled (a SIGINT raises
-// KeyboardInterrupt there). Such an error, or one `on_line` raises, or
-// `on_line` returning False, sets the stop flag: the solve ends after the
+// A progress event as a dict (None for what the event does not have).
+py::dict EventDict(const archgeo::SolveProgress& e) {
+  const auto number = [](double x) { return std::isnan(x) ? py::object(py::none()) : py::float_(x); };
+  py::dict info;
+  info["kind"] = e.kind;
+  info["line"] = e.line;
+  info["stage"] = e.stage;
+  info["round"] = e.round;
+  info["stage_round"] = e.stage_round;
+  info["stage_rounds"] = e.stage_rounds;
+  info["iteration"] = e.iteration >= 0 ? py::object(py::int_(e.iteration)) : py::none();
+  info["measure"] = e.measure.empty() ? py::object(py::none()) : py::str(e.measure);
+  info["value"] = number(e.value);
+  info["target"] = number(e.target);
+  info["elapsed"] = e.elapsed;
+  return info;
+}
+
+// One solve with the GIL released. Each progress event goes to `on_event`
+// as a dict (with the GIL); after it, pending signals are handled (a SIGINT
+// raises KeyboardInterrupt there). Such an error, or one `on_event` raises,
+// or `on_event` returning archgeo.STOP, sets the stop flag: the solve ends after the
 // current iteration with the last valid state, and the error is handed back
 // for the caller to raise with that result.
 class GuardedSolve {
  public:
-  explicit GuardedSolve(py::object on_line) : on_line_(std::move(on_line)) {}
+  explicit GuardedSolve(py::object on_event) : on_event_(std::move(on_event)) {}
 
   // (status, V or None, F or None, report JSON, summary, stopped, error or None)
   py::tuple Run(const std::function<archgeo::SolveResult(const archgeo::SolveControl&)>& solve) {
     archgeo::SolveControl control;
     control.stop = &stop_;
-    control.progress = [this](const std::string& line) { Line(line); };
+    control.progress = [this](const archgeo::SolveProgress& event) { Event(event); };
     archgeo::SolveResult r;
     {
       py::gil_scoped_release release;
@@ -121,13 +140,13 @@ class GuardedSolve {
   }
 
  private:
-  void Line(const std::string& line) {
+  void Event(const archgeo::SolveProgress& event) {
     if (stop_.load()) return;
     py::gil_scoped_acquire gil;
-    if (!on_line_.is_none()) {
+    if (!on_event_.is_none()) {
       try {
-        const py::object answer = on_line_(line);
-        if (answer.is(py::bool_(false))) stop_ = true;
+        const py::object answer = on_event_(EventDict(event));
+        if (answer.is(py::module_::import("archgeo._archgeo").attr("STOP"))) stop_ = true;
       } catch (py::error_already_set& e) {
         e.restore();
         Stop(TakeError());
@@ -142,7 +161,7 @@ class GuardedSolve {
     stop_ = true;
   }
 
-  py::object on_line_;
+  py::object on_event_;
   std::atomic<bool> stop_{false};
   std::optional<py::object> error_;
 };
@@ -181,26 +200,26 @@ PYBIND11_MODULE(_archgeo, m) {
       "solve",
       [](const std::string& text, const std::string& name, const py::handle& v, const py::handle& f,
          const py::handle& ref_v, const py::handle& ref_f,
-         const std::vector<std::string>& overrides, const py::object& on_line) {
+         const std::vector<std::string>& overrides, const py::object& on_event) {
         const archgeo::MeshData mesh = Optional(v, f).value_or(archgeo::MeshData{});
         const std::optional<archgeo::MeshData> ref = Optional(ref_v, ref_f);
-        return GuardedSolve(on_line).Run([&](const archgeo::SolveControl& control) {
+        return GuardedSolve(on_event).Run([&](const archgeo::SolveControl& control) {
           return archgeo::Solve(text, mesh, ref ? &*ref : nullptr, overrides, name, control);
         });
       },
       py::arg("text"), py::arg("name"), py::arg("V"), py::arg("F"), py::arg("reference_V"),
-      py::arg("reference_F"), py::arg("overrides"), py::arg("on_line"),
+      py::arg("reference_F"), py::arg("overrides"), py::arg("on_event"),
       "archgeo::Solve on (V, F) (V None: no mesh): (status, V, F, report JSON, summary, "
       "stopped, error).");
   m.def(
       "solve_file",
       [](const std::string& path, const std::vector<std::string>& overrides,
-         const py::object& on_line) {
-        return GuardedSolve(on_line).Run([&](const archgeo::SolveControl& control) {
+         const py::object& on_event) {
+        return GuardedSolve(on_event).Run([&](const archgeo::SolveControl& control) {
           return archgeo::SolveFile(path, overrides, control);
         });
       },
-      py::arg("path"), py::arg("overrides"), py::arg("on_line"),
+      py::arg("path"), py::arg("overrides"), py::arg("on_event"),
       "archgeo::SolveFile: the spec's own mesh; returns as solve.");
   m.def(
       "measure",
@@ -257,4 +276,6 @@ PYBIND11_MODULE(_archgeo, m) {
   m.def("keys", &archgeo::ProblemKeys, py::arg("problem"),
         "A problem's spec keys as JSON text: [{name, default, doc}, ...].");
   m.attr("__version__") = archgeo::Version();
+  // on_iteration returns it to stop the solve (its result is returned).
+  m.attr("STOP") = py::module_::import("builtins").attr("object")();
 }

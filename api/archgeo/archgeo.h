@@ -17,6 +17,7 @@
 #include <array>
 #include <atomic>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -56,11 +57,27 @@ struct SolveResult {
   bool stopped = false;  // SolveControl::stop ended the solve (the spec's outputs not written)
 };
 
+// One progress event of a solve: a note (a stage's line), a solver
+// iteration or the end of a round.
+struct SolveProgress {
+  std::string kind;         // "note", "iteration" or "round"
+  std::string line;         // the log line (`archgeo solve --log`; no newline)
+  std::string stage;        // the stage's name ("" for a problem's main stage)
+  int round = 0;            // rounds so far over the run (this one included)
+  int stage_round = 0;      // k of the stage's rounds (1-based)
+  int stage_rounds = 0;     // the stage's most rounds (0: not known)
+  int iteration = -1;       // the solver iteration within the round ("iteration" only)
+  std::string measure;      // the stage's goal tolerance, e.g. "pq_normalized_max" ("": none)
+  double value = std::numeric_limits<double>::quiet_NaN();   // its value at this event
+  double target = std::numeric_limits<double>::quiet_NaN();  // the tolerance it must reach
+  double elapsed = 0;       // seconds since the solve loop began
+};
+
 // How a caller follows and stops a solve.
 struct SolveControl {
-  // Called with each progress line (one per solver iteration, round or
-  // stage; no newline) on the thread that called Solve. Empty: none.
-  std::function<void(const std::string& line)> progress;
+  // Called with each progress event on the thread that called Solve.
+  // Empty: none.
+  std::function<void(const SolveProgress& event)> progress;
   // When it turns true (from any thread, a signal handler or `progress`),
   // the solve ends after the current solver iteration: no further round,
   // stage or multiresolution level runs, the result is the last valid state

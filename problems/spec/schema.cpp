@@ -108,8 +108,9 @@ std::vector<Key> CommonKeys(const ProblemDecl& d) {
                          "side by side, faces coloured by the problem's per-face value with a "
                          "colour bar; empty: not drawn"));
   keys.push_back(BoolKey("output.arrays", false,
-                         "the report lists the per-face value of the colours and the per-vertex "
-                         "displacement (arrays.face, arrays.vertex)"));
+                         "the report lists the per-face value of the colours, the per-face "
+                         "planarity (pq, pq_normalized, warp: meshes with faces of 4+ sides) "
+                         "and the per-vertex displacement (arrays.face, arrays.vertex)"));
   keys.push_back(BoolKey("output.ascii_ply", true,
                          "ASCII PLY (every reader, Debian's meshio 5 included, reads its face "
                          "colours and values); false: binary little-endian, smaller (meshio 5 "

@@ -16,14 +16,13 @@ docs/python.md has an example per problem family.
 """
 import json
 import os
-import time
 
 import numpy as np
 
 from . import _archgeo
-from ._archgeo import InputError, __version__, generate, problems
+from ._archgeo import STOP, InputError, __version__, generate, problems
 
-__all__ = ["InputError", "NoValidResult", "Result", "solve", "measure", "read_mesh",
+__all__ = ["STOP", "InputError", "NoValidResult", "Result", "solve", "measure", "read_mesh",
            "write_mesh", "from_compas", "to_compas", "generate", "problems", "keys",
            "__version__"]
 
@@ -57,9 +56,9 @@ class Result:
                     with panels as defective as the input's
     valid           the result passed every validity check
     tolerances_met  every tolerance of the problem was met
-    stopped         the solve was stopped (Ctrl-C, an exception or False
-                    from on_iteration) and this is the last valid state; the
-                    spec's output files were then not written
+    stopped         the solve was stopped (Ctrl-C, an exception or
+                    archgeo.STOP from on_iteration) and this is the last valid
+                    state; the spec's output files were then not written
     summary         the text `archgeo solve` prints
     """
 
@@ -133,20 +132,6 @@ def _mesh(V, F):
     return np.asarray(V, dtype=float), F
 
 
-class _Progress:
-    """on_iteration's info: {"line": the progress line, "elapsed": seconds
-    since the solve began}."""
-
-    def __init__(self, on_iteration):
-        self.on_iteration = on_iteration
-        self.start = time.monotonic()
-
-    def __call__(self, line):
-        if self.on_iteration is None:
-            return None
-        return self.on_iteration({"line": line, "elapsed": time.monotonic() - self.start})
-
-
 def solve(spec, V=None, F=None, *, reference=None, on_iteration=None, **keys):
     """Solves a problem and returns a Result.
 
@@ -160,9 +145,15 @@ def solve(spec, V=None, F=None, *, reference=None, on_iteration=None, **keys):
                   `mesh` file, or none for a problem that makes its own (grid)
     reference     the surface to stay close to: (V, F) or COMPAS data (None:
                   the mesh itself, or the spec's `reference`)
-    on_iteration  called with a dict {"line": progress text, "elapsed": s}
-                  per solver iteration, round and stage; returning False
-                  stops the solve with the last valid state (Result.stopped)
+    on_iteration  called with a dict per progress event: "kind" ("iteration"
+                  per solver iteration, "round" at a round's end, "note"
+                  for a stage's line), "line" (the log line), "stage",
+                  "round" (rounds so far), "stage_round" k of "stage_rounds"
+                  n, "iteration" (within the round), "measure" (the goal
+                  tolerance, e.g. "pq_normalized_max"), its "value" and
+                  "target", "elapsed" (seconds); None where an event has
+                  none. Returning archgeo.STOP stops the solve with the
+                  last valid state (Result.stopped)
     **keys        any spec key: solver__max_num_iterations=50 (the dots as
                   "__") or solver={"max_num_iterations": 50}; they override
                   the spec's (as `archgeo solve --set`)
@@ -181,13 +172,12 @@ def solve(spec, V=None, F=None, *, reference=None, on_iteration=None, **keys):
     mesh, NoValidResult when there is no usable or valid result.
     """
     overrides = _overrides("", keys, ["output.arrays=true"])
-    on_line = _Progress(on_iteration)
     V, F = _mesh(V, F)
     if isinstance(spec, dict):
         text, name = json.dumps(spec), "<spec>"
     elif _is_spec_path(spec):
         if V is None:
-            return _result(_archgeo.solve_file(spec, overrides, on_line))
+            return _result(_archgeo.solve_file(spec, overrides, on_iteration))
         with open(spec, encoding="utf-8") as f:
             text, name = f.read(), spec
     else:
@@ -196,7 +186,7 @@ def solve(spec, V=None, F=None, *, reference=None, on_iteration=None, **keys):
         ref_V, ref_F = _mesh(reference[0], reference[1])
     else:
         ref_V, ref_F = _mesh(reference, None)
-    return _result(_archgeo.solve(text, name, V, F, ref_V, ref_F, overrides, on_line))
+    return _result(_archgeo.solve(text, name, V, F, ref_V, ref_F, overrides, on_iteration))
 
 
 def _result(answer):

@@ -31,7 +31,7 @@ def test_sigint_from_another_thread_stops_the_solve():
 
     def on_iteration(info):
         lines.append(info["line"])
-        if " iter " in info["line"]:
+        if info["kind"] == "iteration":
             started.set()
 
     def interrupt():  # runs while the solving thread holds no GIL
@@ -62,7 +62,7 @@ V, F = archgeo.read_mesh(sys.argv[1])
 keys = json.loads(sys.argv[3])
 first = []
 def on_iteration(info):
-    if " iter " in info["line"] and not first:
+    if info["kind"] == "iteration" and not first:
         first.append(1)
         print("solving", flush=True)
 try:

@@ -86,32 +86,45 @@ def test_no_valid_result_raises_with_the_report():
     assert "flipped_faces" in str(error.value)
 
 
-def test_progress_callback_gets_every_iteration():
+def test_progress_callback_gets_every_iteration_and_round():
     V, F = roof()
     seen = []
     result = archgeo.solve({"problem": "planar_quads"}, V, F,
                            on_iteration=seen.append, **QUIET)
-    iterations = [i for i in seen if " iter " in i["line"]]
+    iterations = [i for i in seen if i["kind"] == "iteration"]
     rounds = [r for r in result.report["rounds"] if r["round"] > 0]
-    # One line per Ceres iteration, iteration 0 of each round included.
+    # One event per Ceres iteration, iteration 0 of each round included.
     assert len(iterations) == sum(r["iterations"] + 1 for r in rounds)
-    assert all(isinstance(i["elapsed"], float) and i["elapsed"] >= 0 for i in seen)
-    assert [i["elapsed"] for i in seen] == sorted(i["elapsed"] for i in seen)
+    assert all(" iter " in i["line"] for i in iterations)
+    ends = [i for i in seen if i["kind"] == "round"]
+    assert [e["round"] for e in ends] == [r["round"] for r in rounds]
+    for end, row in zip(ends, rounds):
+        # Round k of n against the goal tolerance, as the report logs it.
+        assert end["stage_round"] == row["round"]
+        assert end["stage_rounds"] == result.report["settings"]["schedule"]["outer_iterations"]
+        assert end["measure"] == "pq_normalized_max" and end["target"] == 1e-3
+        assert end["value"] == row["measures"]["pq_normalized_max"]
+    assert [i["iteration"] for i in iterations if i["round"] == 1] == \
+        list(range(rounds[0]["iterations"] + 1))
+    timed = [i["elapsed"] for i in seen if i["kind"] != "note"]
+    assert timed == sorted(timed) and timed[0] >= 0
 
 
-def test_returning_false_stops_with_the_last_valid_state():
+def test_returning_stop_ends_with_the_last_valid_state():
     V, F = archgeo.read_mesh(CONJUGATE)
     calls = []
 
     def stop_at_third_iteration(info):
         calls.append(info)
-        return not (" iter " in info["line"] and len(calls) > 3)
+        if info["kind"] == "iteration" and info["iteration"] == 2:
+            return archgeo.STOP
+        return False  # anything else: go on
 
     result = archgeo.solve(GENTLE, V, F, on_iteration=stop_at_third_iteration, **QUIET)
     assert result.stopped and result.report["stop"].startswith("stopped by request")
     assert result.valid and result.V is not None
     assert result.report["iterations"]["outer"] == 1
-    assert result.report["iterations"]["inner"] <= 3
+    assert result.report["iterations"]["inner"] == 2
     # The state returned is the one the report measured.
     assert result.face_values["pq_normalized"].max() == result.report["after"]["pq_normalized_max"]
 
@@ -120,7 +133,7 @@ def test_an_exception_in_the_callback_stops_and_is_raised_with_the_result():
     V, F = roof()
 
     def fail(info):
-        if " iter " in info["line"]:
+        if info["kind"] == "iteration":
             raise RuntimeError("seen enough")
 
     with pytest.raises(RuntimeError, match="seen enough") as error:
