@@ -16,6 +16,7 @@
 #include "fabrication/panels.h"
 #include "fabrication/sheet_layout.h"
 #include "fabrication/units.h"
+#include "tests/segments_meet.h"
 
 namespace archgeo {
 namespace ARCHGEO_UNITY_ID {
@@ -112,27 +113,6 @@ TEST(FlattenPanel, PlanarHexagonIsCongruent) {
   }
 }
 
-// Whether segments ab and cd cross or touch.
-bool SegmentsMeet(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
-                  const Eigen::Vector2d& d) {
-  const auto side = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q,
-                       const Eigen::Vector2d& r) {
-    const double x = (q - p).x() * (r - p).y() - (q - p).y() * (r - p).x();
-    return x > 0 ? 1 : x < 0 ? -1 : 0;
-  };
-  // r on the segment pq, given that the three are collinear.
-  const auto within = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q,
-                         const Eigen::Vector2d& r) {
-    return r.x() >= std::min(p.x(), q.x()) && r.x() <= std::max(p.x(), q.x()) &&
-           r.y() >= std::min(p.y(), q.y()) && r.y() <= std::max(p.y(), q.y());
-  };
-  const int c_side = side(a, b, c), d_side = side(a, b, d), a_side = side(c, d, a),
-            b_side = side(c, d, b);
-  if (c_side * d_side < 0 && a_side * b_side < 0) return true;
-  return (c_side == 0 && within(a, b, c)) || (d_side == 0 && within(a, b, d)) ||
-         (a_side == 0 && within(c, d, a)) || (b_side == 0 && within(c, d, b));
-}
-
 TEST(LayOutOnSheets, RandomPanelsFitTheirSheetsApartAndUnchanged) {
   std::mt19937 random(7);
   std::uniform_real_distribution<double> size(200, 1400), turn(0, 2 * M_PI);
@@ -222,6 +202,13 @@ PlainMesh Torus(int nu, int nv) {
 
 TEST(NodeAxes, ConicalTorusNetGetsItsConeAxesAndUntwistedBeams) {
   const PlainMesh torus = Torus(24, 12);
+  // The unit normal of quad f (the cross product of its diagonals).
+  const auto QuadNormal = [&torus](int f) {
+    const std::vector<int>& q = torus.faces[size_t(f)];
+    return Eigen::Vector3d((torus.points[size_t(q[2])] - torus.points[size_t(q[0])])
+                               .cross(torus.points[size_t(q[3])] - torus.points[size_t(q[1])])
+                               .normalized());
+  };
   const std::vector<NodeAxis> nodes = NodeAxes(torus, 1e-9);
   for (size_t v = 0; v < nodes.size(); ++v) {
     const NodeAxis& n = nodes[v];
@@ -230,11 +217,7 @@ TEST(NodeAxes, ConicalTorusNetGetsItsConeAxesAndUntwistedBeams) {
     // Equal angles with the four face normals, and 1 / cos of that angle.
     std::vector<double> cosines;
     for (int f : torus.vertex_faces[v]) {
-      const std::vector<int>& q = torus.faces[size_t(f)];
-      const Eigen::Vector3d normal =
-          (torus.points[size_t(q[2])] - torus.points[size_t(q[0])])
-              .cross(torus.points[size_t(q[3])] - torus.points[size_t(q[1])])
-              .normalized();
+      const Eigen::Vector3d normal = QuadNormal(f);
       cosines.push_back(normal.dot(n.axis));
     }
     for (double c : cosines) EXPECT_NEAR(c, cosines[0], 1e-12);
@@ -255,11 +238,7 @@ TEST(NodeAxes, ConicalTorusNetGetsItsConeAxesAndUntwistedBeams) {
     EXPECT_FALSE(normals[v].cone);
     double low = 2, high = -2;
     for (int f : torus.vertex_faces[v]) {
-      const std::vector<int>& q = torus.faces[size_t(f)];
-      const Eigen::Vector3d normal =
-          (torus.points[size_t(q[2])] - torus.points[size_t(q[0])])
-              .cross(torus.points[size_t(q[3])] - torus.points[size_t(q[1])])
-              .normalized();
+      const Eigen::Vector3d normal = QuadNormal(f);
       low = std::min(low, normal.dot(normals[v].axis));
       high = std::max(high, normal.dot(normals[v].axis));
     }

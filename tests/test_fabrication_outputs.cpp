@@ -20,6 +20,7 @@
 
 #include "io/io.h"
 #include "tests/scratch_dir.h"
+#include "tests/segments_meet.h"
 #include "tests/shell.h"
 
 namespace archgeo {
@@ -134,32 +135,12 @@ bool Inside(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Vector2d& 
   return inside;
 }
 
-bool Cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
-           const Eigen::Vector2d& d) {
-  const auto side = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q,
-                       const Eigen::Vector2d& r) {
-    const double x = (q - p).x() * (r - p).y() - (q - p).y() * (r - p).x();
-    return x > 0 ? 1 : x < 0 ? -1 : 0;
-  };
-  // r on the segment pq, given that the three are collinear.
-  const auto within = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q,
-                         const Eigen::Vector2d& r) {
-    return r.x() >= std::min(p.x(), q.x()) && r.x() <= std::max(p.x(), q.x()) &&
-           r.y() >= std::min(p.y(), q.y()) && r.y() <= std::max(p.y(), q.y());
-  };
-  const int c_side = side(a, b, c), d_side = side(a, b, d), a_side = side(c, d, a),
-            b_side = side(c, d, b);
-  if (c_side * d_side < 0 && a_side * b_side < 0) return true;
-  return (c_side == 0 && within(a, b, c)) || (d_side == 0 && within(a, b, d)) ||
-         (a_side == 0 && within(c, d, a)) || (b_side == 0 && within(c, d, b));
-}
-
 // Whether two closed outlines share any point: an edge crossing or touching
 // one of the other's, or one inside the other.
 bool Overlap(const std::vector<Eigen::Vector2d>& p, const std::vector<Eigen::Vector2d>& q) {
   for (size_t a = 0; a < p.size(); ++a) {
     for (size_t b = 0; b < q.size(); ++b) {
-      if (Cross(p[a], p[(a + 1) % p.size()], q[b], q[(b + 1) % q.size()])) return true;
+      if (SegmentsMeet(p[a], p[(a + 1) % p.size()], q[b], q[(b + 1) % q.size()])) return true;
     }
   }
   return Inside(p, q[0]) || Inside(q, p[0]);

@@ -26,9 +26,10 @@ def test_result_on_the_conjugate_mesh():
     assert pq.shape == (len(F),) and pq.dtype == np.float64
     assert abs(pq.max() - result.report["after"]["pq_normalized_max"]) <= 1e-12
     assert pq.max() <= result.report["tolerances"]["tolerance.pq_normalized_max"]["bound"]
-    # The same numbers as measuring the result afresh.
+    # The same numbers as measuring the result afresh (each run computes in
+    # its own mesh's local frame, so equal to rounding, not to the bit).
     again = archgeo.measure(result.V, result.F)["face_values"]["pq_normalized"]
-    assert np.array_equal(again, pq)
+    assert np.allclose(again, pq, rtol=1e-12, atol=1e-15)
     moved = result.vertex_values["displacement"]
     assert np.allclose(moved, np.linalg.norm(result.V - V, axis=1), rtol=0, atol=1e-12)
     assert "arrays" not in result.report
