@@ -81,13 +81,43 @@ std::vector<NodeAxis> NodeAxes(const PlainMesh& mesh, double cone_bound) {
   return nodes;
 }
 
-std::vector<Beam> Beams(const PlainMesh& mesh, const std::vector<NodeAxis>& nodes) {
+std::vector<Eigen::Vector3d> OffsetNodes(const PlainMesh& mesh, const std::vector<NodeAxis>& nodes,
+                                         double depth) {
+  std::vector<Eigen::Vector3d> offsets = mesh.points;
+  for (size_t v = 0; v < nodes.size(); ++v) {
+    double sum = 0, squares = 0;
+    for (int f : mesh.vertex_faces[v]) {
+      const double c = FaceNewell(mesh, f).normalized().dot(nodes[v].axis);
+      sum += c;
+      squares += c * c;
+    }
+    if (squares > 0) offsets[v] += depth * sum / squares * nodes[v].axis;
+  }
+  return offsets;
+}
+
+double FaceOffsetError(const PlainMesh& mesh, const std::vector<Eigen::Vector3d>& offsets,
+                       double depth) {
+  double error = 0;
+  for (size_t f = 0; f < mesh.faces.size(); ++f) {
+    const Eigen::Vector3d normal = FaceNewell(mesh, int(f)).normalized();
+    for (int v : mesh.faces[f]) {
+      const double distance = normal.dot(offsets[size_t(v)] - mesh.points[size_t(v)]);
+      error = std::max(error, std::abs(distance - depth));
+    }
+  }
+  return error;
+}
+
+std::vector<Beam> Beams(const PlainMesh& mesh, const std::vector<NodeAxis>& nodes, double depth) {
+  const std::vector<Eigen::Vector3d> offsets = OffsetNodes(mesh, nodes, depth);
   std::vector<Beam> beams;
   for (const auto& [v0, v1] : mesh.edges) {
     Beam b;
     b.v0 = v0, b.v1 = v1;
     const Eigen::Vector3d edge = mesh.points[size_t(v1)] - mesh.points[size_t(v0)];
     b.length = edge.norm();
+    b.offset0 = offsets[size_t(v0)], b.offset1 = offsets[size_t(v1)];
     const Eigen::Vector3d side0 = edge.cross(nodes[size_t(v0)].axis);
     const Eigen::Vector3d side1 = edge.cross(nodes[size_t(v1)].axis);
     const Eigen::Vector3d mean = edge.cross(nodes[size_t(v0)].axis + nodes[size_t(v1)].axis);

@@ -19,6 +19,13 @@
 // spanned by the edge and each end's axis (0: the two axes are coplanar
 // with the edge, as at the cone axes of a conical mesh, which both lie in
 // the bisector plane of the edge's two faces).
+//
+// A beam of depth d (signed: along the axes, the side the face normals point
+// to) ends at each node on its axis, at the point of it nearest (least
+// squares) to every incident face plane offset by d: v + t a with
+// t = d Σ(a·n_f) / Σ(a·n_f)². At a cone node that is v + d / cos(φ) a, where
+// the offset planes meet exactly, so a conical mesh's beam ends form its
+// face offset; elsewhere FaceOffsetError says how far they are from it.
 #pragma once
 
 #include <vector>
@@ -46,9 +53,22 @@ struct Beam {
   double length = 0;
   Eigen::Vector3d plane_normal = Eigen::Vector3d::Zero();  // unit, ⟂ the edge
   double twist_degrees = 0;
+  // The beam's far edge at depth d (Beams' `depth`; the nodes when 0).
+  Eigen::Vector3d offset0 = Eigen::Vector3d::Zero(), offset1 = Eigen::Vector3d::Zero();
 };
 
-// One per mesh.edges entry, from NodeAxes' axes.
-std::vector<Beam> Beams(const PlainMesh& mesh, const std::vector<NodeAxis>& nodes);
+// Each node moved along its axis to depth `depth` (see above).
+std::vector<Eigen::Vector3d> OffsetNodes(const PlainMesh& mesh, const std::vector<NodeAxis>& nodes,
+                                         double depth);
+
+// The largest |n_f·(o_v − v) − depth| over the faces f and their corners v
+// (unit normals n_f): how far the offset nodes `offsets` are from the face
+// planes offset by `depth` (0 for a face offset).
+double FaceOffsetError(const PlainMesh& mesh, const std::vector<Eigen::Vector3d>& offsets,
+                       double depth);
+
+// One per mesh.edges entry, from NodeAxes' axes; far edges at `depth`.
+std::vector<Beam> Beams(const PlainMesh& mesh, const std::vector<NodeAxis>& nodes,
+                        double depth = 0);
 
 }  // namespace archgeo

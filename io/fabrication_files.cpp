@@ -184,17 +184,24 @@ void WriteNodesCsv(const std::string& path, const std::vector<Eigen::Vector3d>& 
 }
 
 void WriteBeamsCsv(const std::string& path, const std::vector<Beam>& beams,
-                   const std::vector<NodeAxis>& nodes, const std::string& key) {
+                   const std::vector<NodeAxis>& nodes, bool far_edges, const std::string& key) {
   std::ostringstream out;
   out << "edge,v0,v1,length,plane_normal_x,plane_normal_y,plane_normal_z,twist_degrees,axis0,"
-         "axis1\n";
+         "axis1"
+      << (far_edges ? ",far0_x,far0_y,far0_z,far1_x,far1_y,far1_z" : "") << '\n';
   for (size_t e = 0; e < beams.size(); ++e) {
     const Beam& b = beams[e];
     out << e << ',' << b.v0 << ',' << b.v1 << ',' << FabNumber(b.length) << ','
         << FabNumber(b.plane_normal.x()) << ',' << FabNumber(b.plane_normal.y()) << ','
         << FabNumber(b.plane_normal.z()) << ',' << FabNumber(b.twist_degrees) << ','
         << (nodes[size_t(b.v0)].cone ? "cone" : "normal") << ','
-        << (nodes[size_t(b.v1)].cone ? "cone" : "normal") << '\n';
+        << (nodes[size_t(b.v1)].cone ? "cone" : "normal");
+    if (far_edges) {
+      for (const Eigen::Vector3d* p : {&b.offset0, &b.offset1}) {
+        out << ',' << FabNumber(p->x()) << ',' << FabNumber(p->y()) << ',' << FabNumber(p->z());
+      }
+    }
+    out << '\n';
   }
   WriteTextFile(path, out.str(), key);
 }

@@ -36,8 +36,9 @@ void WriteCuttingDxf(const std::string& path, const SheetLayout& layout,
 void WriteNodesCsv(const std::string& path, const std::vector<Eigen::Vector3d>& points,
                    const std::vector<NodeAxis>& nodes, const std::string& key);
 
-// output.beams: one row per edge.
+// output.beams: one row per edge; with `far_edges`, the ends of its far
+// edge (Beam::offset0, offset1) too.
 void WriteBeamsCsv(const std::string& path, const std::vector<Beam>& beams,
-                   const std::vector<NodeAxis>& nodes, const std::string& key);
+                   const std::vector<NodeAxis>& nodes, bool far_edges, const std::string& key);
 
 }  // namespace archgeo

@@ -229,6 +229,20 @@ TEST(NodeAxes, ConicalTorusNetGetsItsConeAxesAndUntwistedBeams) {
   }
   // Neighbouring cone axes lie in the bisector plane of the edge's faces.
   for (const Beam& b : Beams(torus, nodes)) EXPECT_LE(b.twist_degrees, 1e-9);
+  // The beams' far edges at depth d: at v + d / cos φ · axis, where the
+  // face planes offset by d meet (a face offset, on either side).
+  for (const double depth : {7.5, -3.0}) {
+    const std::vector<Eigen::Vector3d> far = OffsetNodes(torus, nodes, depth);
+    EXPECT_LE(FaceOffsetError(torus, far, depth), 1e-9 * std::abs(depth));
+    for (size_t v = 0; v < far.size(); ++v) {
+      EXPECT_LE((far[v] - torus.points[v] - depth * nodes[v].offset_factor * nodes[v].axis).norm(),
+                1e-9 * std::abs(depth));
+    }
+    for (const Beam& b : Beams(torus, nodes, depth)) {
+      EXPECT_EQ(b.offset0, far[size_t(b.v0)]);
+      EXPECT_EQ(b.offset1, far[size_t(b.v1)]);
+    }
+  }
   // Without a cone bound: area-weighted vertex normals, which make unequal
   // angles with the faces where the faces above and below a vertex differ
   // in size (the axis of a cone is then not the normal).
@@ -245,6 +259,8 @@ TEST(NodeAxes, ConicalTorusNetGetsItsConeAxesAndUntwistedBeams) {
     spread = std::max(spread, high - low);
   }
   EXPECT_GT(spread, 1e-3);
+  // Offset along those normals the nodes miss the offset face planes.
+  EXPECT_GT(FaceOffsetError(torus, OffsetNodes(torus, normals, 7.5), 7.5), 1e-3 * 7.5);
   // A net moved off the torus at random: its vertex normals twist the beams.
   PlainMesh moved = torus;
   std::mt19937 random(3);

@@ -331,6 +331,10 @@ TEST_F(FabricationOutputs, MillimetresWithoutUnitsAreRefused) {
   const Outcome cutting = Solve("--set output.cutting=" + Path("panels.dxf"));
   EXPECT_EQ(cutting.code, 2);
   EXPECT_NE(cutting.output.find("output.cutting"), std::string::npos) << cutting.output;
+  const Outcome depth = Solve("--set beams.depth=200 --set output.beams=" + Path("beams.csv"));
+  EXPECT_EQ(depth.code, 2);
+  EXPECT_NE(depth.output.find("beams.depth"), std::string::npos) << depth.output;
+  EXPECT_FALSE(std::filesystem::exists(Path("beams.csv")));
   const Outcome named = Solve("--set units=mm --set output.panels=" + Path("panels.txt"));
   EXPECT_EQ(named.code, 2);
   EXPECT_NE(named.output.find(".csv"), std::string::npos) << named.output;
@@ -348,7 +352,8 @@ TEST_F(FabricationOutputs, ConicalNetGetsConeAxes) {
       "conical.yaml",
       "problem: custom\nmesh: torus.obj\nterms: {conical: 1, pq_diagonal: 1, anchor: 0.01}\n"
       "tolerance: {conical_max: 1.0e-6, pq_normalized_max: 1.0e-6}\n"
-      "output: {nodes: nodes.csv, beams: beams.csv}\n");
+      "units: m\nbeams: {depth: 150}\n"
+      "output: {nodes: nodes.csv, beams: beams.csv, report: report.json}\n");
   const Outcome o = Shell(std::string(ARCHGEO_BINARY) + " solve " + spec);
   ASSERT_EQ(o.code, 0) << o.output;
   const Csv nodes = ReadCsv(ReadFile(Path("nodes.csv")));
@@ -372,6 +377,24 @@ TEST_F(FabricationOutputs, ConicalNetGetsConeAxes) {
   const Csv beams = ReadCsv(ReadFile(Path("beams.csv")));
   ASSERT_EQ(beams.rows.size(), 2u * 24u * 12u);
   for (const auto& row : beams.rows) EXPECT_LE(std::stod(row.at("twist_degrees")), 1e-6);
+  // The far edges 150 mm along the cone axes, where the faces offset by
+  // 0.15 m meet: at 0.15 · face_offset_factor along the axis.
+  const auto Column = [](const std::map<std::string, std::string>& row, const std::string& name) {
+    const std::string p = name.empty() ? "" : name + "_";
+    return Eigen::Vector3d(std::stod(row.at(p + "x")), std::stod(row.at(p + "y")),
+                           std::stod(row.at(p + "z")));
+  };
+  for (const auto& row : beams.rows) {
+    for (const char* end : {"0", "1"}) {
+      const auto& node = nodes.rows.at(size_t(std::stoi(row.at(std::string("v") + end))));
+      const Eigen::Vector3d expected =
+          Column(node, "") + 0.15 * std::stod(node.at("face_offset_factor")) * Column(node, "axis");
+      EXPECT_LE((Column(row, std::string("far") + end) - expected).norm(), 1e-9);
+    }
+  }
+  // Within 1 µm of the faces offset by 150 mm (the conical residual is 1e-6).
+  EXPECT_LE(Report().at("fabrication").at("beam_far_edge_face_offset_error_max_mm").get<double>(),
+            1e-3);
 }
 
 }  // namespace ARCHGEO_UNITY_ID

@@ -100,6 +100,11 @@ void CheckFabricationSettings(const Settings& s) {
                   "the sheets (cutting.sheet, cutting.gap) are in millimetres: set `units`, the "
                   "mesh's unit (mm, cm, m, in, ft)");
   }
+  if (s.Number("beams.depth") != 0) {
+    throw s.Error("beams.depth",
+                  "a beam depth in millimetres needs the mesh's unit: set `units` (mm, cm, m, "
+                  "in, ft)");
+  }
 }
 
 nlohmann::json WriteFabrication(const Mesh& output, const Settings& s,
@@ -160,11 +165,16 @@ nlohmann::json WriteFabrication(const Mesh& output, const Settings& s,
       WriteNodesCsv(file("output.nodes"), plain.points, nodes, "output.nodes");
     }
     if (!file("output.beams").empty()) {
-      const std::vector<Beam> beams = Beams(plain, nodes);
+      const double depth = mm > 0 ? s.Number("beams.depth") / mm : 0.0;
+      const std::vector<Beam> beams = Beams(plain, nodes, depth);
       double twist = 0;
       for (const Beam& b : beams) twist = std::max(twist, b.twist_degrees);
       report["beam_twist_max_degrees"] = twist;
-      WriteBeamsCsv(file("output.beams"), beams, nodes, "output.beams");
+      if (depth != 0) {
+        const double error = FaceOffsetError(plain, OffsetNodes(plain, nodes, depth), depth);
+        report["beam_far_edge_face_offset_error_max_mm"] = error * mm;
+      }
+      WriteBeamsCsv(file("output.beams"), beams, nodes, depth != 0, "output.beams");
     }
   }
   return report;

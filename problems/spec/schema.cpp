@@ -146,6 +146,10 @@ std::vector<Key> CommonKeys(const ProblemDecl& d) {
   keys.push_back(sheet);
   keys.push_back(NumberKey("cutting.gap", 10, 0, 1e9,
                            "millimetres between panels and from the sheet's edges (output.cutting)"));
+  keys.push_back(NumberKey("beams.depth", 0, -1e9, 1e9,
+                           "millimetres from the panels to the beams' far edges along the node "
+                           "axes, positive on the side the face normals point to (output.beams: "
+                           "columns far0_*, far1_*; needs `units`); 0: not written"));
   return keys;
 }
 
