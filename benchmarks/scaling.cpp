@@ -179,6 +179,7 @@ int Main(int argc, char** argv) {
          "metrics, report), the time to tolerance; peak MB: its maximum resident set (wait4\n"
          "ru_maxrss); max move: the largest vertex displacement, % of the bounding-box diagonal;\n"
          "seed: the roof's noise seed (archgeo generate --seed); CG steps: all PCG rounds'.\n";
+  return 0;
 }
 
 }  // namespace ARCHGEO_UNITY_ID

@@ -253,6 +253,7 @@ int Main(int argc, char** argv) {
   RegisterBenchmarks();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
+  return 0;
 }
 
 }  // namespace ARCHGEO_UNITY_ID

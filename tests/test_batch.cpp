@@ -120,7 +120,9 @@ TEST(AutoDiff, ACostFunctionGivesTheBitsOfCeres) {
       EXPECT_EQ(rm, rt);
       EXPECT_EQ(jm.size(), jt.size());
       for (size_t b = 0; b < sizes.size(); ++b) {
-        if (pm[b]) EXPECT_EQ(jm[b], jt[b]) << "block " << b;
+        if (pm[b]) {
+          EXPECT_EQ(jm[b], jt[b]) << "block " << b;
+        }
       }
       // Without Jacobians: the functor on doubles, on both sides (its value
       // may differ from the Jets' in the last bit: a Jet divides by

@@ -268,10 +268,18 @@ void ExpectBoundaryOnSides(Solution& s, int nu, int nv, const ParameterDomain& d
   for (int j = 0; j < nv; ++j) {
     for (int i = 0; i < nu; ++i) {
       const double* uv = s.store->At("uv", j * nu + i);
-      if (i == 0) EXPECT_EQ(uv[0], d.u0) << i << ", " << j;
-      if (i == nu - 1) EXPECT_EQ(uv[0], d.u1) << i << ", " << j;
-      if (j == 0) EXPECT_EQ(uv[1], d.v0) << i << ", " << j;
-      if (j == nv - 1) EXPECT_EQ(uv[1], d.v1) << i << ", " << j;
+      if (i == 0) {
+        EXPECT_EQ(uv[0], d.u0) << i << ", " << j;
+      }
+      if (i == nu - 1) {
+        EXPECT_EQ(uv[0], d.u1) << i << ", " << j;
+      }
+      if (j == 0) {
+        EXPECT_EQ(uv[1], d.v0) << i << ", " << j;
+      }
+      if (j == nv - 1) {
+        EXPECT_EQ(uv[1], d.v1) << i << ", " << j;
+      }
     }
   }
 }
