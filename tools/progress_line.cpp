@@ -19,13 +19,19 @@ std::string Seconds(double s) { return s < 10 ? FormatNumber("%.1f s", s) : Form
 
 void ProgressLine::Show(const ProgressEvent& event) {
   Track(event);
-  // Iterations redraw at most ten times a second; rounds and notes always.
+  // Iterations redraw at most ten times a second, except a round's first;
+  // rounds and notes always.
   const auto now = std::chrono::steady_clock::now();
-  if (event.kind == ProgressEvent::Kind::kIteration && shown_ &&
+  const bool new_round = event.stage != drawn_stage_ || event.stage_round != drawn_round_;
+  if (event.kind == ProgressEvent::Kind::kIteration && shown_ && !new_round &&
       now - last_draw_ < std::chrono::milliseconds(100)) {
     return;
   }
   last_draw_ = now;
+  if (event.kind == ProgressEvent::Kind::kIteration) {
+    drawn_stage_ = event.stage;
+    drawn_round_ = event.stage_round;
+  }
   std::string text = Text(event);
   const size_t width = size_t(std::max(20, Width() - 1));
   if (text.size() > width) text = text.substr(0, width - 3) + "...";

@@ -4,7 +4,8 @@
 // place (carriage return, erase to the end): the stage and round k of at
 // most n, the iteration, the goal tolerance's measure against its target,
 // the seconds so far and an estimate of the rest. Notes (stage messages)
-// take the line until the next event. Nothing scrolls; Clear() before the
+// take the line until the next event. Iterations redraw at most ten times a
+// second, each round's first always. Nothing scrolls; Clear() before the
 // summary is printed.
 #pragma once
 
@@ -33,6 +34,8 @@ class ProgressLine {
   std::FILE* out_;
   bool shown_ = false;
   std::chrono::steady_clock::time_point last_draw_{};
+  std::string drawn_stage_;  // the round of the last iteration drawn
+  int drawn_round_ = -1;
   // The stage being estimated: its goal and time at its start and at the
   // end of its last finished round.
   std::string stage_;
