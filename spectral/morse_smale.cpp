@@ -1,0 +1,210 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "spectral/morse_smale.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "spectral/morse_smale_detail.h"
+
+namespace archgeo {
+namespace {
+
+using morse_smale::Draft;
+
+// f(u) > f(v), ties broken by index (as spectral/critical_points.h).
+bool MsAbove(const Eigen::VectorXd& f, int u, int v) {
+  return f[u] > f[v] || (f[u] == f[v] && u > v);
+}
+
+// The steepest path from `start` (already past the saddle): to the highest
+// (lowest) neighbour while there is a higher (lower) one.
+std::vector<int> MsSteepest(const std::vector<std::vector<int>>& rings, const Eigen::VectorXd& f,
+                            int saddle, int start, bool up) {
+  std::vector<int> path{saddle, start};
+  for (int v = start;;) {
+    int next = v;
+    for (int u : rings[v]) {
+      if (up ? MsAbove(f, u, next) : MsAbove(f, next, u)) next = u;
+    }
+    if (next == v) return path;
+    path.push_back(v = next);
+  }
+}
+
+// `path` without its loops (a vertex met again cuts what lay between).
+std::vector<int> MsLoopErased(const std::vector<int>& path) {
+  std::vector<int> out;
+  std::unordered_map<int, size_t> at;
+  for (int v : path) {
+    auto it = at.find(v);
+    if (it != at.end()) {
+      for (size_t i = it->second + 1; i < out.size(); ++i) at.erase(out[i]);
+      out.resize(it->second + 1);
+      continue;
+    }
+    at[v] = out.size();
+    out.push_back(v);
+  }
+  return out;
+}
+
+struct MsState {
+  std::vector<MorseSmaleNode> nodes;
+  std::vector<bool> node_alive;
+  std::vector<Draft> drafts;
+};
+
+// Classifies every vertex and traces one steepest path per saddle wedge.
+MsState MsTrace(const std::vector<std::vector<int>>& rings, const Eigen::VectorXd& f) {
+  MsState s;
+  std::vector<int> node_of(rings.size(), -1);
+  std::vector<std::pair<int, std::vector<std::vector<int>>>> saddle_wedges;
+  for (int v = 0; v < int(rings.size()); ++v) {
+    const std::vector<int>& ring = rings[v];
+    const size_t n = ring.size();
+    size_t changes = 0, first = n;
+    for (size_t i = 0; i < n; ++i) {
+      if (MsAbove(f, ring[i], v) != MsAbove(f, ring[(i + 1) % n], v)) {
+        ++changes;
+        if (first == n) first = (i + 1) % n;
+      }
+    }
+    if (changes == 0) {
+      node_of[v] = int(s.nodes.size());
+      s.nodes.push_back({v, MsAbove(f, v, ring[0]) ? 1 : -1, 0});
+    } else if (changes >= 4) {
+      std::vector<std::vector<int>> wedges;
+      for (size_t k = 0; k < n; ++k) {  // from the first vertex after a sign change
+        const int u = ring[(first + k) % n];
+        if (k == 0 || MsAbove(f, u, v) != MsAbove(f, wedges.back().back(), v)) wedges.emplace_back();
+        wedges.back().push_back(u);
+      }
+      node_of[v] = int(s.nodes.size());
+      s.nodes.push_back({v, 0, int(changes / 2) - 1});
+      saddle_wedges.emplace_back(node_of[v], std::move(wedges));
+    }
+  }
+  for (auto& [node, wedges] : saddle_wedges) {
+    const int v = s.nodes[size_t(node)].vertex;
+    for (std::vector<int>& wedge : wedges) {
+      const bool up = MsAbove(f, wedge[0], v);
+      int start = wedge[0];
+      for (int u : wedge) {
+        if (up ? MsAbove(f, u, start) : MsAbove(f, start, u)) start = u;
+      }
+      Draft d;
+      d.saddle = node;
+      d.ascending = up;
+      d.guide = MsSteepest(rings, f, v, start, up);
+      d.target = node_of[size_t(d.guide.back())];
+      d.wedge = std::move(wedge);
+      s.drafts.push_back(std::move(d));
+    }
+  }
+  s.node_alive.assign(s.nodes.size(), true);
+  return s;
+}
+
+struct MsPair {
+  int saddle = -1, extremum = -1, partner = -1;
+  double persistence = std::numeric_limits<double>::infinity();
+};
+
+// The least persistent pair of a simple saddle and an extremum joined by
+// exactly one of its arcs; `by_saddle[s]` the saddle's live drafts.
+MsPair MsWeakest(const MsState& s, const std::vector<std::vector<int>>& by_saddle,
+                 const Eigen::VectorXd& f) {
+  MsPair best;
+  for (size_t n = 0; n < s.nodes.size(); ++n) {
+    if (!s.node_alive[n] || s.nodes[n].kind != 0 || s.nodes[n].multiplicity != 1) continue;
+    for (bool up : {true, false}) {
+      std::vector<int> targets;
+      for (int d : by_saddle[n]) {
+        if (s.drafts[size_t(d)].ascending == up) targets.push_back(s.drafts[size_t(d)].target);
+      }
+      if (targets.size() != 2 || targets[0] == targets[1]) continue;
+      for (int i = 0; i < 2; ++i) {
+        const double p = std::abs(f[s.nodes[n].vertex] - f[s.nodes[size_t(targets[i])].vertex]);
+        if (p < best.persistence) best = {int(n), targets[i], targets[1 - i], p};
+      }
+    }
+  }
+  return best;
+}
+
+// Removes the pair; the other arcs into its extremum go on through the
+// pair's arc to the partner.
+void MsCancel(MsState& s, std::vector<std::vector<int>>& by_saddle, const MsPair& p) {
+  std::vector<int> to_extremum, to_partner;
+  for (int d : by_saddle[size_t(p.saddle)]) {
+    Draft& draft = s.drafts[size_t(d)];
+    if (draft.target == p.extremum) to_extremum = draft.guide;
+    if (draft.target == p.partner) to_partner = draft.guide;
+    draft.alive = false;
+  }
+  by_saddle[size_t(p.saddle)].clear();
+  std::vector<int> detour(to_extremum.rbegin() + 1, to_extremum.rend());  // back to the saddle
+  detour.insert(detour.end(), to_partner.begin() + 1, to_partner.end());
+  for (Draft& d : s.drafts) {
+    if (!d.alive || d.target != p.extremum) continue;
+    d.guide.insert(d.guide.end(), detour.begin(), detour.end());
+    d.guide = MsLoopErased(d.guide);
+    d.target = p.partner;
+  }
+  s.node_alive[size_t(p.saddle)] = s.node_alive[size_t(p.extremum)] = false;
+}
+
+void MsCancelPairs(MsState& s, const Eigen::VectorXd& f, const MorseSmaleOptions& options,
+                   int& cancelled) {
+  if (options.persistence <= 0 && options.target_extrema <= 0) return;
+  std::vector<std::vector<int>> by_saddle(s.nodes.size());
+  for (size_t d = 0; d < s.drafts.size(); ++d) by_saddle[size_t(s.drafts[d].saddle)].push_back(int(d));
+  int extrema = 0;
+  for (const MorseSmaleNode& n : s.nodes) extrema += n.kind != 0;
+  while (options.target_extrema <= 0 || extrema > options.target_extrema) {
+    const MsPair p = MsWeakest(s, by_saddle, f);
+    if (p.saddle < 0) return;
+    if (options.target_extrema <= 0 && p.persistence > options.persistence) return;
+    MsCancel(s, by_saddle, p);
+    --extrema;
+    ++cancelled;
+  }
+}
+
+}  // namespace
+
+MorseSmaleComplex BuildMorseSmale(const std::vector<Eigen::Vector3d>& points,
+                                  const std::vector<std::array<int, 3>>& triangles,
+                                  const std::vector<std::vector<int>>& rings,
+                                  const Eigen::VectorXd& f, const MorseSmaleOptions& options) {
+  if (rings.size() != points.size() || f.size() != Eigen::Index(points.size())) {
+    throw std::invalid_argument("one ring and one function value per vertex");
+  }
+  for (const std::vector<int>& ring : rings) {
+    if (ring.size() < 3) throw std::invalid_argument("the Morse-Smale complex needs a closed mesh");
+  }
+  MorseSmaleComplex out;
+  MsState s = MsTrace(rings, f);
+  MsCancelPairs(s, f, options, out.cancelled);
+  std::vector<int> renumber(s.nodes.size(), -1);
+  std::vector<bool> node_vertex(points.size(), false);
+  for (size_t n = 0; n < s.nodes.size(); ++n) {
+    if (!s.node_alive[n]) continue;
+    renumber[n] = int(out.nodes.size());
+    out.nodes.push_back(s.nodes[n]);
+    node_vertex[size_t(s.nodes[n].vertex)] = true;
+    const MorseSmaleNode& node = s.nodes[n];
+    out.maxima += node.kind == 1;
+    out.minima += node.kind == -1;
+    out.saddles += node.multiplicity;
+  }
+  morse_smale::EmbedArcs(points, rings, node_vertex, s.drafts, renumber, out);
+  morse_smale::BuildCells(int(points.size()), triangles, out);
+  return out;
+}
+
+}  // namespace archgeo

@@ -1,0 +1,94 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// archgeo — the Morse–Smale complex of a function on the vertices of a closed
+// triangle mesh (Gebreiter 2012, §7.1; Edelsbrunner et al. 2001; Dong et al.
+// 2006), built along mesh edges:
+//  1. from each saddle one steepest ascending (descending) path per upper
+//     (lower) wedge of its one-ring, each step to the highest (lowest)
+//     neighbour, up to the maximum (minimum) it reaches;
+//  2. saddle–extremum pairs joined by exactly one separatrix cancelled, the
+//     least persistent |f(saddle) − f(extremum)| first, down to a threshold
+//     or a number of extrema; the other saddles' arcs into the cancelled
+//     extremum rerouted through the pair to its partner;
+//  3. the degeneracies of §7.1.3: arcs are placed one by one; an arc whose
+//     path meets an arc already placed, a node or another saddle's one-ring
+//     before its extremum (merging separatrices, saddle–saddle connections,
+//     the rerouted arcs) keeps its path up to there and goes on by the
+//     shortest path (edge lengths) over free vertices, alongside the rest of
+//     its path first; what has no such path is left out and counted
+//     `unresolved` (passes that place those saddles first try again);
+//  4. cells: the triangles between the arcs, each checked to be a disc with
+//     four distinct corners max, saddle, min, saddle.
+// Plain arrays in, plain structs out.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace archgeo {
+
+struct MorseSmaleNode {
+  int vertex = 0;
+  int kind = 0;          // +1 maximum, −1 minimum, 0 saddle
+  int multiplicity = 0;  // saddles: m − 1 for 2m sign changes around the ring
+};
+
+struct MorseSmaleArc {
+  int saddle = 0, extremum = 0;  // node indices
+  bool ascending = true;
+  std::vector<int> path;         // vertices, the saddle's first, the extremum's last
+  std::array<int, 2> side_cells{{-1, -1}};  // the cells on either side of its first edge
+};
+
+struct MorseSmaleCell {
+  std::vector<int> corners;  // node indices on the cell's closure
+  int euler = 0;             // V − E + F of the closure: 1 for a disc
+  bool slit = false;         // an arc with this cell on both sides
+  bool valid = false;        // a disc with corners max, min and two saddles
+};
+
+struct MorseSmaleComplex {
+  std::vector<MorseSmaleNode> nodes;  // the remaining nodes (cancelled ones dropped)
+  std::vector<MorseSmaleArc> arcs;    // per saddle, in the cyclic order of its wedges
+  std::vector<MorseSmaleCell> cells;
+  std::vector<int> cell_of_triangle;
+  int maxima = 0, minima = 0, saddles = 0;  // saddles counted by multiplicity
+  int cancelled = 0;   // saddle–extremum pairs
+  int rerouted = 0;    // arcs replaced by shortest paths
+  int unresolved = 0;  // arcs with no path clear of the others (left out of `arcs`)
+  int shared_vertices = 0;  // vertices on two arcs, or an arc through a node
+  int invalid_cells = 0;
+  bool valid = false;  // no unresolved arc, no shared vertex, every cell valid
+};
+
+struct MorseSmaleOptions {
+  double persistence = 0;  // cancel pairs with |f(s) − f(e)| ≤ this
+  int target_extrema = 0;  // or cancel until max + min ≤ this (0: no target)
+};
+
+// `rings[v]`: v's neighbours in cyclic order, `triangles` the same mesh,
+// which must be closed (throws std::invalid_argument otherwise).
+MorseSmaleComplex BuildMorseSmale(const std::vector<Eigen::Vector3d>& points,
+                                  const std::vector<std::array<int, 3>>& triangles,
+                                  const std::vector<std::vector<int>>& rings,
+                                  const Eigen::VectorXd& f, const MorseSmaleOptions& options);
+
+// The quasi-dual (§7.1.4): the extrema as vertices, one quad per simple
+// saddle (its max, min, max, min in cyclic order), a multi-saddle's polygon
+// split by diagonals from its first maximum into quads.
+struct QuadBaseComplex {
+  std::vector<Eigen::Vector3d> points;
+  std::vector<std::array<int, 4>> quads;
+  int degenerate_quads = 0;  // a corner repeated (a saddle's two arcs to one extremum)
+  int missing_saddles = 0;     // saddles without all their arcs: no quad
+  int edges = 0;               // one per cell of the complex (its max–min diagonal), and the diagonals
+  int irregular_vertices = 0;  // valence ≠ 4
+  int euler = 0;               // V − E + F
+};
+
+QuadBaseComplex QuasiDual(const MorseSmaleComplex& complex,
+                          const std::vector<Eigen::Vector3d>& points);
+
+}  // namespace archgeo

@@ -1,0 +1,179 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The cells of the Morse–Smale complex, their check, and its quasi-dual.
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
+#include <stdexcept>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "spectral/morse_smale_detail.h"
+
+namespace archgeo {
+namespace {
+
+uint64_t CellEdgeKey(int a, int b) {
+  return (uint64_t(uint32_t(std::min(a, b))) << 32) | uint32_t(std::max(a, b));
+}
+
+int CellFind(std::vector<int>& parent, int i) {
+  while (parent[size_t(i)] != i) i = parent[size_t(i)] = parent[size_t(parent[size_t(i)])];
+  return i;
+}
+
+// Vertices on two arcs (or twice on one), and arcs through a node.
+int CellSharedVertices(const MorseSmaleComplex& c, int vertex_count) {
+  std::vector<int> uses(static_cast<size_t>(vertex_count), 0);
+  std::vector<bool> node(static_cast<size_t>(vertex_count), false);
+  for (const MorseSmaleNode& n : c.nodes) node[size_t(n.vertex)] = true;
+  int shared = 0;
+  for (const MorseSmaleArc& a : c.arcs) {
+    for (size_t i = 1; i + 1 < a.path.size(); ++i) {
+      shared += node[size_t(a.path[i])] || uses[size_t(a.path[i])]++ > 0;
+    }
+  }
+  return shared;
+}
+
+// Each cell a disc with corners max, min, saddle, saddle (four distinct).
+bool CellValid(const MorseSmaleCell& cell, const std::vector<MorseSmaleNode>& nodes) {
+  if (cell.euler != 1 || cell.slit || cell.corners.size() != 4) return false;
+  int kinds[3] = {0, 0, 0};
+  for (int n : cell.corners) ++kinds[nodes[size_t(n)].kind + 1];
+  return kinds[0] == 1 && kinds[1] == 2 && kinds[2] == 1;
+}
+
+}  // namespace
+
+namespace morse_smale {
+
+void BuildCells(int vertex_count, const std::vector<std::array<int, 3>>& triangles,
+                MorseSmaleComplex& c) {
+  std::unordered_set<uint64_t> cut;
+  for (const MorseSmaleArc& a : c.arcs) {
+    for (size_t i = 0; i + 1 < a.path.size(); ++i) cut.insert(CellEdgeKey(a.path[i], a.path[i + 1]));
+  }
+  std::unordered_map<uint64_t, std::array<int, 2>> sides;
+  sides.reserve(triangles.size() * 2);
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      auto [it, fresh] =
+          sides.try_emplace(CellEdgeKey(triangles[t][size_t(k)], triangles[t][size_t((k + 1) % 3)]),
+                            std::array<int, 2>{int(t), -1});
+      if (!fresh) it->second[1] = int(t);
+    }
+  }
+  std::vector<int> parent(triangles.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const auto& [key, s] : sides) {
+    if (s[1] < 0) throw std::invalid_argument("the Morse-Smale complex needs a closed mesh");
+    if (!cut.count(key)) parent[size_t(CellFind(parent, s[0]))] = CellFind(parent, s[1]);
+  }
+  std::vector<int> cell_of_root(triangles.size(), -1);
+  c.cell_of_triangle.assign(triangles.size(), -1);
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    int& cell = cell_of_root[size_t(CellFind(parent, int(t)))];
+    if (cell < 0) {
+      cell = int(c.cells.size());
+      c.cells.emplace_back();
+    }
+    c.cell_of_triangle[t] = cell;
+    ++c.cells[size_t(cell)].euler;  // F
+  }
+  for (const auto& [key, s] : sides) {
+    const int a = c.cell_of_triangle[size_t(s[0])], b = c.cell_of_triangle[size_t(s[1])];
+    --c.cells[size_t(a)].euler;  // E
+    if (a != b) --c.cells[size_t(b)].euler;
+    if (a == b && cut.count(key)) c.cells[size_t(a)].slit = true;
+  }
+  std::vector<std::vector<int>> cells_at(static_cast<size_t>(vertex_count));
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    for (int v : triangles[t]) cells_at[size_t(v)].push_back(c.cell_of_triangle[t]);
+  }
+  std::vector<int> node_of(static_cast<size_t>(vertex_count), -1);
+  for (size_t n = 0; n < c.nodes.size(); ++n) node_of[size_t(c.nodes[n].vertex)] = int(n);
+  for (size_t v = 0; v < cells_at.size(); ++v) {
+    std::vector<int>& around = cells_at[v];
+    std::sort(around.begin(), around.end());
+    around.erase(std::unique(around.begin(), around.end()), around.end());
+    for (int cell : around) {
+      ++c.cells[size_t(cell)].euler;  // V
+      if (node_of[v] >= 0) c.cells[size_t(cell)].corners.push_back(node_of[v]);
+    }
+  }
+  for (MorseSmaleArc& a : c.arcs) {
+    const std::array<int, 2>& s = sides.at(CellEdgeKey(a.path[0], a.path[1]));
+    a.side_cells = {c.cell_of_triangle[size_t(s[0])], c.cell_of_triangle[size_t(s[1])]};
+  }
+  for (MorseSmaleCell& cell : c.cells) {
+    cell.valid = CellValid(cell, c.nodes);
+    c.invalid_cells += !cell.valid;
+  }
+  c.shared_vertices = CellSharedVertices(c, vertex_count);
+  c.valid = c.unresolved == 0 && c.shared_vertices == 0 && c.invalid_cells == 0 && !c.cells.empty();
+}
+
+}  // namespace morse_smale
+
+QuadBaseComplex QuasiDual(const MorseSmaleComplex& c, const std::vector<Eigen::Vector3d>& points) {
+  QuadBaseComplex out;
+  std::vector<int> vertex_of(c.nodes.size(), -1);
+  for (size_t n = 0; n < c.nodes.size(); ++n) {
+    if (c.nodes[n].kind == 0) continue;
+    vertex_of[n] = int(out.points.size());
+    out.points.push_back(points[size_t(c.nodes[n].vertex)]);
+  }
+  // A saddle's arcs, consecutive in `arcs` and in the cyclic order of its
+  // wedges, alternate between maxima and minima; the dual edge between two
+  // consecutive arcs crosses the cell they share.
+  std::unordered_map<long, std::array<int, 2>> edges;  // key: the cell, or a diagonal
+  long diagonals = long(c.cells.size());
+  for (size_t i = 0; i < c.arcs.size();) {
+    size_t j = i;
+    while (j < c.arcs.size() && c.arcs[j].saddle == c.arcs[i].saddle) ++j;
+    const size_t n = j - i;
+    if (int(n) != 2 * (c.nodes[size_t(c.arcs[i].saddle)].multiplicity + 1)) {
+      ++out.missing_saddles;
+      i = j;
+      continue;
+    }
+    const size_t first = c.arcs[i].ascending ? i : i + 1;  // a maximum first
+    std::vector<int> polygon;
+    std::vector<long> side;  // side k: between corners k and k + 1
+    for (size_t k = 0; k < n; ++k) {
+      const MorseSmaleArc& a = c.arcs[i + (first - i + k) % n];
+      const MorseSmaleArc& b = c.arcs[i + (first - i + k + 1) % n];
+      polygon.push_back(vertex_of[size_t(a.extremum)]);
+      long shared = -1;
+      for (int x : a.side_cells) {
+        if (x == b.side_cells[0] || x == b.side_cells[1]) shared = x;
+      }
+      side.push_back(shared >= 0 ? shared : diagonals++);
+    }
+    long previous = side[0];  // quads (0, k, k+1, k+2), split by diagonals from corner 0
+    for (size_t k = 1; k + 2 < n; k += 2) {
+      const long closing = k + 3 == n ? side[n - 1] : diagonals++;
+      const std::array<int, 4> q{polygon[0], polygon[k], polygon[k + 1], polygon[k + 2]};
+      const std::array<long, 4> e{previous, side[k], side[k + 1], closing};
+      for (size_t m = 0; m < 4; ++m) edges[e[m]] = {q[m], q[(m + 1) % 4]};
+      std::array<int, 4> sorted = q;
+      std::sort(sorted.begin(), sorted.end());
+      out.degenerate_quads += std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
+      out.quads.push_back(q);
+      previous = closing;
+    }
+    i = j;
+  }
+  std::vector<int> valence(out.points.size(), 0);
+  for (const auto& [key, e] : edges) {
+    ++valence[size_t(e[0])];
+    ++valence[size_t(e[1])];
+  }
+  for (int v : valence) out.irregular_vertices += v != 4;
+  out.edges = int(edges.size());
+  out.euler = int(out.points.size()) - out.edges + int(out.quads.size());
+  return out;
+}
+
+}  // namespace archgeo

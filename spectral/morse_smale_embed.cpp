@@ -1,0 +1,193 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The degeneracies of the Morse–Smale complex (Gebreiter 2012, §7.1.3):
+// guides that touch another guide or a node before their extremum are
+// replaced by shortest paths clear of everything already placed.
+#include <algorithm>
+#include <functional>
+#include <limits>
+#include <queue>
+
+#include "spectral/morse_smale_detail.h"
+
+namespace archgeo {
+namespace morse_smale {
+namespace {
+
+// Whether an arc may run through v: `used` marks the nodes and the arcs
+// placed, `reserved` the one-rings of the saddles (kept for their own arcs).
+// `corridor`, when not empty, the only vertices a rerouted tail may take.
+struct EmbedSpace {
+  std::vector<bool> used, reserved;
+  std::vector<bool> corridor;
+  bool Free(int v, int target) const {
+    return v == target || (!used[size_t(v)] && !reserved[size_t(v)] &&
+                           (corridor.empty() || corridor[size_t(v)]));
+  }
+};
+
+// The vertices within `rings_out` rings of the guide's vertices from `from` on.
+std::vector<bool> EmbedCorridor(const std::vector<std::vector<int>>& rings,
+                                const std::vector<int>& guide, size_t from, int rings_out) {
+  std::vector<bool> in(rings.size(), false);
+  std::vector<int> front(guide.begin() + long(from), guide.end());
+  for (int v : front) in[size_t(v)] = true;
+  for (int r = 0; r < rings_out; ++r) {
+    std::vector<int> next;
+    for (int v : front) {
+      for (int u : rings[size_t(v)]) {
+        if (!in[size_t(u)]) {
+          in[size_t(u)] = true;
+          next.push_back(u);
+        }
+      }
+    }
+    front = std::move(next);
+  }
+  return in;
+}
+
+// The shortest path from `from` through one of `sources` (unused vertices
+// adjacent to it) to `target`, through free vertices only; empty when there
+// is none.
+std::vector<int> EmbedShortest(const std::vector<Eigen::Vector3d>& points,
+                               const std::vector<std::vector<int>>& rings, const EmbedSpace& space,
+                               int from, const std::vector<int>& sources, int target) {
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> dist(points.size(), inf);
+  std::vector<int> previous(points.size(), -1);
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+  for (int u : sources) {
+    if (space.used[size_t(u)] && u != target) continue;
+    dist[size_t(u)] = (points[size_t(u)] - points[size_t(from)]).norm();
+    previous[size_t(u)] = from;
+    queue.push({dist[size_t(u)], u});
+  }
+  while (!queue.empty()) {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if (d > dist[size_t(v)]) continue;
+    if (v == target) break;
+    for (int u : rings[size_t(v)]) {
+      if (!space.Free(u, target)) continue;
+      const double du = d + (points[size_t(u)] - points[size_t(v)]).norm();
+      if (du < dist[size_t(u)]) {
+        dist[size_t(u)] = du;
+        previous[size_t(u)] = v;
+        queue.push({du, u});
+      }
+    }
+  }
+  if (dist[size_t(target)] == inf) return {};
+  std::vector<int> path;
+  for (int v = target; v != from; v = previous[size_t(v)]) path.push_back(v);
+  path.push_back(from);
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
+// The guide up to the first vertex it may not use, then the shortest path
+// on from there; from the wedge when that fails.
+std::vector<int> EmbedOne(const std::vector<Eigen::Vector3d>& points,
+                          const std::vector<std::vector<int>>& rings, EmbedSpace& space,
+                          const Draft& d, bool& rerouted) {
+  const int target = d.guide.back();
+  std::vector<int> path{d.guide.front()};
+  if (!space.used[size_t(d.guide[1])]) {
+    path.push_back(d.guide[1]);
+    for (size_t i = 2; i < d.guide.size() && space.Free(d.guide[i], target); ++i) {
+      path.push_back(d.guide[i]);
+    }
+  }
+  if (path.back() == target) return path;
+  rerouted = true;
+  if (path.size() > 1) {
+    for (int v : path) space.used[size_t(v)] = true;
+    std::vector<int> tail;
+    // Alongside the arc it met first (one ring, then two), then anywhere.
+    for (int width : {1, 2, 0}) {
+      space.corridor = width ? EmbedCorridor(rings, d.guide, path.size(), width) : std::vector<bool>();
+      std::vector<int> sources;
+      for (int u : rings[size_t(path.back())]) {
+        if (space.Free(u, target)) sources.push_back(u);
+      }
+      tail = EmbedShortest(points, rings, space, path.back(), sources, target);
+      if (!tail.empty()) break;
+    }
+    space.corridor.clear();
+    for (size_t i = 1; i < path.size(); ++i) space.used[size_t(path[i])] = false;
+    if (!tail.empty()) {
+      path.insert(path.end(), tail.begin() + 1, tail.end());
+      return path;
+    }
+  }
+  return EmbedShortest(points, rings, space, d.guide.front(), d.wedge, target);
+}
+
+// One pass placing the drafts in `order`; the drafts left without a path
+// are returned.
+std::vector<size_t> EmbedPass(const std::vector<Eigen::Vector3d>& points,
+                              const std::vector<std::vector<int>>& rings,
+                              const std::vector<bool>& node_vertex, const std::vector<Draft>& drafts,
+                              const std::vector<size_t>& order, std::vector<std::vector<int>>& paths,
+                              int& rerouted) {
+  EmbedSpace space{node_vertex, std::vector<bool>(points.size(), false)};
+  for (size_t i : order) {
+    for (int u : rings[size_t(drafts[i].guide.front())]) space.reserved[size_t(u)] = true;
+  }
+  std::vector<size_t> failed;
+  rerouted = 0;
+  for (size_t i : order) {
+    bool moved = false;
+    paths[i] = EmbedOne(points, rings, space, drafts[i], moved);
+    rerouted += moved;
+    if (paths[i].empty()) failed.push_back(i);
+    for (int v : paths[i]) space.used[size_t(v)] = true;
+  }
+  return failed;
+}
+
+}  // namespace
+
+// Passes in which the arcs left without a path, with their saddles' other
+// arcs, go first, until every arc has one or kEmbedPasses have run; the
+// pass with the fewest left out is kept.
+void EmbedArcs(const std::vector<Eigen::Vector3d>& points,
+               const std::vector<std::vector<int>>& rings, const std::vector<bool>& node_vertex,
+               const std::vector<Draft>& drafts, const std::vector<int>& node_renumber,
+               MorseSmaleComplex& complex) {
+  constexpr int kEmbedPasses = 32;
+  std::vector<size_t> order;
+  for (size_t i = 0; i < drafts.size(); ++i) {
+    if (drafts[i].alive) order.push_back(i);
+  }
+  std::vector<std::vector<int>> paths(drafts.size()), best;
+  size_t best_failed = order.size() + 1;
+  for (int pass = 0; pass < kEmbedPasses; ++pass) {
+    int rerouted = 0;
+    const std::vector<size_t> failed =
+        EmbedPass(points, rings, node_vertex, drafts, order, paths, rerouted);
+    if (failed.size() < best_failed) {
+      best_failed = failed.size();
+      best = paths;
+      complex.rerouted = rerouted;
+      complex.unresolved = int(failed.size());
+    }
+    if (failed.empty()) break;
+    std::vector<bool> first(drafts.size(), false);
+    for (size_t i : failed) {
+      for (size_t j : order) first[j] = first[j] || drafts[j].saddle == drafts[i].saddle;
+    }
+    std::stable_partition(order.begin(), order.end(), [&](size_t i) { return first[i]; });
+  }
+  for (size_t i = 0; i < drafts.size(); ++i) {
+    if (best[i].empty()) continue;
+    complex.arcs.push_back({node_renumber[size_t(drafts[i].saddle)],
+                            node_renumber[size_t(drafts[i].target)], drafts[i].ascending,
+                            std::move(best[i])});
+  }
+}
+
+}  // namespace morse_smale
+}  // namespace archgeo
