@@ -91,7 +91,7 @@ std::vector<int> EmbedShortest(const std::vector<Eigen::Vector3d>& points,
 // on from there; from the wedge when that fails.
 std::vector<int> EmbedOne(const std::vector<Eigen::Vector3d>& points,
                           const std::vector<std::vector<int>>& rings, EmbedSpace& space,
-                          const Draft& d, bool& rerouted) {
+                          const Draft& d) {
   const int target = d.guide.back();
   std::vector<int> path{d.guide.front()};
   if (!space.used[size_t(d.guide[1])]) {
@@ -101,7 +101,6 @@ std::vector<int> EmbedOne(const std::vector<Eigen::Vector3d>& points,
     }
   }
   if (path.back() == target) return path;
-  rerouted = true;
   if (path.size() > 1) {
     for (int v : path) space.used[size_t(v)] = true;
     std::vector<int> tail;
@@ -130,21 +129,58 @@ std::vector<int> EmbedOne(const std::vector<Eigen::Vector3d>& points,
 std::vector<size_t> EmbedPass(const std::vector<Eigen::Vector3d>& points,
                               const std::vector<std::vector<int>>& rings,
                               const std::vector<bool>& node_vertex, const std::vector<Draft>& drafts,
-                              const std::vector<size_t>& order, std::vector<std::vector<int>>& paths,
-                              int& rerouted) {
-  EmbedSpace space{node_vertex, std::vector<bool>(points.size(), false)};
+                              const std::vector<size_t>& order, std::vector<std::vector<int>>& paths) {
+  EmbedSpace space{node_vertex, std::vector<bool>(points.size(), false), {}};
   for (size_t i : order) {
     for (int u : rings[size_t(drafts[i].guide.front())]) space.reserved[size_t(u)] = true;
   }
   std::vector<size_t> failed;
-  rerouted = 0;
+  std::vector<int> owner(points.size(), -1);  // the draft whose arc holds a vertex
+  auto place = [&](size_t i, bool mark) {
+    for (size_t k = 1; k + 1 < paths[i].size(); ++k) {
+      space.used[size_t(paths[i][k])] = mark;
+      owner[size_t(paths[i][k])] = mark ? int(i) : -1;
+    }
+  };
   for (size_t i : order) {
-    bool moved = false;
-    paths[i] = EmbedOne(points, rings, space, drafts[i], moved);
-    rerouted += moved;
+    paths[i] = EmbedOne(points, rings, space, drafts[i]);
     if (paths[i].empty()) failed.push_back(i);
-    for (int v : paths[i]) space.used[size_t(v)] = true;
+    place(i, true);
   }
+  // Rip up and reroute: an arc left out whose way is barred by one arc
+  // only is placed before that arc, which is then placed again.
+  std::vector<size_t> still;
+  for (size_t i : failed) {
+    EmbedSpace open{node_vertex, space.reserved, {}};
+    const std::vector<int> way =
+        EmbedShortest(points, rings, open, drafts[i].guide.front(), drafts[i].wedge, drafts[i].guide.back());
+    int barrier = -1;
+    bool one = !way.empty();
+    for (int v : way) {
+      const int o = owner[size_t(v)];
+      if (o < 0) continue;
+      one = one && (barrier < 0 || barrier == o);
+      barrier = o;
+    }
+    if (!one || barrier < 0) {
+      still.push_back(i);
+      continue;
+    }
+    const size_t j = size_t(barrier);
+    const std::vector<int> old = paths[j];
+    place(j, false);
+    paths[i] = EmbedOne(points, rings, space, drafts[i]);
+    place(i, true);
+    paths[j] = paths[i].empty() ? std::vector<int>() : EmbedOne(points, rings, space, drafts[j]);
+    if (paths[i].empty() || paths[j].empty()) {
+      place(i, false);
+      paths[i].clear();
+      paths[j] = old;
+      still.push_back(i);
+    }
+    place(j, true);
+  }
+  failed = still;
   return failed;
 }
 
@@ -165,13 +201,10 @@ void EmbedArcs(const std::vector<Eigen::Vector3d>& points,
   std::vector<std::vector<int>> paths(drafts.size()), best;
   size_t best_failed = order.size() + 1;
   for (int pass = 0; pass < kEmbedPasses; ++pass) {
-    int rerouted = 0;
-    const std::vector<size_t> failed =
-        EmbedPass(points, rings, node_vertex, drafts, order, paths, rerouted);
+    const std::vector<size_t> failed = EmbedPass(points, rings, node_vertex, drafts, order, paths);
     if (failed.size() < best_failed) {
       best_failed = failed.size();
       best = paths;
-      complex.rerouted = rerouted;
       complex.unresolved = int(failed.size());
     }
     if (failed.empty()) break;
@@ -183,6 +216,7 @@ void EmbedArcs(const std::vector<Eigen::Vector3d>& points,
   }
   for (size_t i = 0; i < drafts.size(); ++i) {
     if (best[i].empty()) continue;
+    complex.rerouted += best[i] != drafts[i].guide;
     complex.arcs.push_back({node_renumber[size_t(drafts[i].saddle)],
                             node_renumber[size_t(drafts[i].target)], drafts[i].ascending,
                             std::move(best[i])});
