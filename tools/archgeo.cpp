@@ -8,6 +8,8 @@
 //   archgeo measure MESH [--reference REF] [--json] [--all]
 //   archgeo spectral MESH --list [--count K] [--laplacian cotangent|normalised]
 //                        [--charts N | --edge-length L]
+//   archgeo spectral MESH --complex OUT.obj [--quasi-dual OUT2.obj] --eigenfunction K
+//                        [--cancel-to N | --persistence P]
 //   archgeo generate OUT [--surface NAME] [--nu N] [--nv N] [--noise X] [--scale S]
 //                        [--seed K] [--refinement K] [--reference REF_OUT]
 //   archgeo darboux NET OUT.ply [--c C] [--minus] [--projective 16 numbers]
@@ -243,8 +245,7 @@ int main(int argc, char** argv) {
   spectral->add_option("mesh", spectral_request.mesh, "Design surface (OBJ, OFF, PLY; polygons "
                                                       "are triangulated)")
       ->required();
-  spectral->add_flag("--list", spectral_list, "Print every candidate eigenfunction (required)")
-      ->required();
+  spectral->add_flag("--list", spectral_list, "Print every candidate eigenfunction");
   spectral->add_option("--count", spectral_request.count,
                        "Eigenpairs to compute, the constant one included")
       ->capture_default_str();
@@ -255,6 +256,16 @@ int main(int argc, char** argv) {
                        "Mark the eigenfunction whose complex has the nearest number of charts");
   spectral->add_option("--edge-length", spectral_request.edge_length,
                        "Mark the one whose charts are nearest this size (file units)");
+  spectral->add_option("--complex", spectral_request.complex_out,
+                       "Write the Morse-Smale complex of --eigenfunction as OBJ polylines");
+  spectral->add_option("--quasi-dual", spectral_request.quasi_dual_out,
+                       "Write its quasi-dual quad base complex as an OBJ mesh");
+  spectral->add_option("--eigenfunction", spectral_request.eigenfunction,
+                       "Eigenfunction k of the complex (k >= 1)");
+  spectral->add_option("--cancel-to", spectral_request.cancel_to,
+                       "Cancel saddle-extremum pairs down to this many extrema");
+  spectral->add_option("--persistence", spectral_request.persistence,
+                       "Or cancel the pairs up to this persistence (a fraction of max |phi_k|)");
 
   std::string grid_path;
   archgeo::GenerateOptions gen;
@@ -424,7 +435,14 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*spectral) {
-      std::cout << archgeo::SpectralList(spectral_request);
+      const bool complex = !spectral_request.complex_out.empty() ||
+                           !spectral_request.quasi_dual_out.empty();
+      if (spectral_list == complex) {
+        std::cerr << "archgeo spectral: give --list, or --complex and/or --quasi-dual\n";
+        return kBadInput;
+      }
+      std::cout << (complex ? archgeo::SpectralComplex(spectral_request)
+                            : archgeo::SpectralList(spectral_request));
       return 0;
     }
     if (*darboux) {

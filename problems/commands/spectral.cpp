@@ -16,17 +16,9 @@
 namespace archgeo {
 namespace {
 
-struct SpectralMesh {
-  std::vector<Eigen::Vector3d> points;
-  std::vector<std::array<int, 3>> triangles;
-  std::vector<std::vector<int>> rings;  // one-rings in cyclic order
-  std::vector<bool> closed;             // interior vertex
-  double area = 0;
-  int euler = 0;
-  bool has_boundary = false;
-};
+}  // namespace
 
-SpectralMesh Arrays(const Mesh& mesh) {
+SpectralMesh SpectralArrays(const Mesh& mesh) {
   SpectralMesh out;
   for (VertexIndex v : mesh.vertices()) out.points.push_back(EigenPoint(mesh, v));
   for (FaceIndex f : mesh.faces()) {
@@ -60,6 +52,8 @@ SpectralMesh Arrays(const Mesh& mesh) {
   return out;
 }
 
+namespace {
+
 std::string Row(int k, double lambda, const CriticalPoints& c) {
   char line[160];
   std::snprintf(line, sizeof line, "%4d  %10.4e  %5d %5d  %7d (%d)  %3d %3d %3d  %g", k, lambda,
@@ -72,7 +66,7 @@ std::string Row(int k, double lambda, const CriticalPoints& c) {
 
 std::vector<SpectralCandidate> SpectralCandidates(const Mesh& triangles, int count,
                                                   LaplacianKind kind) {
-  const SpectralMesh m = Arrays(triangles);
+  const SpectralMesh m = SpectralArrays(triangles);
   const Laplacian laplacian = BuildLaplacian(m.points, m.triangles, kind);
   const Eigenpairs pairs = LowestEigenpairs(laplacian.stiffness, laplacian.mass, count);
   std::vector<SpectralCandidate> out;
@@ -90,7 +84,7 @@ std::string SpectralList(const SpectralRequest& q) {
     throw InputError("", 0, q.charts < 0 ? "--charts" : "--edge-length", "must be positive");
   }
   const Mesh mesh = TriangulatedCopy(ReadMesh(q.mesh));
-  const SpectralMesh m = Arrays(mesh);
+  const SpectralMesh m = SpectralArrays(mesh);
   if (q.count < 2 || q.count >= int(m.points.size())) {
     throw InputError(q.mesh, 0, "--count",
                      "must be at least 2 and below the mesh's " + std::to_string(m.points.size()) +

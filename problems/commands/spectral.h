@@ -10,6 +10,7 @@
 // closest to that target.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,19 @@
 #include "spectral/laplacian.h"
 
 namespace archgeo {
+
+// A triangle mesh as the plain arrays of spectral/.
+struct SpectralMesh {
+  std::vector<Eigen::Vector3d> points;
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<std::vector<int>> rings;  // one-rings in cyclic order
+  std::vector<bool> closed;             // interior vertex
+  double area = 0;
+  int euler = 0;
+  bool has_boundary = false;
+};
+
+SpectralMesh SpectralArrays(const Mesh& triangles);
 
 struct SpectralCandidate {
   int k = 0;              // eigenfunction k (k = 0, the constant, is not a candidate)
@@ -37,10 +51,21 @@ struct SpectralRequest {
   std::string laplacian = "cotangent";  // or "normalised"
   int charts = 0;                       // target number of charts (0: none)
   double edge_length = 0;               // or target chart edge (file units): area / L²
+  // --complex: the Morse–Smale complex of eigenfunction k (spectral_complex.cpp).
+  std::string complex_out;     // its arcs as OBJ polylines
+  std::string quasi_dual_out;  // its quad base complex as an OBJ mesh
+  int eigenfunction = 0;       // k ≥ 1
+  int cancel_to = 0;           // cancel down to this many extrema (0: no target)
+  double persistence = 0;      // or cancel pairs up to this, a fraction of max |φ_k|
 };
 
 // The table to print. Throws InputError for a mesh that cannot be read, a
 // count beyond the vertices, or a target that is not positive.
 std::string SpectralList(const SpectralRequest& request);
+
+// Builds the complex of `request.eigenfunction` on a closed mesh, writes
+// the OBJ files asked for and returns the counts to print. Throws
+// InputError for a bad option (named) or a mesh with boundary.
+std::string SpectralComplex(const SpectralRequest& request);
 
 }  // namespace archgeo

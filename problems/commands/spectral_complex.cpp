@@ -1,0 +1,123 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// `archgeo spectral MESH --complex OUT.obj --eigenfunction K`: the
+// Morse–Smale complex of eigenfunction K (spectral/morse_smale.h).
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "core/input_error.h"
+#include "geometry/reference.h"
+#include "io/io.h"
+#include "io/output_files.h"
+#include "problems/commands/spectral.h"
+#include "spectral/eigenpairs.h"
+#include "spectral/morse_smale.h"
+
+namespace archgeo {
+namespace {
+
+std::string ComplexPoint(const Eigen::Vector3d& p) {
+  char line[96];
+  std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", p.x(), p.y(), p.z());
+  return line;
+}
+
+// The arcs as polylines over the vertices they use.
+std::string ComplexArcsObj(const MorseSmaleComplex& c, const std::vector<Eigen::Vector3d>& points) {
+  std::string vertices, lines;
+  std::unordered_map<int, int> index;
+  for (const MorseSmaleArc& a : c.arcs) {
+    lines += "l";
+    for (int v : a.path) {
+      auto [it, fresh] = index.try_emplace(v, int(index.size()) + 1);
+      if (fresh) vertices += ComplexPoint(points[size_t(v)]);
+      lines += " " + std::to_string(it->second);
+    }
+    lines += "\n";
+  }
+  return "# Morse-Smale complex: one polyline per arc, saddle to extremum\n" + vertices + lines;
+}
+
+std::string ComplexQuadsObj(const QuadBaseComplex& q) {
+  std::string text = "# quasi-dual of the Morse-Smale complex: extrema, one quad per saddle\n";
+  for (const Eigen::Vector3d& p : q.points) text += ComplexPoint(p);
+  for (const std::array<int, 4>& f : q.quads) {
+    text += "f " + std::to_string(f[0] + 1) + " " + std::to_string(f[1] + 1) + " " +
+            std::to_string(f[2] + 1) + " " + std::to_string(f[3] + 1) + "\n";
+  }
+  return text;
+}
+
+void ComplexCheckRequest(const SpectralRequest& q, int vertices) {
+  if (q.eigenfunction < 1 || q.eigenfunction >= vertices) {
+    throw InputError(q.mesh, 0, "--eigenfunction",
+                     "must be at least 1 and below the mesh's " + std::to_string(vertices) +
+                         " vertices");
+  }
+  if (q.cancel_to < 0) throw InputError("", 0, "--cancel-to", "must be 0 or positive");
+  if (q.laplacian != "cotangent" && q.laplacian != "normalised") {
+    throw InputError("", 0, "--laplacian", "must be cotangent or normalised");
+  }
+}
+
+}  // namespace
+
+std::string SpectralComplex(const SpectralRequest& q) {
+  if (q.persistence < 0 || !std::isfinite(q.persistence)) {
+    throw InputError("", 0, "--persistence", "must be 0 or positive");
+  }
+  const Mesh mesh = TriangulatedCopy(ReadMesh(q.mesh));
+  const SpectralMesh m = SpectralArrays(mesh);
+  ComplexCheckRequest(q, int(m.points.size()));
+  if (m.has_boundary) {
+    throw InputError(q.mesh, 0, "--complex", "needs a closed mesh (this one has a boundary)");
+  }
+  Eigenpairs pairs;
+  try {
+    const Laplacian l = BuildLaplacian(m.points, m.triangles,
+                                       q.laplacian == "cotangent" ? LaplacianKind::kCotangent
+                                                                  : LaplacianKind::kNormalised);
+    pairs = LowestEigenpairs(l.stiffness, l.mass, q.eigenfunction + 1);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(q.mesh, 0, "--laplacian", e.what());
+  } catch (const std::runtime_error& e) {
+    throw InputError(q.mesh, 0, "--eigenfunction", e.what());
+  }
+  Eigen::VectorXd f = pairs.vectors.col(q.eigenfunction);
+  f /= std::max(f.cwiseAbs().maxCoeff(), 1e-300);  // max |φ_k| = 1
+  MorseSmaleOptions options;
+  options.persistence = q.persistence;
+  options.target_extrema = q.cancel_to;
+  const MorseSmaleComplex c = BuildMorseSmale(m.points, m.triangles, m.rings, f, options);
+  const QuadBaseComplex dual = QuasiDual(c, m.points);
+  StagedOutputs staged({q.mesh});
+  if (!q.complex_out.empty()) {
+    staged.Write(q.complex_out, "--complex", [&](const std::string& path) {
+      WriteTextFile(path, ComplexArcsObj(c, m.points), "--complex");
+    });
+  }
+  if (!q.quasi_dual_out.empty()) {
+    staged.Write(q.quasi_dual_out, "--quasi-dual", [&](const std::string& path) {
+      WriteTextFile(path, ComplexQuadsObj(dual), "--quasi-dual");
+    });
+  }
+  staged.Commit();
+  char text[640];
+  std::snprintf(text, sizeof text,
+                "spectral complex: eigenfunction %d (eigenvalue %.6g) of %s\n"
+                "max %d  min %d  saddles %d  (max + min - saddles = %d)\n"
+                "cancelled pairs %d  arcs %zu  rerouted %d  unresolved %d  shared vertices %d\n"
+                "cells %zu  invalid cells %d  valid %s\n"
+                "quasi-dual: %zu vertices  %zu quads  degenerate %d  irregular vertices %d  "
+                "V - E + F = %d\n",
+                q.eigenfunction, pairs.values[q.eigenfunction], q.mesh.c_str(), c.maxima,
+                c.minima, c.saddles, c.maxima + c.minima - c.saddles, c.cancelled, c.arcs.size(),
+                c.rerouted, c.unresolved, c.shared_vertices, c.cells.size(), c.invalid_cells,
+                c.valid ? "yes" : "no", dual.points.size(), dual.quads.size(),
+                dual.degenerate_quads, dual.irregular_vertices, dual.euler);
+  return text;
+}
+
+}  // namespace archgeo
