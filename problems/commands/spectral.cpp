@@ -14,9 +14,6 @@
 #include "spectral/eigenpairs.h"
 
 namespace archgeo {
-namespace {
-
-}  // namespace
 
 SpectralMesh SpectralArrays(const Mesh& mesh) {
   SpectralMesh out;
