@@ -15,6 +15,7 @@
 #include "core/input_error.h"
 #include "io/io.h"
 #include "problems/commands/generate.h"
+#include "problems/declarations/custom.h"
 #include "problems/declarations/registry.h"
 #include "problems/commands/run.h"
 #include "problems/runtime/mesh_inputs.h"
@@ -263,7 +264,9 @@ void WriteMeshFile(const std::string& path, const MeshData& mesh,
 std::vector<std::string> Problems() { return ProblemNames(); }
 
 std::string ProblemKeys(const std::string& problem) {
-  const ProblemDecl* d = FindProblem(problem);
+  // custom: the keys of `archgeo spec custom` (the example composition's terms).
+  const ProblemDecl custom = problem == "custom" ? CustomExample() : ProblemDecl();
+  const ProblemDecl* d = problem == "custom" ? &custom : FindProblem(problem);
   if (!d) throw Error("'" + problem + "' is not a problem", "", 0, "problem");
   nlohmann::json keys = nlohmann::json::array();
   const Schema schema = ProblemSchema(*d);  // alive while its keys are read

@@ -25,6 +25,11 @@ def test_problems_and_keys():
     assert keys["tolerance.pq_normalized_max"]["default"] == 1e-3
     with pytest.raises(archgeo.InputError):
         archgeo.keys("no_such_problem")
+    # Every listed problem has its keys; custom's are those of `archgeo spec custom`.
+    for name in archgeo.problems():
+        assert any(k["name"] == "tolerance.pq_normalized_max" or k["name"].startswith("terms.")
+                   for k in archgeo.keys(name)), name
+    assert "terms.face_planarity.weight" in {k["name"] for k in archgeo.keys("custom")}
 
 
 def test_solve_docstring_comes_from_the_schema():
