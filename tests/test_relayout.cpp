@@ -129,8 +129,8 @@ TEST_F(Relayout, ConjugateLayoutTakesAQuadNetAsItsDesignSurface) {
   }
 }
 
-// relayout: never keeps the net: after the stall the worst-quads stage
-// (problems/declarations/worst_quads.h) goes after the maximum of δ_PQ,n.
+// relayout: never keeps the net: after the stall the worst-quads stage (term
+// pq_worst, problems/declarations/worst_quads.h) goes after the maximum of δ_PQ,n.
 // On the DOS pillow (input 0.0470, every round of the first stage that
 // lowers it folds a crease) it ends below 0.0402, the Shape-Up iteration's
 // best state with every panel convex on this net (libigl's
@@ -147,7 +147,7 @@ class WorstQuads : public ScratchDirTest {
   }
 };
 
-TEST_F(WorstQuads, NeverLowersThePillowsWorstQuadBelowShapeUpsWithConvexPanels) {
+TEST_F(WorstQuads, PqWorstLowersThePillowsWorstQuadBelowShapeUpsWithConvexPanels) {
   constexpr double kInput = 0.0470, kShapeUpBestConvex = 0.0402;
   const RunResult run = Run({});
   const nlohmann::json& r = run.report;
