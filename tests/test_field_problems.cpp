@@ -34,6 +34,8 @@
 #include "generators/smoothness_surfaces.h"
 #include "core/input_error.h"
 #include "io/io.h"
+#include "analysis/validity.h"
+#include "geometry/reference.h"
 #include "problems/declarations/field_pipeline.h"
 #include "problems/commands/run.h"
 #include "problems/runtime/mesh_inputs.h"
@@ -533,6 +535,62 @@ TEST(ConjugateLayout, SmallClosedTorusIsLaidOutOnItsSplitDesign) {
   EXPECT_LE(net.at("layout").at("pq_normalized_mean").get<double>(), 3e-3);
   EXPECT_LE(r.at("after").at("pq_normalized_max").get<double>(), 1e-3);
   EXPECT_LE(r.at("iterations").at("inner").get<int>(), 60);
+  // The output checked alone and against the design surface, too.
+  const nlohmann::json& design = r.at("validity").at("design_surface");
+  EXPECT_TRUE(design.at("valid").get<bool>());
+  EXPECT_TRUE(design.at("within_band").get<bool>());
+  EXPECT_LE(design.at("distance_max").get<double>(), design.at("band").get<double>());
+}
+
+// A layout is archgeo's own work, not the user's input (issue 42, item 6):
+// the final mesh is also checked alone and against the design surface, as
+// `archgeo measure FINAL --reference DESIGN` checks it. The small cone's
+// 100-face layout has a bow-tied, reflex panel; validity.allow_input_defects,
+// which accepts defects the user's input had, does not accept the layout's
+// (exit 5, not 0 or 4), and the report's validity.design_surface lists exactly
+// the checks of the output alone. Its distance to the design surface is
+// measured on the output: the loop keeps the band around the layout, whose
+// faces are chords of the design, so the output can leave the design's band
+// (exit 4's warning, within_band false).
+TEST(ConjugateLayout, LayoutDefectsAreNotAcceptedAsInputDefects) {
+  const Mesh design = RevolutionTriangles(RevolutionProfile{}, 24, 8);
+  Mesh output;
+  MeshInputs inputs;
+  inputs.mesh = &design;
+  inputs.output = &output;
+  const RunResult run = RunSpec(
+      ParseSpec("problem: conjugate_layout\nlevel_sets: {target_faces: 100}\n"
+                "validity: {allow_input_defects: true}\n", "cone.yaml"), {}, inputs);
+  const nlohmann::json& v = run.report.at("validity");
+  const nlohmann::json& d = v.at("design_surface");
+  EXPECT_EQ(run.exit_code, 5) << run.summary;
+  EXPECT_FALSE(v.at("valid").get<bool>());
+  EXPECT_FALSE(d.at("valid").get<bool>());
+  ValidityLimits limits;
+  limits.allow_input_defects = true;
+  const Validity alone = CheckValidity(output, nullptr, limits, true);
+  ASSERT_EQ(d.at("checks").size(), alone.checks.size());
+  int failed = 0;
+  for (size_t i = 0; i < alone.checks.size(); ++i) {
+    EXPECT_EQ(d.at("checks")[i].at("name"), alone.checks[i].name);
+    EXPECT_EQ(d.at("checks")[i].at("count"), alone.checks[i].count) << alone.checks[i].name;
+    failed += alone.checks[i].hard && alone.checks[i].count > 0;
+  }
+  EXPECT_GT(failed, 0);
+  EXPECT_NE(run.summary.find("net this problem made from the design surface"), std::string::npos);
+  // The distance of the output's vertices to the design, measured here.
+  const ReferenceSurface surface(design);
+  double worst = 0;
+  for (VertexIndex u : output.vertices()) {
+    const Vec3 p = ToVec3(output.point(u));
+    const Vec3 q = surface.Closest(p).point;
+    worst = std::max(worst, std::hypot(q[0] - p[0], q[1] - p[1], q[2] - p[2]));
+  }
+  EXPECT_NEAR(d.at("distance_max").get<double>(), worst, 1e-9 * (1 + worst));
+  EXPECT_EQ(d.at("within_band").get<bool>(), worst <= d.at("band").get<double>());
+  EXPECT_GT(worst, d.at("band").get<double>());
+  EXPECT_NE(run.summary.find("leaves the deviation band around the design surface"),
+            std::string::npos);
 }
 
 // ------------------------------------------------------------------ bad input

@@ -238,7 +238,8 @@ class SpecRun {
     if (!solution_->loop.usable) return NotUsable();
     if (!Valid()) return run_;
     WriteAndMeasureOutput();
-    if (!validity_.valid()) run_.exit_code = 5;  // panels as defective as the input's
+    // Panels as defective as the input's, or as the layout's the problem made.
+    if (!validity_.valid() || !design_.valid()) run_.exit_code = 5;
     run_.summary = Summary();
     if (run_.stopped) run_.summary += "stopped by request: the outputs were not written\n";
     return run_;
@@ -306,6 +307,11 @@ class SpecRun {
       validity_check_ = std::async(std::launch::async, [this] {
         return CheckValidity(output_, &input_, LimitsOf(s_), true);
       });
+      if (MadeNet()) {
+        design_check_ = std::async(std::launch::async, [this] {
+          return CheckValidity(output_, nullptr, LimitsOf(s_), true);
+        });
+      }
     }
     const auto setup_start = Clock::now();
     reference_ = std::make_unique<ReferenceSurface>(
@@ -377,6 +383,41 @@ class SpecRun {
     return run_;
   }
 
+  // A net the problem made from the input (a layout: its vertices are not
+  // the input's) is archgeo's own work, not the user's input: a defect it
+  // has is not one to excuse. The output is then also checked alone (every
+  // defect counts, as `archgeo measure OUTPUT --reference DESIGN` checks it)
+  // and measured against the design surface, the input as read.
+  bool MadeNet() const {
+    return solution_->net.derived && solution_->net.source.empty() && read_.number_of_faces() > 0;
+  }
+
+  // The output's vertices' largest distance from the design surface (file
+  // units), and whether it lies within the deviation band, where the problem
+  // has one; the report's validity.design_surface.
+  void MeasureAgainstDesign(nlohmann::json& entry) {
+    const ReferenceSurface design(InFrame(local_, read_));
+    double worst = 0;
+    for (VertexIndex v : output_.vertices()) {
+      const Vec3 p = ToVec3(output_.point(v));
+      const Vec3 q = design.Closest(p).point;
+      worst = std::max(worst, std::hypot(q[0] - p[0], q[1] - p[1], q[2] - p[2]));
+    }
+    worst *= local_.scale;
+    design_distance_ = worst;
+    entry["distance_max"] = worst;
+    entry["distance_max_relative"] = worst / scale_;
+    if (s_.schema().Find("tolerance.surface_distance_max") == nullptr) return;
+    const double band = s_.Number("tolerance.surface_distance") > 0
+                            ? s_.Number("tolerance.surface_distance")
+                            : s_.Number("tolerance.surface_distance_max") * scale_;
+    if (band <= 0) return;
+    design_band_ = band;
+    entry["band"] = band;
+    design_band_met_ = worst <= band;
+    entry["within_band"] = design_band_met_;
+  }
+
   // The checks of analysis/validity.h and the problem's own
   // (ProblemDecl::invalid), on the state written. False: exit 3, with the
   // reasons in the summary.
@@ -384,6 +425,12 @@ class SpecRun {
     validity_ = validity_check_.get();
     nlohmann::json& v = run_.report["validity"];
     v = validity_.ToJson();
+    if (design_check_.valid()) {
+      design_ = design_check_.get();
+      nlohmann::json& d = v["design_surface"] = design_.ToJson();
+      MeasureAgainstDesign(d);
+      if (!design_.valid()) v["valid"] = false;
+    }
     v["restored_round"] = solution_->loop.restored_valid
                               ? nlohmann::json(solution_->loop.output_round)
                               : nlohmann::json(nullptr);
@@ -490,7 +537,7 @@ class SpecRun {
   void WriteAndMeasureOutput() {
     bool tolerances_met = true;
     for (const auto& [key, met] : solution_->loop.tolerances) tolerances_met &= met;
-    run_.exit_code = tolerances_met ? 0 : 4;
+    run_.exit_code = tolerances_met && design_band_met_ ? 0 : 4;
     const Mesh& output = solution_->output;
     const auto write_start = Clock::now();
     const FaceValues face_values = ColorValues(output_, false);
@@ -573,11 +620,18 @@ class SpecRun {
     const LoopResult& solved = solution_->loop;
     const std::string warnings = validity_.Warnings();
     std::string lines;
-    if (!validity_.valid()) {
+    if (!validity_.valid() && !MadeNet()) {
       lines = "validity: NOT valid (exit 5): panels that cannot be built, as they were in the "
               "input (the result is written for you to repair them; "
               "validity.allow_input_defects: true accepts them):\n" +
               validity_.Reason() + (warnings.empty() ? "" : "warnings:\n" + warnings);
+    } else if (!validity_.valid() || !design_.valid()) {
+      // Not the user's input: allow_input_defects does not accept them.
+      lines = "validity: NOT valid (exit 5): panels that cannot be built, as they were in the "
+              "net this problem made from the design surface (the result is written for you "
+              "to repair them; the report's validity and validity.design_surface name them):\n" +
+              (design_.valid() ? validity_.Reason() : design_.Reason()) +
+              (warnings.empty() ? "" : "warnings:\n" + warnings);
     } else {
       lines = warnings.empty() ? "validity: every check passed\n"
                                : "validity: valid; warnings:\n" + warnings;
@@ -590,6 +644,15 @@ class SpecRun {
       lines += "WARNING: the input had coincident vertices: " +
                std::to_string(info_.welded_vertices) +
                " were welded on reading (limits.weld_distance; the report's input section)\n";
+    }
+    if (!design_band_met_) {
+      char line[240];
+      std::snprintf(line, sizeof line,
+                    "WARNING: the result leaves the deviation band around the design surface "
+                    "(exit 4): %.4g > %.4g file units (the loop keeps the band around the net "
+                    "it solved)\n",
+                    design_distance_, design_band_);
+      lines += line;
     }
     if (solved.restored_valid) {
       lines += "the last round was not valid: the output is round " +
@@ -622,6 +685,10 @@ class SpecRun {
   Mesh input_, output_;  // the solution's input and output in local_
   std::future<Validity> validity_check_;
   Validity validity_;
+  std::future<Validity> design_check_;  // the output alone, for a net the problem made
+  Validity design_;                     // valid when not checked
+  bool design_band_met_ = true;
+  double design_distance_ = 0, design_band_ = 0;  // file units
   std::unique_ptr<ReferenceSurface> reference_;
   Metrics before_, after_;
   AnalysisRows extra_before_, extra_after_;
