@@ -18,8 +18,9 @@
 // Per run it prints: the exit code; δ_PQ,n max reached; the output's
 // deviation (after.surface_distance_max_relative: the report's metrics
 // measure every output vertex against the input surface, apart from the
-// band's own bookkeeping) and the largest deviation of any round (the output
-// is the best valid round, not always the last); E before and after; panels not convex; whether
+// band's own bookkeeping) and the largest deviation of any round
+// (details.surface_band.deviation_reached_relative: the output is the best
+// valid round, not always the last); E before and after; panels not convex; whether
 // the band binds (details.surface_band.binds) and, where a rejected round met
 // planarity, the deviation it needed; rounds; wall and CPU seconds.
 // It writes an SVG (--svg; default deviation_tradeoff_<mesh>.svg here) of
@@ -111,18 +112,6 @@ void RefuseBandOverrides(const char* argv0) {
   }
 }
 
-// The largest deviation of any round (the report's rounds[].measures), NaN if none:
-// the band may bind in rounds that are not the output (keep-best returns a flatter one).
-double RoundsDeviation(const bench::Json& report) {
-  double worst = std::nan("");
-  if (report.is_null() || !report.contains("rounds")) return worst;
-  for (const bench::Json& round : report["rounds"]) {
-    const double d = Get(round, "/measures/surface_distance_relative");
-    if (!std::isnan(d)) worst = std::isnan(worst) ? d : std::max(worst, d);
-  }
-  return worst;
-}
-
 std::string Sci(double x) { return std::isnan(x) ? "-" : Fmt("%.2e", x); }
 std::string Percent(double relative) {
   return std::isnan(relative) ? "-" : Fmt("%.3f%%", 100 * relative);
@@ -142,7 +131,8 @@ void PrintTable(const std::vector<Run>& runs) {
     }
     t.Add({BandName(run.band), Fmt("%d", run.process.exit_code),
            Sci(Get(r, "/after/pq_normalized_max")),
-           Percent(Get(r, "/after/surface_distance_max_relative")), Percent(RoundsDeviation(r)),
+           Percent(Get(r, "/after/surface_distance_max_relative")),
+           Percent(Get(r, "/details/surface_band/deviation_reached_relative")),
            Fmt("%.2f → %.2f", Get(r, "/before/E"), Get(r, "/after/E")),
            Fmt("%.0f", Get(r, "/after/nonconvex_panels")), binds, needed,
            Fmt("%.0f", Get(r, "/iterations/outer")), Fmt("%.1f", run.process.seconds),
@@ -260,9 +250,9 @@ int Main(int argc, char** argv) {
   runs.push_back(SolveWithBand(mesh, 0, timeout));  // no band: last
   PrintTable(runs);
   std::printf("\ndeviation: of the output; rounds' max: the largest of any round "
-              "(rounds[].measures);\nbinds: details.surface_band.binds (of the output); needed: "
-              "the deviation of a rejected\nround that met planarity "
-              "(details.surface_band.goals_needed_relative)\n");
+              "(details.surface_band.\ndeviation_reached_relative); binds: "
+              "details.surface_band.binds; needed: the deviation\nof a rejected round that met "
+              "planarity (details.surface_band.goals_needed_relative)\n");
 
   std::vector<std::string> failures;
   for (const Run& run : runs) {
