@@ -22,7 +22,9 @@
 // (details.surface_band.deviation_reached_relative: the output is the best
 // valid round, not always the last); E before and after; panels not convex; whether
 // the band binds (details.surface_band.binds) and, where a rejected round met
-// planarity, the deviation it needed; rounds; wall and CPU seconds.
+// planarity, the deviation it needed, or else, where the band binds, the
+// deviation of the same run without the band (details.surface_band.unbounded,
+// "unbounded"); rounds; wall and CPU seconds.
 // It writes an SVG (--svg; default deviation_tradeoff_<mesh>.svg here) of
 // δ_PQ,n max, the deviation reached, E and wall seconds against the band
 // (log x), with the tolerance 1e-3, the input's E and the unbounded run's
@@ -128,6 +130,11 @@ void PrintTable(const std::vector<Run>& runs) {
     if (banded && r.contains(bench::Json::json_pointer("/details/surface_band/binds"))) {
       binds = r["details"]["surface_band"]["binds"].get<bool>() ? "yes" : "no";
       needed = Percent(Get(r, "/details/surface_band/goals_needed_relative"));
+      const bench::Json::json_pointer unbounded("/details/surface_band/unbounded");
+      if (r.contains(unbounded)) {  // no round met planarity: the run without the band
+        needed = Percent(r.at(unbounded)["deviation_relative"].get<double>()) +
+                 (r.at(unbounded)["goals_met"].get<bool>() ? " unbounded" : " unbounded, missed");
+      }
     }
     t.Add({BandName(run.band), Fmt("%d", run.process.exit_code),
            Sci(Get(r, "/after/pq_normalized_max")),

@@ -12,7 +12,9 @@
 #include "core/magnitude.h"
 #include "geometry/reference.h"
 #include "mesh/similarity.h"
+#include "problems/declarations/registry.h"
 #include "problems/runtime/model.h"
+#include "problems/runtime/solve.h"
 
 namespace archgeo {
 namespace {
@@ -71,8 +73,49 @@ int ClampToBand(HookContext& c) {
   return clamped;
 }
 
-// details.surface_band and, when it binds, a headline line.
-void Report(HookContext& c) {
+// What the goals need when the band binds and no round met them: the same
+// problem solved again on the same net without a band (every other key as
+// given); its output's largest vertex distance from the reference, relative
+// to the diagonal, and whether that run met the goals.
+struct BandNeed {
+  double deviation_relative = 0;
+  bool goals_met = false;
+};
+
+BandNeed UnboundedNeed(HookContext& c, const std::string& problem) {
+  ProblemSpec spec;
+  spec.spec_path = c.settings->spec_file();
+  spec.declaration = std::shared_ptr<const ProblemDecl>(FindProblem(problem), [](auto*) {});
+  spec.settings = *c.settings;
+  const Origin origin{c.settings->spec_file(), 0};
+  spec.settings.Set("tolerance.surface_distance_max", 0.0, origin);
+  spec.settings.Set("tolerance.surface_distance", 0.0, origin);
+  ProgressSink progress;
+  if (c.progress) {
+    progress = [sink = c.progress](const ProgressEvent& event) {
+      ProgressEvent prefixed = event;
+      prefixed.line = "without the band: " + event.line;
+      sink(prefixed);
+    };
+  }
+  const std::unique_ptr<Solution> run = Solve(spec, *c.input, nullptr, progress);
+  BandNeed need;
+  need.goals_met = run->loop.usable;
+  for (const auto& [key, met] : run->loop.tolerances) need.goals_met = need.goals_met && met;
+  double largest = 0;  // canonical lengths, against this run's reference
+  for (VertexIndex v : run->output.vertices()) {
+    const Vec3 x = c.frame.ToCanonical(ToVec3(run->output.point(v)));
+    const Vec3 p = c.reference->Closest(x).point;
+    largest = std::max(largest, std::hypot(x[0] - p[0], x[1] - p[1], x[2] - p[2]));
+  }
+  need.deviation_relative = largest * c.frame.scale / PrincipalBoxDiagonal(*c.input);
+  return need;
+}
+
+// details.surface_band and, when it binds, a headline line. `problem`
+// (non-empty): the problem to solve again without the band when it binds
+// and no round met the goals (UnboundedNeed).
+void Report(HookContext& c, const std::string& problem) {
   const double band = CanonicalBand(c);
   if (!(band > 0) || c.loop == nullptr) return;
   const double diagonal = PrincipalBoxDiagonal(*c.input) / c.frame.scale;
@@ -109,6 +152,11 @@ void Report(HookContext& c) {
   if (need != c.loop->bound_needs.end()) {
     j["goals_needed_relative"] = relative(need->second);
   }
+  if (binds && !j.contains("goals_needed_relative") && !problem.empty()) {
+    const BandNeed unbounded = UnboundedNeed(c, problem);
+    j["unbounded"] = {{"deviation_relative", unbounded.deviation_relative},
+                      {"goals_met", unbounded.goals_met}};
+  }
   c.details["surface_band"] = j;
   if (!binds) return;
   std::string line = "BAND BINDS: the goals were missed at the deviation band (" +
@@ -118,13 +166,17 @@ void Report(HookContext& c) {
   if (j.contains("goals_needed_relative")) {
     line += "; a round met them at a deviation of " +
             Percent(j["goals_needed_relative"].get<double>());
+  } else if (j.contains("unbounded")) {
+    line += std::string("; without the band the same run ") +
+            (j["unbounded"]["goals_met"].get<bool>() ? "met them" : "missed them too") +
+            " at a deviation of " + Percent(j["unbounded"]["deviation_relative"].get<double>());
   }
   c.headline += line + ". Raise tolerance.surface_distance_max to trade deviation for them.\n";
 }
 
 }  // namespace
 
-ProblemDecl WithDesignBand(ProblemDecl d, double relative) {
+ProblemDecl WithDesignBand(ProblemDecl d, double relative, bool measure_need) {
   // Beside the problem's other tolerance keys (a template writes each
   // section once).
   auto at = d.keys.begin();
@@ -172,9 +224,10 @@ ProblemDecl WithDesignBand(ProblemDecl d, double relative) {
     return all;
   };
   Hook finish = d.finish;
-  d.finish = [finish](HookContext& c) {
+  const std::string problem = measure_need ? d.name : std::string();
+  d.finish = [finish, problem](HookContext& c) {
     if (finish) finish(c);
-    Report(c);
+    Report(c, problem);
   };
   return d;
 }

@@ -28,7 +28,10 @@
 //     band (≥ 0.8 b), and whether it binds (the goals missed with the output
 //     or a round at the band; the output is the best valid round, which need
 //     not be the one that pressed against the band), with the deviation a round
-//     that met the goals needed, if one did.
+//     that met the goals needed, if one did; with `measure_need`, when it
+//     binds and no round met the goals, the problem is solved once more
+//     without the band and the report gives the deviation that run reached
+//     and whether it met the goals (details.surface_band.unbounded).
 #pragma once
 
 #include "core/problem.h"
@@ -36,6 +39,6 @@
 namespace archgeo {
 
 // `d` with the band (default `relative` of the diagonal; 0 = off unless set).
-ProblemDecl WithDesignBand(ProblemDecl d, double relative);
+ProblemDecl WithDesignBand(ProblemDecl d, double relative, bool measure_need = false);
 
 }  // namespace archgeo
