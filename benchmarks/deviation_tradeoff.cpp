@@ -259,7 +259,8 @@ int Main(int argc, char** argv) {
   std::printf("\ndeviation: of the output; rounds' max: the largest of any round "
               "(details.surface_band.\ndeviation_reached_relative); binds: "
               "details.surface_band.binds; needed: the deviation\nof a rejected round that met "
-              "planarity (details.surface_band.goals_needed_relative)\n");
+              "planarity (details.surface_band.goals_needed_relative) or, \"unbounded\",\nof the "
+              "same run without the band (details.surface_band.unbounded)\n");
 
   std::vector<std::string> failures;
   for (const Run& run : runs) {
