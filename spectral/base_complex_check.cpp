@@ -1,0 +1,122 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The base-complex path end to end and the figures that judge its output
+// (spectral/base_complex_charts.h).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+
+#include "spectral/base_complex_charts.h"
+
+namespace archgeo {
+namespace {
+
+double ChartSecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Valences, boundary and non-manifold edges, and T-junctions: a vertex in
+// the open interior of a boundary edge (within 1e-9 of the output's extent).
+void CheckChartQuads(ChartQuadsResult& r) {
+  const QuadExtraction& q = r.quads;
+  std::map<std::pair<int, int>, int> faces_at;
+  for (const auto& quad : q.quads) {
+    for (int k = 0; k < 4; ++k) {
+      const int u = quad[k], v = quad[(k + 1) % 4];
+      ++faces_at[{std::min(u, v), std::max(u, v)}];
+    }
+  }
+  r.valence.assign(q.points.size(), 0);
+  std::vector<std::pair<int, int>> boundary;
+  for (const auto& [edge, count] : faces_at) {
+    ++r.valence[edge.first];
+    ++r.valence[edge.second];
+    if (count == 1) boundary.push_back(edge);
+    if (count > 2) ++r.non_manifold_edges;
+  }
+  r.boundary_edges = int(boundary.size());
+  Eigen::Vector3d lo = q.points.empty() ? Eigen::Vector3d::Zero() : q.points[0], hi = lo;
+  for (const Eigen::Vector3d& p : q.points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const double tolerance = 1e-9 * (hi - lo).norm();
+  std::set<int> on_boundary;
+  for (const auto& [u, v] : boundary) {
+    on_boundary.insert(u);
+    on_boundary.insert(v);
+  }
+  for (const auto& [u, v] : boundary) {
+    const Eigen::Vector3d a = q.points[u], d = q.points[v] - a;
+    for (int w : on_boundary) {
+      if (w == u || w == v) continue;
+      const double t = (q.points[w] - a).dot(d) / std::max(d.squaredNorm(), 1e-300);
+      if (t > 0 && t < 1 && (q.points[w] - (a + t * d)).norm() <= tolerance) ++r.t_junctions;
+    }
+  }
+  for (size_t v = 0; v < r.valence.size(); ++v) {
+    if (r.valence[v] != 4) r.irregular.push_back(int(v));
+  }
+  // The base complex's prediction.
+  std::vector<int> base_valence(q.node_vertex.size(), 0);
+  for (const BaseEdgePath& e : r.layout.edges) {
+    ++base_valence[e.a];
+    ++base_valence[e.b];
+  }
+  for (size_t v = 0; v < base_valence.size(); ++v) {
+    if (base_valence[v] != 4) r.expected_irregular.push_back(q.node_vertex[v]);
+  }
+  for (int c : q.centre_vertex) {
+    if (c >= 0) r.expected_irregular.push_back(c);
+  }
+  std::sort(r.expected_irregular.begin(), r.expected_irregular.end());
+}
+
+}  // namespace
+
+int ChartSamples(const ChartLayout& layout, int n, double edge_length) {
+  bool triangles = false;
+  for (const auto& sides : layout.sides) triangles = triangles || sides.size() == 3;
+  if (n > 0) {
+    if (triangles && n % 2 != 0) {
+      throw std::invalid_argument(
+          "must be even when the base complex has a triangle face (each is split into three "
+          "quads of n/2 × n/2)");
+    }
+    return n;
+  }
+  double total = 0;
+  for (const BaseEdgePath& e : layout.edges) total += e.length;
+  const double mean = total / std::max<size_t>(1, layout.edges.size());
+  if (triangles) return 2 * std::max(1, int(std::lround(mean / (2 * edge_length))));
+  return std::max(1, int(std::lround(mean / edge_length)));
+}
+
+ChartQuadsResult ChartQuads(const std::vector<Eigen::Vector3d>& points,
+                            const std::vector<std::array<int, 3>>& triangles,
+                            const BaseComplex& base, int n, double edge_length,
+                            ChartWeights weights) {
+  ChartQuadsResult r;
+  auto start = std::chrono::steady_clock::now();
+  r.layout = BuildChartLayout(points, triangles, base);
+  r.n = ChartSamples(r.layout, n, edge_length);
+  r.seconds_charts = ChartSecondsSince(start);
+  start = std::chrono::steady_clock::now();
+  r.min_area = std::numeric_limits<double>::infinity();
+  for (size_t c = 0; c < r.layout.charts.size(); ++c) {
+    r.maps.push_back(ParameteriseChart(points, triangles, r.layout, int(c), weights));
+    r.flipped += r.maps.back().flipped;
+    r.min_area = std::min(r.min_area, r.maps.back().min_area);
+  }
+  r.seconds_parameterisation = ChartSecondsSince(start);
+  start = std::chrono::steady_clock::now();
+  r.quads = ExtractQuads(points, triangles, base, r.layout, r.maps, r.n);
+  r.seconds_extraction = ChartSecondsSince(start);
+  CheckChartQuads(r);
+  return r;
+}
+
+}  // namespace archgeo
