@@ -110,9 +110,9 @@ struct QuadExtraction {
   std::vector<std::array<int, 4>> quads;  // oriented as the surface
   std::vector<int> node_vertex;           // output vertex of each base vertex
   std::vector<int> centre_vertex;         // per base face: its centre (triangles), else −1
-  // Every base edge's samples mapped back through each of its two charts'
-  // parameterisations: the largest distance between the two (0: the charts
-  // agree on their shared edges).
+  // Every base edge's samples (at equal arc length along its path, welded)
+  // against the same parameters mapped back through each of its two charts:
+  // the largest distance (0: both charts sample the shared edge identically).
   double shared_edge_mismatch = 0;
   int unlocated = 0;  // samples in no parameter triangle (taken from the nearest one)
 };

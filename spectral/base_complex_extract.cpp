@@ -113,8 +113,6 @@ Eigen::Vector3d PathPoint(const std::vector<Eigen::Vector3d>& points, const Base
 struct ExtractState {
   QuadExtraction* out;
   std::vector<std::vector<int>> edge_vertex;  // per base edge: its n + 1 samples, a → b
-  std::vector<std::vector<Eigen::Vector3d>> first_sample;  // per edge: the first chart's map
-  std::vector<int> edge_seen;
   int n = 0;
 
   int Add(const Eigen::Vector3d& p) {
@@ -130,27 +128,19 @@ int ChartSideVertex(const ChartLayout& layout, const ExtractState& st, int f, in
   return st.edge_vertex[e][reversed ? st.n - i : i];
 }
 
-// Each side's samples mapped by this chart, against the first chart's.
-void CompareSides(const ChartLayout& layout, const ChartLocator& locate,
+// Each side's samples mapped by this chart, against the welded samples (at
+// equal arc length along the base edge's path).
+void CompareSides(const ChartLocator& locate, const ChartLayout& layout,
                   const std::vector<Eigen::Vector2d>& corners, int f, ExtractState& st) {
   const int sides = int(corners.size());
   for (int k = 0; k < sides; ++k) {
-    const auto [e, reversed] = layout.sides[f][k];
-    std::vector<Eigen::Vector3d> mapped(size_t(st.n) + 1);
     for (int i = 0; i <= st.n; ++i) {
       const double s = double(i) / st.n;
       bool missed = false;
       const Eigen::Vector3d p = locate.Map((1 - s) * corners[k] + s * corners[(k + 1) % sides], &missed);
       st.out->unlocated += missed;
-      mapped[size_t(reversed ? st.n - i : i)] = p;
-    }
-    if (st.edge_seen[e]++ == 0) {
-      st.first_sample[e] = mapped;
-      continue;
-    }
-    for (int i = 0; i <= st.n; ++i) {
-      st.out->shared_edge_mismatch = std::max(st.out->shared_edge_mismatch,
-                                              (mapped[i] - st.first_sample[e][i]).norm());
+      const Eigen::Vector3d& welded = st.out->points[size_t(ChartSideVertex(layout, st, f, k, i))];
+      st.out->shared_edge_mismatch = std::max(st.out->shared_edge_mismatch, (p - welded).norm());
     }
   }
 }
@@ -250,13 +240,11 @@ QuadExtraction ExtractQuads(const std::vector<Eigen::Vector3d>& points,
     samples.push_back(out.node_vertex[e.b]);
     st.edge_vertex.push_back(samples);
   }
-  st.first_sample.resize(layout.edges.size());
-  st.edge_seen.assign(layout.edges.size(), 0);
   out.centre_vertex.assign(layout.charts.size(), -1);
   for (size_t f = 0; f < layout.charts.size(); ++f) {
     const std::vector<Eigen::Vector2d> corners = ChartDomain(int(layout.sides[f].size()));
     const ChartLocator locate(points, triangles, layout.charts[f], maps[f]);
-    CompareSides(layout, locate, corners, int(f), st);
+    CompareSides(locate, layout, corners, int(f), st);
     if (corners.size() == 3) {
       ExtractTriangleChart(layout, locate, corners, int(f), st);
     } else {

@@ -153,28 +153,50 @@ std::vector<int> ChartShortestPath(const ChartGraph& g, int from, int to,
   return path;
 }
 
-void PlacePaths(const std::vector<Eigen::Vector3d>& points, const ChartGraph& g,
-                const BaseComplex& base, ChartLayout& out) {
+// Places the paths in `order`; returns the edge that found no path (−1: all placed).
+int ChartPlaceInOrder(const std::vector<Eigen::Vector3d>& points, const ChartGraph& g,
+                      const BaseComplex& base, const std::vector<int>& order, ChartLayout& out) {
   std::vector<char> blocked(points.size(), 0);
   for (int v : base.nodes) blocked[v] = 1;
+  for (BaseEdgePath& edge : out.edges) {
+    edge.path.clear();
+    edge.length = 0;
+  }
+  for (int e : order) {
+    BaseEdgePath& edge = out.edges[e];
+    edge.path = ChartShortestPath(g, base.nodes[edge.a], base.nodes[edge.b], blocked);
+    if (edge.path.empty()) return e;
+    for (size_t i = 1; i + 1 < edge.path.size(); ++i) blocked[edge.path[i]] = 1;
+    for (size_t i = 1; i < edge.path.size(); ++i) {
+      edge.length += (points[edge.path[i]] - points[edge.path[i - 1]]).norm();
+    }
+  }
+  return -1;
+}
+
+// Shortest chord first; an edge whose way is barred by the paths placed
+// before it is moved to the front and every path placed again (at most once
+// per edge).
+void PlacePaths(const std::vector<Eigen::Vector3d>& points, const ChartGraph& g,
+                const BaseComplex& base, ChartLayout& out) {
   std::vector<int> order(out.edges.size());
   for (size_t i = 0; i < order.size(); ++i) order[i] = int(i);
   auto chord = [&](int e) {
     return (points[base.nodes[out.edges[e].a]] - points[base.nodes[out.edges[e].b]]).norm();
   };
   std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return chord(x) < chord(y); });
-  for (int e : order) {
-    BaseEdgePath& edge = out.edges[e];
-    edge.path = ChartShortestPath(g, base.nodes[edge.a], base.nodes[edge.b], blocked);
-    if (edge.path.empty()) {
-      throw BaseComplexError(BaseEdgeName(edge.a, edge.b),
+  std::vector<char> moved(out.edges.size(), 0);
+  for (;;) {
+    const int failed = ChartPlaceInOrder(points, g, base, order, out);
+    if (failed < 0) return;
+    if (moved[failed]) {
+      throw BaseComplexError(BaseEdgeName(out.edges[failed].a, out.edges[failed].b),
                              "has no path on the surface between its nodes clear of the paths "
                              "of the other base edges (it would cross one)");
     }
-    for (size_t i = 1; i + 1 < edge.path.size(); ++i) blocked[edge.path[i]] = 1;
-    for (size_t i = 1; i < edge.path.size(); ++i) {
-      edge.length += (points[edge.path[i]] - points[edge.path[i - 1]]).norm();
-    }
+    moved[failed] = 1;
+    order.erase(std::find(order.begin(), order.end(), failed));
+    order.insert(order.begin(), failed);
   }
 }
 
