@@ -13,7 +13,8 @@
   X(conjugate_field)          \
   X(level_sets)               \
   X(conjugate_layout)         \
-  X(grid)
+  X(grid)                     \
+  X(base_complex_quads)
 
 namespace archgeo {
 namespace problems {
