@@ -8,7 +8,8 @@
 // (spectral/base_complex_charts.h).
 //
 // The `net` hook builds the quad mesh; it is the net the run measures and
-// writes (output.mesh). No solve follows (no stage). The report's
+// writes (output.mesh). No solve follows: its one stage, `extract`, records
+// it in one round and stops. The report's
 // details.charts gives the charts, flipped parameter triangles, the output's
 // irregular vertices against the base complex's prediction, boundary edges,
 // T-junctions, how far the two charts of a base edge disagree on its
@@ -225,7 +226,18 @@ ProblemDecl base_complex_quads() {
                 "triangles) or Floater's mean-value weights (positive: never flip)")};
   d.check = &BcCheck;
   d.net = &BcNet;
-  d.stages = [](const Settings&) { return std::vector<Stage>{}; };
+  d.stages = [](const Settings&) {
+    // The quads are made by the `net` hook; one round records them (no solve).
+    Stage extract;
+    extract.name = "extract";
+    extract.rounds_key = "schedule.outer_iterations";
+    extract.step = [](HookContext&) {
+      StepResult r;
+      r.stop = "the quad mesh is the result (no solve)";
+      return r;
+    };
+    return std::vector<Stage>{extract};
+  };
   d.invalid = &BcInvalid;
   d.colors = "none";
   return d;
