@@ -64,6 +64,9 @@ TEST_F(SpecRoundTrip, EveryProblemsTemplateSolves) {
       {"conjugate_layout", {"mesh=" + triangles}},
       {"grid", {}},
       {"custom", {"mesh=" + quads}},
+      {"base_complex_quads",
+       {std::string("mesh=") + ARCHGEO_SOURCE_DIR + "/examples/octahedron_sphere.obj",
+        std::string("base_complex.mesh=") + ARCHGEO_SOURCE_DIR + "/examples/octahedron.obj"}},
   };
   const ProblemDecl custom = CustomExample();
   for (const std::string& name : ProblemNames()) {

@@ -25,10 +25,16 @@ def test_problems_and_keys():
     assert keys["tolerance.pq_normalized_max"]["default"] == 1e-3
     with pytest.raises(archgeo.InputError):
         archgeo.keys("no_such_problem")
-    # Every listed problem has its keys; custom's are those of `archgeo spec custom`.
-    for name in archgeo.problems():
-        assert any(k["name"] == "tolerance.pq_normalized_max" or k["name"].startswith("terms.")
-                   for k in archgeo.keys(name)), name
+    # Every listed problem has its keys: its own besides those every problem
+    # has (a tolerance, terms, or keys of its own such as base_complex_quads'
+    # charts.n); custom's are those of `archgeo spec custom`.
+    names = archgeo.problems()
+    keysets = {name: {k["name"] for k in archgeo.keys(name)} for name in names}
+    common = set.intersection(*keysets.values())
+    assert "mesh" in common
+    for name in names:
+        assert keysets[name] - common, name
+    assert "charts.n" in keysets["base_complex_quads"]
     assert "terms.face_planarity.weight" in {k["name"] for k in archgeo.keys("custom")}
 
 
