@@ -684,7 +684,11 @@ void WriteGrid(HookContext& c) {
   if (it == c.temporaries.end()) return;
   const Surface& surface = SurfaceOf(c);
   const std::vector<Eigen::Vector2d> uv = CurrentUv(c);
-  Mesh mesh = *c.output;
+  // Assigned, not copy-constructed: gcc 12 takes a copy-constructed
+  // Surface_mesh's flags for uninitialised (-Wmaybe-uninitialized) in some
+  // unity batches of this folder.
+  Mesh mesh;
+  mesh = *c.output;
   for (VertexIndex v : mesh.vertices()) {
     const Eigen::Vector3d x = surface.Point(uv[v.idx()]);
     mesh.point(v) = Point(x[0], x[1], x[2]);
