@@ -52,7 +52,11 @@
   X(tcd_singularity_avoidance) \
   X(tcd_singularity_placement) \
   X(tcd_transversality)        \
-  X(total_absolute_curvature)
+  X(total_absolute_curvature)  \
+  X(wave_feature)              \
+  X(wave_norm)                 \
+  X(wave_product)              \
+  X(wave_transfer)
 
 namespace archgeo {
 namespace terms {
