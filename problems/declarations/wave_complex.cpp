@@ -1,0 +1,157 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "problems/declarations/wave_complex.h"
+
+#include <cstdio>
+#include <stdexcept>
+#include <unordered_map>
+
+#include <CGAL/boost/graph/Euler_operations.h>
+
+#include "geometry/reference.h"
+#include "mesh/eigen_point.h"
+#include "problems/commands/spectral.h"
+
+namespace archgeo {
+namespace {
+
+// Splits every interior edge between two boundary vertices (a chord, e.g.
+// the inner edge of a corner triangle) at its midpoint, where f is the mean
+// of its ends: otherwise the double would hold that edge twice.
+void WaveSplitChords(Mesh* m, std::vector<double>* f) {
+  std::vector<HalfedgeIndex> chords;
+  for (EdgeIndex e : m->edges()) {
+    const HalfedgeIndex h = m->halfedge(e);
+    if (m->is_border(e)) continue;
+    if (m->is_border(m->source(h)) && m->is_border(m->target(h))) chords.push_back(h);
+  }
+  for (const HalfedgeIndex h : chords) {
+    const double value = 0.5 * ((*f)[m->source(h).idx()] + (*f)[m->target(h).idx()]);
+    const Point mid = CGAL::midpoint(m->point(m->source(h)), m->point(m->target(h)));
+    const HalfedgeIndex hn = CGAL::Euler::split_edge(h, *m);  // target(hn): the new vertex
+    m->point(m->target(hn)) = mid;
+    f->push_back(value);
+    CGAL::Euler::split_face(hn, m->next(h), *m);
+    const HalfedgeIndex o = m->opposite(h);  // into the new vertex on the other side
+    CGAL::Euler::split_face(o, m->next(m->next(o)), *m);
+  }
+}
+
+// `mesh` (triangles) glued to its mirror copy along the boundary; `original`
+// gets each vertex's source. False when the double is not a closed manifold.
+bool WaveDouble(const Mesh& mesh, Mesh* out, std::vector<int>* original) {
+  const size_t n = mesh.number_of_vertices();
+  std::vector<int> mirror(n, -1);
+  for (VertexIndex v : mesh.vertices()) {
+    out->add_vertex(mesh.point(v));
+    original->push_back(int(v.idx()));
+  }
+  for (VertexIndex v : mesh.vertices()) {
+    if (mesh.is_border(v)) {
+      mirror[v.idx()] = int(v.idx());
+    } else {
+      mirror[v.idx()] = int(out->add_vertex(mesh.point(v)).idx());
+      original->push_back(int(v.idx()));
+    }
+  }
+  std::vector<std::array<int, 3>> faces;
+  for (FaceIndex f : mesh.faces()) {
+    std::array<int, 3> t{};
+    int k = 0;
+    for (VertexIndex v : mesh.vertices_around_face(mesh.halfedge(f))) t[size_t(k++)] = int(v.idx());
+    faces.push_back(t);
+  }
+  for (const auto& t : faces) {
+    if (out->add_face(VertexIndex(t[0]), VertexIndex(t[1]), VertexIndex(t[2])) ==
+        Mesh::null_face()) {
+      return false;
+    }
+  }
+  for (const auto& t : faces) {
+    if (out->add_face(VertexIndex(mirror[t[2]]), VertexIndex(mirror[t[1]]),
+                      VertexIndex(mirror[t[0]])) == Mesh::null_face()) {
+      return false;
+    }
+  }
+  for (VertexIndex v : out->vertices()) {
+    if (out->is_border(v) || out->is_isolated(v)) return false;
+  }
+  return true;
+}
+
+std::string WaveObjPoint(const Eigen::Vector3d& p) {
+  char line[96];
+  std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", p.x(), p.y(), p.z());
+  return line;
+}
+
+}  // namespace
+
+WaveComplex BuildWaveComplex(const Mesh& mesh, const Eigen::VectorXd& f, double persistence) {
+  WaveComplex out;
+  Mesh triangles = TriangulatedCopy(mesh);
+  std::vector<double> values(f.data(), f.data() + f.size());
+  Mesh closed;
+  bool has_boundary = false;
+  for (VertexIndex v : triangles.vertices()) has_boundary = has_boundary || triangles.is_border(v);
+  if (has_boundary) {
+    out.doubled = true;
+    WaveSplitChords(&triangles, &values);
+    if (!WaveDouble(triangles, &closed, &out.original)) {
+      out.error = "the mesh doubled across its boundary is not a closed manifold";
+      return out;
+    }
+  } else {
+    closed = triangles;
+    for (VertexIndex v : triangles.vertices()) out.original.push_back(int(v.idx()));
+  }
+  const SpectralMesh m = SpectralArrays(closed);
+  out.points = m.points;
+  Eigen::VectorXd g(Eigen::Index(out.original.size()));
+  for (size_t k = 0; k < out.original.size(); ++k) {
+    g[Eigen::Index(k)] = values[size_t(out.original[k])];
+  }
+  MorseSmaleOptions options;
+  options.persistence = persistence;
+  try {
+    out.complex = BuildMorseSmale(m.points, m.triangles, m.rings, g, options);
+  } catch (const std::invalid_argument& e) {
+    out.error = e.what();
+    return out;
+  }
+  out.quasi_dual = QuasiDual(out.complex, m.points);
+  out.built = true;
+  return out;
+}
+
+std::string WaveComplexArcsObj(const WaveComplex& c) {
+  std::string vertices, lines;
+  std::unordered_map<int, int> index;
+  for (const MorseSmaleArc& a : c.complex.arcs) {
+    lines += "l";
+    for (int v : a.path) {
+      auto [it, fresh] = index.try_emplace(v, int(index.size()) + 1);
+      if (fresh) vertices += WaveObjPoint(c.points[size_t(v)]);
+      lines += " " + std::to_string(it->second);
+    }
+    lines += "\n";
+  }
+  return "# Morse-Smale complex of the standing wave cos(theta) cos(phi): one polyline per arc, "
+         "saddle to extremum" +
+         std::string(c.doubled ? " (of the surface doubled across its boundary)" : "") + "\n" +
+         vertices + lines;
+}
+
+std::string WaveQuasiDualObj(const WaveComplex& c) {
+  std::string text = "# quasi-dual of the Morse-Smale complex: extrema, one quad per saddle" +
+                     std::string(c.doubled ? " (of the surface doubled across its boundary)" : "") +
+                     "\n";
+  for (const Eigen::Vector3d& p : c.quasi_dual.points) text += WaveObjPoint(p);
+  for (const std::array<int, 4>& q : c.quasi_dual.quads) {
+    text += "f " + std::to_string(q[0] + 1) + " " + std::to_string(q[1] + 1) + " " +
+            std::to_string(q[2] + 1) + " " + std::to_string(q[3] + 1) + "\n";
+  }
+  return text;
+}
+
+}  // namespace archgeo

@@ -1,0 +1,317 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// archgeo — `wave_quads`: a standing wave on a surface whose iso-lines follow
+// a guidance field and a size field, and the quad base complex its
+// Morse–Smale complex gives [Gebreiter 2012, §8.3; Zhang et al. 2010].
+//
+// Variables: per vertex the 4-vector f_i = (cos θ cos φ, cos θ sin φ,
+// sin θ cos φ, sin θ sin φ) (block wave_f, output). The thesis' energy
+//   E = Σ_ij |P_ij f_j − C_ij f_i|² + w1 Σ_i (|f_i|² − 1)² + w2 Σ_i (f_iᵀ H f_i)²
+// is wave_transfer + wave_norm + wave_product (w1 = w2 = 0.15), with the
+// feature constraints of §8.3.2 (wave_feature, boundary vertices) as a
+// strong penalty. The edge terms are linear in f, the penalties quartic: a
+// Levenberg–Marquardt solve over f is well conditioned where a solve over the
+// angles θ, φ would be periodic and non-convex in every residual.
+//
+// Guidance field: the principal curvature directions (X along k1), smoothed
+// (wave.field_smoothing sweeps; problems/declarations/wave_field.h). Size
+// fields μ (along X) and η (along Y): wave.wavelength (file units), constant
+// or times the distance to the file's z axis (wave.size_field,
+// wave.size_field_y). ω = 2π / μ: cos θ has period μ, so the extrema of
+// cos θ cos φ lie μ/2 apart along X.
+//
+// Restarts: the stage `restart` runs wave.restarts rounds, each from new
+// random angles (seed wave.seed + round), and keeps the round with the lowest
+// E (measure wave_energy). Then the Morse–Smale complex of cos θ cos φ
+// (problems/declarations/wave_complex.h), pairs of persistence ≤
+// wave.persistence cancelled, and its quasi-dual; the report counts critical
+// points, cells and irregular vertices. The quad mesh through the charts is
+// not built here. Outputs: output.complex (OBJ lines), output.quasi_dual
+// (OBJ), wave_f in the output PLY.
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include "core/problem.h"
+#include "energies/wave_elements.h"
+#include "energies/wave_feature.h"
+#include "energies/wave_norm.h"
+#include "energies/wave_product.h"
+#include "energies/wave_transfer.h"
+#include "io/output_files.h"
+#include "mesh/eigen_point.h"
+#include "problems/declarations/wave_complex.h"
+#include "problems/declarations/wave_field.h"
+#include "problems/runtime/model.h"
+
+namespace archgeo::problems {
+namespace {
+
+namespace wd = wave_data;
+
+struct WaveState : ProblemState {
+  ElementSet edges, vertices, features;
+  int restart = 0;
+  std::shared_ptr<const WaveComplex> complex;
+};
+
+WaveState& WaveSt(HookContext& c) { return c.State<WaveState>(); }
+
+// Random angles θ, φ per vertex from the seed of restart `restart`.
+void WaveRandomise(HookContext& c, int restart) {
+  std::mt19937 rng(unsigned(c.settings->Integer("wave.seed") + restart));
+  std::uniform_real_distribution<double> angle(0.0, 2 * M_PI);
+  const int n = int(c.store->mesh().number_of_vertices());
+  for (int v = 0; v < n; ++v) {
+    const double t = angle(rng), p = angle(rng);
+    double* f = c.store->At("wave_f", v);
+    f[0] = std::cos(t) * std::cos(p);
+    f[1] = std::cos(t) * std::sin(p);
+    f[2] = std::sin(t) * std::cos(p);
+    f[3] = std::sin(t) * std::sin(p);
+  }
+}
+
+// The size field of `key` per vertex (canonical lengths).
+std::vector<double> WaveSizes(HookContext& c, const std::string& key, double wavelength) {
+  const Settings& s = *c.settings;
+  const Mesh& file = *c.input;
+  std::vector<double> out(file.number_of_vertices(), wavelength);
+  if (s.String(key) == "axis_distance") {
+    for (VertexIndex v : file.vertices()) {
+      const Eigen::Vector3d p = EigenPoint(file, v);
+      out[v.idx()] = wavelength * std::hypot(p.x(), p.y());
+    }
+  }
+  for (double& x : out) {
+    if (!(x > 0) || !std::isfinite(x)) {
+      throw s.Error(key, "the size field must be > 0 at every vertex (a vertex on the z axis "
+                         "has distance 0)");
+    }
+    x /= c.frame.scale;
+  }
+  return out;
+}
+
+void InitWave(HookContext& c) {
+  WaveState& st = WaveSt(c);
+  st = WaveState{};
+  const Settings& s = *c.settings;
+  const Mesh& mesh = c.store->mesh();
+  double wavelength = s.Number("wave.wavelength");
+  if (wavelength == 0) wavelength = 12 * c.frame.scale;  // 12 mean edge lengths
+  double wavelength_y = s.Number("wave.wavelength_y");
+  if (wavelength_y == 0) wavelength_y = wavelength;
+  const std::vector<double> mu = WaveSizes(c, "wave.size_field", wavelength);
+  const std::vector<double> eta = WaveSizes(c, "wave.size_field_y", wavelength_y);
+  const WaveFrames frames = PrincipalWaveFrames(mesh, int(s.Integer("wave.field_smoothing")));
+  st.edges = WaveEdges(mesh, frames, mu, eta);
+  st.vertices = WaveVertices(mesh);
+  st.features = s.String("wave.features") == "boundary"
+                    ? WaveFeatures(mesh, frames, s.Number("wave.corner_angle"))
+                    : ElementSet{};
+  st.features.site = Site::kVertex;
+  st.features.data_width = wd::kFeatureWidth;
+  c.SetElements("wave_edges", st.edges);
+  c.SetElements("wave_vertices", st.vertices);
+  c.SetElements("wave_features", st.features);
+  WaveRandomise(c, 0);
+}
+
+void WaveNextRestart(HookContext& c) {
+  WaveState& st = WaveSt(c);
+  if (st.restart > 0) WaveRandomise(c, st.restart);
+  ++st.restart;
+}
+
+double WaveSquares(const double* r, int n) {
+  double sum = 0;
+  for (int k = 0; k < n; ++k) sum += r[k] * r[k];
+  return sum;
+}
+
+// E = Σ w_t |r|² over the four terms, at their weights (measure wave_energy).
+double WaveEnergy(HookContext& c) {
+  const WaveState& st = WaveSt(c);
+  const Settings& s = *c.settings;
+  double e = 0, r[4];
+  auto f = [&](int v) { return c.store->At("wave_f", v); };
+  const double wt = s.Number("terms.wave_transfer.weight");
+  for (size_t k = 0; k < st.edges.size(); ++k) {
+    const double* d = st.edges.Data(k);
+    const int* v = st.edges.Vertices(k);
+    WaveTransfer(d[wd::kAlpha], d[wd::kBeta], int(d[wd::kSourceTheta]), d[wd::kSignTheta],
+                 int(d[wd::kSourcePhi]), d[wd::kSignPhi])(f(v[0]), f(v[1]), r);
+    e += wt * WaveSquares(r, 4);
+  }
+  const double wn = s.Number("terms.wave_norm.weight"), wp = s.Number("terms.wave_product.weight");
+  for (size_t k = 0; k < st.vertices.size(); ++k) {
+    const double* x = f(st.vertices.Vertices(k)[0]);
+    WaveNorm()(x, r);
+    e += wn * r[0] * r[0];
+    WaveProduct()(x, r);
+    e += wp * r[0] * r[0];
+  }
+  const double wf = s.Number("terms.wave_feature.weight");
+  for (size_t k = 0; k < st.features.size(); ++k) {
+    WaveFeature(int(st.features.Data(k)[wd::kKind]))(f(st.features.Vertices(k)[0]), r);
+    e += wf * WaveSquares(r, 3);
+  }
+  return e;
+}
+
+// max over feature vertices of |sin φ| (or |sin θ|; corners both).
+double WaveFeatureMax(HookContext& c) {
+  const WaveState& st = WaveSt(c);
+  double worst = 0;
+  for (size_t k = 0; k < st.features.size(); ++k) {
+    const double* f = c.store->At("wave_f", st.features.Vertices(k)[0]);
+    const double norm2 = std::max(WaveSquares(f, 4), 1e-300);
+    const double sin_phi = std::sqrt((f[1] * f[1] + f[3] * f[3]) / norm2);
+    const double sin_theta = std::sqrt((f[2] * f[2] + f[3] * f[3]) / norm2);
+    const int kind = int(st.features.Data(k)[wd::kKind]);
+    worst = std::max(worst, kind == wd::kSinPhi     ? sin_phi
+                            : kind == wd::kSinTheta ? sin_theta
+                                                    : std::max(sin_phi, sin_theta));
+  }
+  return worst;
+}
+
+void FinishWave(HookContext& c) {
+  WaveState& st = WaveSt(c);
+  const Mesh& mesh = *c.input;
+  Eigen::VectorXd wave(Eigen::Index(mesh.number_of_vertices()));
+  for (Eigen::Index v = 0; v < wave.size(); ++v) wave[v] = c.store->At("wave_f", int(v))[0];
+  auto complex = std::make_shared<WaveComplex>(
+      BuildWaveComplex(mesh, wave, c.settings->Number("wave.persistence")));
+  st.complex = complex;
+  const MorseSmaleComplex& m = complex->complex;
+  const QuadBaseComplex& q = complex->quasi_dual;
+  int irregular_nodes = 0;  // extrema of the complex whose valence (arcs) is not 4
+  {
+    std::vector<int> valence(m.nodes.size(), 0);
+    for (const MorseSmaleArc& a : m.arcs) ++valence[size_t(a.extremum)];
+    for (size_t k = 0; k < m.nodes.size(); ++k) {
+      if (m.nodes[k].kind != 0 && valence[k] != 4) ++irregular_nodes;
+    }
+  }
+  c.details["wave"] = {
+      {"energy", WaveEnergy(c)},
+      {"feature_vertices", st.features.size()},
+      {"feature_sin_max", WaveFeatureMax(c)},
+      {"restarts", st.restart},
+      {"doubled", complex->doubled},
+      {"complex_built", complex->built},
+      {"complex_error", complex->error},
+      {"maxima", m.maxima},
+      {"minima", m.minima},
+      {"saddles", m.saddles},
+      {"cancelled", m.cancelled},
+      {"arcs", m.arcs.size()},
+      {"unresolved_arcs", m.unresolved},
+      {"cells", m.cells.size()},
+      {"invalid_cells", m.invalid_cells},
+      {"valid", complex->built && m.valid},
+      {"irregular_vertices", irregular_nodes},
+      {"quasi_dual",
+       {{"vertices", q.points.size()},
+        {"quads", q.quads.size()},
+        {"degenerate_quads", q.degenerate_quads},
+        {"irregular_vertices", q.irregular_vertices},
+        {"euler", q.euler}}}};
+  char line[512];
+  std::snprintf(line, sizeof line,
+                "wave: E %.6g, boundary |sin| max %.2e; complex%s: max %d min %d saddles %d, "
+                "%zu cells (%d invalid), valid %s, irregular extrema %d; quasi-dual %zu quads, "
+                "%d irregular vertices\n",
+                WaveEnergy(c), WaveFeatureMax(c), complex->doubled ? " (doubled surface)" : "",
+                m.maxima, m.minima, m.saddles, m.cells.size(), m.invalid_cells,
+                complex->built && m.valid ? "yes" : "no", irregular_nodes, q.quads.size(),
+                q.irregular_vertices);
+  c.headline += line;
+  if (!complex->built) c.headline += "wave: no complex: " + complex->error + "\n";
+}
+
+void WriteWave(HookContext& c) {
+  const WaveState& st = WaveSt(c);
+  for (const char* key : {"complex", "quasi_dual"}) {
+    const auto it = c.temporaries.find(key);
+    if (it == c.temporaries.end()) continue;
+    if (!st.complex || !st.complex->built) {
+      throw c.settings->Error(std::string("output.") + key,
+                              "no complex to write: " + (st.complex ? st.complex->error : ""));
+    }
+    WriteTextFile(it->second,
+                  std::string(key) == "complex" ? WaveComplexArcsObj(*st.complex)
+                                                : WaveQuasiDualObj(*st.complex),
+                  std::string("output.") + key);
+  }
+}
+
+std::vector<Key> WaveKeys() {
+  return {
+      NumberKey("wave.wavelength", 0, 0, 1e12,
+                "wavelength μ of cos θ along the field's X (file units; with size_field "
+                "axis_distance: per unit distance to the z axis); the extrema lie μ/2 apart; "
+                "0 = 12 mean edge lengths"),
+      NumberKey("wave.wavelength_y", 0, 0, 1e12,
+                "wavelength η of cos φ along Y (as wave.wavelength); 0 = wave.wavelength"),
+      ChoiceKey("wave.size_field", "constant", {"constant", "axis_distance"},
+                "μ per vertex: constant, or wave.wavelength × the vertex's distance to the "
+                "file's z axis (a torus about z: wave.wavelength = 2π/N gives N waves around)"),
+      ChoiceKey("wave.size_field_y", "constant", {"constant", "axis_distance"},
+                "η per vertex, as wave.size_field"),
+      IntegerKey("wave.field_smoothing", 10, 0, 10000,
+                 "sweeps of 4-RoSy smoothing of the principal field (weighted by the "
+                 "anisotropy |k1 − k2|): propagates it into umbilic regions"),
+      ChoiceKey("wave.features", "boundary", {"boundary", "none"},
+                "feature constraints: boundary vertices sin φ = 0 or sin θ = 0 (by the field "
+                "direction closer to the boundary), corners both"),
+      NumberKey("wave.corner_angle", 45, 0, 180,
+                "a boundary vertex where the boundary turns by more than this (degrees) is a "
+                "corner"),
+      IntegerKey("wave.restarts", 1, 1, 1000,
+                 "solves from independent random initial angles; the one with the lowest "
+                 "energy E is kept"),
+      IntegerKey("wave.seed", 1, 0, 2147483647, "seed of the first random initialisation"),
+      NumberKey("wave.persistence", 0.05, 0, 2,
+                "saddle–extremum pairs of the complex with |Δ cos θ cos φ| ≤ this are "
+                "cancelled")};
+}
+
+}  // namespace
+
+ProblemDecl wave_quads() {
+  ProblemDecl d;
+  d.name = "wave_quads";
+  d.summary = "standing wave along the principal field and size field, its Morse–Smale "
+              "complex and quad base complex (quasi-dual)";
+  d.paper = "[Gebreiter 2012, §8.3; Zhang et al. 2010]";
+  d.terms = {{"wave_transfer", 1}, {"wave_norm", 0.15}, {"wave_product", 0.15},
+             {"wave_feature", 1e8}};
+  d.defaults = {{"solver.max_num_iterations", 100LL}};
+  d.keys = WaveKeys();
+  d.blocks = {{"wave_f", Site::kVertex, wd::kWidth, FrameMap::kInvariant, false,
+               Carry::kReinitialise, true, false,
+               "the standing wave's 4-vector (cos θ cos φ, cos θ sin φ, sin θ cos φ, "
+               "sin θ sin φ) per vertex"}};
+  d.init = &InitWave;
+  d.stages = [](const Settings&) {
+    Stage restart;
+    restart.name = "restart";
+    restart.rounds_key = "wave.restarts";
+    restart.keep_best = "wave_energy";
+    restart.before_round = &WaveNextRestart;
+    restart.logged = {"wave_energy", "wave_feature_max"};
+    return std::vector<Stage>{restart};
+  };
+  d.measures["wave_energy"] = &WaveEnergy;
+  d.measures["wave_feature_max"] = &WaveFeatureMax;
+  d.finish = &FinishWave;
+  d.output_keys = {"complex", "quasi_dual"};
+  d.write = &WriteWave;
+  d.colors = "none";
+  return d;
+}
+
+}  // namespace archgeo::problems
