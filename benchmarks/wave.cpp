@@ -1,0 +1,68 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Times the standing wave of `wave_quads` (problems/declarations/wave_quads.cpp,
+// Gebreiter 2012 §8.3: ~60 s per 10k vertices in the thesis' Matlab) per
+// 10,000 vertices: a 10,000-vertex torus (R = 3, r = 1, 125 × 80 principal
+// quads) with its known size field (6 waves round the tube, 12 round the
+// axis), and the shared Concerthall (6,897 vertices, open) with the
+// curvature field and a constant size field, one start each. The time is the
+// solve loop's (field, edges and the Levenberg–Marquardt rounds), not the
+// Morse–Smale complex (benchmarks/morse_smale.cpp).
+//
+//   ninja -C <build> archgeo_benchmarks && <build>/benchmarks/wave
+//
+// Prints per surface the vertices, seconds, seconds per 10k vertices, the
+// energy and whether the complex is valid; exit 1 above kTargetSeconds per
+// 10k vertices.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "benchmarks/program.h"
+#include "generators/smoothness_surfaces.h"
+#include "io/io.h"
+#include "problems/runtime/solve.h"
+#include "problems/spec/spec.h"
+
+namespace ARCHGEO_UNITY_ID {
+
+constexpr double kTargetSeconds = 6.0;  // per 10,000 vertices
+
+// Seconds per 10k vertices of one solve (prints its line).
+double TimeWave(const char* name, const archgeo::Mesh& mesh, const std::string& yaml) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto s = archgeo::Solve(archgeo::ParseSpec(yaml, "/benchmark/wave.yaml"), mesh, nullptr, {});
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double per = seconds * 1e4 / double(mesh.number_of_vertices());
+  const auto& w = s->details.at("wave");
+  std::printf("%-12s %6zu vertices  %6.2f s  %6.2f s per 10k  E %.4g  complex valid %s, "
+              "%d irregular quasi-dual vertices\n",
+              name, size_t(mesh.number_of_vertices()), seconds, per, w.at("energy").get<double>(),
+              w.at("valid").get<bool>() ? "yes" : "no",
+              w.at("quasi_dual").at("irregular_vertices").get<int>());
+  return per;
+}
+
+int Main(int argc, char** argv) {
+  if (argc > 1) {
+    std::fprintf(stderr, "%s: unknown argument '%s'\nusage: %s (no arguments)\n", argv[0], argv[1],
+                 argv[0]);
+    return 2;
+  }
+  const double torus = TimeWave(
+      "torus", archgeo::TorusPrincipalQuads(3, 1, 125, 80),
+      "problem: wave_quads\nwave: {wavelength: 1.0471975511965976, wavelength_y: "
+      "0.5235987755982988, size_field_y: axis_distance}\n");
+  const double hall = TimeWave(
+      "Concerthall", archgeo::ReadMesh(std::string(ARCHGEO_DATA_DIR) + "/directional_Concerthall.off"),
+      "problem: wave_quads\nwave: {wavelength: 3}\n");
+  const double worst = std::max(torus, hall);
+  std::printf("worst %.2f s per 10k vertices (target %.1f s)\n%s\n", worst, kTargetSeconds,
+              worst <= kTargetSeconds ? "PASS" : "FAIL");
+  return worst <= kTargetSeconds ? 0 : 1;
+}
+
+}  // namespace ARCHGEO_UNITY_ID
+
+ARCHGEO_BENCHMARK_PROGRAM(wave, ARCHGEO_UNITY_ID::Main);
