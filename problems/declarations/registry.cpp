@@ -14,7 +14,7 @@
   X(level_sets)               \
   X(conjugate_layout)         \
   X(grid)                     \
-  X(base_complex_quads)        \
+  X(base_complex_quads)       \
   X(wave_quads)
 
 namespace archgeo {
