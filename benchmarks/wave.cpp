@@ -20,6 +20,7 @@
 #include <string>
 
 #include "benchmarks/program.h"
+#include "core/solver_options.h"
 #include "generators/smoothness_surfaces.h"
 #include "io/io.h"
 #include "problems/runtime/solve.h"
@@ -50,6 +51,7 @@ int Main(int argc, char** argv) {
                  argv[0]);
     return 2;
   }
+  archgeo::ConfigureThreading();  // as `archgeo solve` does
   const double torus = TimeWave(
       "torus", archgeo::TorusPrincipalQuads(3, 1, 125, 80),
       "problem: wave_quads\nwave: {wavelength: 1.0471975511965976, wavelength_y: "

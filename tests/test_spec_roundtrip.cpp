@@ -63,6 +63,7 @@ TEST_F(SpecRoundTrip, EveryProblemsTemplateSolves) {
       {"level_sets", {"mesh=" + triangles}},
       {"conjugate_layout", {"mesh=" + triangles}},
       {"grid", {}},
+      {"wave_quads", {"mesh=" + triangles}},
       {"custom", {"mesh=" + quads}},
       {"base_complex_quads",
        {std::string("mesh=") + ARCHGEO_SOURCE_DIR + "/examples/octahedron_sphere.obj",
