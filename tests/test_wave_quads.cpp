@@ -22,7 +22,7 @@ namespace ARCHGEO_UNITY_ID {
 // The torus R = 3, r = 1 (60 × 30 principal quads), 3 waves round the tube
 // (μ = 2π/3) and 6 round the axis (η = 2π ρ/6): the exact wave cos(3v) cos(6u)
 // has 2 · 3 · 6 maxima, as many minima, twice as many saddles, and its
-// quasi-dual is a regular 12 × 6... torus grid of 4 · 3 · 6 = 72 quads.
+// quasi-dual is a regular torus grid of 4 · 3 · 6 = 72 quads.
 std::unique_ptr<Solution> WaveTorus() {
   const std::string yaml =
       "problem: wave_quads\n"
