@@ -13,6 +13,8 @@
 #include "core/input_error.h"
 #include "fields/triangle_surfaces.h"
 #include "generators/smoothness_surfaces.h"
+#include "problems/commands/run.h"
+#include "problems/runtime/mesh_inputs.h"
 #include "problems/runtime/solve.h"
 #include "problems/spec/spec.h"
 
@@ -99,6 +101,29 @@ TEST(WaveQuads, WaveFeatureHoldsOnTheBoundary) {
               int(w.at("valid").get<bool>()));
   EXPECT_EQ(w.at("feature_vertices").get<int>(), 4 * 30);
   EXPECT_LE(w.at("feature_sin_max").get<double>(), 1e-6);
+}
+
+// The quad base complex is the problem's goal: a wave whose complex is not a
+// valid quad complex (one start, a wavelength the torus's circles do not
+// hold a whole number of: 139 invalid cells) ends exit 4 naming it, not 0;
+// the torus's own wave (WaveTorus's spec) exits 0.
+TEST(WaveQuads, AnInvalidComplexIsAMissedGoal) {
+  const Mesh torus = TorusPrincipalQuads(3, 1, 60, 30);
+  MeshInputs inputs;
+  inputs.mesh = &torus;
+  const std::string own =
+      "problem: wave_quads\n"
+      "wave: {wavelength: 2.0943951023931953, wavelength_y: 1.0471975511965976,\n"
+      "       size_field_y: axis_distance, restarts: 3}\n";
+  const std::string off = "problem: wave_quads\nwave: {restarts: 1, wavelength: 1.3}\n";
+  for (const std::string& yaml : {off, own}) {
+    const RunResult run = RunSpec(ParseSpec(yaml, "/in-memory/wave.yaml"), {}, inputs);
+    const bool valid = run.report.at("details").at("wave").at("valid").get<bool>();
+    EXPECT_EQ(valid, yaml == own) << run.summary;
+    EXPECT_EQ(run.exit_code, valid ? 0 : 4) << run.summary;
+    EXPECT_EQ(run.report.contains("missed"), !valid);
+    EXPECT_EQ(run.summary.find("not a valid quad complex") != std::string::npos, !valid);
+  }
 }
 
 TEST(WaveQuads, SizeFieldOnTheAxisIsAnErrorNamingTheKey) {

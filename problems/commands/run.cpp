@@ -537,7 +537,9 @@ class SpecRun {
   void WriteAndMeasureOutput() {
     bool tolerances_met = true;
     for (const auto& [key, met] : solution_->loop.tolerances) tolerances_met &= met;
-    run_.exit_code = tolerances_met && design_band_met_ ? 0 : 4;
+    const bool goal_met = solution_->hooks.missed.empty();  // the problem's own goal
+    run_.exit_code = tolerances_met && design_band_met_ && goal_met ? 0 : 4;
+    if (!goal_met) run_.report["missed"] = solution_->hooks.missed;
     const Mesh& output = solution_->output;
     const auto write_start = Clock::now();
     const FaceValues face_values = ColorValues(output_, false);
@@ -645,6 +647,9 @@ class SpecRun {
                std::to_string(info_.welded_vertices) +
                " were welded on reading (limits.weld_distance; the report's input section)\n";
     }
+    if (!solution_->hooks.missed.empty()) {
+      lines += "WARNING: the problem's goal was missed (exit 4): " + solution_->hooks.missed + "\n";
+    }
     if (!design_band_met_) {
       char line[240];
       std::snprintf(line, sizeof line,
@@ -658,7 +663,9 @@ class SpecRun {
       lines += "the last round was not valid: the output is round " +
                std::to_string(solved.output_round) + ", the last valid one\n";
     }
-    if (run_.exit_code == 4) {
+    bool tolerance_missed = false;
+    for (const auto& [key, met] : solved.tolerances) tolerance_missed |= !met;
+    if (run_.exit_code == 4 && tolerance_missed) {
       lines += "WARNING: a tolerance was not met (exit 4): the result is valid and written\n";
     }
     if (!ZeroedTerm().empty()) {

@@ -230,6 +230,16 @@ void FinishWave(HookContext& c) {
                 q.irregular_vertices);
   c.headline += line;
   if (!complex->built) c.headline += "wave: no complex: " + complex->error + "\n";
+  // The quad base complex is this problem's result: without it the run
+  // has not reached its goal (exit 4), whatever the wave's energy.
+  if (!complex->built) {
+    c.missed = "the wave's Morse–Smale complex could not be built: " + complex->error;
+  } else if (!m.valid) {
+    c.missed = "the wave's Morse–Smale complex is not a valid quad complex (" +
+               std::to_string(m.invalid_cells) + " invalid cells, " +
+               std::to_string(m.unresolved) + " arcs not placed); other seeds " +
+               "(wave.seed) or more starts (wave.restarts) may give one";
+  }
 }
 
 void WriteWave(HookContext& c) {

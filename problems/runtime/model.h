@@ -79,6 +79,10 @@ class HookContext {
 
   nlohmann::json details = nlohmann::json::object();  // the report's problem entries
   std::string headline;               // lines for the terminal
+  // A goal of the problem's own that the result missed, where no tolerance
+  // key measures it (e.g. wave_quads: the complex is not a valid quad
+  // complex): "" or one line; the run then ends with exit 4 and this line.
+  std::string missed;
 
   // Results a problem leaves for the problem that nests it (problems/
   // field_pipeline.h), for its `write` hook and for tests; null until set.
