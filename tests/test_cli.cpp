@@ -27,8 +27,8 @@ struct Outcome {
   std::string output;  // stdout + stderr
 };
 
-Outcome Archgeo(const std::string& args) {
-  const std::string cmd = std::string(ARCHGEO_BINARY) + " " + args + " 2>&1";
+Outcome Archgeo(const std::string& args, const std::string& env = "") {
+  const std::string cmd = env + ARCHGEO_BINARY + " " + args + " 2>&1";
   Outcome o{0, ""};
   FILE* pipe = popen(cmd.c_str(), "r");
   std::array<char, 4096> buf;
@@ -120,6 +120,22 @@ TEST_F(CliTest, PlanarisesAGeneratedNonPlanarGrid) {
 
 // The same problem scaled by 1000 and rotated: same relative metrics, same
 // output up to the similarity.
+// Unless the user chose an OpenMP wait policy, archgeo runs with the passive
+// one (libgomp's idle threads do not spin: GOMP_SPINCOUNT 0); a user's choice
+// is kept.
+TEST_F(CliTest, OpenMpThreadsWaitPassivelyUnlessTheUserChose) {
+  const auto last_spin_count = [](const std::string& out) {
+    const size_t at = out.rfind("GOMP_SPINCOUNT = '");
+    return at == std::string::npos ? std::string("none") : out.substr(at + 18, out.find('\'', at + 18) - at - 18);
+  };
+  const Outcome unset = Archgeo("--version", "env -u OMP_WAIT_POLICY OMP_DISPLAY_ENV=verbose ");
+  EXPECT_EQ(unset.code, 0);
+  EXPECT_EQ(last_spin_count(unset.output), "0") << unset.output;
+  const Outcome active = Archgeo("--version", "env OMP_WAIT_POLICY=active OMP_DISPLAY_ENV=verbose ");
+  EXPECT_EQ(active.code, 0);
+  EXPECT_NE(last_spin_count(active.output), "0") << active.output;
+}
+
 TEST_F(CliTest, SimilarInputGivesSimilarOutput) {
   ASSERT_EQ(Archgeo("generate " + Path("a.obj") + " --nu 14 --nv 10 --noise 0.03").code, 0);
   Mesh mesh = ReadMesh(Path("a.obj"));

@@ -35,6 +35,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -156,9 +157,22 @@ std::string NotACommand(CLI::App& app, const std::string& name) {
          " (archgeo help lists them)";
 }
 
+// libgomp reads OMP_WAIT_POLICY once, as it is loaded, before main. Unset,
+// its idle threads spin after every parallel region, on cores the solve, the
+// linear solver's threads or another process need; archgeo's regions are
+// many and short (a 20-quad solve spent 70% of its CPU spinning, ten times
+// its wall time on a loaded 2-core machine). Unless the user chose a policy,
+// the process starts once more with the passive one; if that fails it goes on.
+void StartWithPassiveOpenMpWaits(char** argv) {
+  if (std::getenv("OMP_WAIT_POLICY")) return;
+  if (setenv("OMP_WAIT_POLICY", "passive", 1) != 0) return;
+  execv("/proc/self/exe", argv);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  StartWithPassiveOpenMpWaits(argv);
   // The loop rebuilds lists of hundreds of MB every round (core/residuals.h).
   // glibc maps every block above 32 MB afresh and unmaps it when freed, so
   // each growth step and each round would fault its pages in again (a large

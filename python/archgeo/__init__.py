@@ -19,7 +19,11 @@ import os
 
 import numpy as np
 
-from . import _archgeo
+# libgomp reads OMP_WAIT_POLICY once, when the extension loads it: unless the
+# user chose, its idle threads wait passively instead of spinning on the cores
+# the solve needs (as the archgeo tool does).
+os.environ.setdefault("OMP_WAIT_POLICY", "passive")
+from . import _archgeo  # noqa: E402
 from ._archgeo import STOP, InputError, __version__, generate, problems
 
 __all__ = ["STOP", "InputError", "NoValidResult", "Result", "solve", "measure", "read_mesh",

@@ -117,3 +117,16 @@ def test_compas_style_example(tmp_path):
     data = json.loads((tmp_path / "out.json").read_text())
     assert len(data["vertices"]) == len(json.loads((tmp_path / "in.json").read_text())["vertices"])
     assert data["pq_normalized_max"] <= data["tolerance"]
+
+
+def test_openmp_threads_wait_passively_unless_the_user_chose():
+    def spin_count(policy):
+        env = {k: v for k, v in os.environ.items() if k != "OMP_WAIT_POLICY"}
+        env["OMP_DISPLAY_ENV"] = "verbose"
+        if policy:
+            env["OMP_WAIT_POLICY"] = policy
+        out = subprocess.run([sys.executable, "-c", "import archgeo"], env=env,
+                             capture_output=True, text=True, check=True).stderr
+        return out.split("GOMP_SPINCOUNT = '")[-1].split("'")[0]
+    assert spin_count(None) == "0"
+    assert spin_count("active") != "0"
