@@ -9,6 +9,7 @@
 #include <string>
 
 #include "benchmarks/program.h"
+#include "core/solver_options.h"
 
 namespace bench {
 namespace {
@@ -33,6 +34,7 @@ bool RegisterProgram(const char* name, ProgramMain main) {
 }  // namespace bench
 
 int main(int argc, char** argv) {
+  archgeo::StartWithPassiveOpenMpWaits(argv);
   const auto& programs = bench::Programs();
   auto it = programs.find(bench::BaseName(argv[0]));
   if (it != programs.end()) return it->second(argc, argv);

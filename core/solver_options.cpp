@@ -3,6 +3,7 @@
 #include "core/solver_options.h"
 
 #include <dlfcn.h>
+#include <unistd.h>
 #include <omp.h>
 
 #include <algorithm>
@@ -316,6 +317,12 @@ void ConfigureThreading() {
       set(1);
     }
   }
+}
+
+void StartWithPassiveOpenMpWaits(char** argv) {
+  if (std::getenv("OMP_WAIT_POLICY")) return;
+  if (setenv("OMP_WAIT_POLICY", "passive", 1) != 0) return;
+  execv("/proc/self/exe", argv);
 }
 
 FullTeams::FullTeams() : previous_(omp_get_dynamic()) {

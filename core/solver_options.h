@@ -36,6 +36,14 @@ std::vector<std::string> SubsetParts(const Settings& settings);
 // are left in charge.
 void ConfigureThreading();
 
+// libgomp reads OMP_WAIT_POLICY once, as it is loaded, before main. Unset,
+// its idle threads spin after every parallel region, on cores the solve, the
+// linear solver's threads or another process need; archgeo's regions are
+// many and short. Called first in a program's main: unless the user chose a
+// policy, the process starts once more (same arguments) with the passive one;
+// if that fails it goes on as it is.
+void StartWithPassiveOpenMpWaits(char** argv);
+
 // In its scope archgeo's own OpenMP loops get the threads they ask for:
 // libgomp's dynamic adjustment (above) subtracts the load average, which
 // counts this process itself, and so would leave LeanSolve one thread on 2

@@ -35,7 +35,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -46,6 +45,7 @@
 #include "bench/child.h"
 #include "core/closest_name.h"
 #include "core/input_error.h"
+#include "core/solver_options.h"
 #include "io/output_files.h"
 #include "problems/commands/darboux.h"
 #include "problems/commands/generate.h"
@@ -157,22 +157,10 @@ std::string NotACommand(CLI::App& app, const std::string& name) {
          " (archgeo help lists them)";
 }
 
-// libgomp reads OMP_WAIT_POLICY once, as it is loaded, before main. Unset,
-// its idle threads spin after every parallel region, on cores the solve, the
-// linear solver's threads or another process need; archgeo's regions are
-// many and short (a 20-quad solve spent 70% of its CPU spinning, ten times
-// its wall time on a loaded 2-core machine). Unless the user chose a policy,
-// the process starts once more with the passive one; if that fails it goes on.
-void StartWithPassiveOpenMpWaits(char** argv) {
-  if (std::getenv("OMP_WAIT_POLICY")) return;
-  if (setenv("OMP_WAIT_POLICY", "passive", 1) != 0) return;
-  execv("/proc/self/exe", argv);
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-  StartWithPassiveOpenMpWaits(argv);
+  archgeo::StartWithPassiveOpenMpWaits(argv);
   // The loop rebuilds lists of hundreds of MB every round (core/residuals.h).
   // glibc maps every block above 32 MB afresh and unmaps it when freed, so
   // each growth step and each round would fault its pages in again (a large
