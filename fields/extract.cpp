@@ -29,11 +29,11 @@ using V3 = Eigen::Vector3d;
 using UnionFind = CGAL::Union_find<size_t>;
 
 enum KeyType : int { kVertex = 0, kEdgePoint = 1, kFacePoint = 2 };
-using Key = std::array<int, 4>;  // type, a, b, c
+using CutKey = std::array<int, 4>;  // type, a, b, c
 
 // A point of a (sub-)polygon of one triangle, in that triangle's coordinates.
 struct PV {
-  Key key;
+  CutKey key;
   V3 pos;
   double u = 0, v = 0;        // spacing units, own (face) coordinates
   bool on_u = false, on_v = false;
@@ -69,7 +69,7 @@ bool IsInteger(double x) { return x == std::round(x); }
 // into `cache`.
 struct Splitter {
   int face;
-  std::map<Key, PV>* cache;
+  std::map<CutKey, PV>* cache;
   int* anomalies;
 
   static double Coord(const PV& p, int c) { return c == 0 ? p.u : p.v; }
@@ -117,7 +117,7 @@ struct Splitter {
     // otherwise the slicing is inconsistent.
     const int o = 1 - c;
     const bool chord = On(a, o) && On(b, o) && Coord(a, o) == Coord(b, o);
-    Key key;
+    CutKey key;
     if (chord) {
       const int level_u = static_cast<int>(c == 0 ? level : Coord(a, o));
       const int level_v = static_cast<int>(c == 1 ? level : Coord(a, o));
@@ -195,7 +195,7 @@ struct Gluing {
 struct OutputVertices {
   std::vector<bool> boundary_vertex, corner;  // per mesh vertex
   // Per mesh vertex: its distinct neighbours along u- and v-levels.
-  std::map<int, std::set<Key>> iso_u, iso_v;
+  std::map<int, std::set<CutKey>> iso_u, iso_v;
   std::set<int> leaves_boundary;  // mesh vertices where a level leaves the boundary
 };
 
@@ -401,7 +401,7 @@ std::vector<PV> TrianglePolygon(const Input& in, const UnitValues& values,
 
 // Splits the polygon `poly` of triangle `face` by the lines u = i, then v = j.
 std::vector<std::vector<PV>> SliceByLevels(const std::vector<PV>& poly, int face, int* anomalies) {
-  std::map<Key, PV> cache;
+  std::map<CutKey, PV> cache;
   const Splitter split{face, &cache, anomalies};
   std::vector<std::vector<PV>> pieces = {poly};
   for (int c = 0; c < 2; ++c) {
@@ -442,9 +442,9 @@ Pieces SliceTriangles(const Input& in, const UnitValues& values, const EdgeCross
 // Piece sides on a triangle edge that does not lie on a level, by the keys of
 // their end points (each such side appears once from each side of the edge);
 // marks the sides on a mesh boundary edge.
-std::map<std::pair<Key, Key>, std::vector<std::pair<int, int>>> SidesAcrossEdges(
+std::map<std::pair<CutKey, CutKey>, std::vector<std::pair<int, int>>> SidesAcrossEdges(
     const Mesh& mesh, const Pieces& pieces, Gluing* gluing) {
-  std::map<std::pair<Key, Key>, std::vector<std::pair<int, int>>> shared;
+  std::map<std::pair<CutKey, CutKey>, std::vector<std::pair<int, int>>> shared;
   auto iso = [](const PV& a, const PV& b) {
     return (a.on_u && b.on_u && a.u == b.u) || (a.on_v && b.on_v && a.v == b.v);
   };
@@ -540,7 +540,7 @@ void FindLevelsAtVertices(const Pieces& pieces, const Gluing& gluing, OutputVert
 }
 
 // Number of distinct neighbours of mesh vertex v along one family of levels.
-size_t LevelDegree(const std::map<int, std::set<Key>>& iso, int v) {
+size_t LevelDegree(const std::map<int, std::set<CutKey>>& iso, int v) {
   const auto it = iso.find(v);
   return it == iso.end() ? 0 : it->second.size();
 }
@@ -565,7 +565,7 @@ bool OnMeshBoundary(const Mesh& mesh, const OutputVertices& ov, const PV& x) {
 }
 
 // The index of output vertex x in the soup, added on first use.
-int PointIndex(const Mesh& mesh, const OutputVertices& ov, const PV& x, std::map<Key, int>* index,
+int PointIndex(const Mesh& mesh, const OutputVertices& ov, const PV& x, std::map<CutKey, int>* index,
                Soup* soup) {
   auto it = index->find(x.key);
   if (it != index->end()) return it->second;
@@ -581,7 +581,7 @@ int PointIndex(const Mesh& mesh, const OutputVertices& ov, const PV& x, std::map
 // p0, as its output vertices; marks the sides it passes in `visited`.
 std::vector<int> WalkLoop(const Mesh& mesh, const Pieces& pieces, const Gluing& gluing,
                           const OutputVertices& ov, size_t p0, size_t i0,
-                          std::vector<std::vector<char>>* visited, std::map<Key, int>* index,
+                          std::vector<std::vector<char>>* visited, std::map<CutKey, int>* index,
                           Soup* soup, int* anomalies) {
   const size_t guard = 8 * pieces.polys.size() + 64;
   std::vector<int> loop;
@@ -612,7 +612,7 @@ std::vector<int> WalkLoop(const Mesh& mesh, const Pieces& pieces, const Gluing& 
 RegionLoops WalkRegionBoundaries(const Mesh& mesh, const Pieces& pieces, const Gluing& gluing,
                                  const OutputVertices& ov, Soup* soup, int* anomalies) {
   const size_t np = pieces.polys.size();
-  std::map<Key, int> index;
+  std::map<CutKey, int> index;
   std::vector<std::vector<char>> visited(np);
   for (size_t p = 0; p < np; ++p) visited[p].assign(pieces.polys[p].size(), 0);
   RegionLoops region_loops;

@@ -31,9 +31,9 @@ constexpr int kNewtonSteps = 8;
 // then removes the remaining error.
 constexpr double kRealRootTolerance = 1e-6;
 
-Eigen::Vector3d E(const Point& p) { return {p.x(), p.y(), p.z()}; }
+Eigen::Vector3d HnetE(const Point& p) { return {p.x(), p.y(), p.z()}; }
 Vec3 ToVec(const Eigen::Vector3d& x) { return {x[0], x[1], x[2]}; }
-Eigen::Vector3d E(const Vec3& x) { return {x[0], x[1], x[2]}; }
+Eigen::Vector3d HnetE(const Vec3& x) { return {x[0], x[1], x[2]}; }
 
 // Per interior edge, the layout of [Shi 2014, Fig. 2]: b0 (preferably of
 // colour 0), b3 the other end point; left face (b0,b1,b2,b3) holds halfedge
@@ -49,9 +49,9 @@ double StarPlanarity(const Mesh& mesh, VertexIndex v) {
   if (mesh.is_isolated(v)) return 0.0;
   std::vector<Eigen::Vector3d> neighbours;
   for (VertexIndex w : mesh.vertices_around_target(mesh.halfedge(v))) {
-    neighbours.push_back(E(mesh.point(w)));
+    neighbours.push_back(HnetE(mesh.point(w)));
   }
-  const Eigen::Vector3d p = E(mesh.point(v));
+  const Eigen::Vector3d p = HnetE(mesh.point(v));
   Eigen::Vector3d centroid = p;
   double mean_length = 0;
   for (const auto& w : neighbours) {
@@ -141,8 +141,8 @@ struct ShapeQuartic {
 SampledPatchwork RecomputeNormals(SampledPatchwork patchwork) {
   std::vector<Eigen::Vector3d> sums(patchwork.positions.size(), Eigen::Vector3d::Zero());
   for (const auto& t : patchwork.triangles) {
-    const Eigen::Vector3d a = E(patchwork.positions[t[0]]), b = E(patchwork.positions[t[1]]),
-                          c = E(patchwork.positions[t[2]]);
+    const Eigen::Vector3d a = HnetE(patchwork.positions[t[0]]), b = HnetE(patchwork.positions[t[1]]),
+                          c = HnetE(patchwork.positions[t[2]]);
     const Eigen::Vector3d n = (b - a).cross(c - a);  // 2 × area × unit normal
     for (int k : t) sums[k] += n;
   }
@@ -276,7 +276,7 @@ HNet BuildHNet(const Mesh& mesh, const HNetOptions& options) {
     l.b3 = int(mesh.source(h).idx());
     l.left = int(mesh.face(h).idx());
     l.right = int(mesh.face(g).idx());
-    const auto p = [&](VertexIndex v) { return E(mesh.point(v)); };
+    const auto p = [&](VertexIndex v) { return HnetE(mesh.point(v)); };
     l.determinants = SmoothJoinDeterminants(
         p(mesh.target(h)), p(mesh.target(mesh.next(h))), p(mesh.target(mesh.next(mesh.next(h)))),
         p(mesh.source(h)), p(mesh.target(mesh.next(g))), p(mesh.target(mesh.next(mesh.next(g)))));
@@ -429,7 +429,7 @@ BilinearPatch FacePatch(const Mesh& mesh, const HNet& hnet, FaceIndex f) {
   CHECK_LT(f.idx(), hnet.patch_vertices.size()) << "FacePatch: face not in the H-net";
   BilinearPatch patch;
   for (int i = 0; i < 4; ++i) {
-    patch.b[i] = E(mesh.point(VertexIndex(hnet.patch_vertices[f.idx()][i])));
+    patch.b[i] = HnetE(mesh.point(VertexIndex(hnet.patch_vertices[f.idx()][i])));
   }
   CHECK_LT(f.idx(), hnet.weights.size()) << "FacePatch: H-net without weights";
   patch.w = hnet.weights[f.idx()];
@@ -476,7 +476,7 @@ SampledPatchwork SamplePatchwork(const Mesh& mesh, const HNet& hnet, int n) {
 }
 
 std::vector<double> IsophoteAngles(const std::vector<Vec3>& normals, const Vec3& direction) {
-  const Eigen::Vector3d d = E(direction);
+  const Eigen::Vector3d d = HnetE(direction);
   if (!d.allFinite() || d.norm() == 0) {
     throw InputError("", 0, "direction", "isophote direction must be a finite non-zero vector");
   }
@@ -484,7 +484,7 @@ std::vector<double> IsophoteAngles(const std::vector<Vec3>& normals, const Vec3&
   std::vector<double> angles;
   angles.reserve(normals.size());
   for (const Vec3& n : normals) {
-    const Eigen::Vector3d e = E(n);
+    const Eigen::Vector3d e = HnetE(n);
     angles.push_back(std::atan2(e.cross(unit).norm(), e.dot(unit)) * 180.0 / M_PI);
   }
   return angles;
@@ -557,7 +557,7 @@ SampledPatchwork DarbouxMapPatchwork(const SampledPatchwork& patchwork,
   if (failed_vertices != nullptr) failed_vertices->clear();
   out.positions.reserve(patchwork.positions.size());
   for (size_t i = 0; i < patchwork.positions.size(); ++i) {
-    const DarbouxResult image = ApplyDarboux(transform, E(patchwork.positions[i]));
+    const DarbouxResult image = ApplyDarboux(transform, HnetE(patchwork.positions[i]));
     out.positions.push_back(ToVec(image.point));
     if (image.status != DarbouxStatus::kOk) {
       failed[i] = true;

@@ -444,7 +444,7 @@ void Check(const Settings& s) {
 }
 
 // The net: the uniform grid on the surface, as a quad mesh.
-void Net(HookContext& c) {
+void GridNet(HookContext& c) {
   const Settings& s = *c.settings;
   GridState& g = c.State<GridState>();
   const Surface surface = ReadSurface(s, &g.surface_name);
@@ -785,7 +785,7 @@ ProblemDecl grid() {
   d.invalid = &Folded;
   d.output_keys = {"grid"};
   d.check = &Check;
-  d.net = &Net;
+  d.net = &GridNet;
   d.init = &InitGrid;
   d.finish = &FinishGrid;
   d.write = &WriteGrid;
