@@ -484,6 +484,30 @@ class SpecRun {
     seconds_["metrics_after"] = SecondsSince(metrics_start);
   }
 
+  // tolerance.energy_not_above_input: the output's E at most the input's
+  // (both measured on the meshes as written, at the input's scale).
+  void CheckEnergyNotAboveInput() {
+    if (!s_.schema().Find("tolerance.energy_not_above_input") ||
+        !s_.Bool("tolerance.energy_not_above_input")) {
+      return;
+    }
+    const auto value = [](const AnalysisRows& rows) -> const double* {
+      for (const AnalysisRow& r : rows) {
+        if (r.key == "E") return &r.value;
+      }
+      return nullptr;
+    };
+    const double* before = value(extra_before_);
+    const double* after = value(extra_after_);
+    if (!before || !after) return;
+    energy_checked_ = true;
+    energy_input_ = *before;
+    energy_output_ = *after;
+    energy_met_ = *after <= *before;
+    run_.report["tolerances"]["tolerance.energy_not_above_input"] = {{"bound", *before}, {"met", energy_met_}};
+    if (!energy_met_) run_.exit_code = 4;
+  }
+
   // The mean of the finite values (0 for none).
   static double Mean(const std::vector<double>& values) {
     double sum = 0;
@@ -549,6 +573,7 @@ class SpecRun {
 
     const auto rest_start = Clock::now();
     nlohmann::json& rep = run_.report;
+    CheckEnergyNotAboveInput();
     const FaceValues before = ColorValues(input_, true);
     rep["colors"] = {{"value", face_values.name},   {"label", face_values.label},
                      {"units", face_values.units},  {"red_at", face_values.red_at},
@@ -615,6 +640,13 @@ class SpecRun {
                     s_.Number(key) <= 0 ? "off" : met ? "met" : "NOT met");
       lines += line;
     }
+    if (energy_checked_) {
+      char line[200];
+      std::snprintf(line, sizeof line,
+                    "tolerance tolerance.energy_not_above_input: E %.6g <= %.6g (the input's): %s\n",
+                    energy_output_, energy_input_, energy_met_ ? "met" : "NOT met");
+      lines += line;
+    }
     return lines;
   }
 
@@ -665,6 +697,7 @@ class SpecRun {
     }
     bool tolerance_missed = false;
     for (const auto& [key, met] : solved.tolerances) tolerance_missed |= !met;
+    tolerance_missed |= !energy_met_;
     if (run_.exit_code == 4 && tolerance_missed) {
       lines += "WARNING: a tolerance was not met (exit 4): the result is valid and written\n";
     }
@@ -695,6 +728,8 @@ class SpecRun {
   std::future<Validity> design_check_;  // the output alone, for a net the problem made
   Validity design_;                     // valid when not checked
   bool design_band_met_ = true;
+  bool energy_checked_ = false, energy_met_ = true;  // tolerance.energy_not_above_input
+  double energy_input_ = 0, energy_output_ = 0;
   double design_distance_ = 0, design_band_ = 0;  // file units
   std::unique_ptr<ReferenceSurface> reference_;
   Metrics before_, after_;

@@ -88,6 +88,10 @@ ProblemDecl planar_quads() {
       NumberKey("tolerance.pq_normalized_max", 1e-3, 0, 1,
                 "stop as soon as every quad has δ_PQ,n at most this; 0 = fixed weights, "
                 "rounds until at rest"),
+      BoolKey("tolerance.energy_not_above_input", true,
+              "the output's E (Σ ℓ ℓ*, Pellis §3) at most the input's: planar panels that cost "
+              "the design's fairness end exit 4 (the report's tolerances entry: bound = the "
+              "input's E, met); false = off"),
       NumberKey("continuation.band", 0, 0, 1,
                 "a face within band × tolerance costs nothing (only the excess is penalised): "
                 "less movement for a loose tolerance"),
