@@ -89,7 +89,8 @@ ProblemDecl planar_quads() {
                 "stop as soon as every quad has δ_PQ,n at most this; 0 = fixed weights, "
                 "rounds until at rest"),
       BoolKey("tolerance.energy_not_above_input", true,
-              "the output's E (Σ ℓ ℓ*, Pellis §3) at most the input's: planar panels that cost "
+              "the output's E (Σ ℓ ℓ*, Pellis §3) at most the input's (a net the user gave, "
+              "not one archgeo laid out): planar panels that cost "
               "the design's fairness end exit 4 (the report's tolerances entry: bound = the "
               "input's E, met); false = off"),
       NumberKey("continuation.band", 0, 0, 1,
