@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <queue>
+#include <string>
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
@@ -19,7 +20,8 @@ using V2 = Eigen::Vector2d;
 using V3 = Eigen::Vector3d;
 
 constexpr double kPairCircleMargin = 1e-3;  // ‖z_N − e1‖ ≤ 1 − margin in U
-constexpr int kPairTries = 3;               // r, 2r, 3r
+// The tries: U's radius as these multiples of r = region × distance.
+constexpr double kPairTries[] = {1.0 / 3, 2.0 / 3, 1, 2};
 
 V3 PairVertexPoint(const Mesh& mesh, int v) {
   const Point& p = mesh.point(VertexIndex(v));
@@ -141,13 +143,14 @@ bool OnlyRemoved(const std::vector<double>& before, const std::vector<double>& a
 // The singular vertices on U's faces must be the pair's, or the members of
 // other pending pairs (`partner`: vertex → its partner, −1 if none) with
 // their partners: a cluster of close pairs is cancelled together (`gone`).
-bool CancelInRegion(const Mesh& mesh, const FieldGeometry& g, const std::vector<bool>& in,
-                    const std::vector<int>& partner, std::vector<V2>* z_n,
-                    std::vector<double>* index, std::vector<int>* gone) {
+// Returns "" when accepted, else why not.
+std::string CancelInRegion(const Mesh& mesh, const FieldGeometry& g, const std::vector<bool>& in,
+                           const std::vector<int>& partner, std::vector<V2>* z_n,
+                           std::vector<double>* index, std::vector<int>* gone) {
   std::vector<int> singular;
   for (FaceIndex f : mesh.faces()) {
     if (!in[f.idx()]) continue;
-    if (!g.curvature[f.idx()].z_m_finite) return false;
+    if (!g.curvature[f.idx()].z_m_finite) return "mean curvature 0 at the pair (z_M at infinity)";
     for (VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
       if ((*index)[v.idx()] == 0) continue;
       if (std::find(singular.begin(), singular.end(), int(v.idx())) == singular.end()) {
@@ -157,22 +160,26 @@ bool CancelInRegion(const Mesh& mesh, const FieldGeometry& g, const std::vector<
   }
   for (int v : singular) {
     const int w = partner[size_t(v)];
-    if (w < 0 || std::find(singular.begin(), singular.end(), w) == singular.end()) return false;
+    if (w < 0 || std::find(singular.begin(), singular.end(), w) == singular.end()) {
+      return "another singularity in the region without its partner";
+    }
   }
   std::vector<V2> d;
-  if (!HarmonicDifference(mesh, g, in, *z_n, &d)) return false;
+  if (!HarmonicDifference(mesh, g, in, *z_n, &d)) return "the harmonic extension has no solution";
   std::vector<V2> trial = *z_n;
   for (FaceIndex f : mesh.faces()) {
     if (!in[f.idx()]) continue;
     trial[f.idx()] = g.curvature[f.idx()].z_m + d[f.idx()];
-    if ((trial[f.idx()] - V2(1, 0)).norm() > 1 - kPairCircleMargin) return false;
+    if ((trial[f.idx()] - V2(1, 0)).norm() > 1 - kPairCircleMargin) {
+      return "z_N would leave the auxiliary circle (no transverse pair)";
+    }
   }
   std::vector<double> after = FieldVertexIndices(mesh, g, trial);
-  if (!OnlyRemoved(*index, after, singular)) return false;
+  if (!OnlyRemoved(*index, after, singular)) return "the singularities would not just disappear";
   *z_n = std::move(trial);
   *index = std::move(after);
   *gone = std::move(singular);
-  return true;
+  return "";
 }
 
 }  // namespace
@@ -231,12 +238,14 @@ PairCancellation CancelSingularityPairs(const Mesh& mesh, const FieldGeometry& g
   std::vector<bool> changed(mesh.number_of_faces(), false);
   for (CancelledPair& c : out.pairs) {
     if (c.cancelled) continue;  // with a cluster before
-    for (int k = 1; k <= kPairTries && !c.cancelled; ++k) {
+    for (double k : kPairTries) {
+      if (c.cancelled) break;
       const double r = k * options.region * c.distance;
       const std::vector<bool> in =
           PairRegion(mesh, geometry, c.plus_vertex, c.minus_vertex, r);
       std::vector<int> gone;
-      if (!CancelInRegion(mesh, geometry, in, partner, &out.z_n, &index, &gone)) continue;
+      c.kept_because = CancelInRegion(mesh, geometry, in, partner, &out.z_n, &index, &gone);
+      if (!c.kept_because.empty()) continue;
       int faces = 0;
       for (size_t f = 0; f < in.size(); ++f) {
         if (!in[f]) continue;
@@ -246,6 +255,7 @@ PairCancellation CancelSingularityPairs(const Mesh& mesh, const FieldGeometry& g
       for (CancelledPair& other : out.pairs) {
         if (std::find(gone.begin(), gone.end(), other.plus_vertex) == gone.end()) continue;
         other.cancelled = true;
+        other.kept_because.clear();
         other.radius = r;
         other.faces_changed = faces;
       }

@@ -41,6 +41,7 @@
 // Include only where CGAL is acceptable (pulls in mesh/surface_mesh.h).
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -63,6 +64,7 @@ struct CancelledPair {
   int faces_changed = 0;                    // |U| of the accepted try (0: none;
                                             // a cluster's pairs share their U)
   double radius = 0;                        // r of the accepted try (canonical units)
+  std::string kept_because;                 // why the last try was refused ("" if cancelled)
 };
 
 struct PairCancellation {

@@ -433,6 +433,33 @@ TEST(LevelSets, InspiredMeshLayoutMeetsTheIssueFigures) {
   EXPECT_EQ(r.layout.anomalies, 0);
 }
 
+// field.cancel_pairs before the level sets (fields/pair_cancellation.h): the
+// paraboloid z = ½x² + ¼y² with a Gaussian dip −0.03 exp(−r²/0.09) has two
+// ± pairs of umbilics 0.19 apart (tests/test_field_pair_cancellation.cpp);
+// at 400 target faces the spacing is about 0.11, so both pairs are closer
+// than the default 2 spacings and are cancelled: the level sets see a field
+// without singularities. With field.cancel_pairs 0 the four stay.
+TEST(LevelSets, CloseSingularityPairsAreCancelledBeforeTheLevelSets) {
+  TriangleGridOptions opt;
+  const Mesh mesh = TriangulatedGrid(60, 60, [](double u, double v) -> Vec3 {
+    const double x = 2 * u - 1, y = 2 * v - 1;
+    return {x, y, 0.5 * x * x + 0.25 * y * y - 0.03 * std::exp(-(x * x + y * y) / 0.09)};
+  }, opt);
+  const std::string spec = "problem: level_sets\nlevel_sets: {target_faces: 400}\n";
+  const auto on = SolveYaml(spec, mesh);
+  const nlohmann::json& pc = on->details.at("field").at("pair_cancellation");
+  std::printf("dipped paraboloid: %s\n", pc.dump().c_str());
+  EXPECT_EQ(pc.at("singularities_before").get<int>(), 4);
+  EXPECT_EQ(pc.at("found").get<int>(), 2);
+  EXPECT_EQ(pc.at("cancelled").get<int>(), 2);
+  EXPECT_EQ(pc.at("close_pairs_left_2_spacings").get<int>(), 0);
+  EXPECT_TRUE(LevelSetsOf(*on)->field->field.singularities.empty());
+  EXPECT_EQ(on->details.at("layout").at("singularities").get<int>(), 0);
+  const auto off = SolveYaml(spec + "field: {cancel_pairs: 0}\n", mesh);
+  EXPECT_EQ(LevelSetsOf(*off)->field->field.singularities.size(), 4u);
+  EXPECT_EQ(off->details.at("field").at("pair_cancellation").at("close_pairs_left_2_spacings").get<int>(), 2);
+}
+
 // Rounding at the monkey saddle's −1/2 singularity [Zadravec 2010, §5]:
 // jumps rounded to even multiples of the spacing give only quads around it
 // (a valence-6 vertex, index (4 − 6)/4); odd multiples give valence-4
@@ -532,6 +559,9 @@ TEST(ConjugateLayout, SmallClosedTorusIsLaidOutOnItsSplitDesign) {
   EXPECT_TRUE(r.at("validity").at("valid").get<bool>());
   EXPECT_EQ(net.at("design_surface").at("midpoint_splits"), 1);
   EXPECT_EQ(net.at("design_surface").at("triangles"), 4096);
+  // No singularity on a torus (issue 42: no ± pair is needed there).
+  EXPECT_TRUE(net.at("field").at("singularities").empty());
+  EXPECT_EQ(net.at("field").at("pair_cancellation").at("found").get<int>(), 0);
   EXPECT_LE(net.at("layout").at("pq_normalized_mean").get<double>(), 3e-3);
   EXPECT_LE(r.at("after").at("pq_normalized_max").get<double>(), 1e-3);
   EXPECT_LE(r.at("iterations").at("inner").get<int>(), 60);

@@ -11,7 +11,8 @@
 // z_N is. Terms (½ Σ w r², unit-free):
 //   tcd_dirichlet              Σ_e w_e |ζ_f − R(2τ_fg) ζ_g|², ζ = z_N − e1
 //   tcd_transversality         λ_trans Σ_f ‖z_N − e1‖⁴ (eq. 1)
-//   tcd_singularity_avoidance  Σ_f Ψ(‖z_N − z_M‖/ρ) (off by default)
+//   tcd_singularity_avoidance  Σ_f Ψ(‖z_N − z_M‖/ρ) over the faces the user
+//                              does not constrain (tcd_free_faces)
 //   tcd_singularity_placement  z_N = z_M at field.singularities
 //   tcd_prescribed_direction   z_N on the line of Prop. 1 of a prescribed
 //                              direction at field.directions / field.constraints
@@ -345,7 +346,14 @@ void InitConjugateField(HookContext& c) {
   }
   con.boundary_faces = int(along_boundary.size());
 
-  ElementSet edges, all, placements, directions;
+  // The faces the user constrains (placements, moves, prescribed
+  // directions): singularity avoidance (tcd_free_faces) leaves them alone.
+  std::vector<bool> constrained(size_t(faces), false);
+  for (int f : con.placements) constrained[size_t(f)] = true;
+  for (const Move& m : con.moves) constrained[size_t(m.from)] = constrained[size_t(m.to)] = true;
+  for (const auto& p : con.prescribed) constrained[size_t(p.first)] = true;
+
+  ElementSet edges, all, free_faces, placements, directions;
   edges.site = Site::kEdge;
   edges.data_width = 2;
   for (const EdgeTransport& t : g.transports) {
@@ -355,14 +363,18 @@ void InitConjugateField(HookContext& c) {
               boundary[mesh.source(h).idx()] || boundary[mesh.target(h).idx()] ? kBoundary : 0,
               {t.angle, t.weight}, int(t.g.idx()));
   }
-  all.site = placements.site = directions.site = Site::kFace;
-  all.data_width = 3;
+  all.site = free_faces.site = placements.site = directions.site = Site::kFace;
+  all.data_width = free_faces.data_width = 3;
   placements.data_width = 2;
   directions.data_width = 6;
   for (FaceIndex f : mesh.faces()) {
     const FaceCurvature& k = g.curvature[f.idx()];
     all.Add(FaceVertices(mesh, f), int(f.idx()), int(f.idx()), -1, FaceFlags(mesh, boundary, f),
             {k.z_m.x(), k.z_m.y(), k.z_m_finite ? 1.0 : 0.0});
+    if (!constrained[f.idx()]) {
+      free_faces.Add(FaceVertices(mesh, f), int(f.idx()), int(f.idx()), -1,
+                     FaceFlags(mesh, boundary, f), {k.z_m.x(), k.z_m.y(), k.z_m_finite ? 1.0 : 0.0});
+    }
     double* z = c.store->At("z_n", int(f.idx()));
     z[0] = 1.0;  // e1: the principal directions
     z[1] = 0.0;
@@ -383,6 +395,7 @@ void InitConjugateField(HookContext& c) {
   }
   c.SetElements("tcd_edges", std::move(edges));
   c.SetElements("tcd_faces", std::move(all));
+  c.SetElements("tcd_free_faces", std::move(free_faces));
   c.SetElements("tcd_placements", std::move(placements));
   c.SetElements("tcd_prescribed", std::move(directions));
 }

@@ -56,7 +56,7 @@ std::unique_ptr<Solution> Nested(const char* problem, const Settings& parent, co
 std::vector<TermUse> FieldTerms() {
   return {{"tcd_dirichlet", 1},
           {"tcd_transversality", 0.1},
-          {"tcd_singularity_avoidance", 0},
+          {"tcd_singularity_avoidance", 0, {}, "tcd_free_faces"},
           {"tcd_singularity_placement", 100},
           {"tcd_prescribed_direction", 100}};
 }
@@ -130,6 +130,15 @@ std::vector<Key> LevelSetKeys() {
                     "extraordinary face)"),
           IntegerKey("level_sets.rounds", 1, 1, 100,
                      "Ceres solves per stage (eq. 5; eq. 6; with the jumps fixed)"),
+          NumberKey("field.cancel_pairs", 2, 0, 1e3,
+                    "singularities of opposite index (+k, −k) closer than this many level-set "
+                    "spacings are cancelled before the level sets by re-solving the field's "
+                    "difference z_N − z_M around the pair as a harmonic extension of its values "
+                    "around (fields/pair_cancellation.h; the rest of the field unchanged); a "
+                    "pair is kept when that would create or move another singularity; 0 = off"),
+          NumberKey("field.cancel_region", 1.5, 0.5, 20,
+                    "radius of the region re-solved around a pair, in the pair's distances "
+                    "(tried at 1, 2 and 3 times this)"),
           NumberKey("extraction.merge_fraction", 0.05, 0, 0.5,
                     "layout vertices joined by an edge shorter than this fraction of the median "
                     "edge are merged"),

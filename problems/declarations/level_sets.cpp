@@ -59,6 +59,7 @@
 #include "energies/level_set_gradient.h"
 #include "fields/cut_jumps.h"
 #include "fields/field_io.h"
+#include "fields/pair_cancellation.h"
 #include "io/io.h"
 #include "analysis/metrics.h"
 #include "geometry/reference.h"
@@ -93,11 +94,80 @@ BlockDecl Values(const char* name, const char* doc) {
   return {name, Site::kVertex, 1, FrameMap::kLength, false, Carry::kReinitialise, true, false, doc};
 }
 
+// Σ_f A_f sin∠(v_f, w_f): the area of the level sets' cells (Δw² per cell).
+double CellArea(const FieldGeometry& geo, const TcdField& field) {
+  double area = 0;
+  for (size_t f = 0; f < field.pairs.size(); ++f) {
+    const ConjugatePair& p = field.pairs[f];
+    area += geo.frames.area[f] * (p.valid ? std::abs(p.v.x() * p.w.y() - p.v.y() * p.w.x()) : 1.0);
+  }
+  return area;
+}
+
+// The spacing Δw (canonical frame) for a field.
+double LevelSpacing(const Settings& s, const HookContext& c, const FieldResult& field) {
+  const double edge = s.Number("level_sets.edge_length");
+  return edge > 0 ? edge / c.frame.scale
+                  : std::sqrt(CellArea(field.geometry, field.field) /
+                              double(s.Integer("level_sets.target_faces")));
+}
+
+// field.cancel_pairs: ± pairs closer than that many spacings cancelled by
+// the surgery of fields/pair_cancellation.h before the level sets; the
+// field re-evaluated, its report amended.
+std::shared_ptr<const FieldResult> CancelPairs(const Settings& s, const HookContext& c,
+                                               std::shared_ptr<const FieldResult> field) {
+  const double spacings = s.Number("field.cancel_pairs");
+  const double spacing = LevelSpacing(s, c, *field);
+  PairCancellationOptions options;
+  options.max_distance = spacings * spacing;
+  options.region = s.Number("field.cancel_region");
+  const PairCancellation pc =
+      CancelSingularityPairs(field->mesh, field->geometry, field->field, options);
+  const size_t before = field->field.singularities.size();
+  auto out = std::make_shared<FieldResult>(*field);
+  if (pc.cancelled > 0) out->field = EvaluateField(out->mesh, out->geometry, pc.z_n);
+  const TcdField& f = out->field;
+  const size_t remaining =
+      CloseOppositePairs(f.singularities, 2 * spacing).size();  // the acceptance's 2 spacings
+  nlohmann::json pairs = nlohmann::json::array();
+  for (const CancelledPair& p : pc.pairs) {
+    pairs.push_back({{"plus_vertex", p.plus_vertex}, {"minus_vertex", p.minus_vertex},
+                     {"index", p.index}, {"distance_spacings", p.distance / spacing},
+                     {"cancelled", p.cancelled}, {"faces_changed", p.faces_changed},
+                     {"radius", p.radius * c.frame.scale}, {"kept_because", p.kept_because}});
+  }
+  nlohmann::json& d = out->details;
+  d["pair_cancellation"] = {{"max_distance_spacings", spacings},
+                            {"found", pc.found},
+                            {"cancelled", pc.cancelled},
+                            {"singularities_before", before},
+                            {"singularities_after", f.singularities.size()},
+                            {"faces_changed", pc.faces_changed},
+                            {"close_pairs_left_2_spacings", remaining},
+                            {"pairs", pairs}};
+  nlohmann::json singular = nlohmann::json::array();
+  for (const Singularity& x : f.singularities) {
+    const Vec3 p = c.frame.FromCanonical(Vec3{x.position.x(), x.position.y(), x.position.z()});
+    singular.push_back({{"vertex", int(x.vertex.idx())}, {"index", x.index}, {"position", {p[0], p[1], p[2]}}});
+  }
+  d["singularities"] = singular;
+  d["index_sum"] = f.index_sum;
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "singularity pairs closer than %g spacings: %d found, %d cancelled (%zu → %zu "
+                "singularities, %d faces changed); ± pairs closer than 2 spacings left: %zu\n",
+                spacings, pc.found, pc.cancelled, before, f.singularities.size(),
+                pc.faces_changed, remaining);
+  out->headline += line;
+  return out;
+}
+
 void InitLevelSets(HookContext& c) {
   const Settings& s = *c.settings;
   LevelSetState& st = St(c);
   st = LevelSetState{};
-  st.field = SolveField(s, *c.input, c.progress);
+  st.field = CancelPairs(s, c, SolveField(s, *c.input, c.progress));
   const FieldGeometry& geo = st.field->geometry;
   const TcdField& field = st.field->field;
   const Mesh& mesh = c.store->mesh();
@@ -108,16 +178,12 @@ void InitLevelSets(HookContext& c) {
   st.cut = ComputeCutGraph(mesh, singular);
   const size_t faces = mesh.number_of_faces();
   std::vector<V2> v(faces, V2::Zero()), w(faces, V2::Zero());
-  double cell_area = 0;
   for (size_t f = 0; f < faces; ++f) {
     const ConjugatePair& p = field.pairs[f];
-    double sine = 1;
     if (p.valid) {
       v[f] = p.v;
       w[f] = p.w;
-      sine = std::abs(p.v.x() * p.w.y() - p.v.y() * p.w.x());
     }
-    cell_area += geo.frames.area[f] * sine;
   }
   const PairOrientation orientation =
       OrientPair(mesh, st.cut, geo.transports, geo.edge_to_transport, v, w);
@@ -129,9 +195,7 @@ void InitLevelSets(HookContext& c) {
     st.v[f] = double(st.ov.face_sign[f]) * v[f];
     st.w[f] = double(st.ow.face_sign[f]) * w[f];
   }
-  const double edge = s.Number("level_sets.edge_length");
-  st.spacing = edge > 0 ? edge / c.frame.scale
-                        : std::sqrt(cell_area / double(s.Integer("level_sets.target_faces")));
+  st.spacing = LevelSpacing(s, c, *st.field);
 
   const int wedges = st.cut.num_wedges;
   const int chains = std::max<int>(1, int(st.cut.chains.size()));
