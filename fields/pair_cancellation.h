@@ -23,8 +23,8 @@
 // (z_M inside the auxiliary circle: only there can a singularity be, Prop.
 // 4) whose centroid is within r of the segment between the two singular
 // vertices,
-// r = region × the pair's distance (at least the two stars); tried with r,
-// 2r and 3r. A try is accepted only if every other singular vertex on U's
+// r = region × the pair's distance (at least the two stars); tried with
+// r/3, 2r/3, r and 2r, the smallest accepted. A try is accepted only if every other singular vertex on U's
 // faces belongs to another pair found, with its partner (a cluster of close
 // pairs, total index 0, is cancelled together), z_M is finite on U, every new z_N lies inside the auxiliary circle with a
 // margin (a TCD pair exists: ‖z_N − e1‖ ≤ 1 − 1e-3) and the field's

@@ -138,7 +138,7 @@ std::vector<Key> LevelSetKeys() {
                     "pair is kept when that would create or move another singularity; 0 = off"),
           NumberKey("field.cancel_region", 1.5, 0.5, 20,
                     "radius of the region re-solved around a pair, in the pair's distances "
-                    "(tried at 1, 2 and 3 times this)"),
+                    "(tried at 1/3, 2/3, 1 and 2 times this, the smallest that cancels the pair)"),
           NumberKey("extraction.merge_fraction", 0.05, 0, 0.5,
                     "layout vertices joined by an edge shorter than this fraction of the median "
                     "edge are merged"),
