@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <queue>
 #include <string>
 
@@ -65,11 +66,6 @@ std::vector<bool> PairRegion(const Mesh& mesh, const FieldGeometry& geo, int p, 
     }
   }
   return in;
-}
-
-V2 PairRotate(const V2& x, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  return V2(c * x.x() - s * x.y(), s * x.x() + c * x.y());
 }
 
 // d = z_N − z_M on U: the connection-harmonic extension of d from the faces
@@ -182,6 +178,52 @@ std::string CancelInRegion(const Mesh& mesh, const FieldGeometry& g, const std::
   return "";
 }
 
+// The boundary vertex nearest to vertex v (straight distance), −1 if none.
+int NearestBoundaryVertex(const Mesh& mesh, const std::vector<bool>& boundary, int v,
+                          double* distance) {
+  const V3 x = PairVertexPoint(mesh, v);
+  int best = -1;
+  *distance = std::numeric_limits<double>::infinity();
+  for (VertexIndex b : mesh.vertices()) {
+    if (!boundary[b.idx()]) continue;
+    const double d = (PairVertexPoint(mesh, int(b.idx())) - x).norm();
+    if (d < *distance) {
+      *distance = d;
+      best = int(b.idx());
+    }
+  }
+  return best;
+}
+
+// Singularities near the boundary pushed out (options.boundary_distance).
+void PushOut(const Mesh& mesh, const FieldGeometry& geometry,
+             const PairCancellationOptions& options, std::vector<double>* index,
+             std::vector<bool>* changed, PairCancellation* out) {
+  std::vector<bool> boundary(mesh.number_of_vertices(), false);
+  for (HalfedgeIndex h : mesh.halfedges()) {
+    if (mesh.is_border(h)) boundary[mesh.target(h).idx()] = true;
+  }
+  std::vector<int> partner(mesh.number_of_vertices(), -1);
+  for (VertexIndex v : mesh.vertices()) {
+    if ((*index)[v.idx()] == 0) continue;
+    double distance = 0;
+    const int b = NearestBoundaryVertex(mesh, boundary, int(v.idx()), &distance);
+    if (b < 0 || distance >= options.boundary_distance) continue;
+    ++out->near_boundary;
+    partner[v.idx()] = int(v.idx());  // it goes alone
+    for (double k : kPairTries) {
+      const std::vector<bool> in =
+          PairRegion(mesh, geometry, int(v.idx()), b, k * options.region * distance);
+      std::vector<int> gone;
+      if (!CancelInRegion(mesh, geometry, in, partner, &out->z_n, index, &gone).empty()) continue;
+      ++out->pushed_out;
+      for (size_t f = 0; f < in.size(); ++f) (*changed)[f] = (*changed)[f] || in[f];
+      break;
+    }
+    partner[v.idx()] = -1;
+  }
+}
+
 }  // namespace
 
 std::vector<double> FieldVertexIndices(const Mesh& mesh, const FieldGeometry& geometry,
@@ -225,7 +267,7 @@ PairCancellation CancelSingularityPairs(const Mesh& mesh, const FieldGeometry& g
                                         const PairCancellationOptions& options) {
   PairCancellation out;
   out.z_n = field.z_n;
-  if (options.max_distance <= 0 || field.smooth_fallback) return out;
+  if (field.smooth_fallback) return out;
   out.pairs = CloseOppositePairs(field.singularities, options.max_distance);
   out.found = int(out.pairs.size());
 
@@ -263,6 +305,7 @@ PairCancellation CancelSingularityPairs(const Mesh& mesh, const FieldGeometry& g
     }
   }
   for (const CancelledPair& c : out.pairs) out.cancelled += c.cancelled ? 1 : 0;
+  if (options.boundary_distance > 0) PushOut(mesh, geometry, options, &index, &changed, &out);
   for (bool x : changed) out.faces_changed += x ? 1 : 0;
   return out;
 }

@@ -54,6 +54,12 @@ namespace archgeo {
 struct PairCancellationOptions {
   double max_distance = 0;  // pairs closer than this (canonical units); 0 = none
   double region = 1.5;      // U's radius in pair distances (first try)
+  // A singularity left closer than this to the boundary (canonical units; 0
+  // = none) is pushed out of the domain [Gebreiter 2012, §8.1.1]: the same
+  // surgery on U around the segment to the nearest boundary vertex, where d
+  // is free along the boundary (no ring there), accepted only if exactly
+  // that singularity disappears.
+  double boundary_distance = 0;
 };
 
 struct CancelledPair {
@@ -71,6 +77,7 @@ struct PairCancellation {
   std::vector<Eigen::Vector2d> z_n;  // the field after the surgery, per face
   std::vector<CancelledPair> pairs;  // the pairs found, in the order tried
   int found = 0, cancelled = 0;
+  int near_boundary = 0, pushed_out = 0;  // singularities closer than boundary_distance
   int faces_changed = 0;             // faces whose z_N changed (union over pairs)
 };
 

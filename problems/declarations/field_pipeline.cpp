@@ -118,7 +118,23 @@ std::vector<TermUse> LevelSetTerms() {
 }
 
 std::vector<Key> LevelSetKeys() {
-  return {IntegerKey("level_sets.target_faces", 1600, 1, 100000000,
+  // The field.* keys first: they follow FieldKeys() in every problem that has
+  // both, and a spec template writes each section once.
+  return {NumberKey("field.cancel_pairs", 2, 0, 1e3,
+                    "singularities of opposite index (+k, −k) closer than this many level-set "
+                    "spacings are cancelled before the level sets by re-solving the field's "
+                    "difference z_N − z_M around the pair as a harmonic extension of its values "
+                    "around (fields/pair_cancellation.h; the rest of the field unchanged); a "
+                    "pair is kept when that would create or move another singularity; 0 = off"),
+          NumberKey("field.cancel_region", 1.5, 0.5, 20,
+                    "radius of the region re-solved around a pair, in the pair's distances "
+                    "(tried at 1/3, 2/3, 1 and 2 times this, the smallest that cancels the pair)"),
+          NumberKey("field.boundary_push", 1, 0, 1e3,
+                    "a singularity closer than this many level-set spacings to the boundary "
+                    "(after field.cancel_pairs) is pushed out of the domain by the same surgery, "
+                    "the field free along the boundary [Gebreiter 2012, §8.1.1]; kept when that "
+                    "would change any other singularity; 0 = off"),
+          IntegerKey("level_sets.target_faces", 1600, 1, 100000000,
                      "faces the layout should have: the spacing is Δw = sqrt(Σ_f A_f sin∠(v, w) "
                      "/ target_faces)"),
           NumberKey("level_sets.edge_length", 0, 0, kMaxCoordinate,
@@ -130,15 +146,6 @@ std::vector<Key> LevelSetKeys() {
                     "extraordinary face)"),
           IntegerKey("level_sets.rounds", 1, 1, 100,
                      "Ceres solves per stage (eq. 5; eq. 6; with the jumps fixed)"),
-          NumberKey("field.cancel_pairs", 2, 0, 1e3,
-                    "singularities of opposite index (+k, −k) closer than this many level-set "
-                    "spacings are cancelled before the level sets by re-solving the field's "
-                    "difference z_N − z_M around the pair as a harmonic extension of its values "
-                    "around (fields/pair_cancellation.h; the rest of the field unchanged); a "
-                    "pair is kept when that would create or move another singularity; 0 = off"),
-          NumberKey("field.cancel_region", 1.5, 0.5, 20,
-                    "radius of the region re-solved around a pair, in the pair's distances "
-                    "(tried at 1/3, 2/3, 1 and 2 times this, the smallest that cancels the pair)"),
           NumberKey("extraction.merge_fraction", 0.05, 0, 0.5,
                     "layout vertices joined by an edge shorter than this fraction of the median "
                     "edge are merged"),

@@ -122,11 +122,12 @@ std::shared_ptr<const FieldResult> CancelPairs(const Settings& s, const HookCont
   PairCancellationOptions options;
   options.max_distance = spacings * spacing;
   options.region = s.Number("field.cancel_region");
+  options.boundary_distance = s.Number("field.boundary_push") * spacing;
   const PairCancellation pc =
       CancelSingularityPairs(field->mesh, field->geometry, field->field, options);
   const size_t before = field->field.singularities.size();
   auto out = std::make_shared<FieldResult>(*field);
-  if (pc.cancelled > 0) out->field = EvaluateField(out->mesh, out->geometry, pc.z_n);
+  if (pc.cancelled > 0 || pc.pushed_out > 0) out->field = EvaluateField(out->mesh, out->geometry, pc.z_n);
   const TcdField& f = out->field;
   const size_t remaining =
       CloseOppositePairs(f.singularities, 2 * spacing).size();  // the acceptance's 2 spacings
@@ -145,6 +146,9 @@ std::shared_ptr<const FieldResult> CancelPairs(const Settings& s, const HookCont
                             {"singularities_after", f.singularities.size()},
                             {"faces_changed", pc.faces_changed},
                             {"close_pairs_left_2_spacings", remaining},
+                            {"boundary_push_spacings", s.Number("field.boundary_push")},
+                            {"near_boundary", pc.near_boundary},
+                            {"pushed_out", pc.pushed_out},
                             {"pairs", pairs}};
   nlohmann::json singular = nlohmann::json::array();
   for (const Singularity& x : f.singularities) {
@@ -153,12 +157,13 @@ std::shared_ptr<const FieldResult> CancelPairs(const Settings& s, const HookCont
   }
   d["singularities"] = singular;
   d["index_sum"] = f.index_sum;
-  char line[256];
+  char line[320];
   std::snprintf(line, sizeof line,
                 "singularity pairs closer than %g spacings: %d found, %d cancelled (%zu → %zu "
-                "singularities, %d faces changed); ± pairs closer than 2 spacings left: %zu\n",
+                "singularities, %d faces changed); ± pairs closer than 2 spacings left: %zu; "
+                "near the boundary %d, pushed out %d\n",
                 spacings, pc.found, pc.cancelled, before, f.singularities.size(),
-                pc.faces_changed, remaining);
+                pc.faces_changed, remaining, pc.near_boundary, pc.pushed_out);
   out->headline += line;
   return out;
 }
