@@ -70,7 +70,7 @@ std::vector<bool> PairRegion(const Mesh& mesh, const FieldGeometry& geo, int p, 
 
 // d = z_N − z_M on U: the connection-harmonic extension of d from the faces
 // next to U. Returns false when U has no such face or the solve fails.
-bool HarmonicDifference(const Mesh& mesh, const FieldGeometry& g, const std::vector<bool>& in,
+bool PairHarmonicDifference(const Mesh& mesh, const FieldGeometry& g, const std::vector<bool>& in,
                         const std::vector<V2>& z_n, std::vector<V2>* d_out) {
   const int faces = int(mesh.number_of_faces());
   std::vector<int> slot(size_t(faces), -1);
@@ -126,7 +126,7 @@ bool HarmonicDifference(const Mesh& mesh, const FieldGeometry& g, const std::vec
 }
 
 // Whether `after` has exactly the singular vertices of `before` but `gone`.
-bool OnlyRemoved(const std::vector<double>& before, const std::vector<double>& after,
+bool PairOnlyRemoved(const std::vector<double>& before, const std::vector<double>& after,
                  const std::vector<int>& gone) {
   for (size_t v = 0; v < before.size(); ++v) {
     const bool removed = std::find(gone.begin(), gone.end(), int(v)) != gone.end();
@@ -140,7 +140,7 @@ bool OnlyRemoved(const std::vector<double>& before, const std::vector<double>& a
 // other pending pairs (`partner`: vertex → its partner, −1 if none) with
 // their partners: a cluster of close pairs is cancelled together (`gone`).
 // Returns "" when accepted, else why not.
-std::string CancelInRegion(const Mesh& mesh, const FieldGeometry& g, const std::vector<bool>& in,
+std::string PairCancelInRegion(const Mesh& mesh, const FieldGeometry& g, const std::vector<bool>& in,
                            const std::vector<int>& partner, std::vector<V2>* z_n,
                            std::vector<double>* index, std::vector<int>* gone) {
   std::vector<int> singular;
@@ -161,7 +161,7 @@ std::string CancelInRegion(const Mesh& mesh, const FieldGeometry& g, const std::
     }
   }
   std::vector<V2> d;
-  if (!HarmonicDifference(mesh, g, in, *z_n, &d)) return "the harmonic extension has no solution";
+  if (!PairHarmonicDifference(mesh, g, in, *z_n, &d)) return "the harmonic extension has no solution";
   std::vector<V2> trial = *z_n;
   for (FaceIndex f : mesh.faces()) {
     if (!in[f.idx()]) continue;
@@ -171,7 +171,7 @@ std::string CancelInRegion(const Mesh& mesh, const FieldGeometry& g, const std::
     }
   }
   std::vector<double> after = FieldVertexIndices(mesh, g, trial);
-  if (!OnlyRemoved(*index, after, singular)) return "the singularities would not just disappear";
+  if (!PairOnlyRemoved(*index, after, singular)) return "the singularities would not just disappear";
   *z_n = std::move(trial);
   *index = std::move(after);
   *gone = std::move(singular);
@@ -179,7 +179,7 @@ std::string CancelInRegion(const Mesh& mesh, const FieldGeometry& g, const std::
 }
 
 // The boundary vertex nearest to vertex v (straight distance), −1 if none.
-int NearestBoundaryVertex(const Mesh& mesh, const std::vector<bool>& boundary, int v,
+int PairNearestBoundaryVertex(const Mesh& mesh, const std::vector<bool>& boundary, int v,
                           double* distance) {
   const V3 x = PairVertexPoint(mesh, v);
   int best = -1;
@@ -196,7 +196,7 @@ int NearestBoundaryVertex(const Mesh& mesh, const std::vector<bool>& boundary, i
 }
 
 // Singularities near the boundary pushed out (options.boundary_distance).
-void PushOut(const Mesh& mesh, const FieldGeometry& geometry,
+void PairPushOut(const Mesh& mesh, const FieldGeometry& geometry,
              const PairCancellationOptions& options, std::vector<double>* index,
              std::vector<bool>* changed, PairCancellation* out) {
   std::vector<bool> boundary(mesh.number_of_vertices(), false);
@@ -207,7 +207,7 @@ void PushOut(const Mesh& mesh, const FieldGeometry& geometry,
   for (VertexIndex v : mesh.vertices()) {
     if ((*index)[v.idx()] == 0) continue;
     double distance = 0;
-    const int b = NearestBoundaryVertex(mesh, boundary, int(v.idx()), &distance);
+    const int b = PairNearestBoundaryVertex(mesh, boundary, int(v.idx()), &distance);
     if (b < 0 || distance >= options.boundary_distance) continue;
     ++out->near_boundary;
     partner[v.idx()] = int(v.idx());  // it goes alone
@@ -215,7 +215,7 @@ void PushOut(const Mesh& mesh, const FieldGeometry& geometry,
       const std::vector<bool> in =
           PairRegion(mesh, geometry, int(v.idx()), b, k * options.region * distance);
       std::vector<int> gone;
-      if (!CancelInRegion(mesh, geometry, in, partner, &out->z_n, index, &gone).empty()) continue;
+      if (!PairCancelInRegion(mesh, geometry, in, partner, &out->z_n, index, &gone).empty()) continue;
       ++out->pushed_out;
       for (size_t f = 0; f < in.size(); ++f) (*changed)[f] = (*changed)[f] || in[f];
       break;
@@ -286,7 +286,7 @@ PairCancellation CancelSingularityPairs(const Mesh& mesh, const FieldGeometry& g
       const std::vector<bool> in =
           PairRegion(mesh, geometry, c.plus_vertex, c.minus_vertex, r);
       std::vector<int> gone;
-      c.kept_because = CancelInRegion(mesh, geometry, in, partner, &out.z_n, &index, &gone);
+      c.kept_because = PairCancelInRegion(mesh, geometry, in, partner, &out.z_n, &index, &gone);
       if (!c.kept_because.empty()) continue;
       int faces = 0;
       for (size_t f = 0; f < in.size(); ++f) {
@@ -305,7 +305,7 @@ PairCancellation CancelSingularityPairs(const Mesh& mesh, const FieldGeometry& g
     }
   }
   for (const CancelledPair& c : out.pairs) out.cancelled += c.cancelled ? 1 : 0;
-  if (options.boundary_distance > 0) PushOut(mesh, geometry, options, &index, &changed, &out);
+  if (options.boundary_distance > 0) PairPushOut(mesh, geometry, options, &index, &changed, &out);
   for (bool x : changed) out.faces_changed += x ? 1 : 0;
   return out;
 }

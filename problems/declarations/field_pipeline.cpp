@@ -129,7 +129,7 @@ std::vector<Key> LevelSetKeys() {
           NumberKey("field.cancel_region", 1.5, 0.5, 20,
                     "radius of the region re-solved around a pair, in the pair's distances "
                     "(tried at 1/3, 2/3, 1 and 2 times this, the smallest that cancels the pair)"),
-          NumberKey("field.boundary_push", 1, 0, 1e3,
+          NumberKey("field.boundary_push", 0, 0, 1e3,
                     "a singularity closer than this many level-set spacings to the boundary "
                     "(after field.cancel_pairs) is pushed out of the domain by the same surgery, "
                     "the field free along the boundary [Gebreiter 2012, §8.1.1]; kept when that "

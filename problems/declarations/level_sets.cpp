@@ -95,7 +95,7 @@ BlockDecl Values(const char* name, const char* doc) {
 }
 
 // Σ_f A_f sin∠(v_f, w_f): the area of the level sets' cells (Δw² per cell).
-double CellArea(const FieldGeometry& geo, const TcdField& field) {
+double LevelSetCellArea(const FieldGeometry& geo, const TcdField& field) {
   double area = 0;
   for (size_t f = 0; f < field.pairs.size(); ++f) {
     const ConjugatePair& p = field.pairs[f];
@@ -105,20 +105,20 @@ double CellArea(const FieldGeometry& geo, const TcdField& field) {
 }
 
 // The spacing Δw (canonical frame) for a field.
-double LevelSpacing(const Settings& s, const HookContext& c, const FieldResult& field) {
+double LevelSetSpacing(const Settings& s, const HookContext& c, const FieldResult& field) {
   const double edge = s.Number("level_sets.edge_length");
   return edge > 0 ? edge / c.frame.scale
-                  : std::sqrt(CellArea(field.geometry, field.field) /
+                  : std::sqrt(LevelSetCellArea(field.geometry, field.field) /
                               double(s.Integer("level_sets.target_faces")));
 }
 
 // field.cancel_pairs: ± pairs closer than that many spacings cancelled by
 // the surgery of fields/pair_cancellation.h before the level sets; the
 // field re-evaluated, its report amended.
-std::shared_ptr<const FieldResult> CancelPairs(const Settings& s, const HookContext& c,
+std::shared_ptr<const FieldResult> LevelSetCancelPairs(const Settings& s, const HookContext& c,
                                                std::shared_ptr<const FieldResult> field) {
   const double spacings = s.Number("field.cancel_pairs");
-  const double spacing = LevelSpacing(s, c, *field);
+  const double spacing = LevelSetSpacing(s, c, *field);
   PairCancellationOptions options;
   options.max_distance = spacings * spacing;
   options.region = s.Number("field.cancel_region");
@@ -172,7 +172,7 @@ void InitLevelSets(HookContext& c) {
   const Settings& s = *c.settings;
   LevelSetState& st = St(c);
   st = LevelSetState{};
-  st.field = CancelPairs(s, c, SolveField(s, *c.input, c.progress));
+  st.field = LevelSetCancelPairs(s, c, SolveField(s, *c.input, c.progress));
   const FieldGeometry& geo = st.field->geometry;
   const TcdField& field = st.field->field;
   const Mesh& mesh = c.store->mesh();
@@ -200,7 +200,7 @@ void InitLevelSets(HookContext& c) {
     st.v[f] = double(st.ov.face_sign[f]) * v[f];
     st.w[f] = double(st.ow.face_sign[f]) * w[f];
   }
-  st.spacing = LevelSpacing(s, c, *st.field);
+  st.spacing = LevelSetSpacing(s, c, *st.field);
 
   const int wedges = st.cut.num_wedges;
   const int chains = std::max<int>(1, int(st.cut.chains.size()));
