@@ -47,12 +47,55 @@ std::vector<bool> EmbedCorridor(const std::vector<std::vector<int>>& rings,
   return in;
 }
 
+// Whether `target` can be reached from `sources` through free vertices: two
+// breadth-first floods, from the sources and from the target, one layer of
+// each in turn, until they meet (yes) or one runs out (no). A target cut off
+// in a small region is found so at the cost of that region, not of all the
+// free vertices on the other side.
+bool EmbedReachable(const std::vector<std::vector<int>>& rings, const EmbedSpace& space,
+                    const std::vector<int>& sources, int target) {
+  thread_local std::vector<char> side;  // 0 none, 1 from the sources, 2 from the target
+  side.resize(rings.size(), 0);
+  std::vector<int> touched, front[2];
+  auto mark = [&](int v, char s) {
+    side[size_t(v)] = s;
+    touched.push_back(v);
+    front[s - 1].push_back(v);
+  };
+  bool met = false;
+  for (int u : sources) {
+    if (u == target) met = true;
+    if (!space.used[size_t(u)] && side[size_t(u)] == 0) mark(u, 1);
+  }
+  mark(target, 2);
+  while (!met && !front[0].empty() && !front[1].empty()) {
+    for (char s : {char(1), char(2)}) {
+      std::vector<int> next;
+      std::swap(next, front[s - 1]);
+      for (int v : next) {
+        for (int u : rings[size_t(v)]) {
+          if (met || !space.Free(u, target)) continue;
+          if (side[size_t(u)] == 0) {
+            mark(u, s);
+          } else if (side[size_t(u)] != s) {
+            met = true;
+          }
+        }
+      }
+      if (met || front[s - 1].empty()) break;
+    }
+  }
+  for (int v : touched) side[size_t(v)] = 0;
+  return met;
+}
+
 // The shortest path from `from` through one of `sources` (unused vertices
 // adjacent to it) to `target`, through free vertices only; empty when there
 // is none.
 std::vector<int> EmbedShortest(const std::vector<Eigen::Vector3d>& points,
                                const std::vector<std::vector<int>>& rings, const EmbedSpace& space,
                                int from, const std::vector<int>& sources, int target) {
+  if (!EmbedReachable(rings, space, sources, target)) return {};
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<double> dist(points.size(), inf);
   std::vector<int> previous(points.size(), -1);
