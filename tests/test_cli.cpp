@@ -382,6 +382,26 @@ TEST_F(CliTest, MeasurePrintsTheMetricsThatApplyAndAllWithAll) {
 // test_hnet_geometry): writes a PLY patchwork with normals, isophote colours
 // and rulings, and refuses c = 1, a non-PLY output and a singular projective
 // map without writing anything.
+// A complex that is not a valid quad complex is written for inspection but
+// misses the command's goal: exit 4 and a WARNING line, not exit 0.
+TEST_F(CliTest, SpectralComplexThatIsNotAValidQuadComplexExits4) {
+  ASSERT_EQ(Archgeo("generate " + Path("torus.obj") + " --surface torus --nu 24 --nv 12").code, 0);
+  const Outcome bad = Archgeo("spectral " + Path("torus.obj") + " --complex " + Path("c1.obj") +
+                              " --eigenfunction 8");
+  EXPECT_EQ(bad.code, 4) << bad.output;
+  EXPECT_NE(bad.output.find("valid no"), std::string::npos) << bad.output;
+  EXPECT_NE(bad.output.find("WARNING: the goal was missed (exit 4): the complex of eigenfunction 8 "
+                            "is not a valid quad complex"),
+            std::string::npos)
+      << bad.output;
+  EXPECT_TRUE(fs::exists(Path("c1.obj")));
+  const Outcome good = Archgeo("spectral " + Path("torus.obj") + " --complex " + Path("c.obj") +
+                               " --eigenfunction 10");
+  EXPECT_EQ(good.code, 0) << good.output;
+  EXPECT_NE(good.output.find("valid yes"), std::string::npos) << good.output;
+  EXPECT_EQ(good.output.find("WARNING"), std::string::npos) << good.output;
+}
+
 TEST_F(CliTest, DarbouxWritesAPatchworkAndRefusesBadInput) {
   ASSERT_EQ(Archgeo("generate " + Path("hp.obj") + " --surface hyperbolic_paraboloid").code, 0);
   const Outcome o = Archgeo("darboux " + Path("hp.obj") + " " + Path("d.ply") +

@@ -132,7 +132,10 @@ TEST_F(SpectralComplex_, WritesArcsAndQuadsAndNamesBadOptions) {
   q.eigenfunction = 10;
   q.complex_out = Path("complex.obj");
   q.quasi_dual_out = Path("quads.obj");
-  const std::string text = SpectralComplex(q);
+  const SpectralComplexResult result = SpectralComplex(q);
+  const std::string& text = result.text;
+  EXPECT_TRUE(result.valid) << text;
+  EXPECT_TRUE(result.why.empty()) << result.why;
   EXPECT_NE(text.find("valid yes"), std::string::npos) << text;
   EXPECT_NE(text.find("V - E + F = 2"), std::string::npos) << text;
   std::ifstream arcs(Path("complex.obj")), quads(Path("quads.obj"));

@@ -62,6 +62,7 @@
 namespace {
 
 constexpr int kBadInput = 2;
+constexpr int kGoalMissed = 4;  // the command's result misses its goal (written for inspection)
 
 // Where progress goes: nothing (--quiet); one line rewritten in place when
 // stderr is a terminal (unless --log); otherwise every event's log line.
@@ -443,9 +444,15 @@ int main(int argc, char** argv) {
         std::cerr << "archgeo spectral: give --list, or --complex and/or --quasi-dual\n";
         return kBadInput;
       }
-      std::cout << (complex ? archgeo::SpectralComplex(spectral_request)
-                            : archgeo::SpectralList(spectral_request));
-      return 0;
+      if (!complex) {
+        std::cout << archgeo::SpectralList(spectral_request);
+        return 0;
+      }
+      const archgeo::SpectralComplexResult result = archgeo::SpectralComplex(spectral_request);
+      std::cout << result.text;
+      if (result.valid) return 0;
+      std::cout << "WARNING: the goal was missed (exit 4): " << result.why << "\n";
+      return kGoalMissed;
     }
     if (*darboux) {
       if (direction.size() == 3) {

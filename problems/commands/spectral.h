@@ -63,9 +63,16 @@ struct SpectralRequest {
 // count beyond the vertices, or a target that is not positive.
 std::string SpectralList(const SpectralRequest& request);
 
+struct SpectralComplexResult {
+  std::string text;    // the counts to print
+  bool valid = false;  // a valid quad complex (every cell a disc with four corners, every arc placed)
+  std::string why;     // when not valid: one line (invalid cells, arcs not placed)
+};
+
 // Builds the complex of `request.eigenfunction` on a closed mesh, writes
-// the OBJ files asked for and returns the counts to print. Throws
-// InputError for a bad option (named) or a mesh with boundary.
-std::string SpectralComplex(const SpectralRequest& request);
+// the OBJ files asked for (also when the complex is not valid, for
+// inspection) and returns the counts. Throws InputError for a bad option
+// (named) or a mesh with boundary.
+SpectralComplexResult SpectralComplex(const SpectralRequest& request);
 
 }  // namespace archgeo

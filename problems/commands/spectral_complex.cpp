@@ -64,7 +64,7 @@ void ComplexCheckRequest(const SpectralRequest& q, int vertices) {
 
 }  // namespace
 
-std::string SpectralComplex(const SpectralRequest& q) {
+SpectralComplexResult SpectralComplex(const SpectralRequest& q) {
   if (q.persistence < 0 || !std::isfinite(q.persistence)) {
     throw InputError("", 0, "--persistence", "must be 0 or positive");
   }
@@ -117,7 +117,15 @@ std::string SpectralComplex(const SpectralRequest& q) {
                 c.rerouted, c.unresolved, c.shared_vertices, c.cells.size(), c.invalid_cells,
                 c.valid ? "yes" : "no", dual.points.size(), dual.quads.size(),
                 dual.degenerate_quads, dual.irregular_vertices, dual.euler);
-  return text;
+  SpectralComplexResult out;
+  out.text = text;
+  out.valid = c.valid;
+  if (!c.valid) {
+    out.why = "the complex of eigenfunction " + std::to_string(q.eigenfunction) +
+              " is not a valid quad complex (" + std::to_string(c.invalid_cells) +
+              " invalid cells, " + std::to_string(c.unresolved) + " arcs not placed)";
+  }
+  return out;
 }
 
 }  // namespace archgeo
