@@ -11,8 +11,7 @@
 #          kernels (tests/test_engine_baselines.cpp): not a property of the
 #          code, so opt-in: OPENBLAS_CORETYPE=SkylakeX ctest -L golden.
 set(archgeo_label_long
-  "SolverKeys.EveryEnumeratedValueWorksOrIsRefused"
-  "Examples/ExampleReport.ValidatesAgainstTheSchema/wave_")
+  "SolverKeys.EveryEnumeratedValueWorksOrIsRefused")
 set(archgeo_label_golden "Examples/EngineBaselines.")
 
 set(archgeo_all_tests)

@@ -402,6 +402,49 @@ TEST_F(CliTest, SpectralComplexThatIsNotAValidQuadComplexExits4) {
   EXPECT_EQ(good.output.find("WARNING"), std::string::npos) << good.output;
 }
 
+// examples/wave_torus.yaml end to end (Fig. 14, 12,000 vertices): one
+// integrated start, the regular complex, exit 0.
+TEST_F(CliTest, WaveTorusExampleGivesTheRegularComplex) {
+  const Outcome o = Archgeo("solve " + std::string(ARCHGEO_SOURCE_DIR) +
+                            "/examples/wave_torus.yaml --quiet --set output.mesh=" + Path("t.ply") +
+                            " --set output.complex=" + Path("c.obj") + " --set output.quasi_dual=" +
+                            Path("q.obj") + " --set output.report=" + Path("t.json"));
+  ASSERT_EQ(o.code, 0) << o.output;
+  const auto w = nlohmann::json::parse(Slurp(Path("t.json"))).at("details").at("wave");
+  EXPECT_TRUE(w.at("valid").get<bool>());
+  EXPECT_EQ(w.at("valid_starts").get<int>(), 1);
+  EXPECT_EQ(w.at("maxima").get<int>(), 144);
+  EXPECT_EQ(w.at("saddles").get<int>(), 288);
+  EXPECT_EQ(w.at("quasi_dual").at("quads").get<int>(), 288);
+  EXPECT_EQ(w.at("quasi_dual").at("irregular_vertices").get<int>(), 0);
+}
+
+// examples/wave_quads.yaml end to end on the inspired mesh with two of its
+// ten starts (the ten: benchmarks/wave): both give a valid complex, the one
+// of lower E is kept, the boundary holds.
+TEST_F(CliTest, WaveQuadsExampleKeepsTheBestValidStart) {
+  const Outcome o = Archgeo("solve " + std::string(ARCHGEO_SOURCE_DIR) +
+                            "/examples/wave_quads.yaml --quiet --set wave.restarts=2"
+                            " --set output.mesh=" + Path("w.ply") + " --set output.complex=" +
+                            Path("c.obj") + " --set output.quasi_dual=" + Path("q.obj") +
+                            " --set output.report=" + Path("w.json"));
+  ASSERT_EQ(o.code, 0) << o.output;
+  const auto report = nlohmann::json::parse(Slurp(Path("w.json")));
+  const auto& w = report.at("details").at("wave");
+  EXPECT_TRUE(w.at("valid").get<bool>());
+  EXPECT_EQ(w.at("restarts").get<int>(), 2);
+  EXPECT_EQ(w.at("valid_starts").get<int>(), 2);
+  const auto& rounds = report.at("rounds");  // the input, then one per start
+  ASSERT_EQ(rounds.size(), 3u);
+  const int lower = rounds[1].at("measures").at("wave_energy").get<double>() <=
+                            rounds[2].at("measures").at("wave_energy").get<double>()
+                        ? 1
+                        : 2;
+  EXPECT_EQ(w.at("kept_start").get<int>(), lower);
+  EXPECT_LE(w.at("feature_sin_max").get<double>(), 1e-6);
+  EXPECT_GT(w.at("quasi_dual").at("quads").get<int>(), 0);
+}
+
 TEST_F(CliTest, DarbouxWritesAPatchworkAndRefusesBadInput) {
   ASSERT_EQ(Archgeo("generate " + Path("hp.obj") + " --surface hyperbolic_paraboloid").code, 0);
   const Outcome o = Archgeo("darboux " + Path("hp.obj") + " " + Path("d.ply") +

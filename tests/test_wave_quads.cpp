@@ -13,7 +13,9 @@
 #include "core/input_error.h"
 #include "fields/triangle_surfaces.h"
 #include "generators/smoothness_surfaces.h"
+#include "io/io.h"
 #include "problems/commands/run.h"
+#include "problems/declarations/wave_start.h"
 #include "problems/runtime/mesh_inputs.h"
 #include "problems/runtime/solve.h"
 #include "problems/spec/spec.h"
@@ -24,12 +26,16 @@ namespace ARCHGEO_UNITY_ID {
 // The torus R = 3, r = 1 (60 × 30 principal quads), 3 waves round the tube
 // (μ = 2π/3) and 6 round the axis (η = 2π ρ/6): the exact wave cos(3v) cos(6u)
 // has 2 · 3 · 6 maxima, as many minima, twice as many saddles, and its
-// quasi-dual is a regular torus grid of 4 · 3 · 6 = 72 quads.
-std::unique_ptr<Solution> WaveTorus() {
+// quasi-dual is a regular torus grid of 4 · 3 · 6 = 72 quads. The terms'
+// tests start from random angles at every vertex (wave.start: random): the
+// integrated start is already a wave of unit product-form vectors, which
+// would hide a term that does nothing.
+std::unique_ptr<Solution> WaveTorus(const std::string& start = "random", int restarts = 3) {
   const std::string yaml =
       "problem: wave_quads\n"
       "wave: {wavelength: 2.0943951023931953, wavelength_y: 1.0471975511965976,\n"
-      "       size_field_y: axis_distance, restarts: 3}\n";
+      "       size_field_y: axis_distance, restarts: " + std::to_string(restarts) +
+      ", start: " + start + "}\n";
   return Solve(ParseSpec(yaml, "/in-memory/wave.yaml"), TorusPrincipalQuads(3, 1, 60, 30),
                nullptr, {});
 }
@@ -52,6 +58,27 @@ TEST(WaveQuads, WaveTransferGivesTheTorusARegularComplex) {
   EXPECT_TRUE(w.at("valid").get<bool>());
   EXPECT_EQ(w.at("quasi_dual").at("quads").get<int>(), 72);
   EXPECT_EQ(w.at("quasi_dual").at("irregular_vertices").get<int>(), 0);
+}
+
+// The integrated start (the fields carried along a spanning tree from one
+// vertex, problems/declarations/wave_start.h) is the torus's wave up to the
+// seams where the tree's paths meet: one start reaches the regular complex
+// in a few Levenberg–Marquardt iterations, where a start from random angles
+// takes several times as many.
+TEST(WaveQuads, IntegratedStartReachesTheWaveInFewIterations) {
+  const auto integrated = WaveTorus("integrated", 1);
+  const auto random = WaveTorus("random", 1);
+  ASSERT_TRUE(integrated->loop.usable && random->loop.usable);
+  const auto& w = integrated->details.at("wave");
+  std::printf("wave start: integrated %d iterations (E %.4g), random %d (E %.4g)\n",
+              integrated->loop.iterations, w.at("energy").get<double>(), random->loop.iterations,
+              random->details.at("wave").at("energy").get<double>());
+  EXPECT_TRUE(w.at("valid").get<bool>());
+  EXPECT_EQ(w.at("maxima").get<int>(), 36);
+  EXPECT_EQ(w.at("saddles").get<int>(), 72);
+  EXPECT_EQ(w.at("quasi_dual").at("irregular_vertices").get<int>(), 0);
+  EXPECT_LE(integrated->loop.iterations, 8);
+  EXPECT_LT(3 * integrated->loop.iterations, random->loop.iterations);
 }
 
 // |f_i| = 1 (the trivial minimiser f = 0 of the transfer term is excluded).
@@ -103,27 +130,64 @@ TEST(WaveQuads, WaveFeatureHoldsOnTheBoundary) {
   EXPECT_LE(w.at("feature_sin_max").get<double>(), 1e-6);
 }
 
-// The quad base complex is the problem's goal: a wave whose complex is not a
-// valid quad complex (one start, a wavelength the torus's circles do not
-// hold a whole number of: 139 invalid cells) ends exit 4 naming it, not 0;
-// the torus's own wave (WaveTorus's spec) exits 0.
+// The quad base complex is the problem's goal: a complex that is not a valid
+// quad complex in any start (a sphere's wave with every saddle–extremum
+// pair cancelled, persistence 2: one maximum, one minimum and a single cell,
+// the sphere, not a disc) ends exit 4 naming it, not 0; the torus's own wave
+// (WaveTorus's spec) exits 0 with all its starts valid.
 TEST(WaveQuads, AnInvalidComplexIsAMissedGoal) {
   const Mesh torus = TorusPrincipalQuads(3, 1, 60, 30);
-  MeshInputs inputs;
-  inputs.mesh = &torus;
+  const Mesh sphere = TriangulatedEllipsoid(1, 1, 1, 3);
   const std::string own =
       "problem: wave_quads\n"
       "wave: {wavelength: 2.0943951023931953, wavelength_y: 1.0471975511965976,\n"
       "       size_field_y: axis_distance, restarts: 3}\n";
-  const std::string off = "problem: wave_quads\nwave: {restarts: 1, wavelength: 1.3}\n";
+  const std::string off = "problem: wave_quads\nwave: {restarts: 2, persistence: 2}\n";
   for (const std::string& yaml : {off, own}) {
+    MeshInputs inputs;
+    inputs.mesh = yaml == own ? &torus : &sphere;
     const RunResult run = RunSpec(ParseSpec(yaml, "/in-memory/wave.yaml"), {}, inputs);
-    const bool valid = run.report.at("details").at("wave").at("valid").get<bool>();
+    const auto& w = run.report.at("details").at("wave");
+    const bool valid = w.at("valid").get<bool>();
     EXPECT_EQ(valid, yaml == own) << run.summary;
     EXPECT_EQ(run.exit_code, valid ? 0 : 4) << run.summary;
     EXPECT_EQ(run.report.contains("missed"), !valid);
     EXPECT_EQ(run.summary.find("not a valid quad complex") != std::string::npos, !valid);
+    EXPECT_EQ(w.at("valid_starts").get<int>(), valid ? 3 : 0);
+    EXPECT_EQ(w.at("kept_start").get<int>() > 0, valid);
   }
+}
+
+// The shared inspired mesh (open; the curvature field), start 4: its
+// complex needs the Morse–Smale arcs placed on the double refined twice
+// (faces split at their centroids, then 1 to 4); without the refinement an
+// arc stays unresolved and the complex is not valid.
+TEST(WaveQuads, RefinementPlacesEveryArcOnTheInspiredMesh) {
+  const Mesh mesh = ReadMesh(std::string(ARCHGEO_DATA_DIR) + "/libigl_inspired_mesh.obj");
+  const auto s = Solve(ParseSpec("problem: wave_quads\nwave: {seed: 4}\n", "/in-memory/wave.yaml"),
+                       mesh, nullptr, {});
+  ASSERT_TRUE(s->loop.usable) << s->loop.message;
+  const auto& w = s->details.at("wave");
+  std::printf("inspired mesh, start 4: %d refinements, %d unresolved arcs, %d invalid cells, "
+              "%d quads, boundary |sin| %.2g\n",
+              w.at("refinements").get<int>(), w.at("unresolved_arcs").get<int>(),
+              w.at("invalid_cells").get<int>(), w.at("quasi_dual").at("quads").get<int>(),
+              w.at("feature_sin_max").get<double>());
+  EXPECT_TRUE(w.at("doubled").get<bool>());
+  EXPECT_EQ(w.at("refinements").get<int>(), 2);
+  EXPECT_EQ(w.at("unresolved_arcs").get<int>(), 0);
+  EXPECT_EQ(w.at("invalid_cells").get<int>(), 0);
+  EXPECT_TRUE(w.at("valid").get<bool>());
+  EXPECT_EQ(w.at("quasi_dual").at("quads").get<int>(), w.at("saddles").get<int>());
+  EXPECT_LE(w.at("feature_sin_max").get<double>(), 1e-6);
+}
+
+// The restarts keep the valid complex of lowest E, not the lowest E: a start
+// of lower E whose complex is not valid loses to a valid one.
+TEST(WaveQuads, RestartsKeepTheValidStartOfLowestEnergy) {
+  EXPECT_EQ(KeptWaveStart({false, true, true}, {1.0, 3.0, 2.0}), 3);
+  EXPECT_EQ(KeptWaveStart({true, false, true}, {5.0, 1.0, 6.0}), 1);
+  EXPECT_EQ(KeptWaveStart({false, false}, {1.0, 2.0}), 0);
 }
 
 TEST(WaveQuads, SizeFieldOnTheAxisIsAnErrorNamingTheKey) {

@@ -15,6 +15,10 @@
 namespace archgeo {
 namespace {
 
+// Refinements at most while arcs cannot all be placed: the faces split at
+// their centroids, then every edge at its midpoint.
+constexpr int kWaveRefinements = 2;
+
 // Splits every interior edge between two boundary vertices (a chord, e.g.
 // the inner edge of a corner triangle) at its midpoint, where f is the mean
 // of its ends: otherwise the double would hold that edge twice.
@@ -79,6 +83,54 @@ bool WaveDouble(const Mesh& mesh, Mesh* out, std::vector<int>* original) {
   return true;
 }
 
+// The closed triangle mesh `m` split 1 to 4 (a vertex at every edge's
+// midpoint), `f` linearly: the function is the same piecewise-linear one,
+// so every old vertex keeps the signs of its ring (the midpoint of vu is
+// above v exactly when u is) and no midpoint is critical: the same critical
+// points, with twice as many vertices between them for the arcs
+// (Gebreiter 2012, §7.1.3: refinement where separatrices still merge).
+Mesh WaveRefined(const Mesh& m, std::vector<double>* f) {
+  Mesh out;
+  for (VertexIndex v : m.vertices()) out.add_vertex(m.point(v));
+  std::vector<int> midpoint(m.number_of_edges(), -1);
+  for (EdgeIndex e : m.edges()) {
+    const HalfedgeIndex h = m.halfedge(e);
+    const VertexIndex a = m.source(h), b = m.target(h);
+    midpoint[e.idx()] = int(out.add_vertex(CGAL::midpoint(m.point(a), m.point(b))).idx());
+    f->push_back(0.5 * ((*f)[a.idx()] + (*f)[b.idx()]));
+  }
+  for (FaceIndex t : m.faces()) {
+    std::array<VertexIndex, 3> corner, mid;  // mid[k]: on the edge from corner k to k + 1
+    HalfedgeIndex h = m.halfedge(t);
+    for (size_t k = 0; k < 3; ++k, h = m.next(h)) {
+      corner[k] = m.source(h);
+      mid[k] = VertexIndex(VertexIndex::size_type(midpoint[m.edge(h).idx()]));
+    }
+    out.add_face(corner[0], mid[0], mid[2]);
+    out.add_face(mid[0], corner[1], mid[1]);
+    out.add_face(mid[2], mid[1], corner[2]);
+    out.add_face(mid[0], mid[1], mid[2]);
+  }
+  return out;
+}
+
+// `m` with a vertex at every triangle's centroid (1 to 3), `f` linearly: as
+// WaveRefined, the same critical points; every old vertex's valence doubles,
+// so more arcs can reach an extremum apart.
+Mesh WaveCentroidSplit(const Mesh& m, std::vector<double>* f) {
+  Mesh out;
+  for (VertexIndex v : m.vertices()) out.add_vertex(m.point(v));
+  for (FaceIndex t : m.faces()) {
+    std::array<VertexIndex, 3> c;
+    size_t k = 0;
+    for (VertexIndex v : m.vertices_around_face(m.halfedge(t))) c[k++] = v;
+    const VertexIndex mid = out.add_vertex(CGAL::centroid(m.point(c[0]), m.point(c[1]), m.point(c[2])));
+    f->push_back(((*f)[c[0].idx()] + (*f)[c[1].idx()] + (*f)[c[2].idx()]) / 3);
+    for (size_t i = 0; i < 3; ++i) out.add_face(c[i], c[(i + 1) % 3], mid);
+  }
+  return out;
+}
+
 std::string WaveObjPoint(const Eigen::Vector3d& p) {
   char line[96];
   std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", p.x(), p.y(), p.z());
@@ -105,20 +157,26 @@ WaveComplex BuildWaveComplex(const Mesh& mesh, const Eigen::VectorXd& f, double 
     closed = triangles;
     for (VertexIndex v : triangles.vertices()) out.original.push_back(int(v.idx()));
   }
-  const SpectralMesh m = SpectralArrays(closed);
-  out.points = m.points;
-  Eigen::VectorXd g(Eigen::Index(out.original.size()));
-  for (size_t k = 0; k < out.original.size(); ++k) {
-    g[Eigen::Index(k)] = values[size_t(out.original[k])];
-  }
+  std::vector<double> g;
+  for (int v : out.original) g.push_back(values[size_t(v)]);
   MorseSmaleOptions options;
   options.persistence = persistence;
-  try {
-    out.complex = BuildMorseSmale(m.points, m.triangles, m.rings, g, options);
-  } catch (const std::invalid_argument& e) {
-    out.error = e.what();
-    return out;
+  SpectralMesh m;
+  for (int level = 0;; ++level) {
+    m = SpectralArrays(closed);
+    try {
+      out.complex = BuildMorseSmale(m.points, m.triangles, m.rings,
+                                    Eigen::Map<const Eigen::VectorXd>(g.data(), Eigen::Index(g.size())),
+                                    options);
+    } catch (const std::invalid_argument& e) {
+      out.error = e.what();
+      return out;
+    }
+    if (out.complex.valid || level == kWaveRefinements) break;
+    closed = level % 2 == 0 ? WaveCentroidSplit(closed, &g) : WaveRefined(closed, &g);
+    out.refinements = level + 1;
   }
+  out.points = m.points;
   out.quasi_dual = QuasiDual(out.complex, m.points);
   out.built = true;
   return out;

@@ -6,7 +6,8 @@
 // (a second, mirrored copy glued along the boundary; the wave's feature
 // constraint sin φ = 0 or sin θ = 0 there makes cos θ cos φ symmetric under
 // the mirror), so the complex is that of the closed double: its nodes, arcs
-// and quads on the boundary are shared, the others appear twice.
+// and quads on the boundary are shared, the others appear twice. Where the
+// arcs cannot all be placed apart on that mesh it is refined (below).
 #pragma once
 
 #include <string>
@@ -23,8 +24,13 @@ struct WaveComplex {
   bool doubled = false;   // the mesh had a boundary: the complex is its double's
   bool built = false;     // false: the double is not a closed manifold (`error`)
   std::string error;
-  std::vector<Eigen::Vector3d> points;  // of the (doubled) triangle mesh
-  std::vector<int> original;            // per point: the vertex of the input it copies
+  // The (doubled) triangle mesh the complex lies on: when arcs could not
+  // all be placed on it, refined `refinements` times (0–2: the faces split
+  // at their centroids, then 1 to 4), with the wave linear on each triangle,
+  // so the same critical points, until they can.
+  std::vector<Eigen::Vector3d> points;
+  std::vector<int> original;  // per vertex of the double: the vertex of the input it copies
+  int refinements = 0;
   MorseSmaleComplex complex;
   QuadBaseComplex quasi_dual;
 };

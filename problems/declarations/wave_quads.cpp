@@ -20,14 +20,20 @@
 // wave.size_field_y). ω = 2π / μ: cos θ has period μ, so the extrema of
 // cos θ cos φ lie μ/2 apart along X.
 //
-// Restarts: the stage `restart` runs wave.restarts rounds, each from new
-// random angles (seed wave.seed + round), and keeps the round with the lowest
-// E (measure wave_energy). Then the Morse–Smale complex of cos θ cos φ
+// Starts: the stage `restart` runs wave.restarts rounds, each from a new
+// start (seed wave.seed + round): the fields integrated along a spanning
+// tree from a random vertex with random angles there (wave.start
+// integrated, problems/declarations/wave_start.h) or random angles at every
+// vertex. After each round the Morse–Smale complex of cos θ cos φ
 // (problems/declarations/wave_complex.h), pairs of persistence ≤
-// wave.persistence cancelled, and its quasi-dual; the report counts critical
-// points, cells and irregular vertices. The quad mesh through the charts is
-// not built here. Outputs: output.complex (OBJ lines), output.quasi_dual
-// (OBJ), wave_f in the output PLY.
+// wave.persistence cancelled, and its quasi-dual; the round kept is the one
+// whose complex is a valid quad complex with the lowest E (none valid: the
+// lowest E, measure wave_energy, and exit 4). The report counts the valid
+// starts, critical points, cells and irregular vertices. The quad mesh
+// through the charts is not built here. Outputs: output.complex (OBJ
+// lines), output.quasi_dual (OBJ), wave_f in the output PLY.
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -42,6 +48,7 @@
 #include "mesh/eigen_point.h"
 #include "problems/declarations/wave_complex.h"
 #include "problems/declarations/wave_field.h"
+#include "problems/declarations/wave_start.h"
 #include "problems/runtime/model.h"
 
 namespace archgeo::problems {
@@ -53,23 +60,47 @@ struct WaveState : ProblemState {
   ElementSet edges, vertices, features;
   int restart = 0;
   std::shared_ptr<const WaveComplex> complex;
+  // Per start (round): whether its complex was valid; the valid start of
+  // lowest E, its wave and its complex.
+  std::vector<bool> valid_starts;
+  std::vector<double> start_energies;
+  int best_valid = 0;  // 1-based start, 0 = none
+  std::vector<double> best_valid_f;
+  std::shared_ptr<const WaveComplex> best_valid_complex;
+  double seconds_field = 0, seconds_start = 0, seconds_complex = 0;
 };
+
+double WaveSecondsSince(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
 
 WaveState& WaveSt(HookContext& c) { return c.State<WaveState>(); }
 
-// Random angles θ, φ per vertex from the seed of restart `restart`.
+// The start of restart `restart` (seed wave.seed + restart): uniformly
+// random angles θ, φ per vertex (wave.start random), or the fields
+// integrated from a random root vertex with random angles there
+// (integrated, problems/declarations/wave_start.h).
 void WaveRandomise(HookContext& c, int restart) {
+  const auto t0 = std::chrono::steady_clock::now();
   std::mt19937 rng(unsigned(c.settings->Integer("wave.seed") + restart));
   std::uniform_real_distribution<double> angle(0.0, 2 * M_PI);
   const int n = int(c.store->mesh().number_of_vertices());
-  for (int v = 0; v < n; ++v) {
+  std::vector<double> f;
+  if (c.settings->String("wave.start") == "integrated") {
+    const int root = std::uniform_int_distribution<int>(0, n - 1)(rng);
     const double t = angle(rng), p = angle(rng);
-    double* f = c.store->At("wave_f", v);
-    f[0] = std::cos(t) * std::cos(p);
-    f[1] = std::cos(t) * std::sin(p);
-    f[2] = std::sin(t) * std::cos(p);
-    f[3] = std::sin(t) * std::sin(p);
+    f = IntegratedWave(WaveSt(c).edges, n, root, t, p);
+  } else {
+    for (int v = 0; v < n; ++v) {
+      const double t = angle(rng), p = angle(rng);
+      f.insert(f.end(), {std::cos(t) * std::cos(p), std::cos(t) * std::sin(p),
+                         std::sin(t) * std::cos(p), std::sin(t) * std::sin(p)});
+    }
   }
+  for (int v = 0; v < n; ++v) {
+    for (int k = 0; k < 4; ++k) c.store->At("wave_f", v)[k] = f[4 * size_t(v) + size_t(k)];
+  }
+  WaveSt(c).seconds_start += WaveSecondsSince(t0);
 }
 
 // The size field of `key` per vertex (canonical lengths).
@@ -96,6 +127,7 @@ std::vector<double> WaveSizes(HookContext& c, const std::string& key, double wav
 void InitWave(HookContext& c) {
   WaveState& st = WaveSt(c);
   st = WaveState{};
+  const auto t0 = std::chrono::steady_clock::now();
   const Settings& s = *c.settings;
   const Mesh& mesh = c.store->mesh();
   double wavelength = s.Number("wave.wavelength");
@@ -115,6 +147,7 @@ void InitWave(HookContext& c) {
   c.SetElements("wave_edges", st.edges);
   c.SetElements("wave_vertices", st.vertices);
   c.SetElements("wave_features", st.features);
+  st.seconds_field = WaveSecondsSince(t0);
   WaveRandomise(c, 0);
 }
 
@@ -177,14 +210,64 @@ double WaveFeatureMax(HookContext& c) {
   return worst;
 }
 
-void FinishWave(HookContext& c) {
-  WaveState& st = WaveSt(c);
+// The Morse–Smale complex of the current wave's first component.
+std::shared_ptr<const WaveComplex> WaveBuild(HookContext& c) {
+  const auto t0 = std::chrono::steady_clock::now();
   const Mesh& mesh = *c.input;
   Eigen::VectorXd wave(Eigen::Index(mesh.number_of_vertices()));
   for (Eigen::Index v = 0; v < wave.size(); ++v) wave[v] = c.store->At("wave_f", int(v))[0];
   auto complex = std::make_shared<WaveComplex>(
       BuildWaveComplex(mesh, wave, c.settings->Number("wave.persistence")));
-  st.complex = complex;
+  WaveSt(c).seconds_complex += WaveSecondsSince(t0);
+  return complex;
+}
+
+// After each start: its complex; the valid start of lowest E is kept
+// (KeptWaveStart).
+void WaveAfterStart(HookContext& c) {
+  WaveState& st = WaveSt(c);
+  const std::shared_ptr<const WaveComplex> complex = WaveBuild(c);
+  st.valid_starts.push_back(complex->built && complex->complex.valid);
+  st.start_energies.push_back(WaveEnergy(c));
+  const int kept = KeptWaveStart(st.valid_starts, st.start_energies);
+  if (kept == st.best_valid) return;
+  st.best_valid = kept;
+  st.best_valid_complex = complex;
+  const int n = int(c.store->mesh().number_of_vertices());
+  st.best_valid_f.clear();
+  for (int v = 0; v < n; ++v) {
+    const double* f = c.store->At("wave_f", v);
+    st.best_valid_f.insert(st.best_valid_f.end(), f, f + wd::kWidth);
+  }
+}
+
+// 1 when the last start's complex was valid (measure wave_valid).
+double WaveLastValid(HookContext& c) {
+  const WaveState& st = WaveSt(c);
+  return !st.valid_starts.empty() && st.valid_starts.back() ? 1 : 0;
+}
+
+// The result: the valid start of lowest E, or (none valid) the start of
+// lowest E the stage kept.
+void WaveKeepResult(HookContext& c) {
+  WaveState& st = WaveSt(c);
+  if (st.best_valid == 0) {
+    st.complex = WaveBuild(c);
+    return;
+  }
+  const int n = int(c.store->mesh().number_of_vertices());
+  for (int v = 0; v < n; ++v) {
+    for (int k = 0; k < wd::kWidth; ++k) {
+      c.store->At("wave_f", v)[k] = st.best_valid_f[size_t(wd::kWidth * v + k)];
+    }
+  }
+  st.complex = st.best_valid_complex;
+}
+
+void FinishWave(HookContext& c) {
+  WaveState& st = WaveSt(c);
+  WaveKeepResult(c);
+  const std::shared_ptr<const WaveComplex> complex = st.complex;
   const MorseSmaleComplex& m = complex->complex;
   const QuadBaseComplex& q = complex->quasi_dual;
   int irregular_nodes = 0;  // extrema of the complex whose valence (arcs) is not 4
@@ -200,6 +283,10 @@ void FinishWave(HookContext& c) {
       {"feature_vertices", st.features.size()},
       {"feature_sin_max", WaveFeatureMax(c)},
       {"restarts", st.restart},
+      {"valid_starts", std::count(st.valid_starts.begin(), st.valid_starts.end(), true)},
+      {"kept_start", st.best_valid},
+      {"seconds",
+       {{"field", st.seconds_field}, {"start", st.seconds_start}, {"complex", st.seconds_complex}}},
       {"doubled", complex->doubled},
       {"complex_built", complex->built},
       {"complex_error", complex->error},
@@ -209,6 +296,7 @@ void FinishWave(HookContext& c) {
       {"cancelled", m.cancelled},
       {"arcs", m.arcs.size()},
       {"unresolved_arcs", m.unresolved},
+      {"refinements", complex->refinements},
       {"cells", m.cells.size()},
       {"invalid_cells", m.invalid_cells},
       {"valid", complex->built && m.valid},
@@ -235,7 +323,8 @@ void FinishWave(HookContext& c) {
   if (!complex->built) {
     c.missed = "the wave's Morse–Smale complex could not be built: " + complex->error;
   } else if (!m.valid) {
-    c.missed = "the wave's Morse–Smale complex is not a valid quad complex (" +
+    c.missed = "the wave's Morse–Smale complex is not a valid quad complex in any of the " +
+               std::to_string(st.valid_starts.size()) + " starts (the kept one, of lowest E: " +
                std::to_string(m.invalid_cells) + " invalid cells, " +
                std::to_string(m.unresolved) + " arcs not placed); other seeds " +
                "(wave.seed) or more starts (wave.restarts) may give one";
@@ -280,9 +369,14 @@ std::vector<Key> WaveKeys() {
       NumberKey("wave.corner_angle", 45, 0, 180,
                 "a boundary vertex where the boundary turns by more than this (degrees) is a "
                 "corner"),
+      ChoiceKey("wave.start", "integrated", {"integrated", "random"},
+                "each start: the guidance and size fields integrated along a breadth-first "
+                "spanning tree from a random vertex with random angles there (integrated), or "
+                "independent random angles at every vertex (random)"),
       IntegerKey("wave.restarts", 1, 1, 1000,
-                 "solves from independent random initial angles; the one with the lowest "
-                 "energy E is kept"),
+                 "solves from independent random starts (wave.start); the one whose complex is "
+                 "a valid quad complex with the lowest energy E is kept (none valid: the lowest "
+                 "E)"),
       IntegerKey("wave.seed", 1, 0, 2147483647, "seed of the first random initialisation"),
       NumberKey("wave.persistence", 0.05, 0, 2,
                 "saddle–extremum pairs of the complex with |Δ cos θ cos φ| ≤ this are "
@@ -310,13 +404,15 @@ ProblemDecl wave_quads() {
     Stage restart;
     restart.name = "restart";
     restart.rounds_key = "wave.restarts";
-    restart.keep_best = "wave_energy";
+    restart.keep_best = "wave_energy";  // the result when no start is valid
     restart.before_round = &WaveNextRestart;
-    restart.logged = {"wave_energy", "wave_feature_max"};
+    restart.after_round = &WaveAfterStart;
+    restart.logged = {"wave_energy", "wave_feature_max", "wave_valid"};
     return std::vector<Stage>{restart};
   };
   d.measures["wave_energy"] = &WaveEnergy;
   d.measures["wave_feature_max"] = &WaveFeatureMax;
+  d.measures["wave_valid"] = &WaveLastValid;
   d.finish = &FinishWave;
   d.output_keys = {"complex", "quasi_dual"};
   d.write = &WriteWave;
