@@ -393,7 +393,9 @@ ProblemDecl wave_quads() {
   d.paper = "[Gebreiter 2012, §8.3; Zhang et al. 2010]";
   d.terms = {{"wave_transfer", 1}, {"wave_norm", 0.15}, {"wave_product", 0.15},
              {"wave_feature", 1e8}};
-  d.defaults = {{"solver.max_num_iterations", 100LL}};
+  // The complex needs the wave's shape, not its last digits: a solve ends
+  // when an iteration lowers E by less than 1e-4 of it.
+  d.defaults = {{"solver.max_num_iterations", 100LL}, {"solver.function_tolerance", 1e-4}};
   d.keys = WaveKeys();
   d.blocks = {{"wave_f", Site::kVertex, wd::kWidth, FrameMap::kInvariant, false,
                Carry::kReinitialise, true, false,
