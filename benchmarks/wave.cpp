@@ -5,15 +5,18 @@
 // 10,000 vertices: a 10,000-vertex torus (R = 3, r = 1, 125 × 80 principal
 // quads) with its known size field (6 waves round the tube, 12 round the
 // axis), and the shared Concerthall (6,897 vertices, open) with the
-// curvature field and a constant size field, one start each. The time is the
-// solve loop's (field, edges and the Levenberg–Marquardt rounds), not the
-// Morse–Smale complex (benchmarks/morse_smale.cpp).
+// curvature field and a constant size field, one start each. The time is
+// the whole solve's (field, start, the Levenberg–Marquardt rounds and the
+// Morse–Smale complex of each).
 //
 //   ninja -C <build> archgeo_benchmarks && <build>/benchmarks/wave
 //
 // Prints per surface the vertices, seconds, seconds per 10k vertices, the
-// energy and whether the complex is valid; exit 1 above kTargetSeconds per
-// 10k vertices.
+// energy and whether the complex is valid; then, for the shared inspired
+// mesh and the Concerthall, how many of ten starts (examples/wave_quads.yaml,
+// one start per seed) give a valid complex. Exit 1 above kTargetSeconds per
+// 10k vertices or below kTargetValid valid complexes.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -29,6 +32,7 @@
 namespace ARCHGEO_UNITY_ID {
 
 constexpr double kTargetSeconds = 6.0;  // per 10,000 vertices
+constexpr int kStarts = 10, kTargetValid = 9;  // valid complexes of ten starts
 
 // Seconds per 10k vertices of one solve (prints its line).
 double TimeWave(const char* name, const archgeo::Mesh& mesh, const std::string& yaml) {
@@ -43,6 +47,28 @@ double TimeWave(const char* name, const archgeo::Mesh& mesh, const std::string& 
               w.at("valid").get<bool>() ? "yes" : "no",
               w.at("quasi_dual").at("irregular_vertices").get<int>());
   return per;
+}
+
+// Starts 1 … kStarts one by one (wave.seed), the example's settings (the
+// curvature field, 12 mean edge lengths): how many give a valid complex.
+int ValidStarts(const char* name, const archgeo::Mesh& mesh) {
+  int valid = 0;
+  double worst_sin = 0, seconds = 0;
+  for (int seed = 1; seed <= kStarts; ++seed) {
+    const auto start = std::chrono::steady_clock::now();
+    const auto s = archgeo::Solve(
+        archgeo::ParseSpec("problem: wave_quads\nwave: {seed: " + std::to_string(seed) + "}\n",
+                           "/benchmark/wave.yaml"),
+        mesh, nullptr, {});
+    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const auto& w = s->details.at("wave");
+    valid += w.at("valid").get<bool>() ? 1 : 0;
+    worst_sin = std::max(worst_sin, w.at("feature_sin_max").get<double>());
+  }
+  std::printf("%-28s %d of %d starts give a valid complex, boundary |sin| max %.2g, %.1f s per "
+              "start\n",
+              name, valid, kStarts, worst_sin, seconds / kStarts);
+  return valid;
 }
 
 int Main(int argc, char** argv) {
@@ -60,9 +86,17 @@ int Main(int argc, char** argv) {
       "Concerthall", archgeo::ReadMesh(std::string(ARCHGEO_DATA_DIR) + "/directional_Concerthall.off"),
       "problem: wave_quads\nwave: {wavelength: 3}\n");
   const double worst = std::max(torus, hall);
-  std::printf("worst %.2f s per 10k vertices (target %.1f s)\n%s\n", worst, kTargetSeconds,
-              worst <= kTargetSeconds ? "PASS" : "FAIL");
-  return worst <= kTargetSeconds ? 0 : 1;
+  std::printf("worst %.2f s per 10k vertices (target %.1f s)\n", worst, kTargetSeconds);
+  // examples/wave_quads.yaml's ten starts on two shared surfaces.
+  int fewest = kStarts;
+  for (const char* name : {"libigl_inspired_mesh.obj", "directional_Concerthall.off"}) {
+    fewest = std::min(fewest, ValidStarts(name, archgeo::ReadMesh(std::string(ARCHGEO_DATA_DIR) +
+                                                                  "/" + name)));
+  }
+  const bool pass = worst <= kTargetSeconds && fewest >= kTargetValid;
+  std::printf("fewest valid complexes %d of %d (target %d)\n%s\n", fewest, kStarts, kTargetValid,
+              pass ? "PASS" : "FAIL");
+  return pass ? 0 : 1;
 }
 
 }  // namespace ARCHGEO_UNITY_ID
