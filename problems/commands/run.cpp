@@ -520,14 +520,8 @@ class SpecRun {
         !s_.Bool("tolerance.energy_not_above_input") || solution_->net.derived) {
       return;
     }
-    const auto value = [](const AnalysisRows& rows) -> const double* {
-      for (const AnalysisRow& r : rows) {
-        if (r.key == "E") return &r.value;
-      }
-      return nullptr;
-    };
-    const double* before = value(extra_before_);
-    const double* after = value(extra_after_);
+    const double* before = RowValue(extra_before_, "E");
+    const double* after = RowValue(extra_after_, "E");
     if (!before || !after) return;
     energy_checked_ = true;
     energy_input_ = *before;

@@ -181,12 +181,17 @@ AnalysisRows Analyse(const Mesh& mesh, const std::set<std::string>& names,
   return rows;
 }
 
+const double* RowValue(const AnalysisRows& rows, const std::string& key) {
+  for (const AnalysisRow& r : rows) {
+    if (r.key == key) return &r.value;
+  }
+  return nullptr;
+}
+
 AnalysisRows RowsThatApply(const Mesh& mesh, const AnalysisRows& rows) {
   auto value = [&](const std::string& key) {
-    for (const AnalysisRow& r : rows) {
-      if (r.key == key) return r.value;
-    }
-    return std::numeric_limits<double>::infinity();
+    const double* v = RowValue(rows, key);
+    return v ? *v : std::numeric_limits<double>::infinity();
   };
   bool triangles = false;
   for (FaceIndex f : mesh.faces()) triangles = triangles || mesh.degree(f) == 3;

@@ -36,6 +36,9 @@ struct AnalysisRow {
 };
 using AnalysisRows = std::vector<AnalysisRow>;
 
+// The value of the row named `key`, or null when `rows` has none.
+const double* RowValue(const AnalysisRows& rows, const std::string& key);
+
 // Names of the analyses that apply to `mesh` ("smoothness": any mesh with an
 // interior edge; "hnet": pure quad meshes; "conical": meshes with quads and
 // an interior valence-4 vertex — conical residual, face-offset miss,
