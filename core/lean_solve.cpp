@@ -4,6 +4,7 @@
 
 #include "core/clock.h"
 #include "core/lean_kernels.h"
+#include "core/normal_cholesky.h"
 #include "core/normal_equations.h"
 #include "core/parallel_parts.h"
 #include "core/solver_options.h"
@@ -60,7 +61,7 @@ class Lean {
   Lean(const Residuals& residuals, NormalPattern& pattern, int threads)
       : in_(residuals), s_(pattern), threads_(std::clamp(threads, 1, 256)),
         work_(size_t(threads_)) {
-    ReadNormalPattern(residuals, threads_, &s_);
+    if (!ReadNormalPattern(residuals, threads_, &s_)) s_.cholesky.reset();
     size_t rows = 0, scratch = 0, parameters = 0;
     for (size_t i = 0; i < residuals.residuals().size(); ++i) {
       const Residuals::Residual& r = residuals.residuals()[i];
@@ -310,11 +311,13 @@ class Lean {
 }  // namespace
 
 SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& residuals,
-                       NormalPattern* pattern) {
+                       NormalPattern* pattern, LeanStep step) {
   const FullTeams teams;  // no CHOLMOD here
   const auto start = Clock::now();
   SolveSummary out;
-  out.pcg = true;
+  const bool direct = step == LeanStep::kCholesky;
+  out.pcg = !direct;
+  out.cholesky = direct;
   std::string why;
   const std::string refused = LeanSolveRefuses(options, &why);
   if (!refused.empty()) {
@@ -325,6 +328,7 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
   NormalPattern own;
   Lean lean(residuals, pattern ? *pattern : own, options.num_threads);
   const NormalSystem& system = lean.system();
+  NormalPattern& kept = pattern ? *pattern : own;
   double cost = 0;
   Vector gradient;
   auto t = Clock::now();
@@ -386,9 +390,18 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
     const Vector diagonal = system.Diagonal().cwiseMax(options.min_lm_diagonal).cwiseMin(
         options.max_lm_diagonal);
     const Vector damping = diagonal / radius;
-    it.linear_solver_iterations =
-        system.Solve(damping, gradient, options.eta, options.min_linear_solver_iterations,
-                     options.max_linear_solver_iterations, &delta);
+    bool solved = true;
+    if (direct) {
+      // Not positive definite: no step; it is rejected and the damping
+      // grows, as after Ceres' linear solver failure.
+      if (!kept.cholesky) kept.cholesky = std::make_shared<NormalCholesky>(kept);
+      solved = kept.cholesky->Solve(kept, damping, gradient, &delta);
+      if (!solved) delta.setZero(gradient.size());
+    } else {
+      it.linear_solver_iterations =
+          system.Solve(damping, gradient, options.eta, options.min_linear_solver_iterations,
+                       options.max_linear_solver_iterations, &delta);
+    }
     out.cg_iterations += it.linear_solver_iterations;
     const double model_change =
         system.ModelChange(gradient, delta, &model_max_norm, &model_norm);
@@ -399,12 +412,12 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
     const double x_norm = lean.ParameterNorm();
     double new_cost = 0;
     t = Clock::now();
-    it.step_is_valid = model_change < 0.0 && lean.Step(delta) && lean.Cost(&new_cost);
+    it.step_is_valid = solved && model_change < 0.0 && lean.Step(delta) && lean.Cost(&new_cost);
     out.residual_seconds += SecondsSince(t);
     const double rho = it.step_is_valid ? (cost - new_cost) / -model_change : -1.0;
     if (it.step_is_valid) it.relative_decrease = rho;
-    const bool small_step =
-        delta.norm() <= options.parameter_tolerance * (x_norm + options.parameter_tolerance);
+    const bool small_step = solved && delta.norm() <= options.parameter_tolerance *
+                                                          (x_norm + options.parameter_tolerance);
     if (it.step_is_valid && rho > options.min_relative_decrease) {
       it.step_is_successful = true;
       it.cost_change = cost - new_cost;
@@ -483,6 +496,13 @@ std::string LeanSolveRefuses(const ceres::Solver::Options& o, std::string* why) 
   return name;
 }
 
+bool LeanCholeskyTakes(const ceres::Solver::Options& o) {
+  return LeanSolveRefuses(o).empty() && o.linear_solver_type == ceres::SPARSE_NORMAL_CHOLESKY &&
+         o.sparse_linear_algebra_library_type == ceres::SUITE_SPARSE &&
+         !o.use_mixed_precision_solves && o.max_num_refinement_iterations == 0 &&
+         !o.dynamic_sparsity;
+}
+
 bool UsesLeanSolve(int pcg_above, const Residuals& residuals) {
   return pcg_above > 0 && residuals.FreeTangentSize() > pcg_above;
 }
@@ -493,6 +513,9 @@ SolveSummary SolveRound(const ceres::Solver::Options& options, const RoundSolver
     ceres::Solver::Options lean = options;
     lean.function_tolerance = std::max(options.function_tolerance, how.pcg_function_tolerance);
     return LeanSolve(lean, residuals, pattern);
+  }
+  if (how.lean && LeanCholeskyTakes(options)) {
+    return LeanSolve(options, residuals, pattern, LeanStep::kCholesky);
   }
   SolveSummary out;
   std::vector<ceres::ResidualBlockId> ids;

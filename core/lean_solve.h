@@ -1,9 +1,12 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — LeanSolve: Levenberg–Marquardt on hand-assembled normal
-// equations with a block-Jacobi preconditioned conjugate-gradient step, for
-// problems too large for one sparse Cholesky factorisation per step (a
-// factorisation grows ~n^1.5 in time and memory; a CG step costs ~n).
+// equations, each step either one sparse Cholesky factorisation (CHOLMOD,
+// core/normal_cholesky.h: an exact step, as Ceres' sparse_normal_cholesky
+// takes, without Ceres' per-solve set-up and Jacobian storage) or, for
+// problems too large for one factorisation per step (a factorisation grows
+// ~n^1.5 in time and memory; a CG step costs ~n), a block-Jacobi
+// preconditioned conjugate-gradient step.
 //   - It reads the round's residuals (core/residuals.h: Ceres cost
 //     functions, losses, manifolds) without a ceres::Problem: the energies
 //     stay the autodiff functors of energies/.
@@ -11,7 +14,9 @@
 //     for the next round while the structure stays), and each iteration
 //     accumulates every residual block's J_aᵀ J_b into its slot (no J is
 //     stored).
-//   - It solves (JᵀJ + μ diag(JᵀJ)) δ = −Jᵀr by block-Jacobi PCG
+//   - It solves (JᵀJ + μ diag(JᵀJ)) δ = −Jᵀr exactly (LeanStep::kCholesky:
+//     a numeric factorisation per step; a matrix that is not positive
+//     definite gives no step, which is rejected), or by block-Jacobi PCG
 //     (core/lean_kernels.h), an inexact Newton step ended by Nash and
 //     Sofer's test as Ceres' conjugate gradients end inside its
 //     Levenberg–Marquardt, after at least min_ and at most
@@ -104,7 +109,8 @@ namespace archgeo {
 struct NormalPattern;
 
 struct SolveSummary {
-  bool pcg = false;    // solved by LeanSolve (else by ceres::Solve)
+  bool pcg = false;       // solved by LeanSolve with conjugate-gradient steps
+  bool cholesky = false;  // solved by LeanSolve with sparse Cholesky steps
   int iterations = 0;  // accepted and rejected steps, as Ceres counts them
   int cg_iterations = 0;
   double seconds = 0, linear_solver_seconds = 0, jacobian_seconds = 0, residual_seconds = 0;
@@ -134,13 +140,20 @@ std::string LeanSolveRefuses(const ceres::Solver::Options& options, std::string*
 // option named in the message. `pattern`, if given, keeps the pattern of
 // JᵀJ from one call to the next and is reused while the problem's
 // structure stays (core/normal_equations.h).
+enum class LeanStep { kPcg, kCholesky };
 SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& residuals,
-                       NormalPattern* pattern = nullptr);
+                       NormalPattern* pattern = nullptr, LeanStep step = LeanStep::kPcg);
+
+// Whether LeanSolve's Cholesky steps are the steps `options` ask for: no
+// option LeanSolve refuses, and a sparse normal Cholesky of CHOLMOD in double
+// precision, without iterative refinement or dynamic sparsity.
+bool LeanCholeskyTakes(const ceres::Solver::Options& options);
 
 // How the loop solves a round (solver.pcg_above, solver.pcg_function_tolerance,
 // solver.subset_preconditioner_parts).
 struct RoundSolver {
   int pcg_above = 0;                  // LeanSolve above this many free variables; 0: never
+  bool lean = false;  // the other rounds by LeanSolve's Cholesky steps where LeanCholeskyTakes
   double pcg_function_tolerance = 0;  // LeanSolve's function tolerance at least this
   // With preconditioner_type subset (Ceres): the objective parts whose
   // residual blocks form Ceres' SUBSET preconditioner.
@@ -151,8 +164,9 @@ struct RoundSolver {
 // than pcg_above free variables.
 bool UsesLeanSolve(int pcg_above, const Residuals& residuals);
 
-// One round's solve: LeanSolve with function_tolerance raised to at least
-// how.pcg_function_tolerance where UsesLeanSolve, else ceres::Solve on
+// One round's solve: LeanSolve's PCG with function_tolerance raised to at
+// least how.pcg_function_tolerance where UsesLeanSolve, else LeanSolve's
+// Cholesky steps with how.lean where LeanCholeskyTakes, else ceres::Solve on
 // residuals.MakeProblem() (with preconditioner_type subset: the subset of
 // how.subset_parts; none of their blocks in the round: usable = false).
 SolveSummary SolveRound(const ceres::Solver::Options& options, const RoundSolver& how,

@@ -181,6 +181,7 @@ class Loop {
       : s_(*options.settings), options_(options), model_(model), base_(SolverOptions(s_)),
         stages_(declaration.stages(s_)), time_limit_(s_.Number("schedule.max_seconds")) {
     how_.pcg_above = int(s_.Integer("solver.pcg_above"));
+    how_.lean = s_.String("solver.back_end") == "lean";
     how_.pcg_function_tolerance = s_.Number("solver.pcg_function_tolerance");
     how_.subset_parts = SubsetParts(s_);
     for (const Stage& stage : stages_) {
@@ -401,7 +402,8 @@ class Loop {
   // the SUBSET preconditioner needs residuals in its parts: input errors,
   // before any output is written.
   void CheckSolverFits(const ceres::Solver::Options& solver) const {
-    if (UsesLeanSolve(how_.pcg_above, residuals_)) {
+    const bool pcg = UsesLeanSolve(how_.pcg_above, residuals_);
+    if (pcg) {
       std::string why;
       const std::string option = LeanSolveRefuses(solver, &why);
       if (!option.empty()) {
@@ -412,8 +414,7 @@ class Loop {
                            ": set solver.pcg_above: 0 to solve every round with Ceres)");
       }
     }
-    if (!UsesLeanSolve(how_.pcg_above, residuals_) &&
-        solver.preconditioner_type == ceres::SUBSET && !AnyPart(residuals_, how_.subset_parts)) {
+    if (!pcg && solver.preconditioner_type == ceres::SUBSET && !AnyPart(residuals_, how_.subset_parts)) {
       throw s_.Error("solver.subset_preconditioner_parts",
                      "no residual of this round is in these parts (preconditioner_type: "
                      "subset needs them)");
@@ -429,6 +430,7 @@ class Loop {
       ++result_.pcg_rounds;
       result_.cg_iterations += summary.cg_iterations;
     }
+    result_.cholesky_rounds += summary.cholesky;
     StepResult step;
     step.iterations = summary.iterations;
     step.cost = summary.final_cost;

@@ -102,6 +102,7 @@ struct LoopResult {
   int rounds = 0, iterations = 0;
   int pcg_rounds = 0;     // rounds solved by LeanSolve (solver.pcg_above)
   int cg_iterations = 0;  // their conjugate-gradient steps
+  int cholesky_rounds = 0;  // rounds solved by LeanSolve's Cholesky steps (solver.back_end)
   std::map<std::string, double> objective;  // ½ Σ w r² per part and "total", final state
   std::map<std::string, double> seconds;    // "solver" (Ceres or PCG), "linear_solver", "jacobian",
                                             // "residual", "projection"

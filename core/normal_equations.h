@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "core/residuals.h"
@@ -31,6 +32,8 @@ constexpr int kVisitChunk = 1024;
 // The structure of a round's residuals as the PCG solver reads it (their
 // costs, losses and the blocks they read stay in the Residuals), and the
 // block pattern of J^T J.
+class NormalCholesky;
+
 struct NormalPattern {
   std::vector<PatternBlock> blocks;  // free blocks
   std::vector<int> free;             // per Residuals block: its free block, or -1 (constant)
@@ -69,6 +72,9 @@ struct NormalPattern {
   // The manifold blocks' Plus Jacobians (ambient × tangent, row-major) at the
   // current values.
   std::vector<double> plus_jacobians;
+  // The sparse Cholesky factorisation's analysis of H (core/normal_cholesky.h),
+  // made by the first direct step on this structure and kept with it.
+  std::shared_ptr<NormalCholesky> cholesky;
 };
 
 // Reads `residuals` into `pattern` (constant blocks stay out of the

@@ -83,17 +83,25 @@ std::vector<Key> SolverKeys() {
   auto flag = [](std::string name, bool fallback, std::string doc) {
     return BoolKey("solver." + std::move(name), fallback, std::move(doc));
   };
-  // What LeanSolve (solver.pcg_above, core/lean_solve.h) does with a key.
-  const std::string kLeanIgnores = " (LeanSolve rounds, above pcg_above: ignored)";
+  // What LeanSolve (solver.back_end: lean, solver.pcg_above; core/lean_solve.h)
+  // does with a key.
+  const std::string kLeanIgnores = " (LeanSolve rounds: ignored)";
+  const std::string kLeanCeres =
+      " (back_end lean: any other value sends the rounds up to pcg_above to Ceres; above "
+      "pcg_above: ignored)";
   const std::string kLeanLinear =
-      " (LeanSolve rounds, above pcg_above: ignored, their steps are LeanSolve's block-Jacobi "
-      "conjugate gradients; pcg_above: 0 for this solver on every round)";
+      " (back_end lean: LeanSolve's steps are one sparse Cholesky factorisation (CHOLMOD) "
+      "each, any other value sends the rounds up to pcg_above to Ceres; above pcg_above: "
+      "ignored, the steps are block-Jacobi conjugate gradients; pcg_above: 0 for this solver "
+      "on every round)";
   const std::string kLeanWithRefused =
-      " (LeanSolve rounds, above pcg_above: ignored, applies only to a choice LeanSolve refuses)";
+      " (LeanSolve rounds: ignored, applies only to a choice LeanSolve refuses)";
   const std::string kLeanRefusesTrue =
-      " (LeanSolve rounds, above pcg_above: true is refused, exit 2)";
+      " (above pcg_above: true is refused, exit 2; back_end lean: true sends the rounds up "
+      "to pcg_above to Ceres)";
   const auto kLeanRefusesOther = [](const std::string& only) {
-    return " (LeanSolve rounds, above pcg_above: any but " + only + " is refused, exit 2)";
+    return " (above pcg_above: any but " + only + " is refused, exit 2; back_end lean: any "
+           "but " + only + " sends the rounds up to pcg_above to Ceres)";
   };
   Key subset;
   subset.name = "solver.subset_preconditioner_parts";
@@ -108,7 +116,7 @@ std::vector<Key> SolverKeys() {
              Names<ceres::LinearSolverType>(&ceres::LinearSolverTypeToString, ceres::CGNR),
              "linear solver of each step (Ceres LinearSolverType)" + kLeanLinear),
       choice("sparse_linear_algebra_library_type", "suite_sparse", SparseLibraries(),
-             "sparse factorisation library (suite_sparse: CHOLMOD)" + kLeanIgnores),
+             "sparse factorisation library (suite_sparse: CHOLMOD)" + kLeanCeres),
       choice("dense_linear_algebra_library_type", "eigen", DenseLibraries(),
              "dense linear algebra for the dense solvers" + kLeanIgnores),
       choice("preconditioner_type", "jacobi",
@@ -148,12 +156,12 @@ std::vector<Key> SolverKeys() {
       number("min_lm_diagonal", 1e-6, 0, 1e32, "Levenberg-Marquardt diagonal lower bound"),
       number("max_lm_diagonal", 1e32, 0, 1e32, "Levenberg-Marquardt diagonal upper bound"),
       integer("max_num_consecutive_invalid_steps", 5, 0, 1000000, "invalid steps tolerated in a row" +
-                  std::string(" (LeanSolve rounds, above pcg_above: ignored; a step whose cost fails "
+                  std::string(" (LeanSolve rounds: ignored; a step whose cost fails "
                               "to evaluate is rejected and the trust region shrinks)")),
       flag("use_nonmonotonic_steps", false, "allow steps that raise the cost (non-monotonic)" + kLeanRefusesTrue),
       integer("max_consecutive_nonmonotonic_steps", 5, 0, 1000000, "with use_nonmonotonic_steps" + kLeanWithRefused),
       flag("jacobi_scaling", true, "scale the columns of the Jacobian" +
-                std::string(" (LeanSolve rounds, above pcg_above: ignored; its damped step and "
+                std::string(" (LeanSolve rounds: ignored; its damped step and "
                             "block-Jacobi preconditioner do not change with the columns' scale)")),
       flag("use_inner_iterations", false, "inner iterations (non-linear block coordinate descent)" + kLeanRefusesTrue),
       number("inner_iteration_tolerance", 1e-3, 0, 1, "relative decrease that stops inner iterations" + kLeanWithRefused),
@@ -161,19 +169,28 @@ std::vector<Key> SolverKeys() {
       integer("max_linear_solver_iterations", 500, 1, 1000000, "iterative solvers: at most"),
       number("eta", 0.1, 0, 1, "iterative solvers: forcing sequence (relative accuracy)"),
       flag("use_postordering", false, "sparse Cholesky: postorder the elimination tree" + kLeanIgnores),
-      flag("dynamic_sparsity", false, "re-analyse the Jacobian's sparsity every iteration" + kLeanIgnores),
+      flag("dynamic_sparsity", false, "re-analyse the Jacobian's sparsity every iteration" + kLeanCeres),
       flag("use_mixed_precision_solves", false,
            "single-precision factorisation + refinement (sparse Cholesky only with eigen_sparse: "
-           "this Ceres has no single-precision SuiteSparse or CXSparse one)" + kLeanIgnores),
-      integer("max_num_refinement_iterations", 0, 0, 1000, "iterative refinement steps" + kLeanIgnores),
+           "this Ceres has no single-precision SuiteSparse or CXSparse one)" + kLeanCeres),
+      integer("max_num_refinement_iterations", 0, 0, 1000, "iterative refinement steps" + kLeanCeres),
       flag("use_explicit_schur_complement", false, "iterative_schur: form the Schur complement" + kLeanIgnores),
+      choice("back_end", "ceres", {"ceres", "lean"},
+             "who solves a round of at most pcg_above variables: ceres (ceres::Solve with the "
+             "keys here) or lean (LeanSolve, archgeo's own Levenberg-Marquardt on normal "
+             "equations assembled once per iteration, each step one sparse Cholesky "
+             "factorisation by CHOLMOD whose ordering and symbolic analysis are made once and "
+             "kept for every iteration and round of the same structure; core/lean_solve.h; it "
+             "ignores the solver keys that do not change such a step, and a round whose keys "
+             "ask for what it does not implement goes to Ceres, as each key says) "
+             "(planar_quads: lean)"),
       integer("pcg_above", 0, 0, 1000000000,
-              "a round with more than this many variables is solved by archgeo's own "
-              "Levenberg-Marquardt: normal equations assembled once per iteration, each step by "
+              "a round with more than this many variables is solved by LeanSolve (whatever "
+              "back_end says) with each step by "
               "block-Jacobi conjugate gradients, ended by eta as Ceres ends its own (the "
-              "quadratic model's relative decrease), at most max_linear_solver_iterations "
-              "(core/lean_solve.h; it refuses or ignores the solver keys it does not implement, as each "
-              "key says); 0 = never, always Ceres (planar_quads: 100000)"),
+              "quadratic model's relative decrease), at most max_linear_solver_iterations; "
+              "it refuses the solver keys it does not implement (exit 2), as each key says; "
+              "0 = never (planar_quads: 100000)"),
       subset,
       number("pcg_function_tolerance", 1e-3, 0, 1,
              "with pcg_above: such a solve stops when the relative cost change, or the next one "

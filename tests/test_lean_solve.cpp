@@ -25,6 +25,7 @@
 
 #include "core/lean_solve.h"
 #include "core/lean_kernels.h"
+#include "core/normal_cholesky.h"
 #include "core/normal_equations.h"
 #include "generators/generators.h"
 #include "analysis/metrics.h"
@@ -850,9 +851,90 @@ TEST(LeanSolve, RefusesOptionsItDoesNotImplement) {
   EXPECT_TRUE(LeanSolve(o, m.residuals).usable);
 }
 
+// LeanStep::kCholesky: each step one sparse Cholesky factorisation of the
+// damped normal equations (core/normal_cholesky.h), no CG step. It reaches
+// Ceres' optimum on the linear membrane, on the plane fit (a manifold and a
+// robust loss) and with blocks of 6; on the linear problem its exact steps
+// need a handful of iterations where PCG's inexact ones need many more.
+TEST(LeanSolve, CholeskyStepsReachCeresOptimum) {
+  Membrane ceres_side(30), lean_side(30), pcg_side(30);
+  ceres::Solver::Summary reference;
+  ceres::Solve(Tight(), ceres_side.residuals.MakeProblem().get(), &reference);
+  const SolveSummary lean = LeanSolve(Tight(), lean_side.residuals, nullptr, LeanStep::kCholesky);
+  ASSERT_TRUE(lean.usable) << lean.message;
+  EXPECT_TRUE(lean.cholesky);
+  EXPECT_FALSE(lean.pcg);
+  EXPECT_EQ(lean.cg_iterations, 0);
+  EXPECT_NEAR(lean.final_cost, reference.final_cost, 1e-12 * reference.final_cost);
+  double worst = 0;
+  for (size_t k = 0; k < lean_side.x.size(); ++k)
+    worst = std::max(worst, std::abs(lean_side.x[k] - ceres_side.x[k]));
+  EXPECT_LT(worst, 1e-8);
+  ceres::Solver::Options loose = Tight();
+  loose.eta = 0.1;
+  const SolveSummary pcg = LeanSolve(loose, pcg_side.residuals);
+  EXPECT_LE(lean.iterations, 4);
+  EXPECT_LT(lean.iterations, pcg.iterations);
+
+  PlaneFit fit_ceres, fit_lean;
+  ceres::Solve(Tight(), fit_ceres.residuals.MakeProblem().get(), &reference);
+  const SolveSummary fit = LeanSolve(Tight(), fit_lean.residuals, nullptr, LeanStep::kCholesky);
+  ASSERT_TRUE(fit.usable) << fit.message;
+  EXPECT_NEAR(fit.final_cost, reference.final_cost, 1e-10 * reference.initial_cost);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(fit_lean.normal[k], fit_ceres.normal[k], 1e-7) << k;
+}
+
+// The ordering and symbolic analysis are made once per structure: kept in
+// the NormalPattern for the next solve of the same structure, dropped when
+// the structure changes.
+TEST(LeanSolve, CholeskyAnalysisIsKeptWithThePattern) {
+  Membrane a(12), c(13);
+  NormalPattern pattern;
+  ASSERT_TRUE(LeanSolve(Tight(), a.residuals, &pattern, LeanStep::kCholesky).usable);
+  const NormalCholesky* first = pattern.cholesky.get();
+  ASSERT_NE(first, nullptr);
+  const std::vector<double> solved = a.x;
+  std::fill(a.x.begin(), a.x.end(), 0.0);  // the next round: the same blocks, anew
+  ASSERT_TRUE(LeanSolve(Tight(), a.residuals, &pattern, LeanStep::kCholesky).usable);
+  EXPECT_EQ(pattern.cholesky.get(), first);
+  for (size_t k = 0; k < a.x.size(); ++k) EXPECT_NEAR(a.x[k], solved[k], 1e-12);
+  const SolveSummary other = LeanSolve(Tight(), c.residuals, &pattern, LeanStep::kCholesky);
+  ASSERT_TRUE(other.usable);
+  ASSERT_NE(pattern.cholesky, nullptr);
+  EXPECT_LT(other.final_cost, other.initial_cost);
+}
+
+// With how.lean (solver.back_end: lean) a round goes to LeanSolve's Cholesky
+// steps when the options ask for nothing else; an option it does not
+// implement (dogleg, a dense or iterative linear solver, another sparse
+// library) sends the round to Ceres, which solves it.
+TEST(LeanSolve, SolveRoundTakesCholeskyStepsUnlessAnOptionAsksForCeres) {
+  RoundSolver how;
+  how.lean = true;
+  Membrane a(10);
+  const SolveSummary lean = SolveRound(Tight(), how, a.residuals);
+  EXPECT_TRUE(lean.cholesky);
+  EXPECT_FALSE(lean.pcg);
+  for (const auto& set : std::vector<std::function<void(ceres::Solver::Options&)>>{
+           [](auto& o) { o.trust_region_strategy_type = ceres::DOGLEG; },
+           [](auto& o) { o.linear_solver_type = ceres::DENSE_QR; },
+           [](auto& o) { o.linear_solver_type = ceres::CGNR; },
+           [](auto& o) { o.sparse_linear_algebra_library_type = ceres::EIGEN_SPARSE; },
+           [](auto& o) { o.max_num_refinement_iterations = 2; }}) {
+    Membrane m(10);
+    ceres::Solver::Options o = Tight();
+    set(o);
+    EXPECT_FALSE(LeanCholeskyTakes(o));
+    const SolveSummary s = SolveRound(o, how, m.residuals);
+    EXPECT_TRUE(s.usable) << s.message;
+    EXPECT_FALSE(s.cholesky);
+    EXPECT_NEAR(s.final_cost, lean.final_cost, 1e-6 * lean.final_cost);
+  }
+}
+
 class LeanSolveCli : public ScratchDirTest {};
 
-// Through the tool: a round that LeanSolve solves (solver.pcg_above=1)
+// Through the tool: a round that LeanSolve's PCG solves (solver.pcg_above=1)
 // with an option it refuses is bad input: exit 2, the key named, no output
 // written. The same options on a round Ceres solves are fine.
 TEST_F(LeanSolveCli, RefusalIsExitTwoNamingTheKey) {
@@ -912,6 +994,36 @@ TEST_F(LeanSolveCli, CeresSubsetPreconditionerGetsTheNamedParts) {
   EXPECT_EQ(none.code, 2) << none.output;
   EXPECT_NE(none.output.find("solver.subset_preconditioner_parts"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(Path("out.ply")));
+}
+
+// planar_quads solves its rounds by LeanSolve's Cholesky steps (the report's
+// cholesky_rounds), and Ceres' with solver.back_end: ceres, both to the
+// tolerance with the same planarity.
+TEST_F(LeanSolveCli, PlanarQuadsRoundsAreLeanCholeskyUnlessBackEndCeres) {
+  const std::string tool = ARCHGEO_BINARY;
+  const std::string roof = Path("roof.obj");
+  ASSERT_EQ(Shell(tool + " generate " + roof + " --nu 10 --nv 8 --noise 0.05").code, 0);
+  const std::string spec = std::string(ARCHGEO_SOURCE_DIR) + "/examples/planar_quads.yaml";
+  const auto run = [&](const std::string& set) {
+    const Outcome out = Shell(tool + " solve " + spec + " --quiet --set mesh=" + roof +
+                              " --set output.mesh=" + Path("out.ply") + " --set output.report=" +
+                              Path("out.json") + " --set output.image=" + set);
+    EXPECT_EQ(out.code, 0) << out.output;
+    std::ifstream report(Path("out.json"));
+    return nlohmann::json::parse(report);
+  };
+  const nlohmann::json lean = run("");
+  const nlohmann::json ceres = run(" --set solver.back_end=ceres");
+  EXPECT_EQ(lean["cholesky_rounds"].get<int>(), lean["iterations"]["outer"].get<int>());
+  EXPECT_GT(lean["cholesky_rounds"].get<int>(), 0);
+  EXPECT_EQ(ceres["cholesky_rounds"].get<int>(), 0);
+  for (const nlohmann::json* r : {&lean, &ceres}) {
+    EXPECT_LE((*r)["after"]["pq_normalized_max"].get<double>(), 1e-3);
+  }
+  EXPECT_NEAR(lean["after"]["pq_normalized_max"].get<double>(),
+              ceres["after"]["pq_normalized_max"].get<double>(), 1e-4);
+  const nlohmann::json dogleg = run(" --set solver.trust_region_strategy_type=dogleg");
+  EXPECT_EQ(dogleg["cholesky_rounds"].get<int>(), 0);
 }
 
 double MaxDisplacement(const Mesh& a, const Mesh& b) {

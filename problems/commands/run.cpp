@@ -362,6 +362,7 @@ class SpecRun {
     rep["usable"] = solved.usable;
     rep["variables"] = solved.variables;
     rep["residuals"] = solved.residuals;
+    rep["cholesky_rounds"] = solved.cholesky_rounds;
     rep["pcg"] = {{"rounds", solved.pcg_rounds}, {"cg_iterations", solved.cg_iterations}};
     rep["iterations"] = {{"outer", solved.rounds}, {"inner", solved.iterations}};
     rep["objective"] = solved.objective;
@@ -625,6 +626,20 @@ class SpecRun {
     if (meshes_.output) *meshes_.output = output;
   }
 
+  // How LeanSolve solved the rounds it solved, e.g. " (5 rounds by PCG, 23
+  // CG steps)"; "" when Ceres solved them all.
+  static std::string SolverNote(const LoopResult& solved) {
+    std::string note;
+    if (solved.cholesky_rounds > 0) {
+      note = std::to_string(solved.cholesky_rounds) + " rounds by LeanSolve's Cholesky";
+    }
+    if (solved.pcg_rounds > 0) {
+      note += (note.empty() ? "" : ", ") + std::to_string(solved.pcg_rounds) + " rounds by PCG, " +
+              std::to_string(solved.cg_iterations) + " CG steps";
+    }
+    return note.empty() ? "" : " (" + note + ")";
+  }
+
   std::string Summary() const {
     const LoopResult& solved = solution_->loop;
     char head[512];
@@ -633,10 +648,7 @@ class SpecRun {
                   "%.2f s); stop: %s\n",
                   d_.name.c_str(), solved.variables, solved.residuals, solved.rounds,
                   solved.iterations,
-                  solved.pcg_rounds > 0
-                      ? (" (" + std::to_string(solved.pcg_rounds) + " rounds by PCG, " +
-                         std::to_string(solved.cg_iterations) + " CG steps)").c_str()
-                      : "",
+                  SolverNote(solved).c_str(),
                   SecondsSince(start_), solve_seconds_, solved.stop.c_str());
     char objective[128];
     std::snprintf(objective, sizeof objective, "objective (canonical frame): %.6e\n",

@@ -89,6 +89,7 @@ ProblemDecl conjugate_layout() {
   // field stages on Concerthall have more than 100k variables, and their
   // figures (docs/methods/conjugate_layout.md) were measured with it.
   d.defaults.erase("solver.pcg_above");
+  d.defaults.erase("solver.back_end");
   // A layout is near planar: no worst-quads stage (relayout: never's, which
   // is not a key here), so not its term or its measure either.
   d.terms.erase(std::remove_if(d.terms.begin(), d.terms.end(),

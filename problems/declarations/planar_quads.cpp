@@ -76,12 +76,14 @@ ProblemDecl planar_quads() {
              {"dihedral_energy", 0.5},
              {"convexity", 1000, {}, "", true},
              {"min_edge_length", 1000, {}, "", true}};
-  // Rounds of more than 100k variables (~15k quads) by Levenberg–Marquardt
-  // with block-Jacobi conjugate gradients on the assembled normal equations
-  // (core/lean_solve.h); docs/performance.md has the measurements. Ceres' SUBSET
+  // Every round by LeanSolve (core/lean_solve.h): Levenberg–Marquardt on the
+  // assembled normal equations, each step one sparse Cholesky factorisation
+  // up to 100k variables (~15k quads), block-Jacobi conjugate gradients
+  // above; docs/performance.md has the measurements. Ceres' SUBSET
   // preconditioner, if chosen, from the planarity terms and the barriers
   // (the terms the continuation stiffens).
-  d.defaults = {{"solver.pcg_above", 100000LL},
+  d.defaults = {{"solver.back_end", std::string("lean")},
+                {"solver.pcg_above", 100000LL},
                 {"solver.subset_preconditioner_parts",
                  std::string("pq_diagonal,face_planarity,convexity,min_edge_length")}};
   d.keys = {

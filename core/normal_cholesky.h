@@ -1,0 +1,43 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// archgeo — the exact step of LeanSolve (core/lean_solve.h) for rounds of
+// design size: (H + diag(D)) δ = −g by a sparse Cholesky factorisation
+// (CHOLMOD, supernodal), H = JᵀJ as LeanSolve assembles it in the pattern's
+// slots (core/normal_equations.h).
+//   - The scalar pattern of H's upper triangle and its fill-reducing
+//     ordering and symbolic factorisation (cholmod_analyze) are made once per
+//     NormalPattern structure and kept for every iteration and every round
+//     of that structure: an iteration costs one numeric factorisation and
+//     two triangular solves.
+//   - Each factorisation copies the slots' values into the matrix (a map from
+//     every stored scalar to its slot entry, made with the pattern) and adds
+//     the damping on the diagonal.
+#pragma once
+
+#include <memory>
+
+#include <Eigen/Core>
+
+namespace archgeo {
+
+struct NormalPattern;
+
+class NormalCholesky {
+ public:
+  // Orders and analyses the upper triangle of `pattern`'s H.
+  explicit NormalCholesky(const NormalPattern& pattern);
+  ~NormalCholesky();
+  NormalCholesky(const NormalCholesky&) = delete;
+  NormalCholesky& operator=(const NormalCholesky&) = delete;
+
+  // δ of (H + diag(damping)) δ = −gradient with H the pattern's current
+  // hessian; false (δ untouched) when that matrix is not positive definite.
+  bool Solve(const NormalPattern& pattern, const Eigen::VectorXd& damping,
+             const Eigen::VectorXd& gradient, Eigen::VectorXd* delta);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace archgeo
