@@ -17,9 +17,11 @@
 // (`mesh`, a triangle mesh) with this spec's field and level-set keys and
 // returns the layout as the net solved: the report's "before" is the layout
 // (δ_PQ,n before the PQ step), "after" the final mesh, and displacements are
-// measured from the layout. Without a `reference` the layout is its own
-// reference surface (its vertices lie on the input; the report's "net" entry
-// gives its distance to the input surface).
+// measured from the layout. Without a `reference` the design surface (the
+// input as read) is the reference surface of the PQ step (band, projections,
+// proximity) and of the report's distances (problems/runtime/solve.cpp,
+// Solution::on_design), and the final mesh is judged against it as `archgeo
+// measure FINAL --reference DESIGN` judges it (problems/commands/run.cpp).
 //
 // The layout's panels with a corner straight or bent inward (a boundary
 // corner too) are split there before the PQ step (relayout.h

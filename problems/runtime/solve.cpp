@@ -147,6 +147,8 @@ std::unique_ptr<Solution> Solve(const ProblemSpec& spec, const Mesh& mesh, const
   if (d.net) d.net(hooks);
   CHECK(!d.makes_input || hooks.net.derived) << d.name << ": makes_input without a net";
   sol->net = hooks.net;
+  sol->on_design = hooks.net.derived && hooks.net.source.empty() && !d.makes_input &&
+                   mesh.number_of_faces() > 0;
   sol->input = hooks.net.derived ? hooks.net.mesh : mesh;
   hooks.input = &sol->input;
   const Mesh& input = sol->input;
@@ -195,7 +197,10 @@ std::unique_ptr<Solution> Solve(const ProblemSpec& spec, const Mesh& mesh, const
   Mesh work = input;
   ToCanonical(hooks.frame, work);
   const Mesh start = work;
-  Mesh reference_canonical = reference ? *reference : input;
+  // A net made from the input surface (a layout) stays on that surface, the
+  // design the user gave, not on the net it started as: the band, the
+  // projections and the distances are measured from the design.
+  Mesh reference_canonical = reference ? *reference : sol->on_design ? mesh : input;
   ToCanonical(hooks.frame, reference_canonical);
   sol->reference = std::make_unique<ReferenceSurface>(reference_canonical);
   hooks.reference = sol->reference.get();

@@ -25,6 +25,9 @@ struct Solution {
                           // declared first, destroyed last)
   LoopResult loop;        // of the last level (rounds and iterations: all levels)
   WorkingNet net;         // the net solved, when derived from the input
+  bool on_design = false;  // the net was made from the input surface (a layout: no
+                           // net vertex is an input vertex): the input is the design
+                           // surface, the reference without a `reference`
   Mesh input;             // the net solved, file units, as given
   Mesh output;            // the result, file units
   std::unique_ptr<Store> store;  // the last level's store (canonical frame: every block)
@@ -38,7 +41,9 @@ struct Solution {
 };
 
 // Solves `spec`'s problem on `mesh` (file units; the spec's `mesh` key only
-// names it in messages) against `reference` (null: the net itself).
+// names it in messages) against `reference` (null: `mesh`, the design
+// surface, for a net the problem made from it (Solution::on_design), else the
+// net itself).
 // `stop` (may be null): LoopOptions::stop; a stop also ends multiresolution
 // before its next level. Throws InputError for unsuitable input.
 std::unique_ptr<Solution> Solve(const ProblemSpec& spec, const Mesh& mesh, const Mesh* reference,
