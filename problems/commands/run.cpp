@@ -219,6 +219,34 @@ std::vector<PlyValues> DisplacementValues(const Mesh& output, const Mesh& input,
   return values;
 }
 
+// The validity checks of `archgeo measure MESH --reference REF` (MESH and
+// REF in file units; REF may be null), in MESH's local frame
+// (mesh/similarity.h LocalFrame): against REF when it has MESH's vertex and
+// face counts (an output and its input), else of MESH alone (every defect
+// counts: no flips, creases or shortened edges compared). `archgeo solve`
+// judges a net it made from the design surface by this same call, so the
+// two verdicts are one.
+struct MeasuredValidity {
+  Validity validity;
+  bool paired = false;  // checked against REF
+};
+
+MeasuredValidity ValidityAsMeasured(const Mesh& mesh, const Mesh* reference,
+                                    const ValidityLimits& limits) {
+  const Similarity local = LocalFrame(mesh);
+  MeasuredValidity out;
+  out.paired = reference && reference->number_of_vertices() == mesh.number_of_vertices() &&
+               reference->number_of_faces() == mesh.number_of_faces();
+  const Mesh in_frame = InFrame(local, mesh);
+  if (!out.paired) {
+    out.validity = CheckValidity(in_frame, nullptr, limits, true);
+  } else {
+    const Mesh reference_in_frame = InFrame(local, *reference);
+    out.validity = CheckValidity(in_frame, &reference_in_frame, limits, true);
+  }
+  return out;
+}
+
 // One `archgeo solve` run, stage by stage: stage the outputs, read the
 // inputs, solve, measure the input, report the solve, check validity, write
 // and measure the output, summarise. Each stage's wall time goes to the
@@ -308,21 +336,28 @@ class SpecRun {
         return CheckValidity(output_, &input_, LimitsOf(s_), true);
       });
       if (MadeNet()) {
+        // As `archgeo measure OUTPUT --reference DESIGN` checks the output
+        // written, with the spec's validity.* limits.
         design_check_ = std::async(std::launch::async, [this] {
-          return CheckValidity(output_, nullptr, LimitsOf(s_), true);
+          return ValidityAsMeasured(solution_->output, &read_, LimitsOf(s_));
         });
       }
     }
     const auto setup_start = Clock::now();
+    // The reference: `reference`, else the design surface for a net the
+    // problem made from it (Solve's reference too), else the input itself.
     reference_ = std::make_unique<ReferenceSurface>(
-        reference_mesh_ ? InFrame(local_, *reference_mesh_) : input_);
+        reference_mesh_ ? InFrame(local_, *reference_mesh_)
+        : DesignReference() ? InFrame(local_, read_)
+                            : input_);
     // Without a separate reference the input is its own reference surface:
     // every vertex lies on it, so its distances to it are 0 and need not be
     // measured.
+    const bool own_reference = !reference_mesh_ && !DesignReference();
     before_ = ScaleLengths(
-        ComputeMetrics(input_, reference_mesh_ ? reference_.get() : nullptr, &input_),
+        ComputeMetrics(input_, own_reference ? nullptr : reference_.get(), &input_),
         local_.scale);
-    if (!reference_mesh_) {
+    if (own_reference) {
       before_.prox_max = before_.surface_distance_max = before_.surface_distance_mean = 0;
       before_.boundary_prox_max = reference_->HasBoundary() ? 0 : -1;
       before_.hausdorff = 0;
@@ -389,15 +424,21 @@ class SpecRun {
   // has is not one to excuse. The output is then also checked alone (every
   // defect counts, as `archgeo measure OUTPUT --reference DESIGN` checks it)
   // and measured against the design surface, the input as read.
-  bool MadeNet() const {
-    return solution_->net.derived && solution_->net.source.empty() && read_.number_of_faces() > 0;
-  }
+  bool MadeNet() const { return solution_->on_design; }
+
+  // The design surface is the reference (of the solve and of the metrics):
+  // a net made from it, and no `reference` given.
+  bool DesignReference() const { return MadeNet() && !reference_mesh_; }
 
   // The output's vertices' largest distance from the design surface (file
-  // units), and whether it lies within the deviation band, where the problem
-  // has one; the report's validity.design_surface.
+  // units; the report's after.surface_distance_max, and `archgeo measure
+  // OUTPUT --reference DESIGN`'s, where the design is the reference), and
+  // whether it lies within the deviation band, where the problem has one;
+  // the report's validity.design_surface.
   void MeasureAgainstDesign(nlohmann::json& entry) {
-    const ReferenceSurface design(InFrame(local_, read_));
+    std::unique_ptr<ReferenceSurface> own;
+    if (!DesignReference()) own = std::make_unique<ReferenceSurface>(InFrame(local_, read_));
+    const ReferenceSurface& design = own ? *own : *reference_;
     double worst = 0;
     for (VertexIndex v : output_.vertices()) {
       const Vec3 p = ToVec3(output_.point(v));
@@ -427,8 +468,10 @@ class SpecRun {
     nlohmann::json& v = run_.report["validity"];
     v = validity_.ToJson();
     if (design_check_.valid()) {
-      design_ = design_check_.get();
+      const MeasuredValidity measured = design_check_.get();
+      design_ = measured.validity;
       nlohmann::json& d = v["design_surface"] = design_.ToJson();
+      d["against_reference"] = measured.paired;
       MeasureAgainstDesign(d);
       if (!design_.valid()) v["valid"] = false;
     }
@@ -496,7 +539,7 @@ class SpecRun {
     const bool same_vertices = output_.number_of_vertices() == input_.number_of_vertices();
     // An output that is the input, with the input as its own reference, lies
     // on it: its distances are 0 and need not be measured (as before).
-    const bool unchanged = !reference_mesh_ && SameMesh(output_, input_);
+    const bool unchanged = !reference_mesh_ && !DesignReference() && SameMesh(output_, input_);
     after_ = ScaleLengths(ComputeMetrics(output_, unchanged ? nullptr : reference_.get(),
                                          same_vertices ? &input_ : nullptr),
                           local_.scale);
@@ -685,6 +728,25 @@ class SpecRun {
     return lines;
   }
 
+  // The output as `archgeo measure OUTPUT --reference DESIGN` judges it, and
+  // its distance from the design surface (a net the problem made).
+  std::string DesignLine() const {
+    char line[400];
+    std::snprintf(line, sizeof line,
+                  "validity against the design surface (as archgeo measure OUTPUT --reference "
+                  "DESIGN checks it): %s; vertices at most %.4g file units (%.3g%% of the "
+                  "diagonal) from it",
+                  design_.valid() ? "every hard check passed" : "NOT valid",
+                  design_distance_, 100 * design_distance_ / scale_);
+    std::string text = line;
+    if (design_band_ > 0) {
+      std::snprintf(line, sizeof line, ", band %.4g: %s", design_band_,
+                    design_band_met_ ? "within" : "BEYOND");
+      text += line;
+    }
+    return text + "\n";
+  }
+
   std::string ValidityLines() const {
     const LoopResult& solved = solution_->loop;
     const std::string warnings = validity_.Warnings();
@@ -702,13 +764,15 @@ class SpecRun {
               (design_.valid() ? validity_.Reason() : design_.Reason()) +
               (warnings.empty() ? "" : "warnings:\n" + warnings);
     } else {
-      lines = warnings.empty() ? "validity: every check passed\n"
-                               : "validity: valid; warnings:\n" + warnings;
+      const std::string what = MadeNet() ? "validity against the net solved (the layout)" : "validity";
+      lines = warnings.empty() ? what + ": every check passed\n"
+                               : what + ": valid; warnings:\n" + warnings;
       if (validity_.allow_input_defects && Inherited() > 0) {
         lines += "validity.allow_input_defects: " + std::to_string(Inherited()) +
                  " defects as in the input were accepted\n";
       }
     }
+    if (MadeNet()) lines += DesignLine();
     if (info_.welded_vertices > 0) {
       lines += "WARNING: the input had coincident vertices: " +
                std::to_string(info_.welded_vertices) +
@@ -760,7 +824,7 @@ class SpecRun {
   Mesh input_, output_;  // the solution's input and output in local_
   std::future<Validity> validity_check_;
   Validity validity_;
-  std::future<Validity> design_check_;  // the output alone, for a net the problem made
+  std::future<MeasuredValidity> design_check_;  // as measured, for a net the problem made
   Validity design_;                     // valid when not checked
   bool design_band_met_ = true;
   bool energy_checked_ = false, energy_met_ = true;  // tolerance.energy_not_above_input
@@ -798,8 +862,11 @@ RunResult MeasureFiles(const std::string& mesh_path, const std::string& referenc
   const Mesh read = ReadMesh(mesh_path);
   const Similarity local = LocalFrame(read);
   const Mesh mesh = InFrame(local, read);
-  std::optional<Mesh> input;  // the reference, in the mesh's frame
-  if (!reference_path.empty()) input = InFrame(local, ReadMesh(reference_path));
+  std::optional<Mesh> reference_read, input;  // the reference as read, and in the mesh's frame
+  if (!reference_path.empty()) {
+    reference_read = ReadMesh(reference_path);
+    input = InFrame(local, *reference_read);
+  }
   RunResult run;
   Metrics metrics;
   if (!input) {
@@ -818,9 +885,10 @@ RunResult MeasureFiles(const std::string& mesh_path, const std::string& referenc
   std::string validity_text;
   nlohmann::json validity_json;
   {
-    const bool paired = input && input->number_of_vertices() == mesh.number_of_vertices() &&
-                        input->number_of_faces() == mesh.number_of_faces();
-    const Validity v = CheckValidity(mesh, paired ? &*input : nullptr, ValidityLimits{}, true);
+    const MeasuredValidity measured = ValidityAsMeasured(
+        read, reference_read ? &*reference_read : nullptr, ValidityLimits{});
+    const bool paired = measured.paired;
+    const Validity& v = measured.validity;
     validity_json = v.ToJson();
     validity_json["against_reference"] = paired;
     const std::string what =
