@@ -43,8 +43,8 @@ struct LevelSetResult;  // problems/declarations/field_pipeline.h
 // The net a problem optimises when that is not the input mesh itself (hnet:
 // a diagonal net of the input, geometry/diagonal_net.h; principal_symmetric: the
 // input with its quads split). The run then measures, solves and writes this
-// net; displacements are measured from its vertices' input positions, and
-// without a `reference` the net is its own reference surface.
+// net; displacements from its vertices' input positions. Without a `reference`
+// it is its own reference, or the input for a net made from it (on_design).
 struct WorkingNet {
   bool derived = false;      // false: the problem works on the input itself
   Mesh mesh;                 // the net, in file units (when derived)
