@@ -42,6 +42,11 @@ namespace archgeo {
 struct BaseComplex {
   std::vector<int> nodes;               // surface vertex id per base vertex
   std::vector<std::vector<int>> faces;  // base vertex indices, 3 or 4 per face
+  // Optional, per face and side k (corner k → k + 1): an edge id; sides with
+  // the same id are one base edge, so two base edges may join the same two
+  // nodes (a quasi-dual whose saddles share their extrema). Empty: one base
+  // edge per pair of nodes.
+  std::vector<std::vector<long>> edges;
 };
 
 // A base complex the surface cannot carry; `element` names it ("base face 3",

@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <queue>
+#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -40,11 +41,19 @@ void CheckBaseComplex(int surface_vertices, const BaseComplex& base) {
     }
   }
   if (base.faces.empty()) throw BaseComplexError("base complex", "has no face");
+  if (!base.edges.empty() && base.edges.size() != base.faces.size()) {
+    throw BaseComplexError("base complex", "has edge ids for " + std::to_string(base.edges.size()) +
+                                               " of its " + std::to_string(base.faces.size()) +
+                                               " faces");
+  }
   for (size_t f = 0; f < base.faces.size(); ++f) {
     const std::vector<int>& face = base.faces[f];
     if (face.size() != 3 && face.size() != 4) {
       throw BaseComplexError(BaseFaceName(int(f)), "has " + std::to_string(face.size()) +
                                                        " corners (triangles and quads only)");
+    }
+    if (!base.edges.empty() && base.edges[f].size() != face.size()) {
+      throw BaseComplexError(BaseFaceName(int(f)), "has not one edge id per side");
     }
     for (size_t k = 0; k < face.size(); ++k) {
       if (face[k] < 0 || face[k] >= int(base.nodes.size())) {
@@ -59,35 +68,39 @@ void CheckBaseComplex(int surface_vertices, const BaseComplex& base) {
 }
 
 // The base edges (a < b) and each face's sides; the complex must be closed
-// and consistently oriented.
+// and consistently oriented. An edge is its pair of nodes, or its id
+// (BaseComplex::edges) with the pair.
 void BaseSides(const BaseComplex& base, ChartLayout& out) {
-  std::map<std::pair<int, int>, int> index;
-  std::map<std::pair<int, int>, int> directed;  // (from, to) -> face
+  using SideKey = std::tuple<long, int, int>;  // (edge id or −1, from, to)
+  std::map<SideKey, int> index;
+  std::map<SideKey, int> directed;  // -> face
   out.sides.assign(base.faces.size(), {});
   for (size_t f = 0; f < base.faces.size(); ++f) {
     const std::vector<int>& face = base.faces[f];
     for (size_t k = 0; k < face.size(); ++k) {
       const int u = face[k], v = face[(k + 1) % face.size()];
-      if (!directed.emplace(std::make_pair(u, v), int(f)).second) {
+      const long id = base.edges.empty() ? -1 : base.edges[f][k];
+      if (!directed.emplace(SideKey(id, u, v), int(f)).second) {
         throw BaseComplexError(BaseFaceName(int(f)),
                                "runs along " + BaseEdgeName(u, v) + " in the same direction as " +
-                                   BaseFaceName(directed[{u, v}]) +
+                                   BaseFaceName(directed[SideKey(id, u, v)]) +
                                    " (faces oriented inconsistently, or an edge on three faces)");
       }
-      const std::pair<int, int> key(std::min(u, v), std::max(u, v));
+      const SideKey key(id, std::min(u, v), std::max(u, v));
       auto [it, fresh] = index.emplace(key, int(out.edges.size()));
       if (fresh) {
         BaseEdgePath e;
-        e.a = key.first;
-        e.b = key.second;
+        e.a = std::get<1>(key);
+        e.b = std::get<2>(key);
         out.edges.push_back(e);
       }
       out.sides[f].push_back({it->second, u > v});
     }
   }
-  for (const auto& [uv, f] : directed) {
-    if (!directed.count({uv.second, uv.first})) {
-      throw BaseComplexError(BaseEdgeName(uv.first, uv.second),
+  for (const auto& [side, f] : directed) {
+    const auto [id, u, v] = side;
+    if (!directed.count(SideKey(id, v, u))) {
+      throw BaseComplexError(BaseEdgeName(u, v),
                              "is on " + BaseFaceName(f) +
                                  " only: the base complex must be closed, as the surface is");
     }

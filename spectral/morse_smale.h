@@ -80,7 +80,12 @@ MorseSmaleComplex BuildMorseSmale(const std::vector<Eigen::Vector3d>& points,
 // split by diagonals from its first maximum into quads.
 struct QuadBaseComplex {
   std::vector<Eigen::Vector3d> points;
+  std::vector<int> nodes;  // per vertex: the mesh vertex of its extremum (a BaseComplex's nodes)
   std::vector<std::array<int, 4>> quads;
+  // Per quad, per side k (corner k → k + 1): its edge (the cell of the
+  // complex it crosses, or a diagonal); two saddles sharing their extrema
+  // give two edges between the same vertices (BaseComplex::edges).
+  std::vector<std::array<long, 4>> quad_edges;
   int degenerate_quads = 0;  // a corner repeated (a saddle's two arcs to one extremum)
   int missing_saddles = 0;     // saddles without all their arcs: no quad
   int edges = 0;               // one per cell of the complex (its max–min diagonal), and the diagonals

@@ -123,6 +123,7 @@ QuadBaseComplex QuasiDual(const MorseSmaleComplex& c, const std::vector<Eigen::V
     if (c.nodes[n].kind == 0) continue;
     vertex_of[n] = int(out.points.size());
     out.points.push_back(points[size_t(c.nodes[n].vertex)]);
+    out.nodes.push_back(c.nodes[n].vertex);
   }
   // A saddle's arcs, consecutive in `arcs` and in the cyclic order of its
   // wedges, alternate between maxima and minima; the dual edge between two
@@ -161,6 +162,7 @@ QuadBaseComplex QuasiDual(const MorseSmaleComplex& c, const std::vector<Eigen::V
       std::sort(sorted.begin(), sorted.end());
       out.degenerate_quads += std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
       out.quads.push_back(q);
+      out.quad_edges.push_back(e);
       previous = closing;
     }
     i = j;
