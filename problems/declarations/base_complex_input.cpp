@@ -2,13 +2,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "problems/declarations/base_complex_input.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
+#include <glog/logging.h>
+
+#include "core/magnitude.h"
+#include "geometry/reference.h"
 #include "io/base_complex_ids.h"
 #include "io/io.h"
-#include "mesh/surface_mesh.h"
+#include "mesh/similarity.h"
 
 namespace archgeo {
 namespace {
@@ -55,7 +60,137 @@ UserBaseComplex BcSnapMesh(const std::string& path, const std::vector<Eigen::Vec
   return out;
 }
 
+constexpr double kBcOnSurface = 1e-9;  // of the diagonal: output vertices on the input
+
+Mesh BcQuadMesh(const QuadExtraction& q) {
+  Mesh out;
+  for (const Eigen::Vector3d& p : q.points) out.add_vertex(Point(p.x(), p.y(), p.z()));
+  for (const auto& quad : q.quads) {
+    const FaceIndex f = out.add_face(VertexIndex(quad[0]), VertexIndex(quad[1]),
+                                     VertexIndex(quad[2]), VertexIndex(quad[3]));
+    CHECK(f != Mesh::null_face()) << "chart step: the extracted quads are not a manifold";
+  }
+  return out;
+}
+
+nlohmann::json BcDetails(const ChartQuadsResult& r, double distance, double diagonal,
+                         const std::string& weights) {
+  int base_triangles = 0, triangles_min = 1 << 30, triangles_max = 0;
+  for (const auto& sides : r.layout.sides) base_triangles += sides.size() == 3;
+  for (const Chart& c : r.layout.charts) {
+    triangles_min = std::min(triangles_min, int(c.triangles.size()));
+    triangles_max = std::max(triangles_max, int(c.triangles.size()));
+  }
+  int base_irregular = 0;
+  for (int v : r.expected_irregular) base_irregular += v < int(r.quads.node_vertex.size());
+  return {{"base_vertices", r.quads.node_vertex.size()},
+          {"base_faces", r.layout.sides.size()},
+          {"base_triangles", base_triangles},
+          {"base_quads", int(r.layout.sides.size()) - base_triangles},
+          {"base_edges", r.layout.edges.size()},
+          {"base_irregular_nodes", base_irregular},
+          {"base_faces_turned", r.layout.turned},
+          {"n", r.n},
+          {"weights", weights},
+          {"charts", r.layout.charts.size()},
+          {"chart_triangles_min", triangles_min},
+          {"chart_triangles_max", triangles_max},
+          {"flipped_parameter_triangles", r.flipped},
+          {"parameter_area_min_relative", r.min_area},
+          {"output_vertices", r.quads.points.size()},
+          {"output_quads", r.quads.quads.size()},
+          {"irregular_vertices", r.irregular.size()},
+          {"expected_irregular_vertices", r.expected_irregular.size()},
+          {"irregular_as_predicted", r.irregular == r.expected_irregular},
+          {"boundary_edges", r.boundary_edges},
+          {"non_manifold_edges", r.non_manifold_edges},
+          {"t_junctions", r.t_junctions},
+          {"shared_edge_mismatch_relative", r.quads.shared_edge_mismatch / diagonal},
+          {"unlocated_samples", r.quads.unlocated},
+          {"surface_distance_max_relative", distance / diagonal},
+          {"seconds", {{"charts", r.seconds_charts},
+                       {"parameterisation", r.seconds_parameterisation},
+                       {"extraction", r.seconds_extraction}}}};
+}
+
+std::string BcInvalid(const ChartQuadsResult& r, double distance_relative) {
+  std::string out;
+  if (r.flipped > 0) out += std::to_string(r.flipped) + " flipped parameter triangles\n";
+  if (r.irregular != r.expected_irregular) {
+    out += "the irregular vertices are not the base complex's (nodes of valence ≠ 4, triangle "
+           "centres)\n";
+  }
+  if (r.boundary_edges > 0 || r.non_manifold_edges > 0 || r.t_junctions > 0) {
+    out += "the quad mesh is not conforming (" + std::to_string(r.boundary_edges) +
+           " boundary edges, " + std::to_string(r.non_manifold_edges) + " non-manifold edges, " +
+           std::to_string(r.t_junctions) + " T-junctions)\n";
+  }
+  if (!(distance_relative <= kBcOnSurface)) {
+    out += "a vertex is off the input surface by " + std::to_string(distance_relative) +
+           " of the diagonal\n";
+  }
+  return out;
+}
+
 }  // namespace
+
+BaseComplex QuasiDualBaseComplex(const QuadBaseComplex& q) {
+  BaseComplex base;
+  base.nodes = q.nodes;
+  for (const auto& f : q.quads) base.faces.push_back({f[0], f[1], f[2], f[3]});
+  for (const auto& e : q.quad_edges) base.edges.push_back({e[0], e[1], e[2], e[3]});
+  return base;
+}
+
+std::vector<Key> ChartKeys() {
+  return {IntegerKey("charts.n", 8, 1, 100000,
+                     "samples per base edge: an n × n grid per quad chart, three (n/2) × (n/2) "
+                     "grids per triangle chart (n even then)"),
+          NumberKey("charts.edge_length", 0, 0, kMaxCoordinate,
+                    "or the output's edge length in file units: n = mean base-edge path length / "
+                    "this, rounded (to an even number with triangle faces); 0 = charts.n"),
+          ChoiceKey("charts.weights", "cotan", {"cotan", "mean_value"},
+                    "interior weights of the harmonic parameterisation: cotangent (can flip on "
+                    "obtuse triangles) or Floater's mean-value weights (positive: never flip)")};
+}
+
+void CheckChartKeys(const Settings& s) {
+  if (s.Number("charts.edge_length") > 0 && s.Given("charts.n")) {
+    throw s.Error("charts.edge_length", "give charts.n or charts.edge_length, not both");
+  }
+}
+
+ChartStep RunChartStep(const Settings& s, const Mesh& design,
+                       const std::vector<Eigen::Vector3d>& points,
+                       const std::vector<std::array<int, 3>>& triangles, const BaseComplex& base) {
+  const std::string weights = s.String("charts.weights");
+  ChartStep out;
+  ChartQuadsResult& r = out.result;
+  r = ChartQuads(points, triangles, base, int(s.Integer("charts.n")),
+                 s.Number("charts.edge_length"),
+                 weights == "mean_value" ? ChartWeights::kMeanValue : ChartWeights::kCotangent);
+  const double diagonal = PrincipalBoxDiagonal(design);
+  const ReferenceSurface surface(design);
+  double distance = 0;
+  for (const Eigen::Vector3d& p : r.quads.points) {
+    const Vec3 closest = surface.Closest(Vec3{p.x(), p.y(), p.z()}).point;
+    distance = std::max(distance, (Eigen::Vector3d(closest[0], closest[1], closest[2]) - p).norm());
+  }
+  out.mesh = BcQuadMesh(r.quads);
+  out.details = BcDetails(r, distance, diagonal, weights);
+  out.invalid = BcInvalid(r, distance / diagonal);
+  char line[512];
+  std::snprintf(line, sizeof line,
+                "charts: %zu, n = %d, flipped parameter triangles %d\nquads: %zu vertices, %zu "
+                "quads, irregular vertices %zu (base complex predicts %zu: %s), boundary edges "
+                "%d, T-junctions %d, distance to the input %.2e of the diagonal\n",
+                r.layout.charts.size(), r.n, r.flipped, r.quads.points.size(), r.quads.quads.size(),
+                r.irregular.size(), r.expected_irregular.size(),
+                r.irregular == r.expected_irregular ? "the same vertices" : "differ",
+                r.boundary_edges, r.t_junctions, distance / diagonal);
+  out.headline = line;
+  return out;
+}
 
 UserBaseComplex ReadUserBaseComplex(const Settings& s, const std::vector<Eigen::Vector3d>& points,
                                     double diagonal) {
