@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "problems/commands/spectral.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -61,16 +62,37 @@ std::string Row(int k, double lambda, const CriticalPoints& c) {
 
 }  // namespace
 
+std::vector<SpectralCandidate> SpectralCandidatesOf(const SpectralMesh& m,
+                                                    const Eigenpairs& pairs) {
+  std::vector<SpectralCandidate> out;
+  for (int k = 1; k < int(pairs.values.size()); ++k) {
+    out.push_back({k, pairs.values[k], FindCriticalPoints(m.rings, m.closed, pairs.vectors.col(k))});
+  }
+  return out;
+}
+
 std::vector<SpectralCandidate> SpectralCandidates(const Mesh& triangles, int count,
                                                   LaplacianKind kind) {
   const SpectralMesh m = SpectralArrays(triangles);
   const Laplacian laplacian = BuildLaplacian(m.points, m.triangles, kind);
-  const Eigenpairs pairs = LowestEigenpairs(laplacian.stiffness, laplacian.mass, count);
-  std::vector<SpectralCandidate> out;
-  for (int k = 1; k < count; ++k) {
-    out.push_back({k, pairs.values[k], FindCriticalPoints(m.rings, m.closed, pairs.vectors.col(k))});
-  }
-  return out;
+  return SpectralCandidatesOf(m, LowestEigenpairs(laplacian.stiffness, laplacian.mass, count));
+}
+
+int SpectralCharts(const CriticalPoints& c) { return c.saddles + c.boundary_saddles / 2; }
+
+int SpectralTarget(double area, int charts, double edge_length) {
+  if (charts > 0) return charts;
+  return edge_length > 0 ? int(std::lround(area / (edge_length * edge_length))) : 0;
+}
+
+std::vector<int> SpectralByTarget(const std::vector<SpectralCandidate>& candidates, int target) {
+  std::vector<int> order(candidates.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = int(i);
+  auto gap = [&](int i) { return std::abs(SpectralCharts(candidates[size_t(i)].critical) - target); };
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return gap(a) != gap(b) ? gap(a) < gap(b) : candidates[size_t(a)].k < candidates[size_t(b)].k;
+  });
+  return order;
 }
 
 std::string SpectralList(const SpectralRequest& q) {
@@ -97,9 +119,7 @@ std::string SpectralList(const SpectralRequest& q) {
   } catch (const std::runtime_error& e) {
     throw InputError(q.mesh, 0, "--count", e.what());
   }
-  const int target = q.charts > 0       ? q.charts
-                     : q.edge_length > 0 ? int(std::lround(m.area / (q.edge_length * q.edge_length)))
-                                         : 0;
+  const int target = SpectralTarget(m.area, q.charts, q.edge_length);
   std::string text = "spectral: " + q.laplacian + " Laplacian of " + q.mesh + " (" +
                      std::to_string(m.points.size()) + " vertices, " +
                      std::to_string(m.triangles.size()) + " triangles, Euler characteristic " +
@@ -107,16 +127,9 @@ std::string SpectralList(const SpectralRequest& q) {
                      ")\n";
   text += "   k  eigenvalue    max   min  saddles (multi)  boundary max min saddles  "
           "euler\n";
-  int best = -1, best_gap = 0;
-  for (const SpectralCandidate& c : candidates) {
-    text += Row(c.k, c.eigenvalue, c.critical) + "\n";
-    const int charts = c.critical.saddles + c.critical.boundary_saddles / 2;
-    const int gap = std::abs(charts - target);
-    if (target > 0 && (best < 0 || gap < best_gap)) {
-      best = c.k;
-      best_gap = gap;
-    }
-  }
+  for (const SpectralCandidate& c : candidates) text += Row(c.k, c.eigenvalue, c.critical) + "\n";
+  const int best =
+      candidates.empty() ? -1 : candidates[size_t(SpectralByTarget(candidates, target)[0])].k;
   text += "charts: one per saddle, half per boundary saddle (the Morse-Smale complex of "
           "eigenfunction k); euler: max + "
           "min - saddles, boundary points counted half, = " + std::to_string(m.euler) +

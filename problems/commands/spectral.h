@@ -17,6 +17,7 @@
 #include "mesh/surface_mesh.h"
 #include "spectral/critical_points.h"
 #include "spectral/laplacian.h"
+#include "spectral/morse_smale.h"
 
 namespace archgeo {
 
@@ -39,11 +40,30 @@ struct SpectralCandidate {
   CriticalPoints critical;
 };
 
+struct Eigenpairs;  // spectral/eigenpairs.h
+
+// Eigenfunctions 1 … pairs.values.size() − 1 of `m` with their critical points.
+std::vector<SpectralCandidate> SpectralCandidatesOf(const SpectralMesh& m,
+                                                    const Eigenpairs& pairs);
+
 // Eigenfunctions 1 … count − 1 of `triangles` (a triangle mesh) with their
 // critical points. Throws std::invalid_argument (the Laplacian) or
 // std::runtime_error (the eigensolver).
 std::vector<SpectralCandidate> SpectralCandidates(const Mesh& triangles, int count,
                                                   LaplacianKind kind);
+
+// The charts of a candidate's Morse–Smale complex: one per saddle (counted
+// by multiplicity), half a chart per boundary saddle.
+int SpectralCharts(const CriticalPoints& critical);
+
+// The target number of charts: `charts` if > 0, else area / edge_length²
+// rounded if edge_length > 0, else 0 (no target).
+int SpectralTarget(double area, int charts, double edge_length);
+
+// The selection rule of the automatic choice: the candidates' positions in
+// `candidates` ordered by |SpectralCharts − target|, ties by lower k (the
+// first is the one --list marks).
+std::vector<int> SpectralByTarget(const std::vector<SpectralCandidate>& candidates, int target);
 
 struct SpectralRequest {
   std::string mesh;                     // polygons are triangulated
@@ -62,6 +82,12 @@ struct SpectralRequest {
 // The table to print. Throws InputError for a mesh that cannot be read, a
 // count beyond the vertices, or a target that is not positive.
 std::string SpectralList(const SpectralRequest& request);
+
+// The arcs of a Morse–Smale complex on `points` as OBJ polylines (saddle to
+// extremum), and its quasi-dual as an OBJ quad mesh (spectral_complex.cpp).
+std::string MorseSmaleArcsObj(const MorseSmaleComplex& c,
+                              const std::vector<Eigen::Vector3d>& points);
+std::string QuasiDualObj(const QuadBaseComplex& q);
 
 struct SpectralComplexResult {
   std::string text;    // the counts to print

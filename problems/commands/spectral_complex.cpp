@@ -24,8 +24,23 @@ std::string ComplexPoint(const Eigen::Vector3d& p) {
   return line;
 }
 
+void ComplexCheckRequest(const SpectralRequest& q, int vertices) {
+  if (q.eigenfunction < 1 || q.eigenfunction >= vertices) {
+    throw InputError(q.mesh, 0, "--eigenfunction",
+                     "must be at least 1 and below the mesh's " + std::to_string(vertices) +
+                         " vertices");
+  }
+  if (q.cancel_to < 0) throw InputError("", 0, "--cancel-to", "must be 0 or positive");
+  if (q.laplacian != "cotangent" && q.laplacian != "normalised") {
+    throw InputError("", 0, "--laplacian", "must be cotangent or normalised");
+  }
+}
+
+}  // namespace
+
 // The arcs as polylines over the vertices they use.
-std::string ComplexArcsObj(const MorseSmaleComplex& c, const std::vector<Eigen::Vector3d>& points) {
+std::string MorseSmaleArcsObj(const MorseSmaleComplex& c,
+                              const std::vector<Eigen::Vector3d>& points) {
   std::string vertices, lines;
   std::unordered_map<int, int> index;
   for (const MorseSmaleArc& a : c.arcs) {
@@ -40,7 +55,7 @@ std::string ComplexArcsObj(const MorseSmaleComplex& c, const std::vector<Eigen::
   return "# Morse-Smale complex: one polyline per arc, saddle to extremum\n" + vertices + lines;
 }
 
-std::string ComplexQuadsObj(const QuadBaseComplex& q) {
+std::string QuasiDualObj(const QuadBaseComplex& q) {
   std::string text = "# quasi-dual of the Morse-Smale complex: extrema, one quad per saddle\n";
   for (const Eigen::Vector3d& p : q.points) text += ComplexPoint(p);
   for (const std::array<int, 4>& f : q.quads) {
@@ -49,20 +64,6 @@ std::string ComplexQuadsObj(const QuadBaseComplex& q) {
   }
   return text;
 }
-
-void ComplexCheckRequest(const SpectralRequest& q, int vertices) {
-  if (q.eigenfunction < 1 || q.eigenfunction >= vertices) {
-    throw InputError(q.mesh, 0, "--eigenfunction",
-                     "must be at least 1 and below the mesh's " + std::to_string(vertices) +
-                         " vertices");
-  }
-  if (q.cancel_to < 0) throw InputError("", 0, "--cancel-to", "must be 0 or positive");
-  if (q.laplacian != "cotangent" && q.laplacian != "normalised") {
-    throw InputError("", 0, "--laplacian", "must be cotangent or normalised");
-  }
-}
-
-}  // namespace
 
 SpectralComplexResult SpectralComplex(const SpectralRequest& q) {
   if (q.persistence < 0 || !std::isfinite(q.persistence)) {
@@ -95,12 +96,12 @@ SpectralComplexResult SpectralComplex(const SpectralRequest& q) {
   StagedOutputs staged({q.mesh});
   if (!q.complex_out.empty()) {
     staged.Write(q.complex_out, "--complex", [&](const std::string& path) {
-      WriteTextFile(path, ComplexArcsObj(c, m.points), "--complex");
+      WriteTextFile(path, MorseSmaleArcsObj(c, m.points), "--complex");
     });
   }
   if (!q.quasi_dual_out.empty()) {
     staged.Write(q.quasi_dual_out, "--quasi-dual", [&](const std::string& path) {
-      WriteTextFile(path, ComplexQuadsObj(dual), "--quasi-dual");
+      WriteTextFile(path, QuasiDualObj(dual), "--quasi-dual");
     });
   }
   staged.Commit();
