@@ -12,6 +12,7 @@
 #include "core/input_error.h"
 #include "io/io.h"
 #include "io/output_files.h"
+#include "fields/triangle_surfaces.h"
 #include "generators/smoothness_surfaces.h"
 
 namespace archgeo {
@@ -64,6 +65,13 @@ void CheckOptions(const GenerateOptions& o, bool is_net) {
     }
     return;
   }
+  if (o.surface == "sphere") {
+    if (o.nu < 0 || o.nu > 7) {
+      throw InputError("--nu", 0, "nu", "sphere: subdivisions must be in [0, 7], got " +
+                                            std::to_string(o.nu));
+    }
+    return;
+  }
   if (o.nu < 1 || o.nv < 1) {
     throw InputError("--nu/--nv", 0, "", "grid sizes must be >= 1, got " + std::to_string(o.nu) +
                                              " x " + std::to_string(o.nv));
@@ -99,7 +107,9 @@ std::string GenerateSurfaceNames() {
       "torus                  principal quad mesh of the torus R = 3, r = 1 (--nu x --nv; "
       "Pellis Fig. 7; conical: --noise for a noisy copy)\n"
       "cone_start             triangle mesh between circles r = 1 at z = 0 and 0.5 at z = 1, "
-      "bulged by 0.2 (--nu around, --nv rings; Pellis §4)\n";
+      "bulged by 0.2 (--nu around, --nv rings; Pellis §4)\n"
+      "sphere                 unit icosphere: an icosahedron split --nu times (0-7), "
+      "20 4^nu triangles (spectral_sphere, Gebreiter Fig. 8)\n";
   for (const auto& [name, which] : Nets()) {
     text += name + std::string(23 - name.size(), ' ') + "asymptotic quad net (--refinement): " +
             AsymptoticTestNetPaperRow(which) + "\n";
@@ -111,7 +121,8 @@ RunResult GenerateSurface(const std::string& path, const GenerateOptions& o) {
   Mesh mesh, reference;
   const auto net = Nets().find(o.surface);
   const bool is_net = net != Nets().end();
-  if (!is_net && o.surface != "roof" && o.surface != "torus" && o.surface != "cone_start") {
+  if (!is_net && o.surface != "roof" && o.surface != "torus" && o.surface != "cone_start" &&
+      o.surface != "sphere") {
     throw InputError("--surface", 0, "surface", "unknown surface '" + o.surface +
                                                     "'; one of:\n" + GenerateSurfaceNames());
   }
@@ -125,6 +136,8 @@ RunResult GenerateSurface(const std::string& path, const GenerateOptions& o) {
   } else if (o.surface == "torus") {
     mesh = TorusPrincipalQuads(3.0, 1.0, o.nu, o.nv);
     if (o.noise.value_or(0.0) > 0) AddNoise(mesh, *o.noise, o.seed);
+  } else if (o.surface == "sphere") {
+    mesh = TriangulatedEllipsoid(1, 1, 1, o.nu);
   } else if (o.surface == "cone_start") {
     mesh = RevolutionTriangles(RevolutionProfile{}, o.nu, o.nv);
   } else {

@@ -15,6 +15,7 @@
   X(conjugate_layout)         \
   X(grid)                     \
   X(base_complex_quads)       \
+  X(spectral_quads)           \
   X(wave_quads)
 
 namespace archgeo {

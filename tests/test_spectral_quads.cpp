@@ -1,0 +1,88 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// `spectral_quads` end to end [Gebreiter 2012, §6, §7, §4.1]: an
+// eigenfunction's Morse–Smale complex, its quasi-dual as the base complex,
+// the charts and the all-quad mesh; the input checks.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/input_error.h"
+#include "fields/triangle_surfaces.h"
+#include "generators/smoothness_surfaces.h"
+#include "problems/commands/run.h"
+#include "problems/runtime/mesh_inputs.h"
+#include "problems/spec/spec.h"
+
+namespace archgeo {
+namespace ARCHGEO_UNITY_ID {
+
+RunResult SqRun(const std::string& yaml, const Mesh& mesh) {
+  MeshInputs inputs;
+  inputs.mesh = &mesh;
+  return RunSpec(ParseSpec(yaml, "/in-memory/spectral.yaml"), {}, inputs);
+}
+
+// A conforming all-quad mesh on the input whose irregular vertices are the
+// quasi-dual's nodes of valence ≠ 4 (`irregular`).
+void SqExpectQuads(const RunResult& run, int irregular) {
+  ASSERT_EQ(run.exit_code, 0) << run.summary;
+  const auto& c = run.report.at("details").at("charts");
+  EXPECT_GT(c.at("output_quads").get<int>(), 0);
+  EXPECT_EQ(c.at("irregular_vertices").get<int>(), irregular);
+  EXPECT_TRUE(c.at("irregular_as_predicted").get<bool>());
+  EXPECT_EQ(c.at("flipped_parameter_triangles").get<int>(), 0);
+  EXPECT_EQ(c.at("t_junctions").get<int>(), 0);
+  EXPECT_EQ(c.at("boundary_edges").get<int>(), 0);
+  EXPECT_EQ(c.at("non_manifold_edges").get<int>(), 0);
+  EXPECT_LE(c.at("surface_distance_max_relative").get<double>(), 1e-9);
+}
+
+// Eigenfunction 9 of a 642-vertex icosphere (the first of l = 3, eigenvalue
+// ≈ 12; Gebreiter's "10th" counting the constant as the first): the
+// quad mesh's irregular vertices are exactly the quasi-dual's nodes of
+// valence ≠ 4, V − E + F = 2 on the quasi-dual and max + min − saddles = 2.
+TEST(SpectralQuads, SphereEigenfunctionGivesAnAllQuadMesh) {
+  const RunResult run = SqRun("problem: spectral_quads\nspectral: {eigenfunction: 9}\n",
+                              TriangulatedEllipsoid(1, 1, 1, 3));
+  const auto& sp = run.report.at("details").at("spectral");
+  const auto& dual = sp.at("complex").at("quasi_dual");
+  std::printf("sphere k = 9: eigenvalue %.4f, max %d min %d saddles %d; quasi-dual %d quads, "
+              "%d irregular; output %d quads, %d irregular\n",
+              sp.at("eigenvalue").get<double>(), sp.at("complex").at("maxima").get<int>(),
+              sp.at("complex").at("minima").get<int>(), sp.at("complex").at("saddles").get<int>(),
+              dual.at("quads").get<int>(), dual.at("irregular_vertices").get<int>(),
+              run.report.at("details").at("charts").at("output_quads").get<int>(),
+              run.report.at("details").at("charts").at("irregular_vertices").get<int>());
+  EXPECT_EQ(sp.at("eigenfunction").get<int>(), 9);
+  EXPECT_NEAR(sp.at("eigenvalue").get<double>(), 12, 0.2);  // l(l + 1), l = 3
+  EXPECT_EQ(sp.at("complex").at("euler_sum").get<int>(), 2);
+  EXPECT_EQ(dual.at("euler").get<int>(), 2);
+  EXPECT_GT(dual.at("irregular_vertices").get<int>(), 0);
+  SqExpectQuads(run, dual.at("irregular_vertices").get<int>());
+}
+
+// The torus (48 × 24 quads, triangulated by the problem): the automatic choice's complex has only
+// valence-4 extrema, so the quad mesh has no irregular vertex (χ = 0).
+TEST(SpectralQuads, TorusGivesNoIrregularVertex) {
+  const RunResult run = SqRun("problem: spectral_quads\nspectral: {charts: 16}\n",
+                              TorusPrincipalQuads(3, 1, 48, 24));
+  const auto& sp = run.report.at("details").at("spectral");
+  std::printf("torus: eigenfunction %d, %d quasi-dual quads\n", sp.at("eigenfunction").get<int>(),
+              sp.at("complex").at("quasi_dual").at("quads").get<int>());
+  EXPECT_EQ(sp.at("complex").at("quasi_dual").at("irregular_vertices").get<int>(), 0);
+  SqExpectQuads(run, 0);
+}
+
+TEST(SpectralQuads, EigenfunctionBeyondTheVerticesIsAnErrorNamingTheKey) {
+  const Mesh sphere = TriangulatedEllipsoid(1, 1, 1, 1);  // 42 vertices
+  try {
+    SqRun("problem: spectral_quads\nspectral: {eigenfunction: 42}\n", sphere);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("spectral.eigenfunction"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace ARCHGEO_UNITY_ID
+}  // namespace archgeo
