@@ -190,6 +190,44 @@ TEST(WaveQuads, RestartsKeepTheValidStartOfLowestEnergy) {
   EXPECT_EQ(KeptWaveStart({false, false}, {1.0, 2.0}), 0);
 }
 
+// wave_quads with output.quads: the torus's wave (3 waves round the tube, 6
+// round the axis, as WaveTorus) through the same step gives
+// the quasi-dual's 72 quads as 72 n × n charts with no irregular vertex.
+TEST(WaveQuads, OutputQuadsIsTheQuadMeshThroughTheCharts) {
+  const std::string yaml =
+      "problem: wave_quads\n"
+      "wave: {wavelength: 2.0943951023931953, wavelength_y: 1.0471975511965976,\n"
+      "       size_field_y: axis_distance, restarts: 1}\n"
+      "charts: {n: 4}\n"
+      "output: {quads: /in-memory/quads.obj}\n";
+  const auto s = Solve(ParseSpec(yaml, "/in-memory/wave.yaml"), TorusPrincipalQuads(3, 1, 60, 30),
+                       nullptr, {});
+  ASSERT_TRUE(s->hooks.missed.empty()) << s->hooks.missed;
+  const auto& c = s->details.at("charts");
+  EXPECT_EQ(c.at("charts").get<int>(), 72);
+  EXPECT_EQ(c.at("output_quads").get<int>(), 72 * 16);
+  EXPECT_EQ(c.at("irregular_vertices").get<int>(), 0);
+  EXPECT_EQ(c.at("flipped_parameter_triangles").get<int>(), 0);
+  EXPECT_EQ(c.at("t_junctions").get<int>(), 0);
+  EXPECT_LE(c.at("surface_distance_max_relative").get<double>(), 1e-9);
+}
+
+// An open surface: output.quads is refused naming the key (the charts need a
+// closed surface).
+TEST(WaveQuads, OutputQuadsOnAnOpenSurfaceIsAnErrorNamingTheKey) {
+  const Mesh patch = TriangulatedGrid(8, 8, [](double u, double v) -> Vec3 {
+    return {u, v, 0.1 * u * v};
+  });
+  try {
+    Solve(ParseSpec("problem: wave_quads\noutput: {quads: /in-memory/quads.obj}\n",
+                    "/in-memory/wave.yaml"),
+          patch, nullptr, {});
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("output.quads"), std::string::npos) << e.what();
+  }
+}
+
 TEST(WaveQuads, SizeFieldOnTheAxisIsAnErrorNamingTheKey) {
   // A vertex on the z axis: distance 0, μ = 0.
   const Mesh disc = TriangulatedGrid(6, 6, [](double u, double v) -> Vec3 {

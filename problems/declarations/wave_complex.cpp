@@ -177,6 +177,7 @@ WaveComplex BuildWaveComplex(const Mesh& mesh, const Eigen::VectorXd& f, double 
     out.refinements = level + 1;
   }
   out.points = m.points;
+  out.triangles = m.triangles;
   out.quasi_dual = QuasiDual(out.complex, m.points);
   out.built = true;
   return out;

@@ -10,6 +10,7 @@
 // arcs cannot all be placed apart on that mesh it is refined (below).
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,7 @@ struct WaveComplex {
   // at their centroids, then 1 to 4), with the wave linear on each triangle,
   // so the same critical points, until they can.
   std::vector<Eigen::Vector3d> points;
+  std::vector<std::array<int, 3>> triangles;
   std::vector<int> original;  // per vertex of the double: the vertex of the input it copies
   int refinements = 0;
   MorseSmaleComplex complex;

@@ -46,6 +46,8 @@
 #include "energies/wave_transfer.h"
 #include "io/output_files.h"
 #include "mesh/eigen_point.h"
+#include "io/io.h"
+#include "problems/declarations/base_complex_input.h"
 #include "problems/declarations/wave_complex.h"
 #include "problems/declarations/wave_field.h"
 #include "problems/declarations/wave_start.h"
@@ -68,6 +70,7 @@ struct WaveState : ProblemState {
   std::vector<double> best_valid_f;
   std::shared_ptr<const WaveComplex> best_valid_complex;
   double seconds_field = 0, seconds_start = 0, seconds_complex = 0;
+  Mesh quads;  // output.quads: the kept complex's quasi-dual through the charts
 };
 
 double WaveSecondsSince(std::chrono::steady_clock::time_point t) {
@@ -130,6 +133,16 @@ void InitWave(HookContext& c) {
   const auto t0 = std::chrono::steady_clock::now();
   const Settings& s = *c.settings;
   const Mesh& mesh = c.store->mesh();
+  if (!s.String("output.quads").empty()) {
+    for (HalfedgeIndex h : c.input->halfedges()) {
+      if (c.input->is_border(h)) {
+        throw s.Error("output.quads",
+                      "needs a closed surface: the charts of open surfaces (Gebreiter 2012, "
+                      "§4.1.4) are not done; output.complex and output.quasi_dual give the "
+                      "complex of the surface doubled across its boundary");
+      }
+    }
+  }
   double wavelength = s.Number("wave.wavelength");
   if (wavelength == 0) wavelength = 12 * c.frame.scale;  // 12 mean edge lengths
   double wavelength_y = s.Number("wave.wavelength_y");
@@ -264,6 +277,33 @@ void WaveKeepResult(HookContext& c) {
   st.complex = st.best_valid_complex;
 }
 
+// output.quads: the kept complex's quasi-dual as a base complex → charts →
+// the all-quad mesh (the step of base_complex_quads); a step that fails or
+// gives an invalid mesh is a missed goal.
+void WaveQuads(HookContext& c) {
+  WaveState& st = WaveSt(c);
+  const WaveComplex& w = *st.complex;
+  const QuadBaseComplex& q = w.quasi_dual;
+  if (q.degenerate_quads > 0 || q.missing_saddles > 0) {
+    c.missed = "output.quads: the quasi-dual has " + std::to_string(q.degenerate_quads) +
+               " quads with a repeated corner and " + std::to_string(q.missing_saddles) +
+               " saddles without all their arcs";
+    return;
+  }
+  const BaseComplex base = QuasiDualBaseComplex(q);
+  ChartStep step;
+  try {
+    step = RunChartStep(*c.settings, *c.input, w.points, w.triangles, base);
+  } catch (const std::exception& e) {  // BaseComplexError, a failed factorisation
+    c.missed = std::string("output.quads: the charts of the quasi-dual fail: ") + e.what();
+    return;
+  }
+  c.details["charts"] = std::move(step.details);
+  c.headline += step.headline;
+  if (!step.invalid.empty()) c.missed = "output.quads: " + step.invalid;
+  st.quads = std::move(step.mesh);
+}
+
 void FinishWave(HookContext& c) {
   WaveState& st = WaveSt(c);
   WaveKeepResult(c);
@@ -318,6 +358,7 @@ void FinishWave(HookContext& c) {
                 q.irregular_vertices);
   c.headline += line;
   if (!complex->built) c.headline += "wave: no complex: " + complex->error + "\n";
+  if (!c.settings->String("output.quads").empty() && complex->built && m.valid) WaveQuads(c);
   // The quad base complex is this problem's result: without it the run
   // has not reached its goal (exit 4), whatever the wave's energy.
   if (!complex->built) {
@@ -333,6 +374,9 @@ void FinishWave(HookContext& c) {
 
 void WriteWave(HookContext& c) {
   const WaveState& st = WaveSt(c);
+  const auto quads = c.temporaries.find("quads");
+  // Empty when the goal was missed (exit 4 says why).
+  if (quads != c.temporaries.end()) WriteMesh(quads->second, st.quads);
   for (const char* key : {"complex", "quasi_dual"}) {
     const auto it = c.temporaries.find(key);
     if (it == c.temporaries.end()) continue;
@@ -397,6 +441,8 @@ ProblemDecl wave_quads() {
   // when an iteration lowers E by less than 1e-4 of it.
   d.defaults = {{"solver.max_num_iterations", 100LL}, {"solver.function_tolerance", 1e-4}};
   d.keys = WaveKeys();
+  for (Key& k : ChartKeys()) d.keys.push_back(std::move(k));
+  d.check = &CheckChartKeys;
   d.blocks = {{"wave_f", Site::kVertex, wd::kWidth, FrameMap::kInvariant, false,
                Carry::kReinitialise, true, false,
                "the standing wave's 4-vector (cos θ cos φ, cos θ sin φ, sin θ cos φ, "
@@ -416,7 +462,7 @@ ProblemDecl wave_quads() {
   d.measures["wave_feature_max"] = &WaveFeatureMax;
   d.measures["wave_valid"] = &WaveLastValid;
   d.finish = &FinishWave;
-  d.output_keys = {"complex", "quasi_dual"};
+  d.output_keys = {"complex", "quasi_dual", "quads"};
   d.write = &WriteWave;
   d.colors = "none";
   return d;
