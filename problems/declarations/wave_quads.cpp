@@ -29,9 +29,13 @@
 // wave.persistence cancelled, and its quasi-dual; the round kept is the one
 // whose complex is a valid quad complex with the lowest E (none valid: the
 // lowest E, measure wave_energy, and exit 4). The report counts the valid
-// starts, critical points, cells and irregular vertices. The quad mesh
-// through the charts is not built here. Outputs: output.complex (OBJ
-// lines), output.quasi_dual (OBJ), wave_f in the output PLY.
+// starts, critical points, cells and irregular vertices. Outputs:
+// output.complex (OBJ lines), output.quasi_dual (OBJ), wave_f in the
+// output PLY, and output.quads: on a closed surface the quasi-dual as a
+// base complex → charts → the all-quad mesh (the step of
+// base_complex_quads, problems/declarations/base_complex_input.h; its
+// figures in details.charts; a step that fails or gives an invalid mesh is
+// a missed goal, exit 4); on an open surface output.quads is refused.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
