@@ -64,6 +64,7 @@ TEST_F(SpecRoundTrip, EveryProblemsTemplateSolves) {
       {"conjugate_layout", {"mesh=" + triangles}},
       {"grid", {}},
       {"wave_quads", {"mesh=" + triangles}},
+      {"spectral_quads", {std::string("mesh=") + ARCHGEO_SOURCE_DIR + "/examples/sphere.obj"}},
       {"custom", {"mesh=" + quads}},
       {"base_complex_quads",
        {std::string("mesh=") + ARCHGEO_SOURCE_DIR + "/examples/octahedron_sphere.obj",
