@@ -213,4 +213,16 @@ UserBaseComplex ReadUserBaseComplex(const Settings& s, const std::vector<Eigen::
   return out;
 }
 
+std::vector<Stage> NetIsTheResult(const Settings&) {
+  Stage extract;
+  extract.name = "extract";
+  extract.rounds_key = "schedule.outer_iterations";
+  extract.step = [](HookContext&) {
+    StepResult r;
+    r.stop = "the quad mesh is the result (no solve)";
+    return r;
+  };
+  return {extract};
+}
+
 }  // namespace archgeo

@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
+#include "core/problem.h"
 #include "core/settings.h"
 #include "mesh/surface_mesh.h"
 #include "spectral/base_complex_charts.h"
@@ -42,6 +43,10 @@ BaseComplex QuasiDualBaseComplex(const QuadBaseComplex& q);
 // that charts.n and charts.edge_length are not both given.
 std::vector<Key> ChartKeys();
 void CheckChartKeys(const Settings& s);
+
+// The schedule of a problem whose `net` hook makes the result (the quads of
+// the charts): one stage, `extract`, of one round that records it; no solve.
+std::vector<Stage> NetIsTheResult(const Settings& s);
 
 struct ChartStep {
   ChartQuadsResult result;

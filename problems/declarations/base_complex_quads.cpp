@@ -111,18 +111,7 @@ ProblemDecl base_complex_quads() {
   for (Key& k : ChartKeys()) d.keys.push_back(std::move(k));
   d.check = &CheckChartKeys;
   d.net = &BcNet;
-  d.stages = [](const Settings&) {
-    // The quads are made by the `net` hook; one round records them (no solve).
-    Stage extract;
-    extract.name = "extract";
-    extract.rounds_key = "schedule.outer_iterations";
-    extract.step = [](HookContext&) {
-      StepResult r;
-      r.stop = "the quad mesh is the result (no solve)";
-      return r;
-    };
-    return std::vector<Stage>{extract};
-  };
+  d.stages = &NetIsTheResult;
   d.invalid = &BcInvalid;
   d.colors = "none";
   return d;
