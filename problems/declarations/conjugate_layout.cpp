@@ -31,6 +31,7 @@
 // Outputs: output.mesh (the final planar mesh), output.layout (the layout
 // the PQ step starts from), output.field (fields/field_io.h), output.report.
 #include <algorithm>
+#include <utility>
 
 #include "core/problem.h"
 #include "fields/field_io.h"
@@ -86,7 +87,7 @@ void WriteConjugateLayout(HookContext& c) {
 }  // namespace
 
 ProblemDecl conjugate_layout() {
-  ProblemDecl d = planar_quads();
+  ProblemDecl d = PlanarQuadsGoals();
   // Ceres' direct solve in every round, as every problem but planar_quads: the
   // field stages on Concerthall have more than 100k variables, and their
   // figures (docs/methods/conjugate_layout.md) were measured with it.
@@ -115,7 +116,6 @@ ProblemDecl conjugate_layout() {
   d.keys.erase(std::remove_if(d.keys.begin(), d.keys.end(),
                               [](const Key& k) { return k.name == "relayout"; }),
                d.keys.end());
-  d.finish = nullptr;
   d.name = "conjugate_layout";
   d.summary = "design surface (triangles) → TCD field → level sets → layout → planar quads";
   d.paper = "[Zadravec 2010, Fig. 1, §2–6]";
@@ -137,7 +137,10 @@ ProblemDecl conjugate_layout() {
   d.net = &Net;
   d.output_keys = {"layout", "field"};
   d.write = &WriteConjugateLayout;
-  return d;
+  // The band about the design surface, reported (details.surface_band, the
+  // BAND BINDS line) but not solved again without it: that would lay the
+  // surface out again.
+  return WithPlanarQuadsBounds(std::move(d), false);
 }
 
 }  // namespace archgeo::problems

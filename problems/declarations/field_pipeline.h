@@ -34,6 +34,11 @@ namespace archgeo {
 
 namespace problems {
 ProblemDecl planar_quads();
+// planar_quads without its relayout suggestion, flatness key and deviation
+// band, which WithPlanarQuadsBounds adds (measure_need: when the band binds,
+// solve again without it and report the deviation that needs).
+ProblemDecl PlanarQuadsGoals();
+ProblemDecl WithPlanarQuadsBounds(ProblemDecl d, bool measure_need);
 ProblemDecl conjugate_field();
 ProblemDecl level_sets();
 }  // namespace problems

@@ -52,15 +52,18 @@
 // → 0.0201 with every panel convex, below the Shape-Up iteration's best
 // convex states (0.0402, 0.0218) and moving less
 // (docs/methods/planar_quads.md#the-worst-quads).
+#include <utility>
+
 #include "core/problem.h"
 #include "problems/declarations/design_band.h"
+#include "problems/declarations/field_pipeline.h"
 #include "problems/declarations/flatness.h"
 #include "problems/declarations/relayout.h"
 #include "problems/declarations/worst_quads.h"
 
 namespace archgeo::problems {
 
-ProblemDecl planar_quads() {
+ProblemDecl PlanarQuadsGoals() {
   ProblemDecl d;
   d.name = "planar_quads";
   d.summary = "make every quad (and polygon) planar while the mesh keeps its shape and boundary";
@@ -151,14 +154,23 @@ ProblemDecl planar_quads() {
   d.net = &CheckOrRelayout;
   d.init = &KeepStartState;
   d.measures[kWorstStagePq] = &WorstStagePq;
-  d.finish = &SuggestRelayout;
+  return d;
+}
+
+ProblemDecl WithPlanarQuadsBounds(ProblemDecl d, bool measure_need) {
   // The deviation band (problems/declarations/design_band.h): 1.5% of the
   // diagonal. With today's terms the shared Conjugate net needs 0.65% for
   // δ_PQ,n ≤ 1e-3 and Smooth 1.03%; at 0.3% both end exit 4 with the band
-  // binding (docs/methods/design_band.md), and the report gives the
-  // deviation the same run reaches without the band (measure_need).
+  // binding (docs/methods/design_band.md), and with measure_need the report
+  // gives the deviation the same run reaches without the band.
   // Flatness in millimetres beside δ_PQ,n (problems/declarations/flatness.h).
-  return WithDesignBand(WithFlatness(d), 0.015, true);
+  return WithDesignBand(WithFlatness(std::move(d)), 0.015, measure_need);
+}
+
+ProblemDecl planar_quads() {
+  ProblemDecl d = PlanarQuadsGoals();
+  d.finish = &SuggestRelayout;
+  return WithPlanarQuadsBounds(std::move(d), true);
 }
 
 }  // namespace archgeo::problems
