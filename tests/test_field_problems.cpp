@@ -662,6 +662,14 @@ TEST_F(ConjugateLayoutTest, SolveJudgesALayoutAsMeasureDoes) {
   EXPECT_NEAR(solved.at("distance_max").get<double>(), by_measure, 1e-9 * by_measure);
   EXPECT_LE(by_measure, solved.at("band").get<double>());
   EXPECT_TRUE(solved.at("within_band").get<bool>());
+  // The PQ step's own band report (planar_quads'): the same band, the same
+  // distance from the design.
+  const nlohmann::json& band = run.report.at("details").at("surface_band");
+  EXPECT_NEAR(band.at("band").get<double>(), solved.at("band").get<double>(),
+              1e-9 * solved.at("band").get<double>());
+  EXPECT_NEAR(band.at("deviation").get<double>(), by_measure, 1e-6 * by_measure);
+  EXPECT_EQ(band.at("binds").get<bool>(), run.summary.find("BAND BINDS") != std::string::npos)
+      << run.summary;
 }
 
 // ------------------------------------------------------------------ bad input
