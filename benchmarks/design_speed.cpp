@@ -93,6 +93,7 @@ Run SolveOnce(const Side& side, const std::string& mesh, double timeout) {
   if (r.process.exit_code == 2) {  // bad input: archgeo's message, and the same exit code
     std::cout << std::flush;
     std::cerr << side.label << ": " << std::ifstream(log).rdbuf();
+    bench::fs::remove(log);
     std::exit(2);
   }
   if (bench::fs::exists(report)) r.report = Json::parse(std::ifstream(report));
