@@ -5,6 +5,7 @@
 // the charts and the all-quad mesh; the input checks.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <string>
 
 #include "core/input_error.h"
@@ -72,6 +73,12 @@ TEST(SpectralQuads, TorusGivesNoIrregularVertex) {
               sp.at("complex").at("quasi_dual").at("quads").get<int>());
   EXPECT_EQ(sp.at("complex").at("quasi_dual").at("irregular_vertices").get<int>(), 0);
   SqExpectQuads(run, 0);
+  // The grid lines kink where they cross the charts' boundaries as mapped;
+  // charts.smoothing (default 20 sweeps) straightens them (docs/methods/charts.md).
+  const auto& kink = run.report.at("details").at("charts").at("grid_line_kink_max_degrees");
+  std::printf("grid lines turn at most %.1f° as mapped, %.1f° in the output\n",
+              kink.at("mapped").get<double>(), kink.at("output").get<double>());
+  EXPECT_LT(kink.at("output").get<double>(), 0.5 * kink.at("mapped").get<double>());
 }
 
 TEST(SpectralQuads, EigenfunctionBeyondTheVerticesIsAnErrorNamingTheKey) {

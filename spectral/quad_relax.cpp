@@ -1,0 +1,169 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "spectral/quad_relax.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Geometry>
+
+namespace archgeo {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kCosMaxTurn = 0.70710678118654752;  // 45°: a quad's largest turn
+
+// Twice the vector area of a quad (Newell): its normal, as long as the quad
+// is large.
+Eigen::Vector3d QuadNormal(const std::vector<Eigen::Vector3d>& p, const std::array<int, 4>& q) {
+  return (p[size_t(q[2])] - p[size_t(q[0])]).cross(p[size_t(q[3])] - p[size_t(q[1])]);
+}
+
+// The shortest side of quad q.
+double ShortestSide(const std::vector<Eigen::Vector3d>& p, const std::array<int, 4>& q) {
+  double shortest = (p[size_t(q[1])] - p[size_t(q[0])]).norm();
+  for (int k = 1; k < 4; ++k) {
+    shortest = std::min(shortest, (p[size_t(q[size_t((k + 1) % 4)])] - p[size_t(q[size_t(k)])]).norm());
+  }
+  return shortest;
+}
+
+// Bit k set: corner k of quad q turns left about `normal` (convex there).
+unsigned ConvexCorners(const std::vector<Eigen::Vector3d>& p, const std::array<int, 4>& q,
+                       const Eigen::Vector3d& normal) {
+  unsigned bits = 0;
+  for (int k = 0; k < 4; ++k) {
+    const Eigen::Vector3d& a = p[size_t(q[size_t((k + 3) % 4)])];
+    const Eigen::Vector3d& b = p[size_t(q[size_t(k)])];
+    const Eigen::Vector3d& c = p[size_t(q[size_t((k + 1) % 4)])];
+    if ((b - a).cross(c - b).dot(normal) > 0) bits |= 1u << k;
+  }
+  return bits;
+}
+
+// Per vertex of valence 4: its neighbours as two opposite pairs; an empty
+// list for the other vertices. Two neighbours are adjacent when a quad holds
+// both beside the vertex; the opposite of a neighbour is the one never so.
+std::vector<std::array<int, 4>> OppositePairs(int vertices,
+                                              const std::vector<std::array<int, 4>>& quads,
+                                              std::vector<bool>* regular) {
+  const size_t n = static_cast<size_t>(vertices);
+  std::vector<std::vector<int>> ring(n);
+  std::vector<std::vector<std::array<int, 2>>> beside(n);
+  for (const auto& q : quads) {
+    for (int k = 0; k < 4; ++k) {
+      const int v = q[size_t(k)], next = q[size_t((k + 1) % 4)], prev = q[size_t((k + 3) % 4)];
+      ring[size_t(v)].push_back(next);
+      ring[size_t(v)].push_back(prev);
+      beside[size_t(v)].push_back({prev, next});
+    }
+  }
+  std::vector<std::array<int, 4>> pairs(n, {-1, -1, -1, -1});
+  regular->assign(n, false);
+  for (int v = 0; v < vertices; ++v) {
+    std::vector<int>& r = ring[size_t(v)];
+    std::sort(r.begin(), r.end());
+    r.erase(std::unique(r.begin(), r.end()), r.end());
+    if (r.size() != 4 || beside[size_t(v)].size() != 4) continue;
+    const auto adjacent = [&](int a, int b) {
+      for (const auto& p : beside[size_t(v)]) {
+        if ((p[0] == a && p[1] == b) || (p[0] == b && p[1] == a)) return true;
+      }
+      return false;
+    };
+    int opposite = -1;
+    for (int k = 1; k < 4; ++k) {
+      if (!adjacent(r[0], r[size_t(k)])) opposite = k;
+    }
+    if (opposite < 0) continue;
+    std::array<int, 4> p{r[0], r[size_t(opposite)], -1, -1};
+    int at = 2;
+    for (int k = 1; k < 4; ++k) {
+      if (k != opposite) p[size_t(at++)] = r[size_t(k)];
+    }
+    pairs[size_t(v)] = p;
+    (*regular)[size_t(v)] = true;
+  }
+  return pairs;
+}
+
+}  // namespace
+
+GridLineKinks MeasureGridLineKinks(const std::vector<Eigen::Vector3d>& points,
+                                   const std::vector<std::array<int, 4>>& quads) {
+  std::vector<bool> regular;
+  const auto pairs = OppositePairs(int(points.size()), quads, &regular);
+  GridLineKinks out;
+  int count = 0;
+  for (size_t v = 0; v < points.size(); ++v) {
+    if (!regular[v]) continue;
+    // The surface normal at v from the two lines' central differences; the
+    // turn is measured in the tangent plane (a line on a curved surface
+    // bends out of it; only its turn within the surface is a kink).
+    const auto& p = pairs[v];
+    const Eigen::Vector3d normal = (points[size_t(p[1])] - points[size_t(p[0])])
+                                       .cross(points[size_t(p[3])] - points[size_t(p[2])])
+                                       .normalized();
+    const auto tangential = [&normal](const Eigen::Vector3d& e) {
+      return Eigen::Vector3d(e - e.dot(normal) * normal);
+    };
+    for (int k = 0; k < 4; k += 2) {
+      const Eigen::Vector3d in = tangential(points[v] - points[size_t(p[size_t(k)])]);
+      const Eigen::Vector3d out_edge = tangential(points[size_t(p[size_t(k + 1)])] - points[v]);
+      const double c = in.dot(out_edge) / std::max(in.norm() * out_edge.norm(), 1e-300);
+      const double degrees = std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / kPi;
+      out.max_degrees = std::max(out.max_degrees, degrees);
+      out.mean_degrees += degrees;
+      ++count;
+    }
+  }
+  if (count > 0) out.mean_degrees /= count;
+  return out;
+}
+
+void RelaxQuads(const std::vector<std::array<int, 4>>& quads, int sweeps,
+                const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& onto,
+                std::vector<Eigen::Vector3d>* points) {
+  std::vector<bool> regular;
+  const auto pairs = OppositePairs(int(points->size()), quads, &regular);
+  std::vector<Eigen::Vector3d> mapped(quads.size());
+  std::vector<unsigned> convex(quads.size());
+  std::vector<double> shortest(quads.size());
+  for (size_t q = 0; q < quads.size(); ++q) {
+    mapped[q] = QuadNormal(*points, quads[q]);
+    convex[q] = ConvexCorners(*points, quads[q], mapped[q]);
+    shortest[q] = ShortestSide(*points, quads[q]);
+  }
+  std::vector<Eigen::Vector3d> next = *points;
+  for (int sweep = 0; sweep < sweeps; ++sweep) {
+    for (size_t v = 0; v < points->size(); ++v) {
+      if (!regular[v]) continue;
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      for (int u : pairs[v]) sum += (*points)[size_t(u)];
+      next[v] = onto(0.5 * (*points)[v] + 0.125 * sum);
+    }
+    // A quad that would turn by more than 45° from its normal as mapped,
+    // bend inward at a corner that was convex as mapped, or shrink its
+    // shortest side below half its length as mapped, keeps its corners
+    // of the last sweep (which may spoil a neighbour: repeated until none).
+    for (bool reverted = true; reverted;) {
+      reverted = false;
+      for (size_t q = 0; q < quads.size(); ++q) {
+        const Eigen::Vector3d n = QuadNormal(next, quads[q]);
+        const bool kept_convex =
+            (ConvexCorners(next, quads[q], mapped[q]) & convex[q]) == convex[q];
+        if (kept_convex && n.dot(mapped[q]) >= kCosMaxTurn * n.norm() * mapped[q].norm() &&
+            ShortestSide(next, quads[q]) >= 0.5 * shortest[q]) {
+          continue;
+        }
+        for (int v : quads[q]) {
+          if (next[size_t(v)] != (*points)[size_t(v)]) reverted = true;
+          next[size_t(v)] = (*points)[size_t(v)];
+        }
+      }
+    }
+    *points = next;
+  }
+}
+
+}  // namespace archgeo

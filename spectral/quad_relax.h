@@ -1,0 +1,46 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// archgeo — the extracted quads of a base complex (spectral/base_complex_charts.h)
+// relaxed on the design surface, and how straight their grid lines run.
+//
+// Each chart is mapped to its primitive domain on its own (§4.1.3–4.1.5), so
+// a grid line that crosses a chart boundary turns there: the two harmonic
+// maps meet with matching samples but different derivatives. RelaxQuads
+// straightens them: every vertex of valence 4 moves half-way to the mean of
+// its four edge neighbours, then onto the design surface (its closest
+// point), `sweeps` times (Jacobi); the vertices of another valence — the
+// base complex's irregular nodes and triangle centres — and the
+// connectivity stay. (A node of valence 4 is a chart corner only: it moves
+// like any other vertex, so that no line turns there either.) No quad turns
+// over, folds or collapses: one whose normal would leave its normal as
+// mapped by more than 45°, that would bend inward at a corner convex as
+// mapped, or whose shortest side would fall below half its length as
+// mapped, keeps the corners of the sweep before.
+#pragma once
+
+#include <array>
+#include <functional>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace archgeo {
+
+// The largest and the mean turn (degrees) of the grid lines at the vertices
+// of valence 4: at such a vertex v with opposite neighbours a, b, the angle
+// between v − a and b − v in the tangent plane at v (normal: the cross
+// product of the two lines' central differences), both pairs; 0 where the
+// line runs on without turning within the surface.
+struct GridLineKinks {
+  double max_degrees = 0, mean_degrees = 0;
+};
+GridLineKinks MeasureGridLineKinks(const std::vector<Eigen::Vector3d>& points,
+                                   const std::vector<std::array<int, 4>>& quads);
+
+// Relaxes `points` (the vertices of `quads`, a closed all-quad mesh) as
+// above; `onto` maps a point to its closest point on the design surface.
+void RelaxQuads(const std::vector<std::array<int, 4>>& quads, int sweeps,
+                const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& onto,
+                std::vector<Eigen::Vector3d>* points);
+
+}  // namespace archgeo
