@@ -670,6 +670,14 @@ TEST_F(ConjugateLayoutTest, SolveJudgesALayoutAsMeasureDoes) {
   EXPECT_NEAR(band.at("deviation").get<double>(), by_measure, 1e-6 * by_measure);
   EXPECT_EQ(band.at("binds").get<bool>(), run.summary.find("BAND BINDS") != std::string::npos)
       << run.summary;
+  // The layout path's stages, timed within the solve.
+  const nlohmann::json& stages = run.report.at("details").at("net").at("seconds");
+  double staged = 0;
+  for (const char* stage : {"field", "level_sets", "extraction"}) {
+    EXPECT_GT(stages.at(stage).get<double>(), 0.0) << stage;
+    staged += stages.at(stage).get<double>();
+  }
+  EXPECT_LE(staged, run.report.at("seconds").at("solve").get<double>());
 }
 
 // ------------------------------------------------------------------ bad input

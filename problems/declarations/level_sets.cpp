@@ -54,6 +54,7 @@
 #include <limits>
 #include <tuple>
 
+#include "core/clock.h"
 #include "core/problem.h"
 #include "energies/level_set_elements.h"
 #include "energies/level_set_gradient.h"
@@ -86,6 +87,8 @@ struct LevelSetState : ProblemState {
   bool rounded = false;
   bool rounding_ok = true;
   std::string rounding_message;
+  double field_seconds = 0;         // the field's nested solve and its pair cancellation
+  Clock::time_point solve_start;    // the level sets' own rounds start (end of InitLevelSets)
 };
 
 LevelSetState& St(HookContext& c) { return c.State<LevelSetState>(); }
@@ -172,7 +175,9 @@ void InitLevelSets(HookContext& c) {
   const Settings& s = *c.settings;
   LevelSetState& st = St(c);
   st = LevelSetState{};
+  const Clock::time_point field_start = Clock::now();
   st.field = LevelSetCancelPairs(s, c, SolveField(s, *c.input, c.progress));
+  st.field_seconds = SecondsSince(field_start);
   const FieldGeometry& geo = st.field->geometry;
   const TcdField& field = st.field->field;
   const Mesh& mesh = c.store->mesh();
@@ -261,6 +266,7 @@ void InitLevelSets(HookContext& c) {
   c.SetElements("level_set_faces", std::move(elements));
   c.SetElements("level_set_jumps", std::move(jumps));
   c.SetElements("level_set_branch_points", std::move(branches));
+  st.solve_start = Clock::now();
 }
 
 // ∇g of face f (frame coordinates of the face) from the block's values at
@@ -375,6 +381,8 @@ V3 Centroid(const Mesh& mesh, FaceIndex f) {
 
 void FinishLevelSets(HookContext& c) {
   LevelSetState& st = St(c);
+  const double level_set_seconds = SecondsSince(st.solve_start);
+  const Clock::time_point extraction_start = Clock::now();
   const Mesh& mesh = c.store->mesh();
   auto result = std::make_shared<LevelSetResult>();
   result->field = st.field;
@@ -511,6 +519,14 @@ void FinishLevelSets(HookContext& c) {
                   100 * m.hausdorff / diagonal, m.pq_normalized_max, m.pq_normalized_mean);
     result->headline += line;
   }
+  // The stages' wall times (the layout path's table; the planar step's is
+  // the report's own `seconds`).
+  d["seconds"] = {{"field", st.field_seconds},
+                  {"level_sets", level_set_seconds},
+                  {"extraction", SecondsSince(extraction_start)}};
+  std::snprintf(line, sizeof line, "stages: field %.2f s, level sets %.2f s, extraction %.2f s\n",
+                st.field_seconds, level_set_seconds, SecondsSince(extraction_start));
+  result->headline += line;
   c.details["field"] = st.field->details;
   for (const auto& [k, v] : d.items()) c.details[k] = v;
   c.headline += st.field->headline + result->headline;
