@@ -88,11 +88,12 @@ void WriteConjugateLayout(HookContext& c) {
 
 ProblemDecl conjugate_layout() {
   ProblemDecl d = PlanarQuadsGoals();
-  // Ceres' direct solve in every round, as every problem but planar_quads: the
-  // field stages on Concerthall have more than 100k variables, and their
-  // figures (docs/methods/conjugate_layout.md) were measured with it.
+  // The field and level-set stages take only the keys the user gave, so they
+  // keep their own defaults (Ceres); the PQ step's rounds are LeanSolve's
+  // Cholesky steps as planar_quads', never PCG: the field stages on
+  // Concerthall have more than 100k variables, and their figures
+  // (docs/methods/conjugate_layout.md) were measured with Ceres' direct solve.
   d.defaults.erase("solver.pcg_above");
-  d.defaults.erase("solver.back_end");
   // A layout is near planar: no worst-quads stage (relayout: never's, which
   // is not a key here), so not its term or its measure either.
   d.terms.erase(std::remove_if(d.terms.begin(), d.terms.end(),
