@@ -45,7 +45,9 @@
 // levenberg_marquardt, use_nonmonotonic_steps, use_inner_iterations,
 // preconditioner_type other than jacobi. Every other option is ignored: the
 // linear solver, its libraries and factorisation options (LeanSolve's
-// linear solver is its PCG), jacobi_scaling (the LM step with μ diag(JᵀJ)
+// linear solver is its PCG or CHOLMOD's supernodal Cholesky, by `step`;
+// SolveRound sends a round whose options ask for another to Ceres:
+// LeanCholeskyTakes), jacobi_scaling (the LM step with μ diag(JᵀJ)
 // and a block-Jacobi preconditioner does not change under a scaling of the
 // columns, which is what jacobi_scaling does, but for the min/max_lm_diagonal
 // clamps), max_num_consecutive_invalid_
@@ -83,8 +85,9 @@
 // solve, and leaves the other terms out. CGNR applies JᵀJ through J and Jᵀ
 // in each CG step (~30 residual blocks per quad); LeanSolve assembles JᵀJ
 // once per iteration and each CG step streams its upper triangle, with the
-// same block-Jacobi preconditioner. So LeanSolve stays the back end of the
-// rounds above solver.pcg_above, and Ceres (sparse Cholesky) of the others:
+// same block-Jacobi preconditioner. So LeanSolve's PCG is the back end of the
+// rounds above solver.pcg_above (its Cholesky steps, with back_end lean, of
+// the others; docs/performance.md has those figures):
 //
 //   quads    back end              wall s  rounds  iterations    δ_PQ,n max  exit
 //   100x100  LeanSolve                8.2       5  10 (224 CG)   0.00058     0
