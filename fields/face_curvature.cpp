@@ -6,14 +6,7 @@
 #include <array>
 #include <cmath>
 
-// Jet fitting needs an SVD traits class; naming CGAL::Eigen_svd explicitly
-// avoids depending on CGAL_EIGEN3_ENABLED (CGAL::Eigen3_support) for the
-// default template argument. JetOptions::qr fits by QrJetTensor instead.
 #include <CGAL/Default_diagonalize_traits.h>
-#include <CGAL/Eigen_matrix.h>
-#include <CGAL/Eigen_svd.h>
-#include <CGAL/Eigen_vector.h>
-#include <CGAL/Monge_via_jet_fitting.h>
 #include <Eigen/QR>
 #include <glog/logging.h>
 
@@ -63,34 +56,12 @@ std::vector<VertexIndex> Neighbourhood(const Mesh& mesh, VertexIndex v, int ring
   return out;
 }
 
-// Σ k d dᵀ of a Monge form (principal curvatures k, unit directions d).
-template <class MongeForm>
-Eigen::Matrix3d TensorOf(const MongeForm& monge) {
-  const Vector d1 = monge.maximal_principal_direction();
-  const Vector d2 = monge.minimal_principal_direction();
-  const Eigen::Vector3d a(d1.x(), d1.y(), d1.z()), b(d2.x(), d2.y(), d2.z());
-  return monge.principal_curvatures(0) * a * a.transpose() +
-         monge.principal_curvatures(1) * b * b.transpose();
-}
-
 // One vertex's shape tensor Σ k d dᵀ from a degree-`degree` jet fitted to
 // `points` (the vertex first), oriented so that its normal agrees with
-// `normal`: CGAL's Monge_via_jet_fitting with its Jacobi SVD, as
-// Monge_form::comply_wrt_given_normal orients it. Its preconditions (degree
-// 2..4, d' = 2 ≤ d, at least as many points as coefficients) are checked by
-// ShapeTensors before every call, so this file is built without CGAL_DEBUG.
-Eigen::Matrix3d SvdJetTensor(const std::vector<Point>& points, int degree,
-                             const Eigen::Vector3d& normal) {
-  using Fitting = CGAL::Monge_via_jet_fitting<Kernel, Kernel, CGAL::Eigen_svd>;
-  Fitting fitting;
-  typename Fitting::Monge_form monge = fitting(points.begin(), points.end(), degree, 2);
-  monge.comply_wrt_given_normal(Vector(normal.x(), normal.y(), normal.z()));
-  return TensorOf(monge);
-}
-
-// The same fit step by step (Cazals & Pouget 2003, as CGAL 5.5's
-// Monge_via_jet_fitting computes it), with its least squares by pivoted
-// Householder QR (JetOptions::qr):
+// `normal`: the osculating jet of Cazals & Pouget 2003 step by step, as CGAL
+// 5.5's Monge_via_jet_fitting computes it, with its least squares by pivoted
+// Householder QR instead of CGAL's Jacobi SVD (the same fit for a full-rank
+// system; a rank-deficient one gets QR's basic solution):
 //   1. the fitting frame: the principal axes of the points' covariance (the
 //      same diagonalisation as CGAL's), the least spread one as z, made
 //      direct by flipping the first;
@@ -103,7 +74,7 @@ Eigen::Matrix3d SvdJetTensor(const std::vector<Point>& points, int degree,
 //      tensor is that symmetric map in 3-D (what Σ k d dᵀ of its eigen-
 //      decomposition gives back), rotated to the world, negated when the
 //      fit's normal (−A₁, −A₂, 1) disagrees with `normal`.
-Eigen::Matrix3d QrJetTensor(const std::vector<Point>& points, int degree,
+Eigen::Matrix3d JetTensor(const std::vector<Point>& points, int degree,
                             const Eigen::Vector3d& normal) {
   const int n = int(points.size());
   double sx = 0, sy = 0, sz = 0, sxx = 0, syy = 0, szz = 0, sxy = 0, sxz = 0, syz = 0;
@@ -242,7 +213,7 @@ std::vector<Eigen::Matrix3d> ShapeTensors(const Mesh& mesh, const JetOptions& op
       points.clear();
       for (VertexIndex u : hood) points.push_back(mesh.point(u));
       const Eigen::Vector3d n = VertexNormal(mesh, v);
-      tensors[i] = options.qr ? QrJetTensor(points, degree, n) : SvdJetTensor(points, degree, n);
+      tensors[i] = JetTensor(points, degree, n);
     }
   }
   return tensors;

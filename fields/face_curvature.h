@@ -3,7 +3,7 @@
 // archgeo — curvature per face of a triangle mesh: the second fundamental form
 // M_f in the face frame, z_M,f, principal and asymptotic directions, the sign
 // of the Gaussian curvature [Zadravec 2010, §2; osculating jets: Cazals &
-// Pouget 2003 via CGAL::Monge_via_jet_fitting].
+// Pouget 2003, the steps of CGAL::Monge_via_jet_fitting with a QR solve].
 //
 // Method: a jet of degree d is fitted at every vertex to the vertex and its
 // neighbourhood (vertices within `rings` edges, grown ring by ring until it
@@ -13,7 +13,7 @@
 // vertex tensors (the value at the centroid of a linearly varying tensor, so
 // second-order accurate) and M_f(i, j) = e_i,fᵀ S e_j,f in its frame
 // (fields/face_frames.h). The paper fits jets per face; per-vertex fits are
-// the usual use of CGAL's fitting (the first point, where the Monge form is
+// the usual use of jet fitting (the first point, where the Monge form is
 // evaluated, lies on the surface) and need one fit per vertex instead of one
 // per face.
 //
@@ -55,16 +55,6 @@ struct JetOptions {
   // max(|k1|, |k2|)² (one principal curvature below sign_tolerance times the
   // other); +1 or −1 otherwise.
   double sign_tolerance = 1e-3;
-  // Each fit by archgeo's own steps of CGAL's jet fitting, with pivoted
-  // Householder QR for its least squares instead of CGAL's Jacobi SVD and its
-  // monomials by products instead of std::pow: the same fit for a full-rank
-  // system (a rank-deficient one gets QR's basic solution, not the
-  // minimum-norm one), the same tensors to ~1e-14 relative
-  // (tests/test_field_curvature.cpp), at a fraction of the cost. The net measures
-  // (fields/net_curvature.h) use it; the conjugate-field pipeline keeps the
-  // SVD, because its layouts move with the last bits of the curvature (QR
-  // changed Concerthall's enough to miss its tolerance).
-  bool qr = false;
 };
 
 struct FaceCurvature {

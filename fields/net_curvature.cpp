@@ -62,12 +62,6 @@ double BboxDiagonal(const Mesh& mesh) {
   return mesh.number_of_vertices() > 0 ? (hi - lo).norm() : 0.0;
 }
 
-// The measures' fits: by QR (JetOptions::qr), the same figures.
-JetOptions FastJets() {
-  JetOptions o;
-  o.qr = true;
-  return o;
-}
 
 }  // namespace
 
@@ -98,7 +92,7 @@ NetCurvatureFigures MeasureNetCurvature(const Mesh& net) {
   for (FaceIndex f : sample) {
     for (VertexIndex v : net.vertices_around_face(net.halfedge(f))) fit[v.idx()] = 1;
   }
-  const std::vector<Eigen::Matrix3d> S = VertexShapeTensors(net, FastJets(), fit);
+  const std::vector<Eigen::Matrix3d> S = VertexShapeTensors(net, JetOptions(), fit);
   const double flat = kFlat / std::max(BboxDiagonal(net), 1e-300);
   double conjugacy_sum = 0, angle_sum = 0;
   for (FaceIndex f : sample) {
@@ -145,7 +139,7 @@ NetCurvatureFigures MeasureNetCurvature(const Mesh& net) {
 PrincipalLabelFigures MeasurePrincipalLabels(const Mesh& mesh,
                                              const std::vector<std::pair<int, int>>& labels) {
   PrincipalLabelFigures out;
-  const std::vector<Eigen::Matrix3d> S = VertexShapeTensors(mesh, FastJets());
+  const std::vector<Eigen::Matrix3d> S = VertexShapeTensors(mesh, JetOptions());
   const double flat = kFlat / std::max(BboxDiagonal(mesh), 1e-300);
   double sum = 0;
   for (const auto& [i, j] : labels) {

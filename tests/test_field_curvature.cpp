@@ -190,36 +190,6 @@ TEST(FaceCurvature, SphereHasMEqualMinusIdentityOverR) {
   EXPECT_LT(worst, 0.01);
 }
 
-// JetOptions::qr (archgeo's own steps of CGAL's jet fitting, by QR) gives
-// the tensors of CGAL's Monge_via_jet_fitting (by SVD) on a noisy ellipsoid,
-// for every degree: the same fit, the same frame, the same orientation.
-TEST(FaceCurvature, QrJetFitGivesCgalsTensors) {
-  Mesh mesh = TriangulatedEllipsoid(1.5, 1.0, 0.6, 3);
-  std::mt19937 random(7);
-  std::uniform_real_distribution<double> noise(-0.01, 0.01);
-  for (VertexIndex v : mesh.vertices()) {
-    const Point& p = mesh.point(v);
-    mesh.point(v) = Point(p.x() + noise(random), p.y() + noise(random), p.z() + noise(random));
-  }
-  for (int degree = 2; degree <= 4; ++degree) {
-    JetOptions svd;
-    svd.degree = degree;
-    JetOptions qr = svd;
-    qr.qr = true;
-    const std::vector<Eigen::Matrix3d> a = VertexShapeTensors(mesh, svd);
-    const std::vector<Eigen::Matrix3d> b = VertexShapeTensors(mesh, qr);
-    ASSERT_EQ(a.size(), b.size());
-    double worst = 0, largest = 0;
-    for (size_t i = 0; i < a.size(); ++i) {
-      worst = std::max(worst, (a[i] - b[i]).norm());
-      largest = std::max(largest, a[i].norm());
-    }
-    std::printf("degree %d: largest |S| %.3f, largest |S_qr - S_svd| %.2e\n", degree, largest, worst);
-    EXPECT_GT(largest, 0.5);
-    EXPECT_LT(worst, 1e-12 * largest);
-  }
-}
-
 TEST(FaceCurvature, EllipsoidPrincipalDirectionsWithin2DegreesAwayFromUmbilics) {
   const double a = 1.5, b = 1.0, c = 0.6;
   const Mesh mesh = TriangulatedEllipsoid(a, b, c, 4);

@@ -59,11 +59,7 @@ WaveFrames PrincipalWaveFrames(const Mesh& mesh, int smoothing) {
   out.normal = WaveNormals(mesh);
   out.x.assign(n, WaveV3::Zero());
   out.anisotropy.assign(n, 0.0);
-  const std::vector<Eigen::Matrix3d> tensors = VertexShapeTensors(TriangulatedCopy(mesh), [] {
-    JetOptions o;
-    o.qr = true;  // the same tensors to ~1e-14 at a fraction of the SVD's cost
-    return o;
-  }());
+  const std::vector<Eigen::Matrix3d> tensors = VertexShapeTensors(TriangulatedCopy(mesh), JetOptions());
   double largest = 0;
   for (size_t v = 0; v < n; ++v) {
     const WaveV3& nv = out.normal[v];
