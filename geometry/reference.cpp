@@ -5,11 +5,6 @@
 // its boundary polylines (AABB tree of segments).
 #include "geometry/reference.h"
 
-// CGAL's checks are on here (CMakeLists.txt), and its constrained
-// triangulation warns on stderr, for CGAL's developers, that an exact number
-// type would be faster with another class: not the user's concern.
-#define CGAL_NO_CDT_2_WARNING
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -17,15 +12,16 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
-#include <CGAL/exceptions.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
 #include "geometry/triangle_tree.h"
 #include "core/newell.h"
+#include "mesh/eigen_point.h"
 
 namespace archgeo {
 namespace {
@@ -99,41 +95,114 @@ void SplitQuad(Mesh& mesh, HalfedgeIndex h0) {
   }
 }
 
+// Whether q lies in the closed triangle (a, b, c), counter-clockwise, up to
+// `eps` (a point on an edge counts as inside).
+bool InTriangle(const Eigen::Vector2d& q, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                const Eigen::Vector2d& c, double eps) {
+  const auto side = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v, const Eigen::Vector2d& w) {
+    return (v - u).x() * (w - u).y() - (v - u).y() * (w - u).x();
+  };
+  return side(a, b, q) >= -eps && side(b, c, q) >= -eps && side(c, a, q) >= -eps;
+}
+
+// Whether the closed polygon q is simple: no two of its edges that do not
+// share a corner meet (up to `eps`).
+bool Simple(const std::vector<Eigen::Vector2d>& q, double eps) {
+  const int n = int(q.size());
+  const auto side = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v, const Eigen::Vector2d& w) {
+    return (v - u).x() * (w - u).y() - (v - u).y() * (w - u).x();
+  };
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // adjacent through corner 0
+      const Eigen::Vector2d &a = q[size_t(i)], &b = q[size_t(i + 1)], &c = q[size_t(j)],
+                            &d = q[size_t((j + 1) % n)];
+      const double s1 = side(a, b, c), s2 = side(a, b, d), s3 = side(c, d, a), s4 = side(c, d, b);
+      if (s1 * s2 <= eps * eps && s3 * s4 <= eps * eps &&
+          std::max(a.x(), b.x()) >= std::min(c.x(), d.x()) - 1e-12 &&
+          std::max(c.x(), d.x()) >= std::min(a.x(), b.x()) - 1e-12 &&
+          std::max(a.y(), b.y()) >= std::min(c.y(), d.y()) - 1e-12 &&
+          std::max(c.y(), d.y()) >= std::min(a.y(), b.y()) - 1e-12) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+// The smallest angle of the triangle (a, b, c), in radians.
+double SmallestAngle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  const auto angle = [](const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
+    return std::atan2(u.cross(v).norm(), u.dot(v));
+  };
+  return std::min({angle(b - a, c - a), angle(c - b, a - b), angle(a - c, b - c)});
+}
+
+// Cuts the polygon of `h` (more than four corners) into triangles by ear
+// clipping in the plane of its Newell normal: each step cuts off the ear (a
+// convex corner whose triangle holds no other corner) with the largest
+// smallest angle, the well-shaped triangles a constrained Delaunay
+// triangulation would favour. When the polygon's projection is not simple
+// (it overlaps itself, e.g. a strongly warped face) or no corner is an ear,
+// the rest is split as a fan from the corner at target(h): topologically
+// always possible; the triangles may overlap, as the polygon itself does.
+void EarClip(Mesh& mesh, HalfedgeIndex h) {
+  std::vector<HalfedgeIndex> ring;  // corner k = target(ring[k])
+  while (mesh.degree(mesh.face(h)) > 3) {
+    ring.clear();
+    for (HalfedgeIndex g : mesh.halfedges_around_face(h)) ring.push_back(g);
+    const int n = int(ring.size());
+    const auto corner = [&](int k) { return EigenPoint(mesh, mesh.target(ring[size_t((k + n) % n)])); };
+    const Eigen::Vector3d normal = NewellNormal(n, corner);
+    const Eigen::Vector3d u = normal.unitOrthogonal(), v = normal.cross(u);
+    std::vector<Eigen::Vector2d> q(static_cast<size_t>(n));
+    double extent = 0;
+    for (int k = 0; k < n; ++k) {
+      const Eigen::Vector3d p = corner(k) - corner(0);
+      q[size_t(k)] = Eigen::Vector2d(p.dot(u), p.dot(v));
+      extent = std::max(extent, q[size_t(k)].norm());
+    }
+    const double eps = 1e-12 * extent * extent;
+    const bool simple = Simple(q, eps);
+    int best = -1;
+    double best_angle = -1;
+    for (int k = 0; k < n && simple && normal != Eigen::Vector3d::Zero(); ++k) {
+      const Eigen::Vector2d &a = q[size_t((k + n - 1) % n)], &c = q[size_t(k)], &b = q[size_t((k + 1) % n)];
+      const double turn = (c - a).x() * (b - c).y() - (c - a).y() * (b - c).x();
+      if (!(turn > eps)) continue;  // reflex or straight: not an ear
+      bool empty = true;
+      for (int j = 0; j < n && empty; ++j) {
+        if (j != k && j != (k + 1) % n && j != (k + n - 1) % n) empty = !InTriangle(q[size_t(j)], a, c, b, eps);
+      }
+      const double angle = SmallestAngle(corner(k - 1), corner(k), corner(k + 1));
+      if (empty && angle > best_angle) {
+        best = k;
+        best_angle = angle;
+      }
+    }
+    if (best < 0) {
+      while (mesh.degree(mesh.face(h)) > 3) CGAL::Euler::split_face(h, mesh.next(mesh.next(h)), mesh);
+      return;
+    }
+    // The new halfedge runs from the ear's next corner to its previous one,
+    // closing the triangle; its opposite stays on the rest of the polygon.
+    const HalfedgeIndex closing = CGAL::Euler::split_face(ring[size_t((best + 1) % n)],
+                                                         ring[size_t((best + n - 1) % n)], mesh);
+    h = mesh.opposite(closing);
+  }
+}
+
 }  // namespace
 
 Mesh TriangulatedCopy(const Mesh& mesh) {
   Mesh copy = mesh;
-  std::vector<FaceIndex> quads;
+  std::vector<FaceIndex> quads, polygons;
   for (FaceIndex f : copy.faces()) {
     if (copy.degree(f) == 4) quads.push_back(f);
+    if (copy.degree(f) > 4) polygons.push_back(f);
   }
   for (FaceIndex f : quads) SplitQuad(copy, copy.halfedge(f));
-  bool triangulated = false;
-  try {
-    triangulated = CGAL::Polygon_mesh_processing::triangulate_faces(copy);
-  } catch (const CGAL::Failure_exception&) {
-    // The constrained triangulation of a nearly degenerate polygon trips a
-    // precondition with the mesh's inexact kernel (an octahedron's layout):
-    // the polygon is left whole, as when triangulate_faces gives up.
-  }
-  if (!triangulated) {
-    // A polygon whose projection onto its plane overlaps itself (e.g. a
-    // strongly warped face) defeats the constrained Delaunay triangulation:
-    // split what is left as a fan from its first corner. Topologically always
-    // possible; the triangles may overlap, as the polygon itself does.
-    std::vector<FaceIndex> left;
-    for (FaceIndex f : copy.faces()) {
-      if (copy.degree(f) > 3) left.push_back(f);
-    }
-    for (FaceIndex f : left) {
-      // h ends at the fan's corner c; each split cuts off the triangle
-      // (c, target(next(h)), target(next(next(h)))) and h stays on the rest.
-      const auto h = copy.halfedge(f);
-      while (copy.degree(copy.face(h)) > 3) {
-        CGAL::Euler::split_face(h, copy.next(copy.next(h)), copy);
-      }
-    }
-  }
+  for (FaceIndex f : polygons) EarClip(copy, copy.halfedge(f));
   return copy;
 }
 

@@ -50,8 +50,9 @@ class ReferenceSurface {
 // along the diagonal whose two triangles' area normals have the larger dot
 // product (CGAL's rule); ties up to rounding, as in a regular grid, go to the
 // diagonal through the quad's smallest vertex index, so the split does not
-// depend on the mesh's position. Other polygons: CGAL's triangulate_faces.
-// Throws std::invalid_argument if a face cannot be triangulated.
+// depend on the mesh's position. Other polygons: ear clipping in the plane
+// of the face's Newell normal, best-shaped ear first (a fan from one corner
+// where the face's projection overlaps itself).
 Mesh TriangulatedCopy(const Mesh& mesh);
 
 }  // namespace archgeo

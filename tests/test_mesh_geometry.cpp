@@ -14,6 +14,7 @@
 #include "generators/generators.h"
 #include "analysis/metrics.h"
 #include "geometry/reference.h"
+#include "mesh/eigen_point.h"
 #include "mesh/topology.h"
 
 namespace archgeo {
@@ -248,6 +249,31 @@ TEST(TriangulatedCopy, SelfOverlappingPolygonsBecomeFans) {
   const Mesh triangles = TriangulatedCopy(MakeMesh(star, {{0, 1, 2, 3, 4}}));
   EXPECT_EQ(triangles.number_of_faces(), 3u);
   EXPECT_EQ(TriangleSet(triangles), (std::set<std::array<int, 3>>{{0, 1, 2}, {0, 2, 3}, {0, 3, 4}}));
+}
+
+// A simple polygon with reflex corners (a U, area 5) is cut into n − 2
+// triangles that all face its way and cover exactly its area: a fan from
+// most of its corners would fold over the notch.
+TEST(TriangulatedCopy, ReflexPolygonsAreCutByEars) {
+  const std::vector<Vec3> u = {{0, 0, 0}, {3, 0, 0}, {3, 2, 0}, {2, 2, 0},
+                               {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}};
+  for (int shift = 0; shift < 8; ++shift) {
+    std::vector<int> face;
+    for (int k = 0; k < 8; ++k) face.push_back((k + shift) % 8);
+    const Mesh triangles = TriangulatedCopy(MakeMesh(u, {face}));
+    ASSERT_EQ(triangles.number_of_faces(), 6u);
+    double area = 0;
+    for (FaceIndex f : triangles.faces()) {
+      std::vector<Eigen::Vector3d> p;
+      for (VertexIndex v : triangles.vertices_around_face(triangles.halfedge(f))) {
+        p.push_back(EigenPoint(triangles, v));
+      }
+      const double z = 0.5 * (p[1] - p[0]).cross(p[2] - p[0]).z();
+      EXPECT_GT(z, 0.1) << "shift " << shift;
+      area += z;
+    }
+    EXPECT_NEAR(area, 5.0, 1e-12) << "shift " << shift;
+  }
 }
 
 TEST(ReferenceSurface, RejectsEmptyMesh) {
