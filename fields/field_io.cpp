@@ -71,6 +71,56 @@ void WriteFieldPly(const std::string& path, const Mesh& mesh, const FieldGeometr
   WriteTextFile(path, out.str(), key);
 }
 
+StreamlineInput StreamlineInputOf(const Mesh& mesh, const FieldGeometry& geometry,
+                                  const TcdField& field) {
+  StreamlineInput in;
+  for (VertexIndex v : mesh.vertices()) {
+    const Point& p = mesh.point(v);
+    in.points.emplace_back(p.x(), p.y(), p.z());
+  }
+  for (FaceIndex f : mesh.faces()) {
+    std::array<int, 3> t{};
+    int k = 0;
+    for (VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+      if (k < 3) t[size_t(k)] = int(v.idx());
+      ++k;
+    }
+    in.triangles.push_back(t);
+    const ConjugatePair& pair = field.pairs[f.idx()];
+    in.directions.push_back({FromFrame(geometry.frames, f, pair.v).normalized(),
+                             FromFrame(geometry.frames, f, pair.w).normalized()});
+    in.valid.push_back(pair.valid && k == 3);
+  }
+  for (const Singularity& s : field.singularities) {
+    in.singularities.push_back({int(s.vertex.idx()), s.index});
+  }
+  return in;
+}
+
+void WriteStreamlinesObj(const std::string& path, const std::vector<Streamline>& lines,
+                         const Similarity& frame, const std::string& key) {
+  std::ostringstream out;
+  out << "# archgeo streamlines of a TCD field [Gebreiter 2012, §8.2]: groups v, w (the two "
+         "families) and separatrices\n";
+  size_t next = 1;
+  for (const char* group : {"v", "w", "separatrices"}) {
+    out << "g " << group << "\n";
+    for (const Streamline& l : lines) {
+      const bool in_group =
+          std::string(group) == "separatrices" ? l.separatrix
+                                               : !l.separatrix && l.family == (group[0] == 'w');
+      if (!in_group || l.points.size() < 2) continue;
+      for (const Eigen::Vector3d& p : l.points) out << "v " << Xyz(InFile(frame, p)) << "\n";
+      out << "l";
+      for (size_t i = 0; i < l.points.size(); ++i) out << " " << next + i;
+      if (l.closed) out << " " << next;
+      out << "\n";
+      next += l.points.size();
+    }
+  }
+  WriteTextFile(path, out.str(), key);
+}
+
 Eigen::MatrixXd ReadDmat(const std::string& path, const std::string& key) {
   std::ifstream in(path);
   if (!in) throw InputError(path, 0, key, "cannot open the DMAT file");

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include "fields/streamlines.h"
 #include "fields/tcd_field.h"
 #include "mesh/similarity.h"
 #include "mesh/surface_mesh.h"
@@ -25,6 +26,18 @@ namespace archgeo {
 // Throws InputError(path, 0, key, ...) when the file cannot be written.
 void WriteFieldPly(const std::string& path, const Mesh& mesh, const FieldGeometry& geometry,
                    const TcdField& field, const Similarity& frame, const std::string& key);
+
+// The arrays fields/streamlines.h traces on: `mesh`'s vertices and faces (by
+// index; no garbage), v and w of every face as 3-D vectors, the singularities.
+StreamlineInput StreamlineInputOf(const Mesh& mesh, const FieldGeometry& geometry,
+                                  const TcdField& field);
+
+// The lines as an OBJ of polylines (`v` and `l` records; a closed line repeats
+// its first vertex): the groups `g v` and `g w` (the streamlines of each
+// family) and `g separatrices`, in file units (`frame`). Throws
+// InputError(path, 0, key, ...) when the file cannot be written.
+void WriteStreamlinesObj(const std::string& path, const std::vector<Streamline>& lines,
+                         const Similarity& frame, const std::string& key);
 
 // A libigl DMAT file (igl::readDMAT, ASCII): a first line "cols rows", then
 // cols·rows numbers in column-major order (all of column 0 first). Throws
