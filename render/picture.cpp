@@ -174,6 +174,23 @@ void DrawPanel(cairo_t* cr, const PicturePanel& panel, const Camera& camera, dou
       cairo_stroke(cr);
     }
   }
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  for (const PictureLine& line : panel.lines) {
+    if (line.points.size() < 2) continue;
+    for (size_t k = 0; k < line.points.size(); ++k) {
+      const Vec p = At(line.points[k]);
+      const double x = cx + scale * (p.dot(camera.right) - centre.x());
+      const double y = cy - scale * (p.dot(camera.up) - centre.y());
+      if (k == 0) {
+        cairo_move_to(cr, x, y);
+      } else {
+        cairo_line_to(cr, x, y);
+      }
+    }
+    cairo_set_source_rgb(cr, line.rgb[0] / 255.0, line.rgb[1] / 255.0, line.rgb[2] / 255.0);
+    cairo_set_line_width(cr, line.width);
+    cairo_stroke(cr);
+  }
   cairo_set_source_rgb(cr, 0, 0, 0);
   Text(cr, cx, y0 + 22, panel.title, 16, true, true);
   Text(cr, cx, y0 + 44, Summary(panel, colours.red_at), 13, false, true);

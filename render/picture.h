@@ -20,11 +20,22 @@
 
 namespace archgeo {
 
+// A polyline drawn over a panel's faces (e.g. streamlines, `archgeo render
+// --lines`), in the panel's coordinates.
+struct PictureLine {
+  std::vector<std::array<double, 3>> points;
+  std::array<unsigned char, 3> rgb{0, 0, 0};
+  double width = 1;  // pixels
+};
+
 struct PicturePanel {
   std::string title;                        // drawn above the panel
   std::vector<std::array<double, 3>> points;
   std::vector<std::vector<int>> faces;      // indices into points (≥ 3 each)
   std::vector<double> face_values;          // one per face; empty: all drawn grey
+  // Drawn after the faces (over them, without hidden-line removal: meant for
+  // lines on the surface seen from its outside, as the default camera does).
+  std::vector<PictureLine> lines;
 };
 
 struct PictureScale {

@@ -763,5 +763,57 @@ TEST_F(FieldInputTest, QuadMeshesFaceIdsAndTargetFaceCountsAreChecked) {
   }
 }
 
+// output.streamlines (fields/streamlines.h): an OBJ of polylines in the
+// groups v, w and separatrices, the report's counts and the separations
+// measured on the lines; d_sep = streamlines.separation × the diagonal.
+TEST_F(FieldInputTest, StreamlinesAreWrittenAndReportedAndTheirKeysChecked) {
+  WriteMesh(Path("top.obj"), EllipsoidTop(16, 12));
+  const std::string spec =
+      WriteFile("s.yaml", "mesh: top.obj\nproblem: conjugate_field\nstreamlines: {separation: 0.08}\n"
+                          "output: {report: r.json, streamlines: s.obj}\n");
+  const RunResult run = RunSpec(ReadSpec(spec), {});
+  EXPECT_EQ(run.exit_code, 0) << run.summary;
+  const nlohmann::json& d = run.report.at("details").at("streamlines");
+  EXPECT_GE(d.at("lines_v").get<int>(), 4);
+  EXPECT_GE(d.at("lines_w").get<int>(), 4);
+  EXPECT_GE(d.at("smallest_separation_over_d_sep").get<double>(), 0.5 - 1e-9);
+  // The diagonal of the mesh's bounding box along its principal axes (file
+  // units) times 0.08.
+  EXPECT_NEAR(d.at("d_sep").get<double>(), 0.08 * PrincipalBoxDiagonal(ReadMesh(Path("top.obj"))),
+              1e-9);
+  std::ifstream obj(Path("s.obj"));
+  std::string line;
+  int groups = 0, polylines = 0;
+  while (std::getline(obj, line)) {
+    groups += line == "g v" || line == "g w" || line == "g separatrices";
+    polylines += line.rfind("l ", 0) == 0;
+  }
+  EXPECT_EQ(groups, 3);
+  EXPECT_EQ(polylines, d.at("lines_v").get<int>() + d.at("lines_w").get<int>() +
+                           d.at("separatrices").get<int>());
+  fs::remove(Path("r.json"));
+  fs::remove(Path("s.obj"));
+  const std::string top_field = "mesh: top.obj\nproblem: conjugate_field\n";
+  ExpectInputError(top_field + "streamlines: {separation: 0}\n", "streamlines.separation");
+  ExpectInputError(top_field + "streamlines: {test_ratio: 1.5}\n", "streamlines.test_ratio");
+  ExpectInputError(top_field + "streamlines: {step: 0}\n", "streamlines.step");
+  // Outputs: a name not ending in .obj, a folder that is a file; no output
+  // written.
+  for (const std::string& yaml :
+       {top_field + "output: {report: r.json, streamlines: s.ply}\n",
+        top_field + "output: {report: r.json, streamlines: top.obj/s.obj}\n",
+        std::string("mesh: top.obj\nproblem: conjugate_layout\n"
+                    "output: {report: r.json, streamlines: s.txt}\n")}) {
+    fs::remove(Path("r.json"));
+    try {
+      RunSpec(ReadSpec(WriteFile("o.yaml", yaml)), {});
+      ADD_FAILURE() << "no InputError for " << yaml;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.key(), "output.streamlines") << e.what();
+    }
+    EXPECT_FALSE(fs::exists(Path("r.json"))) << yaml;
+  }
+}
+
 }  // namespace
 }  // namespace archgeo

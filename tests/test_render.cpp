@@ -114,6 +114,27 @@ TEST_F(Render, ValueNoneDrawsGreyFacesAndNoBar) {
   EXPECT_EQ(p.green, 0);
 }
 
+// --lines: OBJ polylines (output.streamlines) drawn over the mesh, group v
+// red; a bad vertex index is refused with the file and line (exit 2).
+TEST_F(Render, LinesAreDrawnOverTheMeshAndBadOnesRefused) {
+  const std::string flat = WriteFile("flat.obj", GridObj(8, 0.0));
+  const std::string lines = WriteFile(
+      "lines.obj", "g v\nv -3 -3 0\nv 3 3 0\nv 3 -3 0\nl 1 2 3\ng w\nv -3 3 0\nl 3 4\n");
+  const Outcome o = Shell(Archgeo() + " render " + flat + " --value none --lines " + lines +
+                          " --out " + Path("lines.png"));
+  ASSERT_EQ(o.code, 0) << o.output;
+  const Pixels with = CountPixels(Path("lines.png"), 0, 60, 720, 560);
+  EXPECT_GT(with.red, 300);  // two red strokes across the grey grid (~ 700 pixels long)
+  ASSERT_EQ(Shell(Archgeo() + " render " + flat + " --value none --out " + Path("none.png")).code, 0);
+  EXPECT_EQ(CountPixels(Path("none.png"), 0, 60, 720, 560).red, 0);
+  const std::string bad = WriteFile("bad.obj", "v 0 0 0\nv 1 0 0\nl 1 3\n");
+  const Outcome refused = Shell(Archgeo() + " render " + flat + " --lines " + bad + " --out " +
+                                Path("bad.png"));
+  EXPECT_EQ(refused.code, 2);
+  EXPECT_NE(refused.output.find(bad + ":3"), std::string::npos) << refused.output;
+  EXPECT_FALSE(fs::exists(Path("bad.png")));
+}
+
 TEST_F(Render, RefusesANameThatIsNotPngAndNamesIt) {
   const std::string flat = WriteFile("flat.obj", GridObj(2, 0.0));
   const Outcome o = Shell(Archgeo() + " render " + flat + " --out " + Path("view.jpg"));

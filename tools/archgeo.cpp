@@ -342,6 +342,9 @@ int main(int argc, char** argv) {
                      "tolerance; bending the first mesh's largest value; kinks 1 degree)");
   render->add_option("--titles", render_request.titles, "One title per mesh (default: file names)")
       ->delimiter(',');
+  render->add_option("--lines", render_request.lines,
+                     "OBJ polylines (e.g. output.streamlines) drawn over the mesh of the same "
+                     "position (repeatable; PNG): group v red, w blue, separatrices black");
   render->add_option("--width", render_request.options.panel_width,
                      "Pixels per panel, across (PNG; the HTML page fills the window)")
       ->capture_default_str()

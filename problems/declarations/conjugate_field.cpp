@@ -37,7 +37,9 @@
 // A surface without curvature (every face flat, e.g. a plane): every pair is
 // conjugate; the field falls back to the smooth orthogonal field of the face
 // frames (e1, e2) with a warning. Output: output.field (fields/field_io.h:
-// PLY line segments per face, singularities as points).
+// PLY line segments per face, singularities as points) and
+// output.streamlines (OBJ polylines of both families and the separatrices,
+// fields/streamlines.h [Gebreiter 2012, §8.2]; streamlines.* keys).
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -218,6 +220,7 @@ struct Constraints {
 struct FieldState : ProblemState {
   FieldGeometry geometry;
   Constraints constraints;
+  StreamlineResult streamlines;  // output.streamlines (fields/streamlines.h)
 };
 
 // Element sets, the start z_N = e1 and the validated constraints.
@@ -556,17 +559,22 @@ void FinishConjugateField(HookContext& c) {
                   field.stats.invalid_faces);
     h += line;
   }
+  c.State<FieldState>().streamlines = FieldStreamlines(*c.settings, *result, &d, &h);
   for (const auto& [k, v] : d.items()) c.details[k] = v;
   c.headline += h;
   c.field = result;
 }
 
 void WriteConjugateField(HookContext& c) {
-  const auto it = c.temporaries.find("field");
-  if (it == c.temporaries.end()) return;
   const auto& result = c.field;
-  WriteFieldPly(it->second, result->mesh, result->geometry, result->field, result->frame,
-                "output.field");
+  if (const auto it = c.temporaries.find("field"); it != c.temporaries.end()) {
+    WriteFieldPly(it->second, result->mesh, result->geometry, result->field, result->frame,
+                  "output.field");
+  }
+  if (const auto it = c.temporaries.find("streamlines"); it != c.temporaries.end()) {
+    WriteStreamlinesObj(it->second, c.State<FieldState>().streamlines.lines, result->frame,
+                        "output.streamlines");
+  }
 }
 
 }  // namespace
@@ -579,6 +587,7 @@ ProblemDecl conjugate_field() {
   d.input = InputKind::kTriangles;
   d.terms = FieldTerms();
   d.keys = FieldKeys();
+  for (const Key& k : StreamlineKeys()) d.keys.push_back(k);
   d.blocks = {{"z_n", Site::kFace, 2, FrameMap::kInvariant, false, Carry::kReinitialise, true,
                false, "z_N of the face in its own frame (Prop. 2; e1 = (1, 0): principal)"}};
   d.check = [](const Settings& s) {
@@ -599,7 +608,7 @@ ProblemDecl conjugate_field() {
     return stages;
   };
   d.finish = &FinishConjugateField;
-  d.output_keys = {"field"};
+  d.output_keys = {"field", "streamlines"};
   d.write = &WriteConjugateField;
   d.colors = "none";  // the mesh is not changed: the field is the result (output.field)
   return d;

@@ -29,7 +29,9 @@
 // cannot straighten a corner the net already has bent.
 //
 // Outputs: output.mesh (the final planar mesh), output.layout (the layout
-// the PQ step starts from), output.field (fields/field_io.h), output.report.
+// the PQ step starts from), output.field (fields/field_io.h),
+// output.streamlines (the field's streamlines and separatrices as OBJ
+// polylines, fields/streamlines.h), output.report.
 #include <algorithm>
 #include <utility>
 
@@ -44,6 +46,10 @@
 
 namespace archgeo::problems {
 namespace {
+
+struct LayoutState : ProblemState {
+  StreamlineResult streamlines;  // output.streamlines
+};
 
 void Net(HookContext& c) {
   const Settings& s = *c.settings;
@@ -66,7 +72,10 @@ void Net(HookContext& c) {
                              std::to_string(design.number_of_faces()) +
                              " triangles (at least two per layout face: the level sets are "
                              "linear on each)\n";
-  c.net.headline = split + result->field->headline + result->headline +
+  std::string streamlines;
+  c.State<LayoutState>().streamlines =
+      FieldStreamlines(s, *result->field, &c.net.details, &streamlines);
+  c.net.headline = split + result->field->headline + streamlines + result->headline +
                    "solving the layout for planar faces (planar_quads)\n";
 }
 
@@ -81,6 +90,10 @@ void WriteConjugateLayout(HookContext& c) {
   if (const auto it = c.temporaries.find("field"); it != c.temporaries.end()) {
     const FieldResult& field = *result->field;
     WriteFieldPly(it->second, field.mesh, field.geometry, field.field, field.frame, "output.field");
+  }
+  if (const auto it = c.temporaries.find("streamlines"); it != c.temporaries.end()) {
+    WriteStreamlinesObj(it->second, c.State<LayoutState>().streamlines.lines, result->field->frame,
+                        "output.streamlines");
   }
 }
 
@@ -125,6 +138,7 @@ ProblemDecl conjugate_layout() {
   for (const TermUse& t : LevelSetTerms()) d.terms.push_back(t);
   for (const Key& k : FieldKeys()) d.keys.push_back(k);
   for (const Key& k : LevelSetKeys()) d.keys.push_back(k);
+  for (const Key& k : StreamlineKeys()) d.keys.push_back(k);
   const auto stages = d.stages;
   d.stages = [stages, planar](const Settings& s) {
     std::vector<Stage> out = stages(s);
@@ -136,7 +150,7 @@ ProblemDecl conjugate_layout() {
   };
   d.check = &CheckLevelSetKeys;
   d.net = &Net;
-  d.output_keys = {"layout", "field"};
+  d.output_keys = {"layout", "field", "streamlines"};
   d.write = &WriteConjugateLayout;
   // The band about the design surface, reported (details.surface_band, the
   // BAND BINDS line) but not solved again without it: that would lay the

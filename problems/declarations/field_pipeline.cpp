@@ -7,9 +7,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 
 #include "core/magnitude.h"
 #include "core/input_error.h"
+#include "fields/field_io.h"
 #include "geometry/reference.h"
 #include "io/io.h"
 #include "mesh/subdivision.h"
@@ -176,6 +178,82 @@ std::vector<Key> LevelSetKeys() {
                     "kept as corners of the layout")};
 }
 
+std::vector<Key> StreamlineKeys() {
+  return {NumberKey("streamlines.separation", 0.03, 0.002, 1,
+                    "streamline separation d_sep as a fraction of the diagonal of the design "
+                    "surface's bounding box along its principal axes (output.streamlines; "
+                    "Jobard-Lefer seeding)"),
+          NumberKey("streamlines.test_ratio", 0.5, 0.05, 1,
+                    "a streamline stops closer than d_test = test_ratio × d_sep to a line of "
+                    "its family (or to itself)"),
+          NumberKey("streamlines.step", 0.1, 0.01, 1,
+                    "RK4 step of the streamlines as a fraction of d_sep (a step is also cut at "
+                    "every triangle edge it crosses)"),
+          BoolKey("streamlines.separatrices", true,
+                  "trace the separatrices of every singularity (its radial directions, "
+                  "2|1 - index| per family) before the streamlines")};
+}
+
+StreamlineResult FieldStreamlines(const Settings& s, const FieldResult& field,
+                                  nlohmann::json* details, std::string* headline) {
+  if (!s.schema().Find("output.streamlines") || s.String("output.streamlines").empty()) return {};
+  const StreamlineInput input = StreamlineInputOf(field.mesh, field.geometry, field.field);
+  StreamlineOptions o;
+  o.separation = s.Number("streamlines.separation") * PrincipalBoxDiagonal(field.mesh);
+  o.test_ratio = s.Number("streamlines.test_ratio");
+  o.step = s.Number("streamlines.step");
+  o.separatrices = s.Bool("streamlines.separatrices");
+  StreamlineResult r = TraceStreamlines(input, o);
+  const double unit = field.frame.scale;  // canonical -> file units
+  int count[3] = {0, 0, 0};
+  double length = 0;
+  for (const Streamline& l : r.lines) {
+    ++count[l.separatrix ? 2 : l.family];
+    length += l.length;
+  }
+  const double separation = SmallestSeparation(r.lines, r.d_sep);
+  const double self = SmallestSelfDistance(r.lines, 3 * r.d_test, r.d_sep);
+  nlohmann::json singular = nlohmann::json::array();
+  int unexpected = 0;
+  for (size_t j = 0; j < input.singularities.size(); ++j) {
+    const int expected = ExpectedSeparatrices(input.singularities[j].index);
+    const auto& found = r.separatrix_directions[j];
+    if (expected >= 0 && (found[0] != expected || found[1] != expected)) ++unexpected;
+    singular.push_back({{"vertex", input.singularities[j].vertex},
+                        {"index", input.singularities[j].index},
+                        {"directions_v", found[0]},
+                        {"directions_w", found[1]},
+                        {"expected", expected}});
+  }
+  // Distances beyond the measuring radius (d_sep) are reported as null.
+  auto finite = [&](double x) -> nlohmann::json {
+    return std::isfinite(x) ? nlohmann::json(x * unit) : nlohmann::json(nullptr);
+  };
+  (*details)["streamlines"] = {
+      {"d_sep", r.d_sep * unit},
+      {"d_test", r.d_test * unit},
+      {"lines_v", count[0]},
+      {"lines_w", count[1]},
+      {"separatrices", count[2]},
+      {"total_length", length * unit},
+      {"closed", std::count_if(r.lines.begin(), r.lines.end(),
+                               [](const Streamline& l) { return l.closed; })},
+      {"smallest_separation", finite(separation)},
+      {"smallest_separation_over_d_sep", std::isfinite(separation) ? nlohmann::json(separation / r.d_sep)
+                                                                   : nlohmann::json(nullptr)},
+      {"smallest_self_distance", finite(self)},
+      {"singularities", singular},
+      {"singularities_with_unexpected_separatrices", unexpected}};
+  char line[400];
+  std::snprintf(line, sizeof line,
+                "streamlines: d_sep %.4g, %d v-lines, %d w-lines, %d separatrices, total length "
+                "%.4g; smallest same-family separation %s d_sep\n",
+                r.d_sep * unit, count[0], count[1], count[2], length * unit,
+                std::isfinite(separation) ? std::to_string(separation / r.d_sep).c_str() : "> 1");
+  *headline += line;
+  return r;
+}
+
 void CheckLevelSetKeys(const Settings& s) {
   CheckFieldOutputs(s);
   if (s.Given("level_sets.target_faces") && s.Given("level_sets.edge_length") &&
@@ -198,6 +276,15 @@ void CheckFieldOutputs(const Settings& s) {
       CheckMeshExtension(s.String("output.layout"));
     } catch (const InputError& e) {
       throw s.Error("output.layout", "'" + s.String("output.layout") + "': " + e.message());
+    }
+  }
+  if (s.schema().Find("output.streamlines") && !s.String("output.streamlines").empty()) {
+    const std::string& path = s.String("output.streamlines");
+    std::string extension = path.size() >= 4 ? path.substr(path.size() - 4) : "";
+    for (char& ch : extension) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+    if (extension != ".obj") {
+      throw s.Error("output.streamlines",
+                    "'" + path + "': the streamlines are written as OBJ polylines (.obj)");
     }
   }
   if (s.schema().Find("output.field") && !s.String("output.field").empty()) {

@@ -25,6 +25,7 @@
 #include "core/settings.h"
 #include "fields/cuts.h"
 #include "fields/extract.h"
+#include "fields/streamlines.h"
 #include "fields/tcd_field.h"
 #include "mesh/similarity.h"
 #include "mesh/surface_mesh.h"
@@ -49,10 +50,14 @@ std::vector<Key> FieldKeys();
 // The level-set stage's terms and keys (extraction included).
 std::vector<TermUse> LevelSetTerms();
 std::vector<Key> LevelSetKeys();
+// The streamline keys (streamlines.*: fields/streamlines.h) of conjugate_field
+// and conjugate_layout.
+std::vector<Key> StreamlineKeys();
 // Cross-key checks of the level-set keys (ProblemDecl::check), including
 // CheckFieldOutputs.
 void CheckLevelSetKeys(const Settings& s);
-// output.layout is a mesh file name (.obj, .off, .ply), output.field a .ply.
+// output.layout is a mesh file name (.obj, .off, .ply), output.field a .ply,
+// output.streamlines an .obj.
 void CheckFieldOutputs(const Settings& s);
 // Refuses multiresolution for the field stages (the field lives on the input).
 void CheckNoMultiresolution(const Settings& s, const std::string& problem);
@@ -83,6 +88,15 @@ struct LevelSetResult {
   nlohmann::json details = nlohmann::json::object();
   std::string headline;
 };
+
+// The streamlines of `field` with the streamlines.* keys of `s` when
+// output.streamlines is given (else nothing is traced and the result is
+// empty): d_sep = streamlines.separation × the diagonal of the bounding box
+// of the field's mesh along its principal axes (PrincipalBoxDiagonal). Adds
+// the counts and the separations measured on the lines to `details`
+// ("streamlines") and a line to `headline`.
+StreamlineResult FieldStreamlines(const Settings& s, const FieldResult& field,
+                                  nlohmann::json* details, std::string* headline);
 
 // Nested solves: conjugate_field / level_sets on `mesh` (file units) with the
 // keys of `parent` (and then `overrides`, keys of level_sets). Throw

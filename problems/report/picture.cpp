@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "core/input_error.h"
 #include "io/io.h"
@@ -36,6 +39,56 @@ PictureScale ScaleOf(const FaceValues& values) {
   return {values.label, values.units, values.red_at, values.red_from, values.name != "none"};
 }
 
+std::vector<PictureLine> ReadPolylines(const std::string& path, const std::string& key) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, 0, key, "cannot open the OBJ file of polylines");
+  std::vector<std::array<double, 3>> points;
+  std::vector<PictureLine> lines;
+  PictureLine style;
+  style.rgb = {30, 140, 60};
+  std::string text;
+  int number = 0;
+  while (std::getline(in, text)) {
+    ++number;
+    std::istringstream row(text);
+    std::string tag;
+    if (!(row >> tag) || tag[0] == '#') continue;
+    if (tag == "v") {
+      std::array<double, 3> p{};
+      if (!(row >> p[0] >> p[1] >> p[2]) || !std::isfinite(p[0]) || !std::isfinite(p[1]) ||
+          !std::isfinite(p[2])) {
+        throw InputError(path, number, key, "expected `v x y z` with finite numbers");
+      }
+      points.push_back(p);
+    } else if (tag == "g") {
+      std::string group;
+      row >> group;
+      style.rgb = group == "v"              ? std::array<unsigned char, 3>{210, 40, 30}
+                  : group == "w"            ? std::array<unsigned char, 3>{30, 80, 210}
+                  : group == "separatrices" ? std::array<unsigned char, 3>{0, 0, 0}
+                                            : std::array<unsigned char, 3>{30, 140, 60};
+      style.width = group == "separatrices" ? 2.0 : 1.0;
+    } else if (tag == "l") {
+      PictureLine line = style;
+      std::string token;
+      while (row >> token) {
+        const std::string index = token.substr(0, token.find('/'));
+        char* end = nullptr;
+        const long i = std::strtol(index.c_str(), &end, 10);
+        const long n = long(points.size());
+        const long k = i > 0 ? i - 1 : n + i;  // negative: relative to the end
+        if (end == index.c_str() || *end != '\0' || i == 0 || k < 0 || k >= n) {
+          throw InputError(path, number, key,
+                           "'" + token + "' is not the index of a vertex given before it");
+        }
+        line.points.push_back(points[size_t(k)]);
+      }
+      lines.push_back(std::move(line));
+    }
+  }
+  return lines;
+}
+
 std::string RenderFiles(const RenderRequest& r) {
   if (r.meshes.empty()) throw InputError("", 0, "MESH", "no mesh to draw");
   std::string extension = std::filesystem::path(r.out).extension().string();
@@ -57,12 +110,27 @@ std::string RenderFiles(const RenderRequest& r) {
     for (const std::string& n : names) list += ", " + n;
     throw InputError("", 0, "--value", "'" + r.value + "' is not a value (" + list + ")");
   }
+  if (r.lines.size() > r.meshes.size()) {
+    throw InputError("", 0, "--lines",
+                     std::to_string(r.lines.size()) + " files of lines for " +
+                         std::to_string(r.meshes.size()) + " meshes (at most one per mesh)");
+  }
   std::vector<Mesh> meshes;
   for (const std::string& path : r.meshes) meshes.push_back(ReadMesh(path));
+  std::vector<std::vector<PictureLine>> lines;
+  for (const std::string& path : r.lines) lines.push_back(ReadPolylines(path, "--lines"));
   // Drawn and measured in the first mesh's local frame: the picture is the
   // same for a mesh far from the origin or at any scale.
   const Similarity local = LocalFrame(meshes.front());
   for (Mesh& mesh : meshes) mesh = InFrame(local, std::move(mesh));
+  for (auto& list : lines) {
+    for (PictureLine& line : list) {
+      for (auto& p : line.points) {
+        const Vec3 q = local.ToCanonical(Vec3{p[0], p[1], p[2]});
+        p = {q[0], q[1], q[2]};
+      }
+    }
+  }
   std::string value = r.value;
   if (value == "auto") {
     value = "bending";
@@ -77,6 +145,7 @@ std::string RenderFiles(const RenderRequest& r) {
         r.titles.empty() ? std::filesystem::path(r.meshes[i]).filename().string() : r.titles[i];
     if (value == "none") {
       panels.push_back(PanelOf(meshes[i], {}, title));
+      if (i < lines.size()) panels.back().lines = lines[i];
       continue;
     }
     // The first mesh is the "before": it sets the scale of every panel.
@@ -84,8 +153,10 @@ std::string RenderFiles(const RenderRequest& r) {
         ComputeFaceValues(value, meshes[i], &meshes.front(), nullptr, r.color_max);
     if (i == 0) scale = ScaleOf(v);
     panels.push_back(PanelOf(meshes[i], v.values, title));
+    if (i < lines.size()) panels.back().lines = lines[i];
   }
   std::vector<std::string> inputs = r.meshes;
+  inputs.insert(inputs.end(), r.lines.begin(), r.lines.end());
   StagedOutputs staged(inputs);
   staged.Write(r.out, "--out", [&](const std::string& temporary) {
     WriteView(temporary, panels, scale, r.options, "--out");

@@ -20,6 +20,11 @@ PicturePanel PanelOf(const Mesh& mesh, const std::vector<double>& face_values, s
 // The colour bar of `values`.
 PictureScale ScaleOf(const FaceValues& values);
 
+// The polylines of an OBJ file (`v` and `l` records; `g` sets the colour as
+// RenderRequest::lines says). Throws InputError(path, line, key, ...) for a
+// file that cannot be read, a bad record or an index out of range.
+std::vector<PictureLine> ReadPolylines(const std::string& path, const std::string& key);
+
 // `archgeo render MESH... --out OUT.png`.
 struct RenderRequest {
   std::vector<std::string> meshes;  // drawn side by side, the first sets camera and scale
@@ -28,6 +33,9 @@ struct RenderRequest {
                                     // when the first mesh has a face of 4+ sides, else bending
   double color_max = 0;             // > 0: the value drawn red; else the value's default
   std::vector<std::string> titles;  // one per mesh; default: the file names
+  // OBJ polylines (`v`, `l`; e.g. output.streamlines), the i-th drawn over the
+  // i-th mesh (PNG): group v red, w blue, separatrices black, others green.
+  std::vector<std::string> lines;
   PictureOptions options;
 };
 
