@@ -21,7 +21,7 @@
 namespace archgeo {
 namespace {
 
-using Row = std::vector<std::pair<int, double>>;  // fine vertex = Σ w · coarse vertex
+using CsRow = std::vector<std::pair<int, double>>;  // fine vertex = Σ w · coarse vertex
 
 long long CsKey(int a, int b) { return (static_cast<long long>(a) << 32) | static_cast<unsigned>(b); }
 
@@ -77,8 +77,8 @@ struct CsTopology {
 enum class CsVertexRule { kSmooth, kCrease, kFixed };
 enum class CsEdgeRule { kSmooth, kMidpoint };
 
-void CsAdd(Row& row, int v, double w) { row.emplace_back(v, w); }
-void CsAddCentroid(Row& row, const std::vector<int>& face, double w) {
+void CsAdd(CsRow& row, int v, double w) { row.emplace_back(v, w); }
+void CsAddCentroid(CsRow& row, const std::vector<int>& face, double w) {
   for (int v : face) row.emplace_back(v, w / static_cast<double>(face.size()));
 }
 
@@ -86,7 +86,7 @@ void CsAddCentroid(Row& row, const std::vector<int>& face, double w) {
 // neighbours along their two crease edges (`crease_neighbours`).
 struct CsRefinement {
   PolyMesh fine;  // positions from the rows
-  std::vector<Row> rows;
+  std::vector<CsRow> rows;
   int face_points_begin = 0, edge_points_begin = 0;
 };
 
@@ -103,7 +103,7 @@ CsRefinement CsRefine(const PolyMesh& m, const CsTopology& t, SubdivisionScheme 
   r.edge_points_begin = cc ? n + nf : n;
   r.rows.resize(static_cast<size_t>(r.edge_points_begin + ne));
   for (int v = 0; v < n; ++v) {
-    Row& row = r.rows[v];
+    CsRow& row = r.rows[v];
     if (vrule[v] == CsVertexRule::kFixed) {
       CsAdd(row, v, 1);
     } else if (vrule[v] == CsVertexRule::kCrease) {
@@ -127,7 +127,7 @@ CsRefinement CsRefine(const PolyMesh& m, const CsTopology& t, SubdivisionScheme 
     for (int f = 0; f < nf; ++f) CsAddCentroid(r.rows[n + f], m.faces[f], 1);
   }
   for (int e = 0; e < ne; ++e) {
-    Row& row = r.rows[r.edge_points_begin + e];
+    CsRow& row = r.rows[r.edge_points_begin + e];
     const int a = t.edges[e][0], b = t.edges[e][1];
     if (erule[e] == CsEdgeRule::kMidpoint || t.Boundary(e)) {
       CsAdd(row, a, 0.5);
@@ -619,7 +619,8 @@ std::vector<int> ConstrainedSubdivision::VertexKinds() const {
   return kinds;
 }
 
-double ConstrainedSubdivision::MaxCurveDistance() const {
+double ConstrainedSubdivision::MaxCurveDistance(const std::vector<Eigen::Vector3d>& points) const {
+  CHECK_EQ(points.size(), mesh_.points.size());
   double worst = 0;
   for (size_t v = 0; v < on_.size(); ++v) {
     for (const Entry& en : on_[v]) {
@@ -629,7 +630,7 @@ double ConstrainedSubdivision::MaxCurveDistance() const {
       for (size_t i = 0; i + 1 < c.cumulative.size(); ++i) {
         const Eigen::Vector3d& a = p[i];
         const Eigen::Vector3d& b = p[(i + 1) % p.size()];
-        best = std::min(best, (mesh_.points[v] - (a + CsSegmentParam(mesh_.points[v], a, b) * (b - a))).norm());
+        best = std::min(best, (points[v] - (a + CsSegmentParam(points[v], a, b) * (b - a))).norm());
       }
       worst = std::max(worst, best);
     }

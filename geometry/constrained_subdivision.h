@@ -96,7 +96,8 @@ class ConstrainedSubdivision {
   // Curve vertices: how many, and the largest distance of one from its curve
   // (closest point on the polyline, computed afresh), in the mesh's units.
   int CurveVertexCount() const;
-  double MaxCurveDistance() const;
+  double MaxCurveDistance() const { return MaxCurveDistance(mesh_.points); }
+  double MaxCurveDistance(const std::vector<Eigen::Vector3d>& points) const;  // e.g. limit positions
   int CornerCount() const;
   // Per vertex: on a curve (1), fixed corner or locked (2), else 0.
   std::vector<int> VertexKinds() const;

@@ -16,7 +16,8 @@
   X(grid)                     \
   X(base_complex_quads)       \
   X(spectral_quads)           \
-  X(wave_quads)
+  X(wave_quads)               \
+  X(subdivide)
 
 namespace archgeo {
 namespace problems {
