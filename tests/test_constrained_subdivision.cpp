@@ -273,7 +273,47 @@ TEST(ConstrainedSubdivision, CreaseCurveIsKept) {
     EXPECT_EQ(cs.CurveVertexCount(), (n - 1) * 16 + 1);
     EXPECT_EQ(cs.CornerCount() >= 2, true);
     EXPECT_LE(cs.MaxCurveDistance(), kCurveTolerance * cs.diagonal());
+    // Without the curve the row's vertices leave it (the interior masks smooth the crease).
+    ConstrainedSubdivision free(grid, {}, {scheme});
+    for (int k = 0; k < 4; ++k) free.Step();
+    EXPECT_GT(std::abs(free.mesh().points[3 * n + 1].z() - crease.points[100].z()), 0.01);
   }
+}
+
+// A kink of the curve at a mesh vertex keeps that vertex fixed (a corner);
+// with the kink test off, the crease mask slides it along the curve.
+TEST(ConstrainedSubdivision, KinksStayCorners) {
+  // A flat 4 × 4 grid whose rows and columns are unevenly spaced; the boundary curve
+  // is its square outline (kinks of 90° at the four corners).
+  const std::vector<double> xs = {0, 0.5, 2, 2.5, 4}, ys = {0, 1.5, 2, 3.5, 4};
+  PolyMesh grid;
+  for (int j = 0; j < 5; ++j) {
+    for (int i = 0; i < 5; ++i) grid.points.emplace_back(xs[i], ys[j], 0);
+  }
+  for (int j = 0; j < 4; ++j) {
+    for (int i = 0; i < 4; ++i) grid.faces.push_back({j * 5 + i, j * 5 + i + 1, (j + 1) * 5 + i + 1, (j + 1) * 5 + i});
+  }
+  SubdivisionCurve square;
+  square.name = "square";
+  square.closed = true;
+  square.boundary = true;
+  square.points = {{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}};
+  SubdivisionOptions o;
+  o.scheme = SubdivisionScheme::kCatmullClark;
+  ConstrainedSubdivision kinked(grid, {square}, o);
+  o.kink_degrees = 180;
+  ConstrainedSubdivision smooth(grid, {square}, o);
+  EXPECT_EQ(kinked.CornerCount(), 4);
+  EXPECT_EQ(smooth.CornerCount(), 0);
+  for (int k = 0; k < 2; ++k) {
+    kinked.Step();
+    smooth.Step();
+  }
+  for (int corner : {0, 4, 20, 24}) EXPECT_EQ(kinked.mesh().points[corner], grid.points[corner]);
+  // Corners 0 and 24 have unequal curve neighbours (0.5 and 1.5 away): the
+  // crease mask moves them when they are not kinks.
+  for (int corner : {0, 24}) EXPECT_GT((smooth.mesh().points[corner] - grid.points[corner]).norm(), 0.01);
+  EXPECT_LE(kinked.MaxCurveDistance(), kCurveTolerance * kinked.diagonal());
 }
 
 // Refusals: crossing curves, a boundary curve through the interior.
