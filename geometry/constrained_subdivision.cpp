@@ -14,8 +14,8 @@
 #include <sstream>
 #include <unordered_map>
 
-#include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
 #include <glog/logging.h>
 
 namespace archgeo {
@@ -356,8 +356,17 @@ void ConstrainedSubdivision::Tag() {
     Curve& c = curves_[k];
     const auto& p = c.input.points;
     std::vector<std::pair<double, int>> on;  // (s, vertex)
+    Eigen::Vector3d lo = p[0], hi = p[0];
+    for (const auto& q : p) {
+      lo = lo.cwiseMin(q);
+      hi = hi.cwiseMax(q);
+    }
+    lo.array() -= tol;
+    hi.array() += tol;
     for (int v = 0; v < n; ++v) {
       if (c.input.boundary && !boundary_vertex[v]) continue;
+      const Eigen::Vector3d& x = mesh_.points[v];
+      if ((x.array() < lo.array()).any() || (x.array() > hi.array()).any()) continue;
       double best = std::numeric_limits<double>::infinity(), best_s = 0;
       for (size_t i = 0; i + 1 < c.cumulative.size(); ++i) {
         const Eigen::Vector3d& a = p[i];
@@ -891,25 +900,37 @@ ReverseResult ReverseSubdivision(const PolyMesh& fine, SubdivisionScheme scheme)
       map[r.edge_points_begin + e] = it->second;
     }
     if (!complete) continue;
+    // Normal equations SᵀS·c = Sᵀp assembled row by row (S: the masks, one
+    // row per fine vertex), one right-hand side per coordinate.
     std::vector<Eigen::Triplet<double>> triplets;
+    Eigen::VectorXd rhs[3];
+    for (auto& r3 : rhs) r3 = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(coarse.points.size()));
     for (size_t i = 0; i < r.rows.size(); ++i) {
-      for (const auto& [v, w] : r.rows[i]) triplets.emplace_back(map[i], v, w);
+      const Eigen::Vector3d& p = fine.points[map[i]];
+      for (const auto& [a, wa] : r.rows[i]) {
+        for (int k = 0; k < 3; ++k) rhs[k][a] += wa * p[k];
+        for (const auto& [b, wb] : r.rows[i]) triplets.emplace_back(a, b, wa * wb);
+      }
     }
-    Eigen::SparseMatrix<double> s(static_cast<Eigen::Index>(fine.points.size()),
-                                  static_cast<Eigen::Index>(coarse.points.size()));
-    s.setFromTriplets(triplets.begin(), triplets.end());
-    Eigen::MatrixXd p(fine.points.size(), 3);
-    for (size_t i = 0; i < fine.points.size(); ++i) p.row(static_cast<Eigen::Index>(i)) = fine.points[i].transpose();
-    const Eigen::SparseMatrix<double> normal = s.transpose() * s;
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(normal);
+    Eigen::SparseMatrix<double> normal(static_cast<Eigen::Index>(coarse.points.size()),
+                                       static_cast<Eigen::Index>(coarse.points.size()));
+    normal.setFromTriplets(triplets.begin(), triplets.end());
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(normal);
     if (ldlt.info() != Eigen::Success) continue;
-    const Eigen::MatrixXd c = ldlt.solve(s.transpose() * p);
-    const Eigen::MatrixXd res = s * c - p;
     ReverseResult result;
     result.coarse = coarse;
-    for (size_t i = 0; i < coarse.points.size(); ++i) result.coarse.points[i] = c.row(static_cast<Eigen::Index>(i)).transpose();
-    result.residual_max = res.rowwise().norm().maxCoeff();
-    result.residual_rms = std::sqrt(res.squaredNorm() / static_cast<double>(fine.points.size()));
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::VectorXd x = ldlt.solve(rhs[k]);
+      for (size_t v = 0; v < coarse.points.size(); ++v) result.coarse.points[v][k] = x[static_cast<Eigen::Index>(v)];
+    }
+    double sum = 0;
+    for (size_t i = 0; i < r.rows.size(); ++i) {
+      Eigen::Vector3d q = -fine.points[map[i]];
+      for (const auto& [a, wa] : r.rows[i]) q += wa * result.coarse.points[a];
+      result.residual_max = std::max(result.residual_max, q.norm());
+      sum += q.squaredNorm();
+    }
+    result.residual_rms = std::sqrt(sum / static_cast<double>(fine.points.size()));
     const Eigen::VectorXd d = ldlt.vectorD();
     result.unique = d.minCoeff() > 1e-12 * d.cwiseAbs().maxCoeff();
     if (!found || result.residual_max < best.residual_max) best = std::move(result);
