@@ -69,6 +69,7 @@ TEST_F(SpecRoundTrip, EveryProblemsTemplateSolves) {
       {"base_complex_quads",
        {std::string("mesh=") + ARCHGEO_SOURCE_DIR + "/examples/octahedron_sphere.obj",
         std::string("base_complex.mesh=") + ARCHGEO_SOURCE_DIR + "/examples/octahedron.obj"}},
+      {"subdivide", {"mesh=" + quads}},
   };
   const ProblemDecl custom = CustomExample();
   for (const std::string& name : ProblemNames()) {
