@@ -119,7 +119,7 @@ TEST(Streamlines, ConstantFieldOnAPlaneGivesParallelLinesDSepApart) {
 }
 
 TEST(Streamlines, ClosedEllipsoidUmbilicsSumToChiAndHaveOneSeparatrixPerFamily) {
-  const Mesh mesh = TriangulatedEllipsoid(1.5, 1.0, 0.6, 3);
+  const Mesh mesh = TriangulatedEllipsoid(1.5, 1.0, 0.6, 4);
   const Principal p = PrincipalField(mesh);
   ASSERT_EQ(p.field.singularities.size(), 4u);
   EXPECT_EQ(p.field.index_sum, 2.0);  // Poincaré–Hopf: χ of the sphere
