@@ -53,6 +53,14 @@ Key ChoiceKey(std::string name, std::string fallback, std::vector<std::string> c
   return k;
 }
 
+Key PathKey(std::string name, Type type, std::string doc) {
+  Key k;
+  k.name = std::move(name);
+  k.type = type;
+  k.doc = std::move(doc);
+  return k;
+}
+
 void Schema::Add(Key key) {
   CHECK(!index_.count(key.name)) << "setting '" << key.name << "' declared twice";
   index_[key.name] = keys_.size();

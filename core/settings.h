@@ -60,6 +60,8 @@ Key IntegerKey(std::string name, long long fallback, long long lo, long long hi,
 Key BoolKey(std::string name, bool fallback, std::string doc);
 Key ChoiceKey(std::string name, std::string fallback, std::vector<std::string> choices,
               std::string doc);
+// A file name (type kInputPath or kOutputPath) without a default.
+Key PathKey(std::string name, Type type, std::string doc);
 
 // An ordered set of keys (the order of `archgeo spec` and docs/keys.md).
 class Schema {

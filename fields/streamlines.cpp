@@ -17,40 +17,18 @@
 #include <unordered_map>
 #include <utility>
 
+#include "core/segments.h"
+
 namespace archgeo {
 namespace {
 
 using V3 = Eigen::Vector3d;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// Distance between the segments [p1, q1] and [p2, q2] (Ericson, Real-Time
-// Collision Detection, §5.1.9).
+// Distance between the segments [p1, q1] and [p2, q2].
 double SegmentDistance(const V3& p1, const V3& q1, const V3& p2, const V3& q2) {
-  const V3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
-  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
-  const double tiny = 1e-300;
-  double s = 0, t = 0;
-  if (a <= tiny && e <= tiny) return r.norm();
-  if (a <= tiny) {
-    t = std::clamp(f / e, 0.0, 1.0);
-  } else {
-    const double c = d1.dot(r);
-    if (e <= tiny) {
-      s = std::clamp(-c / a, 0.0, 1.0);
-    } else {
-      const double b = d1.dot(d2), denom = a * e - b * b;
-      s = denom > 0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
-      t = (b * s + f) / e;
-      if (t < 0) {
-        t = 0;
-        s = std::clamp(-c / a, 0.0, 1.0);
-      } else if (t > 1) {
-        t = 1;
-        s = std::clamp((b - c) / a, 0.0, 1.0);
-      }
-    }
-  }
-  return ((p1 + s * d1) - (p2 + t * d2)).norm();
+  const auto [s, t] = ClosestSegmentParameters(p1, q1, p2, q2);
+  return ((p1 + s * (q1 - p1)) - (p2 + t * (q2 - p2))).norm();
 }
 
 struct Segment {

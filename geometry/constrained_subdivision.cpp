@@ -18,6 +18,8 @@
 #include <Eigen/SparseCore>
 #include <glog/logging.h>
 
+#include "core/segments.h"
+
 namespace archgeo {
 namespace {
 
@@ -208,29 +210,6 @@ double CsSegmentParam(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const 
   return dd > 0 ? std::clamp((x - a).dot(d) / dd, 0.0, 1.0) : 0.0;
 }
 
-// Closest points of segments p0p1 and q0q1 [Ericson 2005, §5.1.9]: (s, t).
-std::pair<double, double> CsSegmentSegment(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
-                                           const Eigen::Vector3d& q0, const Eigen::Vector3d& q1) {
-  const Eigen::Vector3d d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
-  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
-  double s = 0, t = 0;
-  if (a <= 0 && e <= 0) return {0, 0};
-  if (a <= 0) return {0, std::clamp(f / e, 0.0, 1.0)};
-  const double c = d1.dot(r);
-  if (e <= 0) return {std::clamp(-c / a, 0.0, 1.0), 0};
-  const double b = d1.dot(d2), denom = a * e - b * b;
-  s = denom > 0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
-  t = (b * s + f) / e;
-  if (t < 0) {
-    t = 0;
-    s = std::clamp(-c / a, 0.0, 1.0);
-  } else if (t > 1) {
-    t = 1;
-    s = std::clamp((b - c) / a, 0.0, 1.0);
-  }
-  return {s, t};
-}
-
 std::string CsPoint(const Eigen::Vector3d& p) {
   std::ostringstream o;
   o << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
@@ -335,7 +314,7 @@ void ConstrainedSubdivision::Tag() {
           const Eigen::Vector3d& b1 = pb[(l + 1) % pb.size()];
           const double reach = 0.5 * ((a1 - a0).norm() + (b1 - b0).norm()) + tol;
           if ((0.5 * (a0 + a1) - 0.5 * (b0 + b1)).norm() > reach) continue;
-          const auto [s, u] = CsSegmentSegment(a0, a1, b0, b1);
+          const auto [s, u] = ClosestSegmentParameters(a0, a1, b0, b1);
           const Eigen::Vector3d x = a0 + s * (a1 - a0), y = b0 + u * (b1 - b0);
           if ((x - y).norm() > tol) continue;
           const double sa = a.cumulative[i] + s * (a.cumulative[i + 1] - a.cumulative[i]);
@@ -718,6 +697,22 @@ struct CsFine {
   }
 };
 
+// The coarse index of every fine vertex labelled 0 (an old vertex), in
+// order, appended to out.old_vertices; −1 for the others. False when some
+// vertex has no label.
+bool CsNumberOldVertices(const std::vector<int>& label, std::vector<int>& coarse,
+                         CsClassified& out) {
+  coarse.assign(label.size(), -1);
+  for (size_t v = 0; v < label.size(); ++v) {
+    if (label[v] < 0) return false;
+    if (label[v] == 0) {
+      coarse[v] = static_cast<int>(out.old_vertices.size());
+      out.old_vertices.push_back(static_cast<int>(v));
+    }
+  }
+  return true;
+}
+
 bool CsClassifyLoop(const CsFine& fm, int seed, CsClassified& out) {
   const size_t n = fm.m.points.size();
   std::vector<int> label(n, -1);  // 0 old, 1 edge
@@ -741,14 +736,8 @@ bool CsClassifyLoop(const CsFine& fm, int seed, CsClassified& out) {
       }
     }
   }
-  std::vector<int> coarse(n, -1);
-  for (size_t v = 0; v < n; ++v) {
-    if (label[v] < 0) return false;
-    if (label[v] == 0) {
-      coarse[v] = static_cast<int>(out.old_vertices.size());
-      out.old_vertices.push_back(static_cast<int>(v));
-    }
-  }
+  std::vector<int> coarse;
+  if (!CsNumberOldVertices(label, coarse, out)) return false;
   for (size_t v = 0; v < n; ++v) {
     if (label[v] == 1) {
       out.edge_vertex[{coarse[parents[v].first], coarse[parents[v].second]}] = static_cast<int>(v);
@@ -806,14 +795,8 @@ bool CsClassifyCatmullClark(const CsFine& fm, int seed, CsClassified& out) {
       if (other < 0 || !set(other, 0)) return false;
     }
   }
-  std::vector<int> coarse(n, -1), coarse_face(n, -1);
-  for (size_t v = 0; v < n; ++v) {
-    if (label[v] < 0) return false;
-    if (label[v] == 0) {
-      coarse[v] = static_cast<int>(out.old_vertices.size());
-      out.old_vertices.push_back(static_cast<int>(v));
-    }
-  }
+  std::vector<int> coarse, coarse_face(n, -1);
+  if (!CsNumberOldVertices(label, coarse, out)) return false;
   for (size_t v = 0; v < n; ++v) {
     if (label[v] == 1) {
       std::vector<int> olds;

@@ -42,6 +42,7 @@
 #include "problems/runtime/solve.h"
 #include "problems/spec/spec.h"
 #include "scratch_dir.h"
+#include "tests/monkey_saddle.h"
 
 namespace archgeo {
 namespace ARCHGEO_UNITY_ID {
@@ -185,12 +186,7 @@ TEST(ConjugateField, ClosedEllipsoidHasFourHalvesAtTheUmbilics) {
 }
 
 TEST(ConjugateField, MonkeySaddleHasOneMinusHalfAtTheOrigin) {
-  TriangleGridOptions opt;
-  opt.jitter = 0.2;
-  const Mesh mesh = TriangulatedGrid(30, 30, [](double u, double v) -> Vec3 {
-    const double x = 2 * u - 1, y = 2 * v - 1;
-    return {x, y, x * x * x - 3 * x * y * y};
-  }, opt);
+  const Mesh mesh = JitteredMonkeySaddle();
   const auto s = SolveYaml("problem: conjugate_field\n", mesh);
   const FieldResult& r = *FieldOf(*s);
   ASSERT_EQ(r.field.singularities.size(), 1u);

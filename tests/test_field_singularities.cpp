@@ -24,6 +24,7 @@
 #include "fields/singularities.h"
 #include "fields/triangle_surfaces.h"
 #include "tests/make_mesh.h"
+#include "tests/monkey_saddle.h"
 
 namespace archgeo {
 namespace ARCHGEO_UNITY_ID {
@@ -177,12 +178,7 @@ TEST(Singularities, PrincipalFieldOfAnEllipsoidHasFourHalvesAtTheUmbilics) {
 }
 
 TEST(Singularities, MonkeySaddleHasOneMinusHalfAtTheOrigin) {
-  TriangleGridOptions opt;
-  opt.jitter = 0.2;
-  const Mesh mesh = TriangulatedGrid(30, 30, [](double u, double v) -> Vec3 {
-    const double x = 2 * u - 1, y = 2 * v - 1;
-    return {x, y, x * x * x - 3 * x * y * y};
-  }, opt);
+  const Mesh mesh = JitteredMonkeySaddle();
   const Field fd = MakeField(mesh);
   const std::vector<FaceCurvature> jets = ComputeFaceCurvature(mesh, fd.frames);
   const std::vector<Vec2> principal(mesh.number_of_faces(), Vec2(1, 0));

@@ -25,6 +25,7 @@
 #include "fields/tcd_field.h"
 #include "fields/triangle_surfaces.h"
 #include "tests/make_mesh.h"
+#include "tests/monkey_saddle.h"
 
 namespace archgeo {
 namespace ARCHGEO_UNITY_ID {
@@ -209,12 +210,7 @@ TEST(Streamlines, TorusHasNoSingularityAndClosedParallelsAndMeridians) {
 }
 
 TEST(Streamlines, MonkeySaddleMinusHalfIsATrisector) {
-  TriangleGridOptions opt;
-  opt.jitter = 0.2;
-  const Mesh mesh = TriangulatedGrid(30, 30, [](double u, double v) -> Vec3 {
-    const double x = 2 * u - 1, y = 2 * v - 1;
-    return {x, y, x * x * x - 3 * x * y * y};
-  }, opt);
+  const Mesh mesh = JitteredMonkeySaddle();
   const Principal p = PrincipalField(mesh);
   ASSERT_EQ(p.field.singularities.size(), 1u);
   ASSERT_EQ(p.field.singularities[0].index, -0.5);

@@ -43,6 +43,7 @@
 #include "problems/spec/spec.h"
 #include "tests/make_mesh.h"
 #include "tests/scratch_dir.h"
+#include "tests/monkey_saddle.h"
 
 namespace archgeo {
 namespace ARCHGEO_UNITY_ID {
@@ -900,18 +901,6 @@ TEST(Terms, LevelSetConjugacyMakesTheLevelSetsOfAConeConjugate) {
   EXPECT_TRUE(r.layout.ok) << r.layout.error;  // g and h are not constant
 }
 
-// The monkey saddle z = x³ − 3xy² over [−1, 1]² (30 × 30 cells, jittered):
-// one −1/2 singularity at the origin, one cut chain from it to the boundary,
-// across which the field flips (s = −1).
-Mesh MonkeySaddle() {
-  TriangleGridOptions opt;
-  opt.jitter = 0.2;
-  return TriangulatedGrid(30, 30, [](double u, double v) -> Vec3 {
-    const double x = 2 * u - 1, y = 2 * v - 1;
-    return {x, y, x * x * x - 3 * x * y * y};
-  }, opt);
-}
-
 // Largest miss of the cut relations of g and h, in level spacings: across the
 // cut g_left = α_C + s g_right (jumps), at the source vertex (1 − s) g = α_C
 // (branch points).
@@ -931,11 +920,13 @@ double RelationMiss(const LevelSetResult& r, bool branch_points) {
   return worst;
 }
 
-// The jump conditions across the cut hold to 1e-3 of the spacing (the
-// extraction refuses misses above 0.05), and the layout is cut out.
+// On the monkey saddle (one −1/2 singularity, one cut chain from it to the
+// boundary across which the field flips, s = −1) the jump conditions across
+// the cut hold to 1e-3 of the spacing (the extraction refuses misses above
+// 0.05), and the layout is cut out.
 TEST(Terms, LevelSetJumpJoinsTheFunctionsAcrossTheCut) {
   const auto s = SolveYaml("problem: level_sets\nlevel_sets: {target_faces: 300}\n"
-                           "field: {boundary_alignment: 0}\n", MonkeySaddle());
+                           "field: {boundary_alignment: 0}\n", JitteredMonkeySaddle());
   const LevelSetResult& r = *LevelSetsOf(*s);
   ASSERT_EQ(r.cut.chains.size(), 1u);
   const double miss = RelationMiss(r, false);
@@ -951,7 +942,7 @@ TEST(Terms, LevelSetJumpJoinsTheFunctionsAcrossTheCut) {
 // valence-6 vertex of the layout): g / Δw within 1e-3 of an integer.
 TEST(Terms, LevelSetBranchPointPutsTheSingularVertexOnALevel) {
   const auto s = SolveYaml("problem: level_sets\nlevel_sets: {target_faces: 300}\n"
-                           "field: {boundary_alignment: 0}\n", MonkeySaddle());
+                           "field: {boundary_alignment: 0}\n", JitteredMonkeySaddle());
   const LevelSetResult& r = *LevelSetsOf(*s);
   ASSERT_EQ(r.field->field.singularities.size(), 1u);
   double off_level = 0;

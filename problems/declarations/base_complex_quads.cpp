@@ -82,14 +82,6 @@ void BcNet(HookContext& c) {
 
 std::string BcInvalid(HookContext& c) { return c.State<BcState>().invalid; }
 
-Key BcPathKey(const char* name, const char* doc) {
-  Key k;
-  k.name = name;
-  k.type = Type::kInputPath;
-  k.doc = doc;
-  return k;
-}
-
 }  // namespace
 
 ProblemDecl base_complex_quads() {
@@ -99,12 +91,12 @@ ProblemDecl base_complex_quads() {
   d.paper = "[Gebreiter 2012, §4.1]";
   d.input = InputKind::kTriangles;
   d.keys = {
-      BcPathKey("base_complex.mesh",
-                "the base complex as a triangle/quad mesh (OBJ, OFF, PLY): each vertex is snapped "
-                "to the nearest vertex of the design mesh"),
-      BcPathKey("base_complex.ids",
-                "or the base complex as surface vertex ids and faces: lines 'v ID' (0-based) and "
-                "'f I J K [L]' (1-based base vertices, counter-clockwise)"),
+      PathKey("base_complex.mesh", Type::kInputPath,
+              "the base complex as a triangle/quad mesh (OBJ, OFF, PLY): each vertex is snapped "
+              "to the nearest vertex of the design mesh"),
+      PathKey("base_complex.ids", Type::kInputPath,
+              "or the base complex as surface vertex ids and faces: lines 'v ID' (0-based) and "
+              "'f I J K [L]' (1-based base vertices, counter-clockwise)"),
       NumberKey("base_complex.tolerance", 0.01, 0, 1,
                 "a base vertex farther than this (fraction of the design mesh's diagonal) from "
                 "every vertex of the design mesh is refused")};

@@ -277,14 +277,6 @@ std::vector<Stage> SdStages(const Settings&) {
   return {made};
 }
 
-Key SdPathKey(const char* name, const char* doc) {
-  Key k;
-  k.name = name;
-  k.type = Type::kInputPath;
-  k.doc = doc;
-  return k;
-}
-
 }  // namespace
 
 ProblemDecl subdivide() {
@@ -304,9 +296,10 @@ ProblemDecl subdivide() {
       ChoiceKey("subdivision.boundary", "standard", {"standard", "mesh", "curves", "locked"},
                 "standard crease masks; mesh: stay on the input's boundary polylines; curves: on "
                 "boundary_curves; locked: boundary vertices and their neighbours fixed"),
-      SdPathKey("subdivision.boundary_curves",
-                "OBJ polylines ('l' records) through boundary vertices of the mesh (boundary: curves)"),
-      SdPathKey("subdivision.crease_curves", "OBJ polylines ('l' records) through mesh vertices along edges: creases"),
+      PathKey("subdivision.boundary_curves", Type::kInputPath,
+              "OBJ polylines ('l' records) through boundary vertices of the mesh (boundary: curves)"),
+      PathKey("subdivision.crease_curves", Type::kInputPath,
+              "OBJ polylines ('l' records) through mesh vertices along edges: creases"),
       NumberKey("subdivision.curve_tolerance", 1e-6, 0, 0.1,
                 "a mesh vertex this close to a curve (fraction of the diagonal) lies on it"),
       NumberKey("subdivision.kink_angle", 30, 0, 180,

@@ -17,14 +17,6 @@
 namespace archgeo {
 namespace {
 
-Key PathKey(std::string name, Type type, std::string doc) {
-  Key k;
-  k.name = std::move(name);
-  k.type = type;
-  k.doc = std::move(doc);
-  return k;
-}
-
 std::vector<Key> CommonKeys(const ProblemDecl& d) {
   std::vector<Key> keys;
   keys.push_back(PathKey("mesh", Type::kInputPath,
