@@ -250,20 +250,6 @@ setup();
 </script></body></html>
 )HTML";
 
-std::string Summary(const PicturePanel& panel, double red_at) {
-  if (panel.face_values.empty()) return "";
-  double max = 0;
-  size_t red = 0;
-  for (double v : panel.face_values) {
-    if (std::isfinite(v)) max = std::max(max, v);
-    red += v >= red_at;
-  }
-  char buf[128];
-  std::snprintf(buf, sizeof buf, "max %.3g, %.1f%% of faces at red", max,
-                100.0 * double(red) / double(panel.face_values.size()));
-  return buf;
-}
-
 }  // namespace
 
 void WriteHtmlView(const std::string& path, const std::vector<PicturePanel>& panels,
@@ -294,7 +280,7 @@ void WriteHtmlView(const std::string& path, const std::vector<PicturePanel>& pan
       for (double v : p.face_values) values.push_back(std::isfinite(v) ? nlohmann::json(v) : nullptr);
     }
     view["panels"].push_back({{"title", p.title},
-                              {"summary", Summary(p, scale.red_at)},
+                              {"summary", PanelSummary(p, scale.red_at)},
                               {"points", p.points},
                               {"faces", p.faces},
                               {"colors", colors},

@@ -80,21 +80,6 @@ std::string Number(double x) {
   return buf;
 }
 
-// The largest value and the share of faces at or above red, for the title.
-std::string Summary(const PicturePanel& panel, double red_at) {
-  if (panel.face_values.empty()) return "";
-  double max = 0;
-  size_t red = 0;
-  for (double v : panel.face_values) {
-    if (std::isfinite(v)) max = std::max(max, v);
-    red += v >= red_at;
-  }
-  char buf[128];
-  std::snprintf(buf, sizeof buf, "max %s, %.1f%% of faces at red", Number(max).c_str(),
-                100.0 * double(red) / double(panel.face_values.size()));
-  return buf;
-}
-
 void DrawColorBar(cairo_t* cr, double x, double top, double height, const PictureScale& scale) {
   const double width = 26;
   const int steps = 200;
@@ -193,7 +178,7 @@ void DrawPanel(cairo_t* cr, const PicturePanel& panel, const Camera& camera, dou
   }
   cairo_set_source_rgb(cr, 0, 0, 0);
   Text(cr, cx, y0 + 22, panel.title, 16, true, true);
-  Text(cr, cx, y0 + 44, Summary(panel, colours.red_at), 13, false, true);
+  Text(cr, cx, y0 + 44, PanelSummary(panel, colours.red_at), 13, false, true);
 }
 
 // cairo's PNG stream writer into a stdio file.
@@ -211,6 +196,20 @@ std::array<std::array<double, 3>, 3> DefaultCamera(const PicturePanel& panel,
   return {{{c.right.x(), c.right.y(), c.right.z()},
            {c.up.x(), c.up.y(), c.up.z()},
            {c.toward.x(), c.toward.y(), c.toward.z()}}};
+}
+
+std::string PanelSummary(const PicturePanel& panel, double red_at) {
+  if (panel.face_values.empty()) return "";
+  double max = 0;
+  size_t red = 0;
+  for (double v : panel.face_values) {
+    if (std::isfinite(v)) max = std::max(max, v);
+    red += v >= red_at;
+  }
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "max %s, %.1f%% of faces at red", Number(max).c_str(),
+                100.0 * double(red) / double(panel.face_values.size()));
+  return buf;
 }
 
 void WritePicture(const std::string& path, const std::vector<PicturePanel>& panels,

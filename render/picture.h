@@ -65,6 +65,11 @@ void WritePicture(const std::string& path, const std::vector<PicturePanel>& pane
 std::array<std::array<double, 3>, 3> DefaultCamera(const PicturePanel& panel,
                                                    double tilt_degrees);
 
+// The title line of a panel's colours: its largest finite value and the share
+// of faces at or above `red_at` ("max 0.00123, 4.2% of faces at red"); empty
+// for a panel without values.
+std::string PanelSummary(const PicturePanel& panel, double red_at);
+
 // The same view as a self-contained HTML page (no server, no network: data
 // and script inline): one canvas per panel, drag to rotate, the colour bar
 // with the scale's label, units and red value. Throws InputError(path, 0,
