@@ -70,6 +70,7 @@ TEST_F(SpecRoundTrip, EveryProblemsTemplateSolves) {
        {std::string("mesh=") + ARCHGEO_SOURCE_DIR + "/examples/octahedron_sphere.obj",
         std::string("base_complex.mesh=") + ARCHGEO_SOURCE_DIR + "/examples/octahedron.obj"}},
       {"subdivide", {"mesh=" + quads}},
+      {"remesh", {"mesh=" + triangles}},
   };
   const ProblemDecl custom = CustomExample();
   for (const std::string& name : ProblemNames()) {

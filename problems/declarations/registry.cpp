@@ -17,7 +17,8 @@
   X(base_complex_quads)       \
   X(spectral_quads)           \
   X(wave_quads)               \
-  X(subdivide)
+  X(subdivide)                \
+  X(remesh)
 
 namespace archgeo {
 namespace problems {

@@ -1,0 +1,375 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// archgeo — incremental isotropic remeshing (Gebreiter 2012, §3.1.2; Botsch &
+// Kobbelt 2004, §4): split, collapse, flip, tangential relaxation with
+// projection onto the input. See isotropic_remesh.h.
+#include "geometry/isotropic_remesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "geometry/reference.h"
+
+namespace archgeo {
+namespace {
+
+using V3 = Eigen::Vector3d;
+
+V3 Rp(const Mesh& m, VertexIndex v) {
+  const Point& p = m.point(v);
+  return {p.x(), p.y(), p.z()};
+}
+
+void SetRp(Mesh& m, VertexIndex v, const V3& p) { m.point(v) = Point(p.x(), p.y(), p.z()); }
+
+double RmLength(const Mesh& m, HalfedgeIndex h) {
+  return (Rp(m, m.target(h)) - Rp(m, m.source(h))).norm();
+}
+
+// Area vector of the triangle of `h` with its target moved to `at`.
+V3 RmFaceNormal(const Mesh& m, HalfedgeIndex h) {
+  const V3 a = Rp(m, m.source(h)), b = Rp(m, m.target(h)), c = Rp(m, m.target(m.next(h)));
+  return (b - a).cross(c - a);
+}
+
+struct RmState {
+  Mesh mesh;
+  // boundary: on the border; feature: on a feature edge; corner: kept.
+  Mesh::Property_map<VertexIndex, bool> corner, boundary, feature;
+  Mesh::Property_map<EdgeIndex, bool> feature_edge;
+  const ReferenceSurface* surface = nullptr;
+  std::vector<std::pair<V3, V3>> feature_segments;  // the input's feature edges
+  double high = 0, low = 0;
+  bool Curve(VertexIndex v) const { return boundary[v] || feature[v]; }
+  bool CurveEdge(EdgeIndex e) const { return mesh.is_border(e) || feature_edge[e]; }
+};
+
+// Feature edges: interior edges of the input whose faces' normals differ by
+// more than the angle. Feature vertices with other than two feature edges
+// (ends, junctions) or on the boundary are corners.
+int RmMarkFeatures(RmState& s, double feature_angle_degrees) {
+  Mesh& m = s.mesh;
+  if (feature_angle_degrees <= 0) return 0;
+  const double limit = std::cos(feature_angle_degrees * M_PI / 180);
+  std::vector<int> count(m.number_of_vertices(), 0);
+  for (EdgeIndex e : m.edges()) {
+    if (m.is_border(e)) continue;
+    const HalfedgeIndex h = m.halfedge(e);
+    const V3 n1 = RmFaceNormal(m, h).normalized(), n2 = RmFaceNormal(m, m.opposite(h)).normalized();
+    if (n1.dot(n2) >= limit) continue;
+    s.feature_edge[e] = true;
+    s.feature_segments.emplace_back(Rp(m, m.source(h)), Rp(m, m.target(h)));
+    for (VertexIndex v : {m.source(h), m.target(h)}) {
+      s.feature[v] = true;
+      ++count[v.idx()];
+    }
+  }
+  int corners = 0;
+  for (VertexIndex v : m.vertices()) {
+    if (s.feature[v] && !s.corner[v] && (count[v.idx()] != 2 || s.boundary[v])) {
+      s.corner[v] = true;
+      ++corners;
+    }
+  }
+  return corners;
+}
+
+// The closest point of the input's feature edges to q.
+V3 RmOnFeature(const RmState& s, const V3& q) {
+  V3 best = q;
+  double best_d = INFINITY;
+  for (const auto& [a, b] : s.feature_segments) {
+    const V3 ab = b - a;
+    const double t = std::clamp(ab.dot(q - a) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
+    const V3 p = a + t * ab;
+    const double d = (p - q).squaredNorm();
+    if (d < best_d) {
+      best_d = d;
+      best = p;
+    }
+  }
+  return best;
+}
+
+// Corners: boundary vertices where the boundary turns by more than the angle.
+int RmMarkCorners(RmState& s, double corner_angle_degrees) {
+  Mesh& m = s.mesh;
+  const double limit = std::cos(corner_angle_degrees * M_PI / 180);
+  int corners = 0;
+  for (HalfedgeIndex h : m.halfedges()) {
+    if (!m.is_border(h)) continue;
+    const VertexIndex v = m.target(h);
+    s.boundary[v] = true;
+    const V3 in = (Rp(m, v) - Rp(m, m.source(h))).normalized();
+    const V3 out = (Rp(m, m.target(m.next(h))) - Rp(m, v)).normalized();
+    if (in.dot(out) < limit) {
+      s.corner[v] = true;
+      ++corners;
+    }
+  }
+  return corners;
+}
+
+int RmSplitLong(RmState& s) {
+  Mesh& m = s.mesh;
+  std::vector<EdgeIndex> edges(m.edges().begin(), m.edges().end());
+  int splits = 0;
+  for (size_t i = 0; i < edges.size(); ++i) {
+    HalfedgeIndex h = m.halfedge(edges[i]);
+    if (RmLength(m, h) <= s.high) continue;
+    const bool on_boundary = m.is_border(m.edge(h));
+    const bool on_feature = s.feature_edge[m.edge(h)];
+    const V3 mid = 0.5 * (Rp(m, m.source(h)) + Rp(m, m.target(h)));
+    const HalfedgeIndex hnew = CGAL::Euler::split_edge(h, m);  // target(hnew): the new vertex
+    const VertexIndex v = m.target(hnew);
+    SetRp(m, v, mid);
+    s.corner[v] = false;
+    s.boundary[v] = on_boundary;
+    s.feature[v] = on_feature;
+    s.feature_edge[m.edge(hnew)] = on_feature;
+    if (!m.is_border(h)) CGAL::Euler::split_face(hnew, m.next(h), m);
+    const HalfedgeIndex o = m.opposite(h);
+    if (!m.is_border(o)) CGAL::Euler::split_face(o, m.next(m.opposite(hnew)), m);
+    ++splits;
+    // The two halves may still be long.
+    edges.push_back(m.edge(hnew));
+    edges.push_back(m.edge(h));
+  }
+  return splits;
+}
+
+// Whether moving the vertices of h's edge to `at` keeps every remaining
+// triangle around them turned by less than 90° and no edge longer than high.
+bool RmCollapseKeepsShape(const RmState& s, HalfedgeIndex h, const V3& at) {
+  const Mesh& m = s.mesh;
+  const VertexIndex a = m.source(h), b = m.target(h);
+  for (VertexIndex v : {a, b}) {
+    for (HalfedgeIndex g : CGAL::halfedges_around_target(m.halfedge(v), m)) {
+      const VertexIndex w = m.source(g);
+      if (w != a && w != b && (Rp(m, w) - at).norm() > s.high) return false;
+      if (m.is_border(g)) continue;
+      // The face of g: skip the two faces that vanish with the edge.
+      const FaceIndex f = m.face(g);
+      if (f == m.face(h) || f == m.face(m.opposite(h))) continue;
+      const V3 before = RmFaceNormal(m, g);
+      const V3 p = Rp(m, m.source(g)), q = at, r = Rp(m, m.target(m.next(g)));
+      const V3 p2 = (m.source(g) == a || m.source(g) == b) ? at : p;
+      const V3 r2 = (m.target(m.next(g)) == a || m.target(m.next(g)) == b) ? at : r;
+      const V3 after = (q - p2).cross(r2 - p2);
+      if (before.dot(after) <= 0 || after.norm() < 1e-12 * before.norm()) return false;
+    }
+  }
+  return true;
+}
+
+int RmCollapseShort(RmState& s) {
+  Mesh& m = s.mesh;
+  std::vector<EdgeIndex> edges(m.edges().begin(), m.edges().end());
+  int collapses = 0;
+  for (EdgeIndex e : edges) {
+    if (m.is_removed(e)) continue;
+    HalfedgeIndex h = m.halfedge(e);
+    if (RmLength(m, h) >= s.low) continue;
+    VertexIndex a = m.source(h), b = m.target(h);  // b is kept
+    const bool curve_edge = s.CurveEdge(e);
+    if (s.corner[a] && s.corner[b]) continue;
+    if (s.Curve(a) && s.Curve(b) && !curve_edge) continue;  // would pinch the surface or a feature
+    if (s.boundary[a] != s.boundary[b] && curve_edge) continue;  // a feature edge onto the boundary
+    if (s.corner[a] || (s.Curve(a) && !s.Curve(b))) {
+      h = m.opposite(h);
+      std::swap(a, b);
+    }
+    // Where the kept vertex goes: a corner or a boundary or feature vertex
+    // (of an edge off its curve) stays; else the midpoint (projected by the
+    // relaxation).
+    const V3 at = (s.corner[b] || (s.Curve(b) && !curve_edge)) ? Rp(m, b) : 0.5 * (Rp(m, a) + Rp(m, b));
+    if (!CGAL::Euler::does_satisfy_link_condition(e, m)) continue;
+    // No triangle flattened into its neighbour: the far vertices of the two
+    // vanishing faces keep at least 4 edges.
+    bool thin = false;
+    for (HalfedgeIndex g : {h, m.opposite(h)}) {
+      if (!m.is_border(g) && m.degree(m.target(m.next(g))) <= 3) thin = true;
+    }
+    if (thin || !RmCollapseKeepsShape(s, h, at)) continue;
+    const bool corner = s.corner[b], boundary = s.boundary[b], feature = s.feature[b];
+    const VertexIndex kept = CGAL::Euler::collapse_edge(e, m);
+    SetRp(m, kept, at);
+    s.corner[kept] = corner;
+    s.boundary[kept] = boundary;
+    s.feature[kept] = feature;
+    ++collapses;
+  }
+  return collapses;
+}
+
+int RmTargetValence(const RmState& s, VertexIndex v) { return s.boundary[v] ? 4 : 6; }
+
+int RmFlipForValence(RmState& s) {
+  Mesh& m = s.mesh;
+  std::vector<EdgeIndex> edges(m.edges().begin(), m.edges().end());
+  int flips = 0;
+  for (EdgeIndex e : edges) {
+    if (m.is_removed(e) || s.CurveEdge(e)) continue;
+    const HalfedgeIndex h = m.halfedge(e), o = m.opposite(h);
+    const VertexIndex a = m.source(h), b = m.target(h);
+    const VertexIndex c = m.target(m.next(h)), d = m.target(m.next(o));
+    if (c == d || m.halfedge(c, d) != Mesh::null_halfedge()) continue;
+    if (m.degree(a) <= 3 || m.degree(b) <= 3) continue;
+    auto dev = [&](VertexIndex v, int change) {
+      return std::abs(int(m.degree(v)) + change - RmTargetValence(s, v));
+    };
+    const int before = dev(a, 0) + dev(b, 0) + dev(c, 0) + dev(d, 0);
+    const int after = dev(a, -1) + dev(b, -1) + dev(c, 1) + dev(d, 1);
+    if (after >= before) continue;
+    // The two new triangles (c, d, b) and (d, c, a) must face the old ones' way.
+    const V3 pa = Rp(m, a), pb = Rp(m, b), pc = Rp(m, c), pd = Rp(m, d);
+    const V3 n = RmFaceNormal(m, h) + RmFaceNormal(m, o);
+    const V3 n1 = (pd - pc).cross(pb - pc), n2 = (pc - pd).cross(pa - pd);
+    if (n1.dot(n) <= 0 || n2.dot(n) <= 0 || n1.dot(n2) <= 0) continue;
+    CGAL::Euler::flip_edge(h, m);
+    ++flips;
+  }
+  return flips;
+}
+
+V3 RmVertexNormal(const Mesh& m, VertexIndex v) {
+  V3 n = V3::Zero();
+  for (HalfedgeIndex g : CGAL::halfedges_around_target(m.halfedge(v), m)) {
+    if (!m.is_border(g)) n += RmFaceNormal(m, g);
+  }
+  return n.normalized();
+}
+
+void RmRelax(RmState& s) {
+  Mesh& m = s.mesh;
+  std::vector<std::pair<VertexIndex, V3>> moves;
+  for (VertexIndex v : m.vertices()) {
+    if (s.corner[v]) continue;
+    const V3 p = Rp(m, v);
+    V3 target;
+    if (s.boundary[v]) {
+      // The midpoint of its two boundary neighbours, on the input's boundary.
+      V3 sum = V3::Zero();
+      int count = 0;
+      for (HalfedgeIndex g : CGAL::halfedges_around_target(m.halfedge(v), m)) {
+        if (m.is_border(m.edge(g))) {
+          sum += Rp(m, m.source(g));
+          ++count;
+        }
+      }
+      if (count != 2) continue;
+      const V3 q = 0.5 * sum;
+      const auto on = s.surface->ClosestOnBoundary({q.x(), q.y(), q.z()});
+      if (!on) continue;
+      target = {on->point[0], on->point[1], on->point[2]};
+    } else if (s.feature[v]) {
+      // The midpoint of its two feature neighbours, on the input's features.
+      V3 sum = V3::Zero();
+      int count = 0;
+      for (HalfedgeIndex g : CGAL::halfedges_around_target(m.halfedge(v), m)) {
+        if (s.feature_edge[m.edge(g)]) {
+          sum += Rp(m, m.source(g));
+          ++count;
+        }
+      }
+      if (count != 2) continue;
+      target = RmOnFeature(s, 0.5 * sum);
+    } else {
+      V3 centroid = V3::Zero();
+      double area = 0;
+      for (HalfedgeIndex g : CGAL::halfedges_around_target(m.halfedge(v), m)) {
+        if (m.is_border(g)) continue;
+        const V3 a = Rp(m, m.source(g)), b = Rp(m, m.target(g)), c = Rp(m, m.target(m.next(g)));
+        const double w = (b - a).cross(c - a).norm();
+        centroid += w * (a + b + c) / 3;
+        area += w;
+      }
+      if (area <= 0) continue;
+      centroid /= area;
+      const V3 n = RmVertexNormal(m, v);
+      const V3 q = p + (centroid - p) - n * n.dot(centroid - p);
+      const ReferenceSurface::SurfacePoint on = s.surface->Closest({q.x(), q.y(), q.z()});
+      target = {on.point[0], on.point[1], on.point[2]};
+    }
+    moves.emplace_back(v, target);
+  }
+  for (const auto& [v, p] : moves) SetRp(m, v, p);
+}
+
+}  // namespace
+
+RemeshResult IsotropicRemesh(const Mesh& input, const RemeshOptions& options) {
+  if (!(options.target_edge_length > 0) || !std::isfinite(options.target_edge_length)) {
+    throw std::invalid_argument("remeshing needs a positive, finite target edge length");
+  }
+  if (options.iterations < 1) throw std::invalid_argument("remeshing needs at least one iteration");
+  const ReferenceSurface surface(input);
+  RmState s;
+  s.mesh = surface.Triangles();
+  s.mesh.collect_garbage();
+  s.surface = &surface;
+  s.corner = s.mesh.add_property_map<VertexIndex, bool>("v:rm_corner", false).first;
+  s.boundary = s.mesh.add_property_map<VertexIndex, bool>("v:rm_boundary", false).first;
+  s.feature = s.mesh.add_property_map<VertexIndex, bool>("v:rm_feature", false).first;
+  s.feature_edge = s.mesh.add_property_map<EdgeIndex, bool>("e:rm_feature", false).first;
+  s.high = 4.0 / 3.0 * options.target_edge_length;
+  s.low = 4.0 / 5.0 * options.target_edge_length;
+  RemeshResult result;
+  result.corners = RmMarkCorners(s, options.corner_angle_degrees);
+  result.corners += RmMarkFeatures(s, options.feature_angle_degrees);
+  result.feature_edges = int(s.feature_segments.size());
+  for (int it = 0; it < options.iterations; ++it) {
+    result.splits += RmSplitLong(s);
+    result.collapses += RmCollapseShort(s);
+    s.mesh.collect_garbage();
+    result.flips += RmFlipForValence(s);
+    RmRelax(s);
+  }
+  s.mesh.remove_property_map(s.corner);
+  s.mesh.remove_property_map(s.boundary);
+  s.mesh.remove_property_map(s.feature);
+  s.mesh.remove_property_map(s.feature_edge);
+  s.mesh.collect_garbage();
+  result.mesh = std::move(s.mesh);
+  return result;
+}
+
+TriangleQuality MeasureTriangles(const Mesh& m) {
+  TriangleQuality q;
+  q.min_angle_degrees = 180;
+  long good = 0, faces = 0;
+  for (FaceIndex f : m.faces()) {
+    const HalfedgeIndex h = m.halfedge(f);
+    const V3 p[3] = {Rp(m, m.source(h)), Rp(m, m.target(h)), Rp(m, m.target(m.next(h)))};
+    double smallest = 180;
+    for (int k = 0; k < 3; ++k) {
+      const V3 u = p[(k + 1) % 3] - p[k], w = p[(k + 2) % 3] - p[k];
+      smallest = std::min(smallest, std::atan2(u.cross(w).norm(), u.dot(w)) * 180 / M_PI);
+    }
+    q.min_angle_degrees = std::min(q.min_angle_degrees, smallest);
+    good += smallest >= 30;
+    ++faces;
+  }
+  q.min_angle_30_fraction = faces ? double(good) / double(faces) : 0;
+  double sum = 0, sum2 = 0;
+  long n = 0;
+  for (EdgeIndex e : m.edges()) {
+    const double l = RmLength(m, m.halfedge(e));
+    sum += l;
+    sum2 += l * l;
+    ++n;
+  }
+  if (n) {
+    q.edge_mean = sum / double(n);
+    q.edge_cv = std::sqrt(std::max(0.0, sum2 / double(n) - q.edge_mean * q.edge_mean)) / q.edge_mean;
+  }
+  return q;
+}
+
+}  // namespace archgeo

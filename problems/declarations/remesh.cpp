@@ -1,0 +1,105 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// archgeo — problem `remesh`: incremental isotropic remeshing of a design
+// surface to a target edge length [Gebreiter 2012, §3.1.2; Botsch & Kobbelt
+// 2004, §4] (geometry/isotropic_remesh.h). No solve: the remeshed triangle
+// mesh is the result, measured against the input as the design surface.
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "core/problem.h"
+#include "geometry/isotropic_remesh.h"
+#include "problems/runtime/model.h"
+
+namespace archgeo::problems {
+namespace {
+
+double RemeshMeanEdge(const Mesh& mesh) {
+  double sum = 0;
+  long count = 0;
+  for (EdgeIndex e : mesh.edges()) {
+    const HalfedgeIndex h = mesh.halfedge(e);
+    sum += std::sqrt(CGAL::squared_distance(mesh.point(mesh.source(h)), mesh.point(mesh.target(h))));
+    ++count;
+  }
+  return count ? sum / double(count) : 0;
+}
+
+void RemeshNet(HookContext& c) {
+  const Settings& s = *c.settings;
+  const double input_mean = RemeshMeanEdge(*c.input);
+  RemeshOptions options;
+  options.target_edge_length = s.Number("remesh.edge_length") * input_mean;
+  options.iterations = int(s.Integer("remesh.iterations"));
+  options.corner_angle_degrees = s.Number("remesh.corner_angle");
+  options.feature_angle_degrees = s.Number("remesh.feature_angle");
+  if (!(options.target_edge_length > 0)) {
+    throw s.Error("remesh.edge_length", "the input's mean edge length is 0: nothing to remesh");
+  }
+  RemeshResult r = IsotropicRemesh(*c.input, options);
+  const TriangleQuality q = MeasureTriangles(r.mesh);
+  char line[512];
+  std::snprintf(line, sizeof line,
+                "isotropic remeshing to edge length %.4g (%.3g × the input's mean edge %.4g), %d iterations: "
+                "%zu vertices, %zu triangles; %.2f%% of triangles with every angle ≥ 30° (smallest %.1f°), "
+                "edge length mean %.4g, coefficient of variation %.3f; %d input feature edges, %d corners kept\n",
+                options.target_edge_length, s.Number("remesh.edge_length"), input_mean, options.iterations,
+                size_t(r.mesh.number_of_vertices()), size_t(r.mesh.number_of_faces()),
+                100 * q.min_angle_30_fraction, q.min_angle_degrees, q.edge_mean, q.edge_cv, r.feature_edges, r.corners);
+  c.details["remesh"] = {{"target_edge_length", options.target_edge_length},
+                         {"input_mean_edge_length", input_mean},
+                         {"iterations", options.iterations},
+                         {"corners", r.corners},
+                         {"feature_edges", r.feature_edges},
+                         {"splits", r.splits},
+                         {"collapses", r.collapses},
+                         {"flips", r.flips},
+                         {"min_angle_30_fraction", q.min_angle_30_fraction},
+                         {"min_angle_degrees", q.min_angle_degrees},
+                         {"edge_length_mean", q.edge_mean},
+                         {"edge_length_cv", q.edge_cv},
+                         {"output", {{"vertices", r.mesh.number_of_vertices()},
+                                     {"faces", r.mesh.number_of_faces()}}}};
+  c.net.mesh = std::move(r.mesh);
+  c.net.headline = line;
+  c.net.derived = true;
+  c.net.source.clear();
+}
+
+std::vector<Stage> RemeshStages(const Settings&) {
+  Stage made;
+  made.name = "remesh";
+  made.rounds_key = "schedule.outer_iterations";
+  made.step = [](HookContext&) {
+    StepResult r;
+    r.stop = "the remeshed surface is the result (no solve)";
+    return r;
+  };
+  return {made};
+}
+
+}  // namespace
+
+ProblemDecl remesh() {
+  ProblemDecl d;
+  d.name = "remesh";
+  d.summary = "isotropic remeshing of a design surface to a target edge length (split, collapse, flip, relax)";
+  d.paper = "[Gebreiter 2012, §3.1.2]";
+  d.input = InputKind::kAny;
+  d.keys = {NumberKey("remesh.edge_length", 1, 1e-3, 1e3,
+                      "target edge length, relative to the input's mean edge length"),
+            IntegerKey("remesh.iterations", 10, 1, 100, "split / collapse / flip / relax iterations"),
+            NumberKey("remesh.feature_angle", 30, 0, 180,
+                      "an input edge whose faces' normals differ by more than this (degrees) is a feature, "
+                      "kept like the boundary (0: no features)"),
+            NumberKey("remesh.corner_angle", 30, 0, 180,
+                      "a boundary vertex where the boundary turns by more than this (degrees) is a corner: "
+                      "kept in place")};
+  d.net = &RemeshNet;
+  d.stages = &RemeshStages;
+  d.colors = "none";
+  return d;
+}
+
+}  // namespace archgeo::problems

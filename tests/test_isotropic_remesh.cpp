@@ -1,0 +1,186 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Isotropic remeshing [Gebreiter 2012, §3.1.2; Botsch & Kobbelt 2004]
+// (geometry/isotropic_remesh.h): on a plate, a folded plate and a sphere,
+// the remeshed surface stays on the input (planes exactly, boundary on its
+// lines, corners and the fold's ridge kept), edges reach the target length
+// and triangles are well shaped; without the feature rule the ridge is cut.
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "geometry/isotropic_remesh.h"
+#include "geometry/reference.h"
+#include "tests/make_mesh.h"
+
+namespace archgeo {
+namespace ARCHGEO_UNITY_ID {
+
+// An n × n grid over [0, 2] × [0, 1] with jittered interior vertices and
+// alternating diagonals, folded along x = 1 by `fold` (radians: the right
+// half rises at that angle), so the input is uneven and the ridge is an edge
+// line of the input.
+Mesh FoldedPlate(int n, double fold, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> jitter(-0.25, 0.25);
+  std::vector<Vec3> points;
+  const double h = 1.0 / n;
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= 2 * n; ++i) {
+      double x = i * h, y = j * h;
+      if (i > 0 && i < 2 * n && i != n) x += jitter(rng) * h;
+      if (j > 0 && j < n) y += jitter(rng) * h;
+      const double z = x > 1 ? (x - 1) * std::sin(fold) : 0;
+      const double xx = x > 1 ? 1 + (x - 1) * std::cos(fold) : x;
+      points.push_back({xx, y, z});
+    }
+  }
+  std::vector<std::vector<int>> faces;
+  const int row = 2 * n + 1;
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < 2 * n; ++i) {
+      const int a = j * row + i, b = a + 1, c = a + row + 1, d = a + row;
+      if ((i + j) % 2) {
+        faces.push_back({a, b, c});
+        faces.push_back({a, c, d});
+      } else {
+        faces.push_back({a, b, d});
+        faces.push_back({b, c, d});
+      }
+    }
+  }
+  return MakeMesh(points, faces);
+}
+
+// Distance of p from the folded plate's two half-planes.
+double OffFold(const Eigen::Vector3d& p, double fold) {
+  const Eigen::Vector3d n(-std::sin(fold), 0, std::cos(fold));  // normal of the risen half
+  const double left = std::abs(p.z()), right = std::abs((p - Eigen::Vector3d(1, 0, 0)).dot(n));
+  return std::min(left, right);
+}
+
+TEST(IsotropicRemesh, FlatPlateStaysOnItsPlaneAndBoundaryWithCornersAndGoodTriangles) {
+  const Mesh input = FoldedPlate(12, 0, 1);
+  RemeshOptions o;
+  o.target_edge_length = 0.06;
+  const RemeshResult r = IsotropicRemesh(input, o);
+  EXPECT_EQ(r.corners, 4);
+  double area = 0;
+  for (FaceIndex f : r.mesh.faces()) {
+    const HalfedgeIndex h = r.mesh.halfedge(f);
+    const Eigen::Vector3d a = Pos(r.mesh, r.mesh.source(h)), b = Pos(r.mesh, r.mesh.target(h)),
+                          c = Pos(r.mesh, r.mesh.target(r.mesh.next(h)));
+    area += 0.5 * (b - a).cross(c - a).z();  // signed: no triangle flipped
+  }
+  EXPECT_NEAR(area, 2.0, 1e-9);
+  int on_corner = 0;
+  for (VertexIndex v : r.mesh.vertices()) {
+    const Eigen::Vector3d p = Pos(r.mesh, v);
+    EXPECT_NEAR(p.z(), 0, 1e-12);
+    if (r.mesh.is_border(v)) {
+      const double off = std::min({std::abs(p.x()), std::abs(p.x() - 2), std::abs(p.y()), std::abs(p.y() - 1)});
+      EXPECT_LE(off, 1e-9) << p.transpose();
+      on_corner += (std::abs(p.x()) < 1e-12 || std::abs(p.x() - 2) < 1e-12) &&
+                   (std::abs(p.y()) < 1e-12 || std::abs(p.y() - 1) < 1e-12);
+    }
+  }
+  EXPECT_EQ(on_corner, 4);
+  const TriangleQuality q = MeasureTriangles(r.mesh);
+  EXPECT_GE(q.min_angle_30_fraction, 0.99);
+  EXPECT_LE(q.edge_cv, 0.12);
+  EXPECT_NEAR(q.edge_mean, 0.06, 0.006);
+  // The input's edges (1/12 ≈ 0.083, jittered) are far from the target.
+  EXPECT_GT(MeasureTriangles(input).edge_cv, 0.2);
+}
+
+TEST(IsotropicRemesh, FoldedPlateKeepsItsRidgeAsAFeatureAndCutsItWithout) {
+  const double fold = 60 * M_PI / 180;
+  const Mesh input = FoldedPlate(12, fold, 2);
+  RemeshOptions o;
+  o.target_edge_length = 0.07;
+  o.feature_angle_degrees = 30;
+  const RemeshResult kept = IsotropicRemesh(input, o);
+  EXPECT_EQ(kept.feature_edges, 12);
+  double worst = 0;
+  for (VertexIndex v : kept.mesh.vertices()) worst = std::max(worst, OffFold(Pos(kept.mesh, v), fold));
+  EXPECT_LE(worst, 1e-9);
+  // Every face lies in one half: its centroid is on a plane too.
+  double worst_face = 0;
+  for (FaceIndex f : kept.mesh.faces()) {
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (VertexIndex v : CGAL::vertices_around_face(kept.mesh.halfedge(f), kept.mesh)) c += Pos(kept.mesh, v) / 3;
+    worst_face = std::max(worst_face, OffFold(c, fold));
+  }
+  EXPECT_LE(worst_face, 1e-9);
+  EXPECT_GE(MeasureTriangles(kept.mesh).min_angle_30_fraction, 0.98);
+  o.feature_angle_degrees = 0;
+  const RemeshResult cut = IsotropicRemesh(input, o);
+  EXPECT_EQ(cut.feature_edges, 0);
+  double cut_face = 0;
+  for (FaceIndex f : cut.mesh.faces()) {
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (VertexIndex v : CGAL::vertices_around_face(cut.mesh.halfedge(f), cut.mesh)) c += Pos(cut.mesh, v) / 3;
+    cut_face = std::max(cut_face, OffFold(c, fold));
+  }
+  EXPECT_GT(cut_face, 1e-3);  // triangles across the ridge cut the corner
+}
+
+TEST(IsotropicRemesh, SphereStaysClosedOnTheInputWithEvenEdges) {
+  // An icosphere-like input: the unit octahedron subdivided and projected.
+  std::vector<Vec3> points = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  std::vector<std::vector<int>> faces = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                                         {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  for (int level = 0; level < 4; ++level) {
+    std::map<std::pair<int, int>, int> mid;
+    auto middle = [&](int a, int b) {
+      const auto key = std::minmax(a, b);
+      auto it = mid.find(key);
+      if (it != mid.end()) return it->second;
+      Eigen::Vector3d m = (Eigen::Vector3d(points[a][0], points[a][1], points[a][2]) +
+                           Eigen::Vector3d(points[b][0], points[b][1], points[b][2])).normalized();
+      points.push_back({m.x(), m.y(), m.z()});
+      return mid[key] = int(points.size()) - 1;
+    };
+    std::vector<std::vector<int>> next;
+    for (const auto& f : faces) {
+      const int ab = middle(f[0], f[1]), bc = middle(f[1], f[2]), ca = middle(f[2], f[0]);
+      next.push_back({f[0], ab, ca});
+      next.push_back({ab, f[1], bc});
+      next.push_back({ca, bc, f[2]});
+      next.push_back({ab, bc, ca});
+    }
+    faces = std::move(next);
+  }
+  const Mesh input = MakeMesh(points, faces);
+  RemeshOptions o;
+  o.target_edge_length = 0.2;
+  const RemeshResult r = IsotropicRemesh(input, o);
+  const long v = long(r.mesh.number_of_vertices()), e = long(r.mesh.number_of_edges()),
+             f = long(r.mesh.number_of_faces());
+  EXPECT_EQ(v - e + f, 2);
+  const ReferenceSurface surface(input);
+  double off = 0;
+  for (VertexIndex x : r.mesh.vertices()) {
+    const Eigen::Vector3d p = Pos(r.mesh, x);
+    const auto c = surface.Closest({p.x(), p.y(), p.z()});
+    off = std::max(off, (p - Eigen::Vector3d(c.point[0], c.point[1], c.point[2])).norm());
+  }
+  EXPECT_LE(off, 1e-9);
+  const TriangleQuality q = MeasureTriangles(r.mesh);
+  EXPECT_GE(q.min_angle_30_fraction, 0.99);
+  EXPECT_LE(q.edge_cv, 0.10);
+  EXPECT_NEAR(q.edge_mean, 0.2, 0.02);
+}
+
+TEST(IsotropicRemesh, RefusesANonPositiveTarget) {
+  RemeshOptions o;
+  o.target_edge_length = 0;
+  EXPECT_THROW(IsotropicRemesh(FoldedPlate(2, 0, 3), o), std::invalid_argument);
+}
+
+}  // namespace ARCHGEO_UNITY_ID
+}  // namespace archgeo
