@@ -43,9 +43,13 @@ struct RmState {
   // boundary: on the border; feature: on a feature edge; corner: kept.
   Mesh::Property_map<VertexIndex, bool> corner, boundary, feature;
   Mesh::Property_map<EdgeIndex, bool> feature_edge;
+  Mesh::Property_map<VertexIndex, double> size;  // target edge length at the vertex
   const ReferenceSurface* surface = nullptr;
   std::vector<std::pair<V3, V3>> feature_segments;  // the input's feature edges
-  double high = 0, low = 0;
+  std::vector<double> input_size;  // per vertex of surface->Triangles(): its target length
+  // An edge between a and b is long beyond 4/3 and short below 4/5 of the
+  // mean of their targets.
+  double Target(VertexIndex a, VertexIndex b) const { return 0.5 * (size[a] + size[b]); }
   bool Curve(VertexIndex v) const { return boundary[v] || feature[v]; }
   bool CurveEdge(EdgeIndex e) const { return mesh.is_border(e) || feature_edge[e]; }
 };
@@ -122,13 +126,15 @@ int RmSplitLong(RmState& s) {
   int splits = 0;
   for (size_t i = 0; i < edges.size(); ++i) {
     HalfedgeIndex h = m.halfedge(edges[i]);
-    if (RmLength(m, h) <= s.high) continue;
+    if (RmLength(m, h) <= 4.0 / 3.0 * s.Target(m.source(h), m.target(h))) continue;
     const bool on_boundary = m.is_border(m.edge(h));
     const bool on_feature = s.feature_edge[m.edge(h)];
     const V3 mid = 0.5 * (Rp(m, m.source(h)) + Rp(m, m.target(h)));
     const HalfedgeIndex hnew = CGAL::Euler::split_edge(h, m);  // target(hnew): the new vertex
     const VertexIndex v = m.target(hnew);
+    const double size = s.Target(m.source(hnew), m.target(h));
     SetRp(m, v, mid);
+    s.size[v] = size;
     s.corner[v] = false;
     s.boundary[v] = on_boundary;
     s.feature[v] = on_feature;
@@ -145,14 +151,15 @@ int RmSplitLong(RmState& s) {
 }
 
 // Whether moving the vertices of h's edge to `at` keeps every remaining
-// triangle around them turned by less than 90° and no edge longer than high.
+// triangle around them turned by less than 90° and no edge long (4/3 of its
+// target, the kept vertex's target for the moved end).
 bool RmCollapseKeepsShape(const RmState& s, HalfedgeIndex h, const V3& at) {
   const Mesh& m = s.mesh;
   const VertexIndex a = m.source(h), b = m.target(h);
   for (VertexIndex v : {a, b}) {
     for (HalfedgeIndex g : CGAL::halfedges_around_target(m.halfedge(v), m)) {
       const VertexIndex w = m.source(g);
-      if (w != a && w != b && (Rp(m, w) - at).norm() > s.high) return false;
+      if (w != a && w != b && (Rp(m, w) - at).norm() > 4.0 / 3.0 * 0.5 * (s.size[b] + s.size[w])) return false;
       if (m.is_border(g)) continue;
       // The face of g: skip the two faces that vanish with the edge.
       const FaceIndex f = m.face(g);
@@ -175,7 +182,7 @@ int RmCollapseShort(RmState& s) {
   for (EdgeIndex e : edges) {
     if (m.is_removed(e)) continue;
     HalfedgeIndex h = m.halfedge(e);
-    if (RmLength(m, h) >= s.low) continue;
+    if (RmLength(m, h) >= 4.0 / 5.0 * s.Target(m.source(h), m.target(h))) continue;
     VertexIndex a = m.source(h), b = m.target(h);  // b is kept
     const bool curve_edge = s.CurveEdge(e);
     if (s.corner[a] && s.corner[b]) continue;
@@ -198,11 +205,13 @@ int RmCollapseShort(RmState& s) {
     }
     if (thin || !RmCollapseKeepsShape(s, h, at)) continue;
     const bool corner = s.corner[b], boundary = s.boundary[b], feature = s.feature[b];
+    const double size = std::min(s.size[a], s.size[b]);
     const VertexIndex kept = CGAL::Euler::collapse_edge(e, m);
     SetRp(m, kept, at);
     s.corner[kept] = corner;
     s.boundary[kept] = boundary;
     s.feature[kept] = feature;
+    s.size[kept] = size;
     ++collapses;
   }
   return collapses;
@@ -302,6 +311,45 @@ void RmRelax(RmState& s) {
   for (const auto& [v, p] : moves) SetRp(m, v, p);
 }
 
+// Curvature-adaptive targets (Dunyach et al. 2013, "Adaptive remeshing for
+// real-time mesh deformation", §3): an edge of length ℓ on a circle of
+// curvature κ deviates from it by ε when ℓ = √(6ε/κ − 3ε²); κ at an input
+// vertex is the largest normal curvature its edges estimate,
+// 2|n·(q − p)|/|q − p|². Targets stay within [L/16, L]. Without a tolerance
+// every target is L.
+void RmInputSizes(RmState& s, const RemeshOptions& o) {
+  const Mesh& tri = s.surface->Triangles();
+  const double L = o.target_edge_length, eps = o.tolerance;
+  s.input_size.assign(tri.number_of_vertices() + tri.number_of_removed_vertices(), L);
+  if (!(eps > 0)) return;
+  for (VertexIndex v : tri.vertices()) {
+    if (tri.is_isolated(v)) continue;
+    const V3 n = RmVertexNormal(tri, v), p = Rp(tri, v);
+    double kappa = 0;
+    for (HalfedgeIndex g : CGAL::halfedges_around_target(tri.halfedge(v), tri)) {
+      const V3 d = Rp(tri, tri.source(g)) - p;
+      kappa = std::max(kappa, 2 * std::abs(n.dot(d)) / std::max(d.squaredNorm(), 1e-300));
+    }
+    const double l = kappa > 0 ? std::sqrt(std::max(0.0, 6 * eps / kappa - 3 * eps * eps)) : L;
+    s.input_size[v.idx()] = std::clamp(l, L / 16, L);
+  }
+}
+
+// Each vertex's target: the smallest of the input triangle nearest to it.
+void RmUpdateSizes(RmState& s) {
+  if (s.input_size.empty()) return;
+  const Mesh& tri = s.surface->Triangles();
+  for (VertexIndex v : s.mesh.vertices()) {
+    const V3 p = Rp(s.mesh, v);
+    const int face = s.surface->Closest({p.x(), p.y(), p.z()}).face;
+    double size = INFINITY;
+    for (VertexIndex w : CGAL::vertices_around_face(tri.halfedge(FaceIndex(face)), tri)) {
+      size = std::min(size, s.input_size[w.idx()]);
+    }
+    s.size[v] = size;
+  }
+}
+
 }  // namespace
 
 RemeshResult IsotropicRemesh(const Mesh& input, const RemeshOptions& options) {
@@ -309,6 +357,7 @@ RemeshResult IsotropicRemesh(const Mesh& input, const RemeshOptions& options) {
     throw std::invalid_argument("remeshing needs a positive, finite target edge length");
   }
   if (options.iterations < 1) throw std::invalid_argument("remeshing needs at least one iteration");
+  if (!(options.tolerance >= 0)) throw std::invalid_argument("remeshing needs a tolerance ≥ 0");
   const ReferenceSurface surface(input);
   RmState s;
   s.mesh = surface.Triangles();
@@ -318,8 +367,9 @@ RemeshResult IsotropicRemesh(const Mesh& input, const RemeshOptions& options) {
   s.boundary = s.mesh.add_property_map<VertexIndex, bool>("v:rm_boundary", false).first;
   s.feature = s.mesh.add_property_map<VertexIndex, bool>("v:rm_feature", false).first;
   s.feature_edge = s.mesh.add_property_map<EdgeIndex, bool>("e:rm_feature", false).first;
-  s.high = 4.0 / 3.0 * options.target_edge_length;
-  s.low = 4.0 / 5.0 * options.target_edge_length;
+  s.size = s.mesh.add_property_map<VertexIndex, double>("v:rm_size", options.target_edge_length).first;
+  RmInputSizes(s, options);
+  RmUpdateSizes(s);
   RemeshResult result;
   result.corners = RmMarkCorners(s, options.corner_angle_degrees);
   result.corners += RmMarkFeatures(s, options.feature_angle_degrees);
@@ -330,11 +380,13 @@ RemeshResult IsotropicRemesh(const Mesh& input, const RemeshOptions& options) {
     s.mesh.collect_garbage();
     result.flips += RmFlipForValence(s);
     RmRelax(s);
+    RmUpdateSizes(s);
   }
   s.mesh.remove_property_map(s.corner);
   s.mesh.remove_property_map(s.boundary);
   s.mesh.remove_property_map(s.feature);
   s.mesh.remove_property_map(s.feature_edge);
+  s.mesh.remove_property_map(s.size);
   s.mesh.collect_garbage();
   result.mesh = std::move(s.mesh);
   return result;

@@ -32,6 +32,10 @@ struct RemeshOptions {
   int iterations = 10;
   double corner_angle_degrees = 30;  // boundary turning angle that makes a corner
   double feature_angle_degrees = 0;  // dihedral angle that makes an input edge a feature (0: none)
+  // Curvature-adaptive targets: the largest chord deviation ε allowed, file
+  // units; targets shrink to √(6ε/κ − 3ε²) (at least L/16) where the input
+  // curves by κ. 0: every target is L.
+  double tolerance = 0;
 };
 
 struct RemeshResult {

@@ -129,12 +129,12 @@ TEST(IsotropicRemesh, FoldedPlateKeepsItsRidgeAsAFeatureAndCutsItWithout) {
   EXPECT_GT(cut_face, 1e-3);  // triangles across the ridge cut the corner
 }
 
-TEST(IsotropicRemesh, SphereStaysClosedOnTheInputWithEvenEdges) {
-  // An icosphere-like input: the unit octahedron subdivided and projected.
+// The unit octahedron subdivided `levels` times, its vertices on the unit sphere.
+Mesh OctaSphere(int levels) {
   std::vector<Vec3> points = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
   std::vector<std::vector<int>> faces = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
                                          {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
-  for (int level = 0; level < 4; ++level) {
+  for (int level = 0; level < levels; ++level) {
     std::map<std::pair<int, int>, int> mid;
     auto middle = [&](int a, int b) {
       const auto key = std::minmax(a, b);
@@ -155,7 +155,11 @@ TEST(IsotropicRemesh, SphereStaysClosedOnTheInputWithEvenEdges) {
     }
     faces = std::move(next);
   }
-  const Mesh input = MakeMesh(points, faces);
+  return MakeMesh(points, faces);
+}
+
+TEST(IsotropicRemesh, SphereStaysClosedOnTheInputWithEvenEdges) {
+  const Mesh input = OctaSphere(4);
   RemeshOptions o;
   o.target_edge_length = 0.2;
   const RemeshResult r = IsotropicRemesh(input, o);
@@ -174,6 +178,35 @@ TEST(IsotropicRemesh, SphereStaysClosedOnTheInputWithEvenEdges) {
   EXPECT_GE(q.min_angle_30_fraction, 0.99);
   EXPECT_LE(q.edge_cv, 0.10);
   EXPECT_NEAR(q.edge_mean, 0.2, 0.02);
+}
+
+// Curvature-adaptive targets: on the unit sphere (κ = 1 everywhere) a chord
+// tolerance ε asks for edges of √(6ε − 3ε²) whatever the uniform target L,
+// and the triangles' centroids then lie within about 1.5 ε of the sphere
+// (a centroid sinks ℓ²κ/6, an edge's midpoint ℓ²κ/8 = 0.75 ε).
+TEST(IsotropicRemesh, ToleranceShrinksEdgesToTheChordDeviation) {
+  const Mesh input = OctaSphere(5);
+  auto deepest = [](const Mesh& m) {
+    double depth = 0;
+    for (FaceIndex f : m.faces()) {
+      Eigen::Vector3d c = Eigen::Vector3d::Zero();
+      for (VertexIndex v : CGAL::vertices_around_face(m.halfedge(f), m)) c += Pos(m, v) / 3;
+      depth = std::max(depth, 1 - c.norm());
+    }
+    return depth;
+  };
+  RemeshOptions o;
+  o.target_edge_length = 0.5;
+  const RemeshResult uniform = IsotropicRemesh(input, o);
+  o.tolerance = 0.002;
+  const RemeshResult adaptive = IsotropicRemesh(input, o);
+  const double expected = std::sqrt(6 * o.tolerance - 3 * o.tolerance * o.tolerance);
+  const TriangleQuality q = MeasureTriangles(adaptive.mesh);
+  EXPECT_NEAR(q.edge_mean, expected, 0.15 * expected);
+  EXPECT_GE(q.min_angle_30_fraction, 0.99);
+  EXPECT_LE(deepest(adaptive.mesh), 2 * o.tolerance);
+  EXPECT_GT(deepest(uniform.mesh), 5 * o.tolerance);
+  EXPECT_NEAR(MeasureTriangles(uniform.mesh).edge_mean, 0.5, 0.075);
 }
 
 TEST(IsotropicRemesh, RefusesANonPositiveTarget) {

@@ -34,6 +34,10 @@ void RemeshNet(HookContext& c) {
   options.iterations = int(s.Integer("remesh.iterations"));
   options.corner_angle_degrees = s.Number("remesh.corner_angle");
   options.feature_angle_degrees = s.Number("remesh.feature_angle");
+  const CGAL::Bbox_3 box = CGAL::bbox_3(c.input->points().begin(), c.input->points().end());
+  const double diagonal = std::sqrt(std::pow(box.xmax() - box.xmin(), 2) + std::pow(box.ymax() - box.ymin(), 2) +
+                                    std::pow(box.zmax() - box.zmin(), 2));
+  options.tolerance = s.Number("remesh.tolerance") * diagonal;
   if (!(options.target_edge_length > 0)) {
     throw s.Error("remesh.edge_length", "the input's mean edge length is 0: nothing to remesh");
   }
@@ -50,6 +54,7 @@ void RemeshNet(HookContext& c) {
   c.details["remesh"] = {{"target_edge_length", options.target_edge_length},
                          {"input_mean_edge_length", input_mean},
                          {"iterations", options.iterations},
+                         {"tolerance", options.tolerance},
                          {"corners", r.corners},
                          {"feature_edges", r.feature_edges},
                          {"splits", r.splits},
@@ -90,6 +95,9 @@ ProblemDecl remesh() {
   d.keys = {NumberKey("remesh.edge_length", 1, 1e-3, 1e3,
                       "target edge length, relative to the input's mean edge length"),
             IntegerKey("remesh.iterations", 10, 1, 100, "split / collapse / flip / relax iterations"),
+            NumberKey("remesh.tolerance", 0, 0, 0.1,
+                      "curvature-adaptive edge lengths: the chord deviation allowed, relative to the bounding-box "
+                      "diagonal; edges shrink (down to 1/16 of the target) where the input curves; 0: uniform"),
             NumberKey("remesh.feature_angle", 30, 0, 180,
                       "an input edge whose faces' normals differ by more than this (degrees) is a feature, "
                       "kept like the boundary (0: no features)"),
