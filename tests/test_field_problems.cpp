@@ -696,6 +696,87 @@ class FieldInputTest : public ScratchDirTest {
   }
 };
 
+// A guide curve (field.guide_curves) on the ellipsoid top: a straight line
+// in plan at 30° to the principal directions, lifted onto the surface. Within
+// half the radius (full weight) one direction of the field follows the
+// curve's tangent; well beyond the radius the field is the unguided one.
+TEST_F(FieldInputTest, AGuideCurveAlignsTheFieldNearItAndLeavesItBeyond) {
+  const Mesh mesh = EllipsoidTop(30, 20);
+  const double a = 1.5, b = 1.0, c = 0.6, angle = 30 * M_PI / 180;
+  std::string obj;
+  const int n = 60;
+  for (int i = 0; i <= n; ++i) {
+    const double t = -0.7 + 1.4 * i / n, x = t * std::cos(angle), y = t * std::sin(angle);
+    obj += "v " + std::to_string(x) + " " + std::to_string(y) + " " +
+           std::to_string(c * std::sqrt(1 - x * x / (a * a) - y * y / (b * b))) + "\n";
+  }
+  obj += "l";
+  for (int i = 1; i <= n + 1; ++i) obj += " " + std::to_string(i);
+  const std::string curve = WriteFile("guide.obj", obj + "\n");
+  const auto free = SolveYaml(kUnconstrained, mesh);
+  const auto guided = SolveYaml("problem: conjugate_field\nfield: {boundary_alignment: 0, guide_curves: " +
+                                    curve + ", guide_radius: 0.1}\n",
+                                mesh);
+  const FieldResult& r = *FieldOf(*guided);
+  const FieldResult& u = *FieldOf(*free);
+  const nlohmann::json& d = r.details.at("guide_curves");
+  const double radius = d.at("radius");
+  EXPECT_GT(d.at("full_weight_faces").get<int>(), 30);
+  EXPECT_LE(d.at("deviation_max_deg").get<double>(), 2.0);
+  // Independently: the plan distance to the line and the angle to its tangent.
+  const V3 along(std::cos(angle), std::sin(angle), 0);
+  double near_max = 0, far_max = 0;
+  int near = 0, far = 0;
+  for (FaceIndex f : mesh.faces()) {
+    const V3 p = Centroid(r, f);
+    const double dist = std::abs(p.x() * along.y() - p.y() * along.x());
+    if (dist < 0.4 * radius && std::abs(p.dot(along)) < 0.6) {
+      const V3 n = V3(p.x() / (a * a), p.y() / (b * b), p.z() / (c * c)).normalized();
+      const V3 tangent = (along - n * n.dot(along)).normalized();
+      near_max = std::max(near_max, std::min(LineDeg(V3D(r, f), tangent), LineDeg(V3D(r, f, true), tangent)));
+      ++near;
+    } else if (dist > 3 * radius) {
+      far_max = std::max(far_max, std::max(LineDeg(V3D(r, f), V3D(u, f)), LineDeg(V3D(r, f, true), V3D(u, f, true))));
+      ++far;
+    }
+  }
+  std::printf("guide curve: %d faces near, max %.2f° from the tangent; %d faces beyond 3 radii, max %.2f° "
+              "from the unguided field\n", near, near_max, far, far_max);
+  EXPECT_GT(near, 30);
+  EXPECT_LE(near_max, 2.0);
+  EXPECT_GT(far, 100);
+  EXPECT_LE(far_max, 1.0);
+  // A curve nowhere near the surface is refused naming the key.
+  WriteFile("far.obj", "v 0 0 50\nv 1 0 50\nl 1 2\n");
+  WriteMesh(Path("top.obj"), mesh);
+  ExpectInputError("mesh: top.obj\nproblem: conjugate_field\nfield: {guide_curves: far.obj}\n",
+                   "field.guide_curves");
+  WriteFile("nan.obj", "v 0 0 nan\nv 1 0 0\nl 1 2\n");
+  ExpectInputError("mesh: top.obj\nproblem: conjugate_field\nfield: {guide_curves: nan.obj}\n",
+                   "field.guide_curves");
+}
+
+// On the saddle z = xy the lines x = const and y = const are asymptotic: a
+// guide curve along one has no transverse conjugate partner (the pair would
+// fold onto the curve), so its faces are reported and left to the free field.
+TEST_F(FieldInputTest, AGuideAlongAnAsymptoticLineIsNotPrescribed) {
+  TriangleGridOptions opt;
+  opt.jitter = 0.2;
+  const Mesh mesh = TriangulatedGrid(24, 24, [](double u, double v) -> Vec3 {
+    const double x = 2 * u - 1, y = 2 * v - 1;
+    return {x, y, x * y};
+  }, opt);
+  const std::string curve = WriteFile("ruling.obj", "v -0.8 0 0\nv 0 0 0\nv 0.8 0 0\nl 1 2 3\n");
+  const auto s = SolveYaml("problem: conjugate_field\nfield: {boundary_alignment: 0, guide_curves: " + curve +
+                               ", guide_radius: 0.05}\n",
+                           mesh);
+  const FieldResult& r = *FieldOf(*s);
+  const nlohmann::json& d = r.details.at("guide_curves");
+  EXPECT_GT(d.at("faces_skipped").get<int>(), 20);
+  EXPECT_EQ(d.at("faces").get<int>(), 0);
+  EXPECT_GE(r.details.at("angle_min_deg").get<double>(), 29.9);
+}
+
 // A regular octahedron's layout has a nearly degenerate polygon whose
 // constrained triangulation tripped a CGAL precondition with one thread
 // (exit 1; geometry/reference.h TriangulatedCopy): one and two threads both

@@ -48,6 +48,8 @@
 #include "core/problem.h"
 #include "energies/tcd_prescribed_direction.h"
 #include "fields/field_io.h"
+#include "fields/guide_curves.h"
+#include "geometry/curves.h"
 #include "fields/singularities.h"
 #include "core/input_error.h"
 #include "mesh/topology.h"
@@ -214,12 +216,101 @@ struct Constraints {
   std::vector<std::pair<int, V2>> prescribed;  // face, direction in the face frame
   int file_rows = 0, file_flagged = 0, file_skipped = 0;
   int boundary_faces = 0;  // boundary tangents prescribed (field.boundary_alignment)
+  // Guide curves (field.guide_curves): face, direction in the face frame,
+  // factor on the term's weight, falloff weight w (fields/guide_curves.h).
+  struct Guided {
+    int face;
+    V2 direction;
+    double factor, weight;
+  };
+  std::vector<Guided> guided;
+  bool guides_applied = false;
+  int guide_skipped = 0;  // faces whose guide direction has no transverse conjugate partner
+  int guide_curves = 0;
+  double guide_radius = 0;  // file units
 };
+
+// A guide direction whose conjugate partner is closer than this to it (a
+// saddle's asymptotic direction has itself as partner) is not prescribed.
+constexpr double kGuideMinPairDeg = 30;
+
+// Guide curves (field.guide_curves): every face within field.guide_radius
+// of a curve gets the curve's tangent as a prescribed direction, its weight
+// field.guide_weight × the falloff (fields/guide_curves.h).
+void AddGuideCurves(const HookContext& c, const FieldGeometry& g, double prescribed_weight,
+                    Constraints& con) {
+  const Settings& s = *c.settings;
+  const std::string file = s.String("field.guide_curves");
+  if (file.empty()) return;
+  if (!(prescribed_weight > 0) || !(s.Number("field.guide_weight") > 0)) {
+    throw s.Error("field.guide_weight", "guide curves need terms.tcd_prescribed_direction on and "
+                                        "field.guide_weight > 0");
+  }
+  std::vector<Polyline> read;
+  try {
+    read = ReadPolylines(file);
+  } catch (const InputError& e) {
+    throw InputError(e.file(), e.line(), "field.guide_curves", e.message());
+  }
+  std::vector<std::vector<V3>> curves;
+  std::vector<bool> closed;
+  for (const Polyline& p : read) {
+    std::vector<V3> q;
+    for (const Vec3& x : p.points) {
+      const Vec3 y = c.frame.ToCanonical(x);
+      q.emplace_back(y[0], y[1], y[2]);
+    }
+    curves.push_back(std::move(q));
+    closed.push_back(p.closed);
+  }
+  const Mesh& mesh = c.store->mesh();
+  V3 lo = V3::Constant(INFINITY), hi = V3::Constant(-INFINITY);
+  for (VertexIndex v : mesh.vertices()) {
+    const Point& p = mesh.point(v);
+    lo = lo.cwiseMin(V3(p.x(), p.y(), p.z()));
+    hi = hi.cwiseMax(V3(p.x(), p.y(), p.z()));
+  }
+  const double radius = s.Number("field.guide_radius") * (hi - lo).norm();
+  const std::vector<GuideFace> near = GuideFaces(g.frames.centroid, curves, closed, radius);
+  std::vector<int> per_curve(curves.size(), 0);
+  for (const GuideFace& f : near) ++per_curve[size_t(f.curve)];
+  for (size_t k = 0; k < curves.size(); ++k) {
+    if (per_curve[k] == 0) {
+      throw InputError(file, 0, "field.guide_curves",
+                       "curve " + std::to_string(k + 1) + " is farther than field.guide_radius (" +
+                           std::to_string(radius * c.frame.scale) +
+                           " file units) from every face of the surface: it guides nothing");
+    }
+  }
+  const double factor = s.Number("field.guide_weight") / prescribed_weight;
+  for (const GuideFace& f : near) {
+    const V2 d = ToFrame(g.frames, FaceIndex(f.face), f.tangent);
+    const Eigen::Matrix2d& M = g.curvature[size_t(f.face)].M;
+    const double m[3] = {M(0, 0), M(0, 1), M(1, 1)};
+    V2 point, line;
+    if (!(d.norm() > 1e-9) || !TcdPrescribedLine(m, d.data(), &point, &line)) {
+      ++con.guide_skipped;
+      continue;
+    }
+    // The direction conjugate to d is ⟂ M d: within kGuideMinPairDeg of d
+    // (d near an asymptotic direction of a saddle) the pair would fold.
+    const V2 md = M * d, w(-md.y(), md.x());
+    const double cosine = std::abs(d.dot(w)) / (d.norm() * w.norm());
+    if (!(w.norm() > 0) || cosine > std::cos(kGuideMinPairDeg * M_PI / 180)) {
+      ++con.guide_skipped;
+      continue;
+    }
+    con.guided.push_back({f.face, d.normalized(), factor * f.weight, f.weight});
+  }
+  con.guide_curves = int(curves.size());
+  con.guide_radius = radius * c.frame.scale;
+}
 
 // The run's data: the input's field geometry and the validated constraints.
 struct FieldState : ProblemState {
   FieldGeometry geometry;
   Constraints constraints;
+  ElementSet prescribed;  // tcd_prescribed without the guide curves' faces
   StreamlineResult streamlines;  // output.streamlines (fields/streamlines.h)
 };
 
@@ -348,6 +439,7 @@ void InitConjugateField(HookContext& c) {
     }
   }
   con.boundary_faces = int(along_boundary.size());
+  AddGuideCurves(c, g, prescribed_weight, con);
 
   // The faces the user constrains (placements, moves, prescribed
   // directions): singularity avoidance (tcd_free_faces) leaves them alone.
@@ -355,6 +447,7 @@ void InitConjugateField(HookContext& c) {
   for (int f : con.placements) constrained[size_t(f)] = true;
   for (const Move& m : con.moves) constrained[size_t(m.from)] = constrained[size_t(m.to)] = true;
   for (const auto& p : con.prescribed) constrained[size_t(p.first)] = true;
+  for (const auto& p : con.guided) constrained[size_t(p.face)] = true;
 
   ElementSet edges, all, free_faces, placements, directions;
   edges.site = Site::kEdge;
@@ -396,6 +489,7 @@ void InitConjugateField(HookContext& c) {
                      {M(0, 0), M(0, 1), M(1, 1), d.x(), d.y(), factor});
     }
   }
+  state.prescribed = directions;  // the guide stage adds the guide curves' faces
   c.SetElements("tcd_edges", std::move(edges));
   c.SetElements("tcd_faces", std::move(all));
   c.SetElements("tcd_free_faces", std::move(free_faces));
@@ -455,6 +549,32 @@ void ApplyMoves(HookContext& c) {
   }
 }
 
+// Before the `guide` stage (field.guide_curves): the guide curves' faces join
+// the prescribed directions and every face beyond the guide radius is held,
+// so the free field of the first stage is kept there and the faces near the
+// curves turn to them, the falloff band smoothing the seam.
+void ApplyGuides(HookContext& c) {
+  FieldState& state = c.State<FieldState>();
+  Constraints& con = state.constraints;
+  if (con.guides_applied) return;
+  con.guides_applied = true;
+  const Mesh& mesh = c.store->mesh();
+  const std::vector<bool> boundary = BoundaryVertices(mesh);
+  ElementSet set = state.prescribed;
+  std::vector<bool> guided(mesh.number_of_faces(), false);
+  for (const Constraints::Guided& p : con.guided) {
+    const Eigen::Matrix2d& M = state.geometry.curvature[size_t(p.face)].M;
+    set.Add(FaceVertices(mesh, FaceIndex(p.face)), p.face, p.face, -1,
+            FaceFlags(mesh, boundary, FaceIndex(p.face)),
+            {M(0, 0), M(0, 1), M(1, 1), p.direction.x(), p.direction.y(), p.factor});
+    guided[size_t(p.face)] = true;
+  }
+  c.SetElements("tcd_prescribed", std::move(set));
+  for (FaceIndex f : mesh.faces()) {
+    if (!guided[f.idx()]) c.model->SetConstant("z_n", int(f.idx()));
+  }
+}
+
 double LineDeg(const V2& a, const V2& b) {
   return std::abs(WrapLineAngle(LineAngle(a) - LineAngle(b))) * 180.0 / M_PI;
 }
@@ -494,6 +614,17 @@ void FinishConjugateField(HookContext& c) {
     prescribed_mean += e / double(con.prescribed.size());
   }
 
+  double guide_max = 0, guide_sum = 0;
+  int guide_full = 0;
+  for (const Constraints::Guided& q : con.guided) {
+    if (q.weight < 1) continue;
+    const ConjugatePair& p = field.pairs[size_t(q.face)];
+    const double e = p.valid ? std::min(LineDeg(q.direction, p.v), LineDeg(q.direction, p.w)) : 90.0;
+    guide_max = std::max(guide_max, e);
+    guide_sum += e;
+    ++guide_full;
+  }
+
   nlohmann::json& d = result->details;
   nlohmann::json singular = nlohmann::json::array();
   int plus = 0, minus = 0;
@@ -521,6 +652,15 @@ void FinishConjugateField(HookContext& c) {
   d["prescribed"] = {{"faces", con.prescribed.size()},
                      {"deviation_max_deg", prescribed_max},
                      {"deviation_mean_deg", prescribed_mean}};
+  if (con.guide_curves > 0) {
+    d["guide_curves"] = {{"curves", con.guide_curves},
+                         {"radius", con.guide_radius},
+                         {"faces", con.guided.size()},
+                         {"faces_skipped", con.guide_skipped},
+                         {"full_weight_faces", guide_full},
+                         {"deviation_max_deg", guide_max},
+                         {"deviation_mean_deg", guide_full ? guide_sum / guide_full : 0.0}};
+  }
   if (con.file_rows > 0) {
     d["constraints_file"] = {{"rows", con.file_rows},
                              {"flagged", con.file_flagged},
@@ -542,6 +682,16 @@ void FinishConjugateField(HookContext& c) {
                 field.stats.max_conjugacy_error, field.stats.min_angle_deg, field.mean_angle_deg,
                 counted > 0 ? deviation / counted : 0.0);
   h += line;
+  if (con.guide_curves > 0) {
+    std::snprintf(line, sizeof line,
+                  "guide curves: %d, radius %.4g file units, %zu faces guided (%d at full weight: "
+                  "deviation from the curve max %.2f°, mean %.2f°); %d faces not guided: the curve "
+                  "runs within %.0f° of an asymptotic direction there (no transverse conjugate "
+                  "partner)\n",
+                  con.guide_curves, con.guide_radius, con.guided.size(), guide_full, guide_max,
+                  guide_full ? guide_sum / guide_full : 0.0, con.guide_skipped, kGuideMinPairDeg);
+    h += line;
+  }
   if (!con.prescribed.empty()) {
     std::snprintf(line, sizeof line,
                   "prescribed directions: %zu faces, deviation max %.2f°, mean %.2f°%s\n",
@@ -592,6 +742,10 @@ ProblemDecl conjugate_field() {
                false, "z_N of the face in its own frame (Prop. 2; e1 = (1, 0): principal)"}};
   d.check = [](const Settings& s) {
     CheckNoMultiresolution(s, "conjugate_field");
+    if (!s.String("field.guide_curves").empty() && s.Given("field.moves")) {
+      throw s.Error("field.moves", "moves and guide curves hold different faces: give one of "
+                                   "field.moves and field.guide_curves");
+    }
     CheckFieldOutputs(s);
   };
   d.init = &InitConjugateField;
@@ -600,6 +754,11 @@ ProblemDecl conjugate_field() {
     s.name = "field";
     s.rounds_key = "field.rounds";
     std::vector<Stage> stages{s};
+    if (!settings.String("field.guide_curves").empty()) {
+      s.name = "guide";
+      s.before_round = &ApplyGuides;
+      stages.push_back(s);
+    }
     if (settings.Given("field.moves")) {
       s.name = "move";
       s.before_round = &ApplyMoves;

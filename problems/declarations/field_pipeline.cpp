@@ -107,6 +107,19 @@ std::vector<Key> FieldKeys() {
                     "weight of the boundary tangent as a prescribed direction of every boundary "
                     "face (through tcd_prescribed_direction, which must be on): level sets along "
                     "the boundary, fewer cut boundary faces; 0 = off"),
+          PathKey("field.guide_curves", Type::kInputPath,
+                  "OBJ polylines ('l' records, file units) on or near the surface: after the free "
+                  "field is solved, a second stage re-solves the faces within field.guide_radius "
+                  "of a curve (every other face held) with one direction following the curve's "
+                  "tangent (weight field.guide_weight, smoothly weaker from half the radius out to "
+                  "the radius); not with field.moves"),
+          NumberKey("field.guide_radius", 0.1, 1e-6, 1,
+                    "reach of the guide curves, relative to the bounding-box diagonal"),
+          NumberKey("field.guide_weight", 10000, 0, 1e8,
+                    "weight of a guide curve's direction at full strength, on the scale of "
+                    "terms.tcd_prescribed_direction's weight (field.directions: 100); 100 times "
+                    "that, so the field near a curve follows it within 2° against the smoothing "
+                    "that pulls it back to the free field held beyond the radius"),
           IntegerKey("field.rounds", 1, 1, 100,
                      "Ceres solves of the field (each at most solver.max_num_iterations)")};
 }
