@@ -71,6 +71,96 @@ void WriteFieldPly(const std::string& path, const Mesh& mesh, const FieldGeometr
   WriteTextFile(path, out.str(), key);
 }
 
+namespace {
+
+bool EndsWithRawfield(const std::string& name) {
+  const std::string suffix = ".rawfield";
+  if (name.size() < suffix.size()) return false;
+  std::string end = name.substr(name.size() - suffix.size());
+  for (char& ch : end) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+  return end == suffix;
+}
+
+}  // namespace
+
+void WriteFieldRaw(const std::string& path, const Mesh& mesh, const FieldGeometry& geometry,
+                   const TcdField& field, const Similarity& frame, const std::string& key) {
+  std::ostringstream out;
+  out.precision(17);
+  out << 4 << " " << mesh.number_of_faces() << "\n";
+  for (FaceIndex f : mesh.faces()) {
+    const ConjugatePair& pair = field.pairs[f.idx()];
+    Eigen::Vector3d d[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+    if (pair.valid) {
+      for (int k = 0; k < 2; ++k) {
+        // A direction: the frame's rotation only (InFile of two points).
+        const Eigen::Vector3d c = geometry.frames.centroid[f.idx()];
+        d[k] = (InFile(frame, c + FromFrame(geometry.frames, f, k == 0 ? pair.v : pair.w)) - InFile(frame, c))
+                   .normalized();
+      }
+    }
+    for (const Eigen::Vector3d& x : {d[0], d[1], Eigen::Vector3d(-d[0]), Eigen::Vector3d(-d[1])}) {
+      out << x.x() << " " << x.y() << " " << x.z() << " ";
+    }
+    out << "\n";
+  }
+  WriteTextFile(path, out.str(), key);
+}
+
+void WriteField(const std::string& path, const std::string& name, const Mesh& mesh,
+                const FieldGeometry& geometry, const TcdField& field, const Similarity& frame,
+                const std::string& key) {
+  if (EndsWithRawfield(name)) {
+    WriteFieldRaw(path, mesh, geometry, field, frame, key);
+  } else {
+    WriteFieldPly(path, mesh, geometry, field, frame, key);
+  }
+}
+
+RawField ReadRawField(const std::string& path, const std::string& key) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, 0, key, "cannot open the raw field file");
+  std::string text;
+  std::getline(in, text);
+  std::istringstream h(text);
+  long long n = -1, faces = -1;
+  if (!(h >> n >> faces) || n < 1 || n > 64 || faces < 0) {
+    throw InputError(path, 1, key, "expected a raw field header \"N F\" (N directions per face, 1–64; F faces)");
+  }
+  std::error_code error;
+  const auto bytes = static_cast<long long>(std::filesystem::file_size(path, error));
+  if (!error && faces > bytes / (6 * n)) {
+    throw InputError(path, 1, key, "the header promises " + std::to_string(faces) + " faces, more than a file of " +
+                                       std::to_string(bytes) + " bytes can hold");
+  }
+  RawField r;
+  r.n = int(n);
+  r.vectors.resize(faces, 3 * n);
+  for (long long f = 0; f < faces; ++f) {
+    const int line = int(f) + 2;
+    if (!std::getline(in, text)) {
+      throw InputError(path, line, key, "the header promises " + std::to_string(faces) +
+                                            " faces; the file ends after " + std::to_string(f));
+    }
+    std::istringstream row(text);
+    for (long long k = 0; k < 3 * n; ++k) {
+      std::string token;
+      if (!(row >> token)) {
+        throw InputError(path, line, key, "expected " + std::to_string(3 * n) + " numbers (" + std::to_string(n) +
+                                              " vectors) for face " + std::to_string(f) + ", found " +
+                                              std::to_string(k));
+      }
+      char* end = nullptr;
+      const double x = std::strtod(token.c_str(), &end);
+      if (end == token.c_str() || *end != '\0' || !std::isfinite(x)) {
+        throw InputError(path, line, key, "'" + token + "' is not a finite number");
+      }
+      r.vectors(f, k) = x;
+    }
+  }
+  return r;
+}
+
 StreamlineInput StreamlineInputOf(const Mesh& mesh, const FieldGeometry& geometry,
                                   const TcdField& field) {
   StreamlineInput in;

@@ -39,6 +39,30 @@ StreamlineInput StreamlineInputOf(const Mesh& mesh, const FieldGeometry& geometr
 void WriteStreamlinesObj(const std::string& path, const std::vector<Streamline>& lines,
                          const Similarity& frame, const std::string& key);
 
+// Directional's raw field (directional::read_raw_field / write_raw_field,
+// the tutorial's *.rawfield files): a first line "N F", then one line per
+// face of 3N numbers, its N vectors (x y z each, extrinsic, file units).
+struct RawField {
+  int n = 0;                // directions per face
+  Eigen::MatrixXd vectors;  // F × 3N
+};
+// Throws InputError(path, line, key, ...) for a file that cannot be read, a
+// bad header, a line without 3N numbers or with a non-finite one, or fewer
+// lines than F.
+RawField ReadRawField(const std::string& path, const std::string& key);
+
+// The field as a raw field of degree 4 (v, w, −v, −w per face, unit vectors in
+// file units; zeros for a face without a valid pair), which
+// ReadRawField / `field.file` read back and Directional's viewers show.
+void WriteFieldRaw(const std::string& path, const Mesh& mesh, const FieldGeometry& geometry,
+                   const TcdField& field, const Similarity& frame, const std::string& key);
+
+// WriteFieldRaw if `name` (the path the user gave) ends in .rawfield, else
+// WriteFieldPly; written to `path`.
+void WriteField(const std::string& path, const std::string& name, const Mesh& mesh,
+                const FieldGeometry& geometry, const TcdField& field, const Similarity& frame,
+                const std::string& key);
+
 // A libigl DMAT file (igl::readDMAT, ASCII): a first line "cols rows", then
 // cols·rows numbers in column-major order (all of column 0 first). Throws
 // InputError(path, line, key, ...) for a file that cannot be read or does not

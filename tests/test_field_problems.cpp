@@ -777,6 +777,42 @@ TEST_F(FieldInputTest, AGuideAlongAnAsymptoticLineIsNotPrescribed) {
   EXPECT_GE(r.details.at("angle_min_deg").get<double>(), 29.9);
 }
 
+// field.file: a field written as Directional's raw field (output.field
+// *.rawfield) and read back prescribes every face: the same pairs; files of
+// the wrong size or degree, or with a non-finite number, are refused.
+TEST_F(FieldInputTest, AFieldFileRoundTripsAndBadFilesAreRefused) {
+  const Mesh mesh = EllipsoidTop(30, 20);
+  const int center = NearestFace(mesh, 0, 0);
+  const auto first = SolveYaml("problem: conjugate_field\nfield: {boundary_alignment: 0, directions: "
+                               "[{face: " + std::to_string(center) + ", direction: [1, 1, 0]}]}\n",
+                               mesh);
+  const FieldResult& a = *FieldOf(*first);
+  WriteFieldRaw(Path("a.rawfield"), a.mesh, a.geometry, a.field, a.frame, "output.field");
+  const auto again = SolveYaml("problem: conjugate_field\nfield: {boundary_alignment: 0, file: " +
+                                   Path("a.rawfield") + "}\n",
+                               mesh);
+  const FieldResult& b = *FieldOf(*again);
+  EXPECT_EQ(b.details.at("field_file").at("faces").get<int>(), int(mesh.number_of_faces()));
+  const auto free = SolveYaml(kUnconstrained, mesh);
+  double worst = 0, turned = 0;
+  for (FaceIndex f : mesh.faces()) {
+    worst = std::max({worst, LineDeg(V3D(a, f), V3D(b, f)), LineDeg(V3D(a, f, true), V3D(b, f, true))});
+    turned = std::max(turned, LineDeg(V3D(a, f), V3D(*FieldOf(*free), f)));
+  }
+  EXPECT_EQ(b.details.at("field_file").at("skipped").get<int>(), 0);
+  EXPECT_LE(b.details.at("field_file").at("deviation_max_deg").get<double>(), 0.05);
+  EXPECT_LE(worst, 0.05);
+  EXPECT_GT(turned, 5);  // the file's field is not the free one: the file made it
+  WriteMesh(Path("top.obj"), mesh);
+  WriteFile("short.rawfield", "4 3\n1 0 0 0 1 0 -1 0 0 0 -1 0\n1 0 0 0 1 0 -1 0 0 0 -1 0\n"
+                              "1 0 0 0 1 0 -1 0 0 0 -1 0\n");
+  ExpectInputError("mesh: top.obj\nproblem: conjugate_field\nfield: {file: short.rawfield}\n", "field.file");
+  WriteFile("five.rawfield", "5 1\n1 0 0 0 1 0 -1 0 0 0 -1 0 1 1 0\n");
+  ExpectInputError("mesh: top.obj\nproblem: conjugate_field\nfield: {file: five.rawfield}\n", "field.file");
+  WriteFile("nan.rawfield", "2 1\nnan 0 0 -1 0 0\n");
+  ExpectInputError("mesh: top.obj\nproblem: conjugate_field\nfield: {file: nan.rawfield}\n", "field.file");
+}
+
 // A regular octahedron's layout has a nearly degenerate polygon whose
 // constrained triangulation tripped a CGAL precondition with one thread
 // (exit 1; geometry/reference.h TriangulatedCopy): one and two threads both

@@ -163,7 +163,7 @@ void CheckOutputName(const Settings& s, const std::string& key) {
       {"output.image", {".png", ".html"}},
       {"output.patchwork", {".ply"}},
       {"output.rulings", {".obj"}},
-      {"output.field", {".ply"}},
+      {"output.field", {".ply", ".rawfield"}},
       {"output.panels", {".csv"}},
       {"output.nodes", {".csv"}},
       {"output.beams", {".csv"}},

@@ -215,6 +215,8 @@ struct Constraints {
   nlohmann::json moves_done = nlohmann::json::array();
   std::vector<std::pair<int, V2>> prescribed;  // face, direction in the face frame
   int file_rows = 0, file_flagged = 0, file_skipped = 0;
+  int raw_faces = 0, raw_skipped = 0;  // rows of field.file, those not prescribed
+  std::vector<std::pair<int, V2>> from_field_file;  // face, direction in the face frame
   int boundary_faces = 0;  // boundary tangents prescribed (field.boundary_alignment)
   // Guide curves (field.guide_curves): face, direction in the face frame,
   // factor on the term's weight, falloff weight w (fields/guide_curves.h).
@@ -229,6 +231,11 @@ struct Constraints {
   int guide_curves = 0;
   double guide_radius = 0;  // file units
 };
+
+// The factor on tcd_prescribed_direction's weight of a field.file direction:
+// a complete field from a file is the field, not a wish the smoothing may
+// trade against (as one field.directions entry is).
+constexpr double kFieldFileFactor = 100;
 
 // A guide direction whose conjugate partner is closer than this to it (a
 // saddle's asymptotic direction has itself as partner) is not prescribed.
@@ -394,6 +401,34 @@ void InitConjugateField(HookContext& c) {
       prescribed.push_back(p);
     }
   }
+  const std::string raw_file = s.String("field.file");
+  if (!raw_file.empty()) {
+    const RawField raw = ReadRawField(raw_file, "field.file");
+    if (raw.n != 1 && raw.n != 2 && raw.n != 4) {
+      throw InputError(raw_file, 1, "field.file",
+                       "a field of " + std::to_string(raw.n) + " directions per face has no pair of "
+                       "lines to prescribe: give a line field (N = 1 or 2) or a cross or conjugate "
+                       "field (N = 4: v, w, -v, -w)");
+    }
+    if (raw.vectors.rows() != faces) {
+      throw InputError(raw_file, 1, "field.file",
+                       "expected one row per face (" + std::to_string(faces) + "); the file has " +
+                           std::to_string(raw.vectors.rows()));
+    }
+    con.raw_faces = faces;
+    for (int f = 0; f < faces; ++f) {
+      Prescribed p;
+      p.face = f;
+      p.direction = V3(raw.vectors(f, 0), raw.vectors(f, 1), raw.vectors(f, 2));
+      p.from_file = true;
+      p.key = "field.file";
+      if (p.direction.squaredNorm() > 0) {
+        prescribed.push_back(p);
+      } else {
+        ++con.raw_skipped;  // a face the file leaves without a direction
+      }
+    }
+  }
   for (const Prescribed& p : prescribed) {
     const FaceIndex f(p.face);
     const V2 d = ToFrame(g.frames, f, ToCanonicalDirection(c.frame, p.direction));
@@ -404,7 +439,7 @@ void InitConjugateField(HookContext& c) {
                     TcdPrescribedLine(m, d.data(), &point, &line);
     if (!ok) {
       if (p.from_file) {
-        ++con.file_skipped;
+        ++(p.key == "field.file" ? con.raw_skipped : con.file_skipped);
         continue;
       }
       const Origin at = s.Where("field.directions");
@@ -413,7 +448,7 @@ void InitConjugateField(HookContext& c) {
                            ": the direction is normal to the face or every direction is conjugate "
                            "to it (zero curvature along it): it cannot be prescribed");
     }
-    con.prescribed.push_back({p.face, d.normalized()});
+    (p.key == "field.file" ? con.from_field_file : con.prescribed).push_back({p.face, d.normalized()});
   }
 
   // Boundary alignment: the boundary tangent as a prescribed direction of
@@ -447,6 +482,7 @@ void InitConjugateField(HookContext& c) {
   for (int f : con.placements) constrained[size_t(f)] = true;
   for (const Move& m : con.moves) constrained[size_t(m.from)] = constrained[size_t(m.to)] = true;
   for (const auto& p : con.prescribed) constrained[size_t(p.first)] = true;
+  for (const auto& p : con.from_field_file) constrained[size_t(p.first)] = true;
   for (const auto& p : con.guided) constrained[size_t(p.face)] = true;
 
   ElementSet edges, all, free_faces, placements, directions;
@@ -481,6 +517,7 @@ void InitConjugateField(HookContext& c) {
                    {k.z_m.x(), k.z_m.y()});
   }
   for (const auto& [list, factor] : {std::make_pair(&con.prescribed, 1.0),
+                                     std::make_pair(&con.from_field_file, kFieldFileFactor),
                                      std::make_pair(&along_boundary, boundary_factor)}) {
     for (const auto& [f, d] : *list) {
       const Eigen::Matrix2d& M = g.curvature[size_t(f)].M;
@@ -614,6 +651,14 @@ void FinishConjugateField(HookContext& c) {
     prescribed_mean += e / double(con.prescribed.size());
   }
 
+  double file_max = 0, file_sum = 0;
+  for (const auto& [f, dir] : con.from_field_file) {
+    const ConjugatePair& p = field.pairs[size_t(f)];
+    const double e = p.valid ? std::min(LineDeg(dir, p.v), LineDeg(dir, p.w)) : 90.0;
+    file_max = std::max(file_max, e);
+    file_sum += e;
+  }
+  const double file_mean = con.from_field_file.empty() ? 0.0 : file_sum / double(con.from_field_file.size());
   double guide_max = 0, guide_sum = 0;
   int guide_full = 0;
   for (const Constraints::Guided& q : con.guided) {
@@ -661,6 +706,12 @@ void FinishConjugateField(HookContext& c) {
                          {"deviation_max_deg", guide_max},
                          {"deviation_mean_deg", guide_full ? guide_sum / guide_full : 0.0}};
   }
+  if (con.raw_faces > 0) {
+    d["field_file"] = {{"faces", con.raw_faces},
+                       {"skipped", con.raw_skipped},
+                       {"deviation_max_deg", file_max},
+                       {"deviation_mean_deg", file_mean}};
+  }
   if (con.file_rows > 0) {
     d["constraints_file"] = {{"rows", con.file_rows},
                              {"flagged", con.file_flagged},
@@ -682,6 +733,12 @@ void FinishConjugateField(HookContext& c) {
                 field.stats.max_conjugacy_error, field.stats.min_angle_deg, field.mean_angle_deg,
                 counted > 0 ? deviation / counted : 0.0);
   h += line;
+  if (con.raw_faces > 0) {
+    std::snprintf(line, sizeof line,
+                  "field file: %zu of %d faces prescribed, deviation max %.2f°, mean %.2f°\n",
+                  con.from_field_file.size(), con.raw_faces, file_max, file_mean);
+    h += line;
+  }
   if (con.guide_curves > 0) {
     std::snprintf(line, sizeof line,
                   "guide curves: %d, radius %.4g file units, %zu faces guided (%d at full weight: "
@@ -718,8 +775,8 @@ void FinishConjugateField(HookContext& c) {
 void WriteConjugateField(HookContext& c) {
   const auto& result = c.field;
   if (const auto it = c.temporaries.find("field"); it != c.temporaries.end()) {
-    WriteFieldPly(it->second, result->mesh, result->geometry, result->field, result->frame,
-                  "output.field");
+    WriteField(it->second, c.settings->String("output.field"), result->mesh, result->geometry, result->field,
+               result->frame, "output.field");
   }
   if (const auto it = c.temporaries.find("streamlines"); it != c.temporaries.end()) {
     WriteStreamlinesObj(it->second, c.State<FieldState>().streamlines.lines, result->frame,

@@ -89,7 +89,8 @@ void WriteConjugateLayout(HookContext& c) {
   }
   if (const auto it = c.temporaries.find("field"); it != c.temporaries.end()) {
     const FieldResult& field = *result->field;
-    WriteFieldPly(it->second, field.mesh, field.geometry, field.field, field.frame, "output.field");
+    WriteField(it->second, c.settings->String("output.field"), field.mesh, field.geometry, field.field,
+               field.frame, "output.field");
   }
   if (const auto it = c.temporaries.find("streamlines"); it != c.temporaries.end()) {
     WriteStreamlinesObj(it->second, c.State<LayoutState>().streamlines.lines, result->field->frame,

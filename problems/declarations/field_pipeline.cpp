@@ -88,6 +88,13 @@ std::vector<Key> FieldKeys() {
       "within r1 of `from` and 0 beyond r2; defaults r1 = 2 × the distance from `from` to `to`, "
       "r2 = 2 r1); z_N = z_M at `to`, then the faces of the transition band (r1 to r2) are "
       "re-optimised";
+  Key file;
+  file.name = "field.file";
+  file.type = Type::kInputPath;
+  file.doc =
+      "a complete field: Directional's raw field (.rawfield: \"N F\", then per face N vectors, file "
+      "units, N = 1, 2 or 4; what output.field writes as .rawfield), one row per face; each "
+      "face's first vector is prescribed as one direction of the pair (like field.directions)";
   Key constraints;
   constraints.name = "field.constraints";
   constraints.type = Type::kInputPath;
@@ -103,6 +110,7 @@ std::vector<Key> FieldKeys() {
           moves,
           directions,
           constraints,
+          file,
           NumberKey("field.boundary_alignment", 1, 0, 1e6,
                     "weight of the boundary tangent as a prescribed direction of every boundary "
                     "face (through tcd_prescribed_direction, which must be on): level sets along "
@@ -304,8 +312,14 @@ void CheckFieldOutputs(const Settings& s) {
     const std::string& path = s.String("output.field");
     std::string extension = path.size() >= 4 ? path.substr(path.size() - 4) : "";
     for (char& ch : extension) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-    if (extension != ".ply") {
-      throw s.Error("output.field", "'" + path + "': the field is written as PLY (.ply)");
+    const bool raw = path.size() >= 9 && [&] {
+      std::string end = path.substr(path.size() - 9);
+      for (char& ch : end) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+      return end == ".rawfield";
+    }();
+    if (extension != ".ply" && !raw) {
+      throw s.Error("output.field", "'" + path + "': the field is written as PLY (.ply, to view) or as "
+                                    "Directional's raw field (.rawfield, to read back with field.file)");
     }
   }
 }

@@ -543,7 +543,8 @@ void WriteLevelSets(HookContext& c) {
   }
   if (const auto it = c.temporaries.find("field"); it != c.temporaries.end()) {
     const FieldResult& field = *result->field;
-    WriteFieldPly(it->second, field.mesh, field.geometry, field.field, field.frame, "output.field");
+    WriteField(it->second, c.settings->String("output.field"), field.mesh, field.geometry, field.field,
+               field.frame, "output.field");
   }
 }
 
