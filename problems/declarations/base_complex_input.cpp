@@ -220,7 +220,8 @@ UserBaseComplex ReadUserBaseComplex(const Settings& s, const std::vector<Eigen::
   if (mesh.empty() == ids.empty()) {
     throw s.Error(mesh.empty() ? "base_complex.mesh" : "base_complex.ids",
                   "give the base complex as exactly one of base_complex.mesh (a triangle/quad mesh "
-                  "on the surface) and base_complex.ids (surface vertex ids and faces)");
+                  "on the surface), base_complex.ids (surface vertex ids and faces) and "
+                  "base_complex.decimate (a vertex count to decimate the surface to)");
   }
   if (!mesh.empty()) {
     return BcSnapMesh(mesh, points, s.Number("base_complex.tolerance") * diagonal);

@@ -2,7 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // archgeo — `base_complex_quads`: a closed triangle mesh of the design
 // surface and a base complex on it (from the user: base_complex.mesh or
-// base_complex.ids, problems/declarations/base_complex_input.h) → charts →
+// base_complex.ids, problems/declarations/base_complex_input.h; or the
+// surface decimated to base_complex.decimate vertices [Gebreiter 2012,
+// §3.1.1], spectral/decimate.h) → charts →
 // their parameterisation over the equilateral triangle or the unit square →
 // an all-quad mesh sampled from them [Gebreiter 2012, §4.1]
 // (spectral/base_complex_charts.h).
@@ -18,12 +20,15 @@
 // irregular vertices are exactly the predicted ones, there is no boundary
 // edge, T-junction or non-manifold edge, and every output vertex is within
 // 1e-9 of the diagonal of the input surface.
+#include <chrono>
+
 #include "core/problem.h"
 #include "core/input_error.h"
 #include "mesh/similarity.h"
 #include "problems/declarations/base_complex_input.h"
 #include "problems/runtime/model.h"
 #include "spectral/base_complex_charts.h"
+#include "spectral/decimate.h"
 
 namespace archgeo::problems {
 namespace {
@@ -46,6 +51,56 @@ void BcArrays(const Mesh& mesh, std::vector<Eigen::Vector3d>& points,
   }
 }
 
+// The design mesh decimated to `target` vertices (spectral/decimate.h) as
+// the base complex; its figures into `details`.
+UserBaseComplex DecimatedBaseComplex(const Settings& s, const std::vector<Eigen::Vector3d>& points,
+                                     const std::vector<std::array<int, 3>>& triangles, int target,
+                                     nlohmann::json& details) {
+  DecimateOptions options;
+  options.target_vertices = target;
+  const auto start = std::chrono::steady_clock::now();
+  DecimateResult r;
+  try {
+    r = Decimate(points, triangles, options);
+  } catch (const std::invalid_argument& e) {
+    throw s.Error("base_complex.decimate", e.what());
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!r.reached) {
+    throw s.Error("base_complex.decimate",
+                  "decimation stopped at " + std::to_string(r.nodes.size()) + " vertices for " +
+                      std::to_string(target) +
+                      ": no collapse left keeps the surface manifold, its normals within bounds "
+                      "and its valences at least 3; give more vertices");
+  }
+  const FeatureProximity near = MeasureFeatureProximity(points, triangles, r);
+  details = {{"target_vertices", target},
+             {"vertices", r.nodes.size()},
+             {"triangles", r.triangles.size()},
+             {"boundary_corners", r.corners},
+             {"flips", r.flips},
+             {"irregular_vertices", near.irregular},
+             {"irregular_near_feature", near.irregular_near},
+             {"vertices_near_feature", near.near},
+             {"curvature_extrema", near.extrema},
+             {"seconds", seconds}};
+  UserBaseComplex out;
+  out.complex = r.Complex();
+  out.file = s.String("mesh");
+  out.key = "base_complex.decimate";
+  return out;
+}
+
+void BcCheck(const Settings& s) {
+  CheckChartKeys(s);
+  if (s.Integer("base_complex.decimate") > 0 &&
+      (!s.String("base_complex.mesh").empty() || !s.String("base_complex.ids").empty())) {
+    throw s.Error("base_complex.decimate",
+                  "give the base complex as exactly one of base_complex.mesh, base_complex.ids and "
+                  "base_complex.decimate");
+  }
+}
+
 void BcNet(HookContext& c) {
   const Settings& s = *c.settings;
   const Mesh& design = *c.input;
@@ -60,11 +115,26 @@ void BcNet(HookContext& c) {
   std::vector<std::array<int, 3>> triangles;
   BcArrays(design, points, triangles);
   const double diagonal = PrincipalBoxDiagonal(design);
-  const UserBaseComplex user = ReadUserBaseComplex(s, points, diagonal);
+  const int decimate = int(s.Integer("base_complex.decimate"));
+  UserBaseComplex user;
+  nlohmann::json decimation;
+  if (decimate > 0) {
+    user = DecimatedBaseComplex(s, points, triangles, decimate, decimation);
+  } else {
+    user = ReadUserBaseComplex(s, points, diagonal);
+  }
   ChartStep step;
   try {
     step = RunChartStep(s, design, points, triangles, user.complex);
   } catch (const BaseComplexError& e) {
+    if (decimate > 0) {
+      throw s.Error("base_complex.decimate",
+                    "the decimated base complex (" + std::to_string(user.complex.nodes.size()) +
+                        " vertices) cannot be charted: " + e.what() +
+                        ". The charts join the base vertices by shortest paths on the design "
+                        "mesh's edges that share no vertex; try another vertex count, or give the "
+                        "base complex with base_complex.mesh");
+    }
     throw InputError(user.file, 0, user.key, e.what());
   } catch (const std::invalid_argument& e) {
     throw s.Error("charts.n", e.what());
@@ -75,8 +145,10 @@ void BcNet(HookContext& c) {
   c.net.source.clear();  // output vertices are not input vertices
   c.details["charts"] = std::move(step.details);
   c.details["charts"]["snap_distance_max_relative"] = user.snap_distance / diagonal;
+  if (decimate > 0) c.details["decimation"] = std::move(decimation);
   c.net.headline = "base complex: " + std::to_string(user.complex.nodes.size()) + " vertices, " +
-                   std::to_string(user.complex.faces.size()) + " faces from " + user.file + "\n" +
+                   std::to_string(user.complex.faces.size()) + " faces " +
+                   (decimate > 0 ? "decimated from " : "from ") + user.file + "\n" +
                    step.headline;
 }
 
@@ -87,7 +159,8 @@ std::string BcInvalid(HookContext& c) { return c.State<BcState>().invalid; }
 ProblemDecl base_complex_quads() {
   ProblemDecl d;
   d.name = "base_complex_quads";
-  d.summary = "base complex on a closed triangle mesh → charts → parameterisation → all-quad mesh";
+  d.summary = "base complex (given or decimated) on a closed triangle mesh → charts → "
+              "parameterisation → all-quad mesh";
   d.paper = "[Gebreiter 2012, §4.1]";
   d.input = InputKind::kTriangles;
   d.keys = {
@@ -97,11 +170,15 @@ ProblemDecl base_complex_quads() {
       PathKey("base_complex.ids", Type::kInputPath,
               "or the base complex as surface vertex ids and faces: lines 'v ID' (0-based) and "
               "'f I J K [L]' (1-based base vertices, counter-clockwise)"),
+      IntegerKey("base_complex.decimate", 0, 0, 10000000,
+                 "or decimate the design mesh to this many base vertices: the least curved "
+                 "vertices collapse first, into the neighbour that keeps triangles best shaped "
+                 "(spectral/decimate.h); 0 = off"),
       NumberKey("base_complex.tolerance", 0.01, 0, 1,
                 "a base vertex farther than this (fraction of the design mesh's diagonal) from "
                 "every vertex of the design mesh is refused")};
   for (Key& k : ChartKeys()) d.keys.push_back(std::move(k));
-  d.check = &CheckChartKeys;
+  d.check = &BcCheck;
   d.net = &BcNet;
   d.stages = &NetIsTheResult;
   d.invalid = &BcInvalid;
