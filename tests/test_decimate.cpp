@@ -1,0 +1,364 @@
+// SPDX-FileCopyrightText: The archgeo authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Decimation to a base complex (spectral/decimate.h, Gebreiter 2012, §3.1.1)
+// and base_complex.decimate in base_complex_quads: the target count is met
+// exactly; a sphere keeps V − E + F = 2 and a torus 0, as closed manifolds;
+// the eight corners of a cube (its only curvature: angle defect π/2 each)
+// survive as base vertices; an open surface keeps its boundary corners and
+// its boundary loop; a decimated sphere goes through the charts to a quad
+// mesh whose irregular vertices are the base complex's; bad key
+// combinations exit 2 naming the keys.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include "io/io.h"
+#include "problems/commands/spectral.h"
+#include "scratch_dir.h"
+#include "shell.h"
+#include "spectral/base_complex_charts.h"
+#include "spectral/decimate.h"
+
+namespace archgeo {
+namespace ARCHGEO_UNITY_ID {
+
+using V3 = Eigen::Vector3d;
+using Triangles = std::vector<std::array<int, 3>>;
+
+// The octahedron split `levels` times at edge midpoints, on the unit sphere.
+void DcSphere(int levels, std::vector<V3>& p, Triangles& t) {
+  p = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  t = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  for (int l = 0; l < levels; ++l) {
+    std::map<std::pair<int, int>, int> mid;
+    auto at = [&](int a, int b) {
+      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+      const auto it = mid.find(key);
+      if (it != mid.end()) return it->second;
+      p.push_back(((p[size_t(a)] + p[size_t(b)]) / 2).normalized());
+      return mid[key] = int(p.size()) - 1;
+    };
+    Triangles finer;
+    for (const auto& f : t) {
+      const int a = at(f[0], f[1]), b = at(f[1], f[2]), c = at(f[2], f[0]);
+      finer.push_back({f[0], a, c});
+      finer.push_back({a, f[1], b});
+      finer.push_back({c, b, f[2]});
+      finer.push_back({a, b, c});
+    }
+    t = finer;
+  }
+}
+
+// A torus (radii 2, 0.7) of u × v vertices.
+void DcTorus(int u, int v, std::vector<V3>& p, Triangles& t) {
+  for (int j = 0; j < v; ++j) {
+    for (int i = 0; i < u; ++i) {
+      const double a = 2 * M_PI * i / u, b = 2 * M_PI * j / v;
+      p.push_back({(2 + 0.7 * std::cos(b)) * std::cos(a), (2 + 0.7 * std::cos(b)) * std::sin(a),
+                   0.7 * std::sin(b)});
+    }
+  }
+  auto id = [&](int i, int j) { return ((j + v) % v) * u + (i + u) % u; };
+  for (int j = 0; j < v; ++j) {
+    for (int i = 0; i < u; ++i) {
+      t.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      t.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  }
+}
+
+// The cube [−1, 1]³, each face an m × m grid of two triangles per cell,
+// outward; its corners are the vertices with |x| = |y| = |z| = 1.
+void DcCube(int m, std::vector<V3>& p, Triangles& t) {
+  std::map<std::array<long, 3>, int> id;
+  auto vertex = [&](const V3& x) {
+    const std::array<long, 3> key{std::lround(x[0] * 1e6), std::lround(x[1] * 1e6),
+                                  std::lround(x[2] * 1e6)};
+    const auto it = id.find(key);
+    if (it != id.end()) return it->second;
+    p.push_back(x);
+    return id[key] = int(p.size()) - 1;
+  };
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int side = -1; side <= 1; side += 2) {
+      V3 n = V3::Zero(), a = V3::Zero();
+      n[axis] = side;
+      a[(axis + 1) % 3] = 1;
+      const V3 b = n.cross(a);
+      auto at = [&](int i, int j) { return vertex(n + a * (2.0 * i / m - 1) + b * (2.0 * j / m - 1)); };
+      for (int i = 0; i < m; ++i) {
+        for (int j = 0; j < m; ++j) {
+          const int v00 = at(i, j), v10 = at(i + 1, j), v11 = at(i + 1, j + 1), v01 = at(i, j + 1);
+          t.push_back({v00, v10, v11});
+          t.push_back({v00, v11, v01});
+        }
+      }
+    }
+  }
+}
+
+// An open (m + 1) × (m + 1) grid on the saddle z = 0.2 (x² − y²) over [−1, 1]².
+void DcSaddleGrid(int m, std::vector<V3>& p, Triangles& t) {
+  for (int j = 0; j <= m; ++j) {
+    for (int i = 0; i <= m; ++i) {
+      const double x = 2.0 * i / m - 1, y = 2.0 * j / m - 1;
+      p.push_back({x, y, 0.2 * (x * x - y * y)});
+    }
+  }
+  auto id = [m](int i, int j) { return j * (m + 1) + i; };
+  for (int j = 0; j < m; ++j) {
+    for (int i = 0; i < m; ++i) {
+      t.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      t.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  }
+}
+
+struct DcTopology {
+  int euler = 0;
+  int boundary_edges = 0;
+  int non_manifold_edges = 0;
+};
+
+DcTopology Topology(size_t vertices, const Triangles& t) {
+  std::map<std::pair<int, int>, int> use;
+  for (const auto& f : t) {
+    for (int k = 0; k < 3; ++k) {
+      const int a = f[size_t(k)], b = f[size_t((k + 1) % 3)];
+      ++use[{std::min(a, b), std::max(a, b)}];
+    }
+  }
+  DcTopology out;
+  out.euler = int(vertices) - int(use.size()) + int(t.size());
+  for (const auto& [edge, count] : use) {
+    out.boundary_edges += count == 1;
+    out.non_manifold_edges += count > 2;
+  }
+  return out;
+}
+
+DecimateResult DecimateTo(const std::vector<V3>& p, const Triangles& t, int target) {
+  DecimateOptions options;
+  options.target_vertices = target;
+  return Decimate(p, t, options);
+}
+
+TEST(Decimate, ReachesTheTargetExactly) {
+  std::vector<V3> p;
+  Triangles t;
+  DcSphere(3, p, t);  // 258 vertices
+  for (int target : {12, 40, 100, 257}) {
+    const DecimateResult r = DecimateTo(p, t, target);
+    EXPECT_TRUE(r.reached) << target;
+    EXPECT_EQ(int(r.nodes.size()), target);
+    // Every input vertex went into a node; the nodes stand for themselves.
+    for (size_t v = 0; v < p.size(); ++v) ASSERT_GE(r.representative[v], 0);
+    for (size_t k = 0; k < r.nodes.size(); ++k) EXPECT_EQ(r.representative[size_t(r.nodes[k])], int(k));
+  }
+  EXPECT_THROW(DecimateTo(p, t, 259), std::invalid_argument);
+  EXPECT_THROW(DecimateTo(p, t, 2), std::invalid_argument);
+}
+
+TEST(Decimate, SphereAndTorusKeepTheirEulerCharacteristic) {
+  std::vector<V3> sphere;
+  Triangles ts;
+  DcSphere(3, sphere, ts);
+  std::vector<V3> torus;
+  Triangles tt;
+  DcTorus(32, 16, torus, tt);
+  for (int target : {12, 30, 100}) {
+    const DecimateResult s = DecimateTo(sphere, ts, target);
+    const DcTopology a = Topology(s.nodes.size(), s.triangles);
+    EXPECT_EQ(a.euler, 2) << target;
+    EXPECT_EQ(a.boundary_edges, 0);
+    EXPECT_EQ(a.non_manifold_edges, 0);
+    EXPECT_EQ(int(s.triangles.size()), 2 * target - 4);  // closed, χ = 2
+  }
+  for (int target : {40, 100, 300}) {
+    const DecimateResult r = DecimateTo(torus, tt, target);
+    ASSERT_TRUE(r.reached) << target;
+    const DcTopology a = Topology(r.nodes.size(), r.triangles);
+    EXPECT_EQ(a.euler, 0) << target;
+    EXPECT_EQ(a.boundary_edges, 0);
+    EXPECT_EQ(a.non_manifold_edges, 0);
+    EXPECT_EQ(int(r.triangles.size()), 2 * target);  // closed, χ = 0
+  }
+}
+
+TEST(Decimate, CubeKeepsItsEightCorners) {
+  std::vector<V3> p;
+  Triangles t;
+  DcCube(6, p, t);  // 218 vertices; curvature only at the corners (π/2) and along the edges
+  auto corners = [&p](const DecimateResult& r) {
+    int n = 0;
+    for (int v : r.nodes) {
+      n += std::abs(std::abs(p[size_t(v)].x()) - 1) < 1e-12 &&
+           std::abs(std::abs(p[size_t(v)].y()) - 1) < 1e-12 &&
+           std::abs(std::abs(p[size_t(v)].z()) - 1) < 1e-12;
+    }
+    return n;
+  };
+  for (int target : {20, 26, 40, 60}) {
+    const DecimateResult r = DecimateTo(p, t, target);
+    ASSERT_TRUE(r.reached) << target;
+    EXPECT_EQ(corners(r), 8) << target;
+    EXPECT_EQ(Topology(r.nodes.size(), r.triangles).euler, 2);
+  }
+  // Below 20 the 10° minimum-angle bound blocks the edges' vertices and the
+  // corners go first; without it they stay down to 11 vertices (the normal
+  // bound stops the collapses there).
+  DecimateOptions options;
+  options.min_angle_degrees = 0;
+  for (int target : {11, 14}) {
+    options.target_vertices = target;
+    const DecimateResult r = Decimate(p, t, options);
+    ASSERT_TRUE(r.reached) << target;
+    EXPECT_EQ(corners(r), 8) << target;
+  }
+  // The importance on the input: the corners' angle defect π/2 over a third
+  // of three right triangles, times h², dominates every other vertex's.
+  const std::vector<double> importance = VertexImportance(p, t);
+  double corner_min = INFINITY, other_max = 0, flat_max = 0;
+  for (size_t v = 0; v < p.size(); ++v) {
+    const V3 a = p[v].cwiseAbs();
+    const int on_faces = (std::abs(a.x() - 1) < 1e-12) + (std::abs(a.y() - 1) < 1e-12) +
+                         (std::abs(a.z() - 1) < 1e-12);
+    if (on_faces == 3) {
+      corner_min = std::min(corner_min, importance[v]);
+    } else {
+      other_max = std::max(other_max, importance[v]);
+    }
+    if (on_faces == 1) flat_max = std::max(flat_max, importance[v]);
+  }
+  EXPECT_GT(corner_min, other_max);
+  EXPECT_NEAR(flat_max, 0, 1e-12);  // a vertex inside a face: no curvature
+}
+
+TEST(Decimate, OpenSurfaceKeepsItsBoundaryCornersAndLoop) {
+  std::vector<V3> p;
+  Triangles t;
+  DcSaddleGrid(12, p, t);  // 169 vertices, 4 corners turning by 90°
+  const std::set<int> grid_corners = {0, 12, 156, 168};
+  for (int target : {4, 10, 40}) {
+    const DecimateResult r = DecimateTo(p, t, target);
+    ASSERT_TRUE(r.reached) << target;
+    EXPECT_EQ(r.corners, 4);
+    EXPECT_EQ(r.boundary_loops, 1);
+    std::set<int> kept;
+    for (int v : r.nodes) {
+      if (grid_corners.count(v)) kept.insert(v);
+    }
+    EXPECT_EQ(kept, grid_corners) << target;
+    const DcTopology a = Topology(r.nodes.size(), r.triangles);
+    EXPECT_EQ(a.euler, 1) << target;
+    EXPECT_EQ(a.non_manifold_edges, 0);
+    // Boundary vertices of the result are boundary vertices of the input.
+    std::map<std::pair<int, int>, int> use;
+    for (const auto& f : r.triangles) {
+      for (int k = 0; k < 3; ++k) {
+        const int a = r.nodes[size_t(f[size_t(k)])], b = r.nodes[size_t(f[size_t((k + 1) % 3)])];
+        ++use[{std::min(a, b), std::max(a, b)}];
+      }
+    }
+    for (const auto& [edge, count] : use) {
+      if (count != 1) continue;
+      for (int v : {edge.first, edge.second}) {
+        const int i = v % 13, j = v / 13;
+        EXPECT_TRUE(i == 0 || i == 12 || j == 0 || j == 12) << "vertex " << v;
+      }
+    }
+  }
+  // A corner turning by less than corner_degrees is not locked.
+  DecimateOptions options;
+  options.target_vertices = 40;
+  options.corner_degrees = 95;
+  EXPECT_EQ(Decimate(p, t, options).corners, 0);
+}
+
+TEST(Decimate, NearFeatureCountsTheCubeCornersAsFeatures) {
+  std::vector<V3> p;
+  Triangles t;
+  DcCube(6, p, t);
+  const DecimateResult r = DecimateTo(p, t, 20);
+  const FeatureProximity f = MeasureFeatureProximity(p, t, r);
+  EXPECT_EQ(f.nodes, 20);
+  EXPECT_EQ(f.extrema, 8);  // the smoothed importance peaks at the corners only
+  EXPECT_GT(f.irregular, 0);
+  EXPECT_EQ(f.irregular_near, f.irregular);
+}
+
+// The decimated sphere of examples/sphere.obj (642 vertices) to 12 base
+// vertices through the charts: the quad mesh's irregular vertices are
+// exactly the base complex's nodes of valence ≠ 4 and its triangles' centres.
+TEST(Decimate, DecimatedSphereGivesQuadsIrregularOnlyAtTheBaseComplex) {
+  const SpectralMesh m =
+      SpectralArrays(ReadMesh(std::string(ARCHGEO_SOURCE_DIR) + "/examples/sphere.obj"));
+  const DecimateResult r = DecimateTo(m.points, m.triangles, 12);
+  ASSERT_TRUE(r.reached);
+  const ChartQuadsResult q =
+      ChartQuads(m.points, m.triangles, r.Complex(), 8, 0, ChartWeights::kCotangent);
+  EXPECT_EQ(q.flipped, 0);
+  EXPECT_EQ(q.boundary_edges, 0);
+  EXPECT_EQ(q.t_junctions, 0);
+  EXPECT_EQ(q.irregular, q.expected_irregular);
+  std::set<int> base_vertices(q.quads.node_vertex.begin(), q.quads.node_vertex.end());
+  for (int c : q.quads.centre_vertex) {
+    if (c >= 0) base_vertices.insert(c);
+  }
+  for (int v : q.irregular) EXPECT_TRUE(base_vertices.count(v)) << "vertex " << v;
+  // Each node's output vertex is its surface vertex.
+  for (size_t k = 0; k < r.nodes.size(); ++k) {
+    EXPECT_LT((q.quads.points[size_t(q.quads.node_vertex[k])] - m.points[size_t(r.nodes[k])]).norm(),
+              1e-12);
+  }
+  EXPECT_EQ(q.irregular.size(), 12u + 20u);  // 12 nodes of valence 5, 20 triangle centres
+}
+
+class DecimateCli_ : public ScratchDirTest {
+ protected:
+  Outcome Solve(const std::string& sets) {
+    return Shell(std::string(ARCHGEO_BINARY) + " solve " + ARCHGEO_SOURCE_DIR +
+                 "/examples/base_complex_decimate.yaml --quiet --set output.report=" +
+                 Path("r.json") + " --set output.mesh=" + Path("out.obj") + " " + sets);
+  }
+};
+
+TEST_F(DecimateCli_, ExampleRuns) {
+  const Outcome o = Solve("");
+  ASSERT_EQ(o.code, 0) << o.output;
+  const nlohmann::json d = nlohmann::json::parse(std::ifstream(Path("r.json"))).at("details");
+  EXPECT_EQ(d.at("decimation").at("vertices"), 12);
+  EXPECT_EQ(d.at("decimation").at("triangles"), 20);
+  EXPECT_EQ(d.at("charts").at("charts"), 20);
+  EXPECT_EQ(d.at("charts").at("irregular_as_predicted"), true);
+  EXPECT_EQ(d.at("charts").at("flipped_parameter_triangles"), 0);
+}
+
+TEST_F(DecimateCli_, BadKeyCombinationsExit2NamingTheKeys) {
+  // Decimation and a base complex from a file.
+  Outcome o = Solve("--set base_complex.mesh=" + std::string(ARCHGEO_SOURCE_DIR) +
+                    "/examples/octahedron.obj");
+  EXPECT_EQ(o.code, 2) << o.output;
+  EXPECT_NE(o.output.find("base_complex.decimate"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("base_complex.mesh"), std::string::npos) << o.output;
+  EXPECT_FALSE(std::ifstream(Path("out.obj")).good());
+  // None of the three.
+  o = Solve("--set base_complex.decimate=0");
+  EXPECT_EQ(o.code, 2) << o.output;
+  EXPECT_NE(o.output.find("base_complex.ids"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("base_complex.decimate"), std::string::npos) << o.output;
+  // More base vertices than the mesh has.
+  o = Solve("--set base_complex.decimate=5000");
+  EXPECT_EQ(o.code, 2) << o.output;
+  EXPECT_NE(o.output.find("base_complex.decimate"), std::string::npos) << o.output;
+  EXPECT_FALSE(std::ifstream(Path("out.obj")).good());
+}
+
+}  // namespace ARCHGEO_UNITY_ID
+}  // namespace archgeo
