@@ -237,10 +237,12 @@ void Collapse(DcMesh& m, int u, int v) {
 // flipped if the result leads to an overall increase in regularity of the
 // vertices affected"): triangles (a, b, c) and (b, a, d) become (c, a, d)
 // and (d, b, c) when Σ (valence − ideal)² over a, b, c, d drops (ideal 6
-// inside, 4 on the boundary), or stays and the smaller minimum angle grows;
-// not if c-d is an edge already, a valence leaves [3, cap] (2 on the
-// boundary), or a new triangle is degenerate or turns from the old normals
-// by more than the collapse bound. Returns whether it flipped.
+// inside, 4 on the boundary) and the smaller minimum angle keeps 80%, or
+// stays and the smaller minimum angle grows; not if c-d is an edge already,
+// a valence leaves [3, cap] (2 on the boundary), or a new triangle is
+// degenerate, turns from the old normals by more than the collapse bound or
+// leaves its corners' input normals by more than theirs. Returns whether it
+// flipped.
 bool TryFlip(DcMesh& m, int a, int b, double cos_turn, const std::vector<int>& cap) {
   int f1 = -1, f2 = -1;
   for (int f : m.at[size_t(a)]) {

@@ -20,13 +20,24 @@
 //    minimum angle (isotropy). A collapse is refused if it breaks the link
 //    condition (N(u) ∩ N(v) = the vertices opposite edge uv; so a closed
 //    surface keeps its genus and stays manifold), leaves a vertex of
-//    valence < 3 (< 2 on the boundary), turns a triangle's normal by more
-//    than `max_normal_turn_degrees` or makes it degenerate. A boundary
-//    vertex collapses only along a boundary edge (the boundary keeps its
-//    loops and its vertices stay on it); a boundary corner (the boundary
-//    turns there by more than `corner_degrees` on the input) and any vertex
-//    in `locked` never collapses. A vertex with no admissible collapse waits
-//    until its one ring changes.
+//    valence < 3 (< 2 on the boundary) or v more than 2 above its input
+//    valence, turns a triangle's normal by more than
+//    `max_normal_turn_degrees`, puts it more than
+//    `max_normal_deviation_degrees` from its corners' input vertex normals,
+//    makes it degenerate, or makes a triangle's smallest angle less than
+//    `min_angle_degrees` and less than it was. A boundary vertex collapses
+//    only along a boundary edge (the boundary keeps its loops and its
+//    vertices stay on it); a boundary corner (the boundary turns there by
+//    more than `corner_degrees` on the input) and any vertex in `locked`
+//    never collapses. A vertex with no admissible collapse waits until its
+//    one ring changes.
+//  - After each collapse, valence-improving flips on the edges around the
+//    kept vertex (§3.1.2: "edges are flipped if the result leads to an
+//    overall increase in regularity"): Σ (valence − ideal)² over the four
+//    vertices drops (ideal 6 inside, 4 on the boundary) and the smallest
+//    angle keeps 80%, or stays and the smallest angle grows; no valence
+//    above the input's (the charts' paths leave a node along distinct
+//    surface edges), normals within the bounds above.
 //  - Every collapse removes one vertex: the target count is met exactly
 //    unless every remaining vertex is refused (`reached` false).
 //
