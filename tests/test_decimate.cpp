@@ -191,6 +191,39 @@ TEST(Decimate, SphereAndTorusKeepTheirEulerCharacteristic) {
   }
 }
 
+// With the geometric bounds off, only the link condition and the valence
+// floor keep the topology: a torus decimated to 8 vertices (one more than
+// Császár's minimal 7) is still a closed manifold torus.
+TEST(Decimate, LinkConditionAloneKeepsTheTopology) {
+  DecimateOptions options;
+  options.max_normal_turn_degrees = 180;
+  options.max_normal_deviation_degrees = 180;
+  options.min_angle_degrees = 0;
+  std::vector<V3> torus;
+  Triangles tt;
+  DcTorus(32, 16, torus, tt);
+  for (int target : {8, 10, 20, 40}) {
+    options.target_vertices = target;
+    const DecimateResult r = Decimate(torus, tt, options);
+    ASSERT_TRUE(r.reached) << target;
+    const DcTopology a = Topology(r.nodes.size(), r.triangles);
+    EXPECT_EQ(a.euler, 0) << target;
+    EXPECT_EQ(a.boundary_edges, 0) << target;
+    EXPECT_EQ(a.non_manifold_edges, 0) << target;
+  }
+  std::vector<V3> sphere;
+  Triangles ts;
+  DcSphere(3, sphere, ts);
+  for (int target : {4, 6, 12}) {
+    options.target_vertices = target;
+    const DecimateResult r = Decimate(sphere, ts, options);
+    ASSERT_TRUE(r.reached) << target;
+    const DcTopology a = Topology(r.nodes.size(), r.triangles);
+    EXPECT_EQ(a.euler, 2) << target;
+    EXPECT_EQ(a.non_manifold_edges, 0) << target;
+  }
+}
+
 TEST(Decimate, CubeKeepsItsEightCorners) {
   std::vector<V3> p;
   Triangles t;
