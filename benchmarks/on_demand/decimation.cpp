@@ -16,7 +16,8 @@
 //    are (the chance level).
 // The only place CGAL's simplification is included.
 //
-//   ninja -C <build> archgeo_benchmarks && <build>/benchmarks/decimation [--targets 100,300]
+//   ninja -C build decimation && build/benchmarks/decimation [--targets 100,300]
+// (built on demand: benchmarks/CMakeLists.txt)
 //
 // Prints one row per surface and count; exit 1 if a Hausdorff ratio is above 1.1.
 #include <algorithm>
