@@ -11,6 +11,10 @@
 //   w(d) = 0                                  beyond,
 //
 // so the field follows the curve near it and blends into the free field at r.
+// Where several curves of one family (lines within 45° of the nearest one's
+// tangent) are within r, as principal-stress lines exported by an FE tool
+// are, the tangent is their tangents blended by 1/d, so the directions turn
+// in proportion to the position from one curve to its neighbour.
 // Plain arrays: no CGAL, no YAML.
 #pragma once
 
@@ -22,7 +26,7 @@ namespace archgeo {
 
 struct GuideFace {
   int face = 0;
-  Eigen::Vector3d tangent;  // unit tangent of the nearest curve at its closest point
+  Eigen::Vector3d tangent;  // unit tangent: the nearest curve's, blended with its neighbours' (above)
   double distance = 0;      // from the face's centroid to that point
   double weight = 0;        // w(distance) above, in (0, 1]
   int curve = 0;            // which curve

@@ -18,6 +18,8 @@
 //    displacement ≤ 0.5% of the diagonal), valid, every output written;
 //  - bad input: a quad mesh, face ids that do not exist, a target face count
 //    of 0, both spacings: InputError naming the key, nothing written.
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -812,6 +814,70 @@ TEST_F(FieldInputTest, AFieldFileRoundTripsAndBadFilesAreRefused) {
   WriteFile("nan.rawfield", "2 1\nnan 0 0 -1 0 0\n");
   ExpectInputError("mesh: top.obj\nproblem: conjugate_field\nfield: {file: nan.rawfield}\n", "field.file");
 }
+
+// Principal-stress lines as a designer gets them from an FE tool (thesis
+// §11.6): polylines covering a shell, given as guide curves with a radius of
+// about their spacing. On a spherical cap (every direction principal, so the
+// free field follows nothing in particular) 24 meridians make the field
+// radial: one direction of the faces between 0.3 and 0.95 from the apex is
+// on average within 2° of the radial direction (95% within 4°).
+TEST_F(FieldInputTest, StressLinesAsGuideCurvesMakeTheFieldFollowThem) {
+  TriangleGridOptions opt;
+  opt.jitter = 0.2;
+  const double R = 2;
+  auto cap = [&](double x, double y) { return V3(x, y, std::sqrt(R * R - x * x - y * y)); };
+  const Mesh mesh = TriangulatedGrid(30, 30, [&](double u, double v) -> Vec3 {
+    const V3 p = cap(2 * u - 1, 2 * v - 1);
+    return {p.x(), p.y(), p.z()};
+  }, opt);
+  std::string obj;
+  int next = 1;
+  for (int k = 0; k < 24; ++k) {
+    const double t = 2 * M_PI * k / 24;
+    std::string line = "l";
+    for (int i = 0; i <= 40; ++i) {
+      const double r = 0.05 + 1.35 * i / 40;
+      const V3 p = cap(r * std::cos(t), r * std::sin(t));
+      obj += "v " + std::to_string(p.x()) + " " + std::to_string(p.y()) + " " + std::to_string(p.z()) + "\n";
+      line += " " + std::to_string(next++);
+    }
+    obj += line + "\n";
+  }
+  const std::string lines = WriteFile("stress.obj", obj);
+  const auto free = SolveYaml(kUnconstrained, mesh);
+  const auto guided = SolveYaml("problem: conjugate_field\nfield: {boundary_alignment: 0, guide_curves: " +
+                                    lines + ", guide_radius: 0.15}\n",
+                                mesh);
+  const FieldResult& r = *FieldOf(*guided);
+  std::vector<double> off_guided, off_free;
+  for (FaceIndex f : mesh.faces()) {
+    const V3 c = Centroid(r, f);
+    const double plan = std::hypot(c.x(), c.y());
+    if (plan < 0.3 || plan > 0.95) continue;
+    const V3 n = c.normalized();
+    V3 radial = V3(c.x(), c.y(), 0) / plan;
+    radial = (radial - n * n.dot(radial)).normalized();
+    auto off = [&](const FieldResult& x) {
+      return std::min(LineDeg(V3D(x, f), radial), LineDeg(V3D(x, f, true), radial));
+    };
+    off_guided.push_back(off(r));
+    off_free.push_back(off(*FieldOf(*free)));
+  }
+  auto stats = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    double mean = 0;
+    for (double x : v) mean += x / double(v.size());
+    return std::array<double, 3>{mean, v[size_t(0.95 * double(v.size()))], v.back()};
+  };
+  const auto g = stats(off_guided), u = stats(off_free);
+  std::printf("stress lines: %zu faces, from the meridians mean %.2f°, 95%% %.2f°, max %.2f° (free field: "
+              "mean %.2f°, 95%% %.2f°)\n", off_guided.size(), g[0], g[1], g[2], u[0], u[1]);
+  EXPECT_GT(off_guided.size(), 500u);
+  EXPECT_LE(g[0], 2.0);  // 1.46°: the lines are 15° apart, the blend between them
+  EXPECT_LE(g[1], 4.0);  // 2.96°
+  EXPECT_GT(u[1], 20.0);  // without the lines the field is not radial
+}
+
 
 // A regular octahedron's layout has a nearly degenerate polygon whose
 // constrained triangulation tripped a CGAL precondition with one thread
