@@ -22,6 +22,7 @@
 #include "scratch_dir.h"
 #include "shell.h"
 #include "spectral/base_complex_charts.h"
+#include "tests/closed_meshes.h"
 
 namespace archgeo {
 namespace ARCHGEO_UNITY_ID {
@@ -34,53 +35,6 @@ constexpr double kSameSample = 1e-12;  // of the diagonal
 
 const std::vector<std::vector<int>> kOctahedronFaces = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
                                                         {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
-
-// The octahedron split `levels` times at edge midpoints, on the unit sphere;
-// vertices 0 … 5 are the octahedron's (±x, ±y, ±z).
-void OctahedronSphere(int levels, std::vector<V3>& p, Triangles& t) {
-  p = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-  t.clear();
-  for (const auto& f : kOctahedronFaces) t.push_back({f[0], f[1], f[2]});
-  for (int l = 0; l < levels; ++l) {
-    std::map<std::pair<int, int>, int> mid;
-    auto at = [&](int a, int b) {
-      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
-      const auto it = mid.find(key);
-      if (it != mid.end()) return it->second;
-      p.push_back(((p[a] + p[b]) / 2).normalized());
-      return mid[key] = int(p.size()) - 1;
-    };
-    Triangles finer;
-    for (const auto& f : t) {
-      const int a = at(f[0], f[1]), b = at(f[1], f[2]), c = at(f[2], f[0]);
-      finer.push_back({f[0], a, c});
-      finer.push_back({a, f[1], b});
-      finer.push_back({c, b, f[2]});
-      finer.push_back({a, b, c});
-    }
-    t = finer;
-  }
-}
-
-// A torus (radii 2, 0.7) of u × v vertices, vertex j·u + i, two triangles per cell.
-void GridTorus(int u, int v, std::vector<V3>& p, Triangles& t) {
-  p.clear();
-  t.clear();
-  for (int j = 0; j < v; ++j) {
-    for (int i = 0; i < u; ++i) {
-      const double a = 2 * M_PI * i / u, b = 2 * M_PI * j / v;
-      p.push_back({(2 + 0.7 * std::cos(b)) * std::cos(a), (2 + 0.7 * std::cos(b)) * std::sin(a),
-                   0.7 * std::sin(b)});
-    }
-  }
-  auto id = [&](int i, int j) { return ((j + v) % v) * u + (i + u) % u; };
-  for (int j = 0; j < v; ++j) {
-    for (int i = 0; i < u; ++i) {
-      t.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      t.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
-  }
-}
 
 // The 4 × 4 quad complex on GridTorus(u, v): nodes at every u/4-th and v/4-th vertex.
 BaseComplex TorusComplex(int u, int v) {

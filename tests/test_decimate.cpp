@@ -23,55 +23,13 @@
 #include "shell.h"
 #include "spectral/base_complex_charts.h"
 #include "spectral/decimate.h"
+#include "tests/closed_meshes.h"
 
 namespace archgeo {
 namespace ARCHGEO_UNITY_ID {
 
 using V3 = Eigen::Vector3d;
 using Triangles = std::vector<std::array<int, 3>>;
-
-// The octahedron split `levels` times at edge midpoints, on the unit sphere.
-void DcSphere(int levels, std::vector<V3>& p, Triangles& t) {
-  p = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-  t = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
-  for (int l = 0; l < levels; ++l) {
-    std::map<std::pair<int, int>, int> mid;
-    auto at = [&](int a, int b) {
-      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
-      const auto it = mid.find(key);
-      if (it != mid.end()) return it->second;
-      p.push_back(((p[size_t(a)] + p[size_t(b)]) / 2).normalized());
-      return mid[key] = int(p.size()) - 1;
-    };
-    Triangles finer;
-    for (const auto& f : t) {
-      const int a = at(f[0], f[1]), b = at(f[1], f[2]), c = at(f[2], f[0]);
-      finer.push_back({f[0], a, c});
-      finer.push_back({a, f[1], b});
-      finer.push_back({c, b, f[2]});
-      finer.push_back({a, b, c});
-    }
-    t = finer;
-  }
-}
-
-// A torus (radii 2, 0.7) of u × v vertices.
-void DcTorus(int u, int v, std::vector<V3>& p, Triangles& t) {
-  for (int j = 0; j < v; ++j) {
-    for (int i = 0; i < u; ++i) {
-      const double a = 2 * M_PI * i / u, b = 2 * M_PI * j / v;
-      p.push_back({(2 + 0.7 * std::cos(b)) * std::cos(a), (2 + 0.7 * std::cos(b)) * std::sin(a),
-                   0.7 * std::sin(b)});
-    }
-  }
-  auto id = [&](int i, int j) { return ((j + v) % v) * u + (i + u) % u; };
-  for (int j = 0; j < v; ++j) {
-    for (int i = 0; i < u; ++i) {
-      t.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      t.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
-  }
-}
 
 // The cube [−1, 1]³, each face an m × m grid of two triangles per cell,
 // outward; its corners are the vertices with |x| = |y| = |z| = 1.
@@ -152,7 +110,7 @@ DecimateResult DecimateTo(const std::vector<V3>& p, const Triangles& t, int targ
 TEST(Decimate, ReachesTheTargetExactly) {
   std::vector<V3> p;
   Triangles t;
-  DcSphere(3, p, t);  // 258 vertices
+  OctahedronSphere(3, p, t);  // 258 vertices
   for (int target : {12, 40, 100, 257}) {
     const DecimateResult r = DecimateTo(p, t, target);
     EXPECT_TRUE(r.reached) << target;
@@ -168,10 +126,10 @@ TEST(Decimate, ReachesTheTargetExactly) {
 TEST(Decimate, SphereAndTorusKeepTheirEulerCharacteristic) {
   std::vector<V3> sphere;
   Triangles ts;
-  DcSphere(3, sphere, ts);
+  OctahedronSphere(3, sphere, ts);
   std::vector<V3> torus;
   Triangles tt;
-  DcTorus(32, 16, torus, tt);
+  GridTorus(32, 16, torus, tt);
   for (int target : {12, 30, 100}) {
     const DecimateResult s = DecimateTo(sphere, ts, target);
     const DcTopology a = Topology(s.nodes.size(), s.triangles);
@@ -201,7 +159,7 @@ TEST(Decimate, LinkConditionAloneKeepsTheTopology) {
   options.min_angle_degrees = 0;
   std::vector<V3> torus;
   Triangles tt;
-  DcTorus(32, 16, torus, tt);
+  GridTorus(32, 16, torus, tt);
   for (int target : {8, 10, 20, 40}) {
     options.target_vertices = target;
     const DecimateResult r = Decimate(torus, tt, options);
@@ -213,7 +171,7 @@ TEST(Decimate, LinkConditionAloneKeepsTheTopology) {
   }
   std::vector<V3> sphere;
   Triangles ts;
-  DcSphere(3, sphere, ts);
+  OctahedronSphere(3, sphere, ts);
   for (int target : {4, 6, 12}) {
     options.target_vertices = target;
     const DecimateResult r = Decimate(sphere, ts, options);

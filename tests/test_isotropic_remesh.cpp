@@ -15,6 +15,7 @@
 
 #include "geometry/isotropic_remesh.h"
 #include "geometry/reference.h"
+#include "tests/closed_meshes.h"
 #include "tests/make_mesh.h"
 
 namespace archgeo {
@@ -144,30 +145,13 @@ TEST(IsotropicRemesh, FoldedPlateKeepsItsRidgeAsAFeatureAndCutsItWithout) {
 
 // The unit octahedron subdivided `levels` times, its vertices on the unit sphere.
 Mesh OctaSphere(int levels) {
-  std::vector<Vec3> points = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-  std::vector<std::vector<int>> faces = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
-                                         {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
-  for (int level = 0; level < levels; ++level) {
-    std::map<std::pair<int, int>, int> mid;
-    auto middle = [&](int a, int b) {
-      const auto key = std::minmax(a, b);
-      auto it = mid.find(key);
-      if (it != mid.end()) return it->second;
-      Eigen::Vector3d m = (Eigen::Vector3d(points[a][0], points[a][1], points[a][2]) +
-                           Eigen::Vector3d(points[b][0], points[b][1], points[b][2])).normalized();
-      points.push_back({m.x(), m.y(), m.z()});
-      return mid[key] = int(points.size()) - 1;
-    };
-    std::vector<std::vector<int>> next;
-    for (const auto& f : faces) {
-      const int ab = middle(f[0], f[1]), bc = middle(f[1], f[2]), ca = middle(f[2], f[0]);
-      next.push_back({f[0], ab, ca});
-      next.push_back({ab, f[1], bc});
-      next.push_back({ca, bc, f[2]});
-      next.push_back({ab, bc, ca});
-    }
-    faces = std::move(next);
-  }
+  std::vector<Eigen::Vector3d> p;
+  std::vector<std::array<int, 3>> t;
+  OctahedronSphere(levels, p, t);
+  std::vector<Vec3> points;
+  for (const Eigen::Vector3d& x : p) points.push_back({x.x(), x.y(), x.z()});
+  std::vector<std::vector<int>> faces;
+  for (const auto& f : t) faces.push_back({f[0], f[1], f[2]});
   return MakeMesh(points, faces);
 }
 
