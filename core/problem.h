@@ -112,6 +112,21 @@ struct Stage {
   std::function<StepResult(HookContext&)> step;
 };
 
+// A stage of one round that records what the `net` hook made, without a
+// solve: the schedule of a problem whose net is its result (subdivide,
+// remesh, the quads of the charts). `stop` is the report's stop reason.
+inline Stage ResultWithoutSolve(const std::string& name, const std::string& stop) {
+  Stage s;
+  s.name = name;
+  s.rounds_key = "schedule.outer_iterations";
+  s.step = [stop](HookContext&) {
+    StepResult r;
+    r.stop = stop;
+    return r;
+  };
+  return s;
+}
+
 enum class InputKind {
   kAny,
   kTriangles,      // every face a triangle

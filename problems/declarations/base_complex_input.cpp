@@ -236,15 +236,7 @@ UserBaseComplex ReadUserBaseComplex(const Settings& s, const std::vector<Eigen::
 }
 
 std::vector<Stage> NetIsTheResult(const Settings&) {
-  Stage extract;
-  extract.name = "extract";
-  extract.rounds_key = "schedule.outer_iterations";
-  extract.step = [](HookContext&) {
-    StepResult r;
-    r.stop = "the quad mesh is the result (no solve)";
-    return r;
-  };
-  return {extract};
+  return {ResultWithoutSolve("extract", "the quad mesh is the result (no solve)")};
 }
 
 }  // namespace archgeo

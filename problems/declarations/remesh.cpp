@@ -73,15 +73,7 @@ void RemeshNet(HookContext& c) {
 }
 
 std::vector<Stage> RemeshStages(const Settings&) {
-  Stage made;
-  made.name = "remesh";
-  made.rounds_key = "schedule.outer_iterations";
-  made.step = [](HookContext&) {
-    StepResult r;
-    r.stop = "the remeshed surface is the result (no solve)";
-    return r;
-  };
-  return {made};
+  return {ResultWithoutSolve("remesh", "the remeshed surface is the result (no solve)")};
 }
 
 }  // namespace

@@ -266,15 +266,7 @@ void SdNet(HookContext& c) {
 }
 
 std::vector<Stage> SdStages(const Settings&) {
-  Stage made;
-  made.name = "subdivide";
-  made.rounds_key = "schedule.outer_iterations";
-  made.step = [](HookContext&) {
-    StepResult r;
-    r.stop = "the subdivided mesh is the result (no solve)";
-    return r;
-  };
-  return {made};
+  return {ResultWithoutSolve("subdivide", "the subdivided mesh is the result (no solve)")};
 }
 
 }  // namespace
