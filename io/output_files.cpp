@@ -383,6 +383,11 @@ void StagedOutputs::Commit() {
     slots_.clear();
   }
   state.store(0);
+  // A handler in another thread may have deferred a signal after
+  // HeldSignal() looked (it took the signal a moment before running): the
+  // commit is complete (or rolled back), so that signal ends the run now
+  // rather than being lost.
+  if (const int late = deferred_signal.exchange(0)) TerminateFromCommit(late);
   if (!failure.empty()) {
     const Staged& s = staged_[failed];
     throw InputError(s.target, 0, s.key, failure + " (every output keeps its old content)");

@@ -34,7 +34,7 @@ class CliKillTest : public ScratchDirTest {
     // A tolerance the input meets: no iteration, the run is its outputs.
     spec_ = WriteFile("spec.yaml", "mesh: " + std::string(ARCHGEO_SOURCE_DIR) +
                                        "/examples/roof_grid.obj\nproblem: planar_quads\n"
-                                       "tolerance:\n  pq_normalized_max: 0.05\n"
+                                       "tolerance:\n  pq_normalized_max: 0.05\nsolver:\n  num_threads: 1\n"
                                        "output:\n  mesh: out/m.ply\n  report: out/r.json\n"
                                        "  image: out/i.png\n");
     fs::create_directories(Path("out"));
@@ -68,8 +68,21 @@ class CliKillTest : public ScratchDirTest {
     const std::string binary = ARCHGEO_BINARY;
     const std::string pause = "ARCHGEO_TEST_PAUSE_AFTER_RENAME=" + std::to_string(k);
     std::vector<char*> env;
-    for (char** e = environ; *e != nullptr; ++e) env.push_back(*e);
+    for (char** e = environ; *e != nullptr; ++e) {
+      const std::string entry = *e;
+      if (entry.rfind("OMP_NUM_THREADS=", 0) != 0 && entry.rfind("OPENBLAS_NUM_THREADS=", 0) != 0) {
+        env.push_back(*e);
+      }
+    }
     env.push_back(const_cast<char*>(pause.c_str()));
+    // One thread: a SIGTERM sent while the commit is stopped can then only be
+    // pending for the committing thread, which blocks it, so the commit sees
+    // it. (With helper threads alive one of them may take it and run the
+    // handler a moment after the commit looked; the run then ends by the
+    // signal after the commit point: io/output_files.cpp.)
+    static char omp[] = "OMP_NUM_THREADS=1", blas[] = "OPENBLAS_NUM_THREADS=1";
+    env.push_back(omp);
+    env.push_back(blas);
     env.push_back(nullptr);
     const char* argv[] = {binary.c_str(), "solve", spec_.c_str(), "--quiet", nullptr};
     const pid_t pid = fork();
