@@ -879,6 +879,40 @@ TEST_F(FieldInputTest, StressLinesAsGuideCurvesMakeTheFieldFollowThem) {
 }
 
 
+// field.rotations: on the ellipsoid top, the field within 0.3 of the apex
+// turned by 30° at the centre: the face there turns by 30° ± 2° against the
+// free field, every face beyond the radius keeps it exactly; a point far from
+// the surface and an angle of 90° are refused naming the key.
+TEST_F(FieldInputTest, ALocalRotationTurnsTheFieldInsideAndKeepsItOutside) {
+  const Mesh mesh = EllipsoidTop(30, 20);
+  const auto free = SolveYaml(kUnconstrained, mesh);
+  const auto turned = SolveYaml("problem: conjugate_field\nfield: {boundary_alignment: 0, rotations: "
+                                "[{at: [0, 0, 0.6], radius: 0.3, angle: 30}]}\n",
+                                mesh);
+  const FieldResult& r = *FieldOf(*turned);
+  const FieldResult& u = *FieldOf(*free);
+  const nlohmann::json& rot = r.details.at("rotations").at(0);
+  EXPECT_NEAR(rot.at("turned_at_centre_deg").get<double>(), 30.0, 2.0);
+  EXPECT_GT(rot.at("faces").get<int>(), 20);
+  double outside = 0, inside_min = 90;
+  for (FaceIndex f : mesh.faces()) {
+    const V3 c = Centroid(r, f);
+    const double d = (c - V3(0, 0, 0.6)).norm();
+    const double change = std::min(LineDeg(V3D(r, f), V3D(u, f)), LineDeg(V3D(r, f), V3D(u, f, true)));
+    if (d > 0.36) outside = std::max(outside, change);  // the centre is the nearest face's centroid
+    if (d < 0.1) inside_min = std::min(inside_min, change);
+  }
+  EXPECT_LE(outside, 1e-3);  // degrees: held (the free solve run apart differs by rounding)
+  EXPECT_GE(inside_min, 25.0);
+  WriteMesh(Path("top.obj"), mesh);
+  ExpectInputError("mesh: top.obj\nproblem: conjugate_field\nfield: {rotations: [{at: [0, 0, 9], radius: 0.3, "
+                   "angle: 30}]}\n",
+                   "field.rotations[0].at");
+  ExpectInputError("mesh: top.obj\nproblem: conjugate_field\nfield: {rotations: [{at: [0, 0, 0.6], radius: 0.3, "
+                   "angle: 90}]}\n",
+                   "field.rotations[0].angle");
+}
+
 // A regular octahedron's layout has a nearly degenerate polygon whose
 // constrained triangulation tripped a CGAL precondition with one thread
 // (exit 1; geometry/reference.h TriangulatedCopy): one and two threads both

@@ -45,6 +45,8 @@
 #include <optional>
 #include <set>
 
+#include <Eigen/Geometry>
+
 #include "core/problem.h"
 #include "energies/tcd_prescribed_direction.h"
 #include "fields/field_io.h"
@@ -179,6 +181,61 @@ std::vector<Move> ReadMoves(const Settings& s) {
   return out;
 }
 
+// A local rotation of the field (field.rotations, thesis §8.1.1): inside
+// `radius` of the face nearest `at`, the free field turned by `angle`
+// degrees at the centre, tapering to 0 at the radius (fields/guide_curves.h's
+// falloff).
+struct Rotation {
+  V3 at = V3::Zero();  // file units
+  double radius = 0, angle = 0;
+  std::string key;
+  int line = 0;
+};
+
+std::vector<Rotation> ReadRotations(const Settings& s) {
+  std::vector<Rotation> out;
+  const char* name = "field.rotations";
+  if (!s.Given(name)) return out;
+  const CustomValue& list = *s.Custom(name);
+  if (!list.IsList()) throw s.ErrorAt(name, list, name, "expected a list of {at: [x, y, z], radius, angle}");
+  for (size_t i = 0; i < list.items.size(); ++i) {
+    const CustomValue& m = list.items[i];
+    Rotation r;
+    r.key = std::string(name) + "[" + std::to_string(i) + "]";
+    r.line = s.Where(name).file == "--set" ? 0 : m.line;
+    if (!m.IsMap()) throw s.ErrorAt(name, m, r.key, "expected {at: [x, y, z], radius: r, angle: degrees}");
+    for (const CustomValue::Entry& e : m.entries) {
+      const std::string& k = e.key.text;
+      if (k != "at" && k != "radius" && k != "angle") {
+        throw s.ErrorAt(name, e.key, r.key + "." + k, "unknown key (allowed: at, radius, angle)");
+      }
+    }
+    const CustomValue* at = m.Find("at");
+    if (!at || !at->IsList() || at->items.size() != 3) {
+      throw s.ErrorAt(name, at ? *at : m, r.key + ".at", "expected a point [x, y, z] (file units)");
+    }
+    for (int k = 0; k < 3; ++k) {
+      const CustomValue& x = at->items[size_t(k)];
+      if (!x.number || !std::isfinite(*x.number)) throw s.ErrorAt(name, x, r.key + ".at", "expected a finite number");
+      r.at[k] = *x.number;
+    }
+    const CustomValue* radius = m.Find("radius");
+    if (!radius || !radius->number || !std::isfinite(*radius->number) || *radius->number <= 0) {
+      throw s.ErrorAt(name, radius ? *radius : m, r.key + ".radius", "expected a length > 0 (file units)");
+    }
+    r.radius = *radius->number;
+    const CustomValue* angle = m.Find("angle");
+    if (!angle || !angle->number || !std::isfinite(*angle->number) || std::abs(*angle->number) >= 90) {
+      throw s.ErrorAt(name, angle ? *angle : m, r.key + ".angle",
+                      "expected an angle in degrees, |angle| < 90 (a line field turned by 90° is "
+                      "its partner direction)");
+    }
+    r.angle = *angle->number;
+    out.push_back(r);
+  }
+  return out;
+}
+
 JetOptions Jets(const Settings& s) {
   JetOptions o;
   o.degree = int(s.Integer("jets.degree"));
@@ -227,6 +284,14 @@ struct Constraints {
   };
   std::vector<Guided> guided;
   bool guides_applied = false;
+  // field.rotations, centres and radii canonical; per rotation the faces it
+  // turned and how far the face nearest its centre turned (set in the
+  // guide stage from the free field).
+  std::vector<Rotation> rotations;
+  std::vector<int> rotation_faces;
+  int rotation_skipped = 0;  // turned directions within 30° of an asymptotic one: not prescribed
+  std::vector<int> rotation_centre;  // face nearest `at`
+  std::vector<V2> free_v;            // the free field's v per face (frame), before the guide stage
   int guide_skipped = 0;  // faces whose guide direction has no transverse conjugate partner
   int guide_curves = 0;
   double guide_radius = 0;  // file units
@@ -355,6 +420,26 @@ void InitConjugateField(HookContext& c) {
   }
 
   con.moves = ReadMoves(s);
+  con.rotations = ReadRotations(s);
+  for (Rotation& r : con.rotations) {
+    const Vec3 y = c.frame.ToCanonical(Vec3{r.at.x(), r.at.y(), r.at.z()});
+    const V3 centre(y[0], y[1], y[2]);
+    int nearest = 0;
+    for (int f = 0; f < faces; ++f) {
+      if ((g.frames.centroid[size_t(f)] - centre).norm() < (g.frames.centroid[size_t(nearest)] - centre).norm()) {
+        nearest = f;
+      }
+    }
+    const double radius = r.radius / c.frame.scale;
+    if ((g.frames.centroid[size_t(nearest)] - centre).norm() > radius) {
+      const Origin at = s.Where("field.rotations");
+      throw InputError(at.file, r.line, r.key + ".at",
+                       "farther than the radius from every face of the surface: it turns nothing");
+    }
+    con.rotation_centre.push_back(nearest);
+    r.at = g.frames.centroid[size_t(nearest)];
+    r.radius = radius;
+  }
   for (const Move& m : con.moves) {
     const Origin at = s.Where("field.moves");
     for (const auto& [name, f] : {std::make_pair(".from", m.from), std::make_pair(".to", m.to)}) {
@@ -606,6 +691,41 @@ void ApplyGuides(HookContext& c) {
             {M(0, 0), M(0, 1), M(1, 1), p.direction.x(), p.direction.y(), p.factor});
     guided[size_t(p.face)] = true;
   }
+  if (!con.rotations.empty()) {
+    // The free field as the first stage left it, turned locally.
+    std::vector<V2> z(mesh.number_of_faces());
+    for (FaceIndex f : mesh.faces()) z[f.idx()] = Eigen::Map<const V2>(c.store->At("z_n", int(f.idx())));
+    const TcdField free = EvaluateField(mesh, state.geometry, std::move(z));
+    const double factor = c.settings->Number("field.guide_weight") /
+                          std::max(1e-300, c.settings->Number("terms.tcd_prescribed_direction.weight"));
+    con.rotation_faces.assign(con.rotations.size(), 0);
+    con.free_v.assign(mesh.number_of_faces(), V2::Zero());
+    for (FaceIndex f : mesh.faces()) {
+      const ConjugatePair& pair = free.pairs[f.idx()];
+      con.free_v[f.idx()] = pair.v;
+      double angle = 0;
+      for (size_t k = 0; k < con.rotations.size(); ++k) {
+        const Rotation& r = con.rotations[k];
+        const double w = GuideWeight((state.geometry.frames.centroid[f.idx()] - r.at).norm(), r.radius);
+        if (w > 0) ++con.rotation_faces[k];
+        angle += w * r.angle * M_PI / 180;
+      }
+      if (angle == 0 || guided[f.idx()] || !pair.valid) continue;
+      const V2 d = Eigen::Rotation2Dd(angle) * pair.v.normalized();
+      const Eigen::Matrix2d& M = state.geometry.curvature[f.idx()].M;
+      const double m[3] = {M(0, 0), M(0, 1), M(1, 1)};
+      V2 point, line;
+      const V2 md = M * d, partner(-md.y(), md.x());
+      if (!TcdPrescribedLine(m, d.data(), &point, &line) || !(partner.norm() > 0) ||
+          std::abs(d.dot(partner)) / partner.norm() > std::cos(kGuideMinPairDeg * M_PI / 180)) {
+        ++con.rotation_skipped;
+        continue;
+      }
+      set.Add(FaceVertices(mesh, f), int(f.idx()), int(f.idx()), -1, FaceFlags(mesh, boundary, f),
+              {M(0, 0), M(0, 1), M(1, 1), d.x(), d.y(), factor});
+      guided[f.idx()] = true;
+    }
+  }
   c.SetElements("tcd_prescribed", std::move(set));
   for (FaceIndex f : mesh.faces()) {
     if (!guided[f.idx()]) c.model->SetConstant("z_n", int(f.idx()));
@@ -706,6 +826,30 @@ void FinishConjugateField(HookContext& c) {
                          {"deviation_max_deg", guide_max},
                          {"deviation_mean_deg", guide_full ? guide_sum / guide_full : 0.0}};
   }
+  if (!con.rotations.empty() && !con.free_v.empty()) {
+    nlohmann::json rotations = nlohmann::json::array();
+    for (size_t k = 0; k < con.rotations.size(); ++k) {
+      const int f = con.rotation_centre[k];
+      // The field's direction nearest to the free v turned by the angle:
+      // how far it is from that target, and how far from the free v.
+      const ConjugatePair& p = field.pairs[size_t(f)];
+      const V2 target = Eigen::Rotation2Dd(con.rotations[k].angle * M_PI / 180) * con.free_v[size_t(f)];
+      const V2 near = LineDeg(target, p.v) <= LineDeg(target, p.w) ? p.v : p.w;
+      const double turned = p.valid ? LineDeg(con.free_v[size_t(f)], near) : 0.0;
+      const double missed = p.valid ? LineDeg(target, near) : 90.0;
+      const Vec3 at = c.frame.FromCanonical(Vec3{con.rotations[k].at.x(), con.rotations[k].at.y(),
+                                                  con.rotations[k].at.z()});
+      rotations.push_back({{"face", f},
+                           {"at", {at[0], at[1], at[2]}},
+                           {"radius", con.rotations[k].radius * c.frame.scale},
+                           {"angle_deg", con.rotations[k].angle},
+                           {"faces", con.rotation_faces[k]},
+                           {"turned_at_centre_deg", turned},
+                           {"deviation_at_centre_deg", missed}});
+    }
+    d["rotations"] = rotations;
+    d["rotation_faces_skipped"] = con.rotation_skipped;
+  }
   if (con.raw_faces > 0) {
     d["field_file"] = {{"faces", con.raw_faces},
                        {"skipped", con.raw_skipped},
@@ -799,9 +943,9 @@ ProblemDecl conjugate_field() {
                false, "z_N of the face in its own frame (Prop. 2; e1 = (1, 0): principal)"}};
   d.check = [](const Settings& s) {
     CheckNoMultiresolution(s, "conjugate_field");
-    if (!s.String("field.guide_curves").empty() && s.Given("field.moves")) {
-      throw s.Error("field.moves", "moves and guide curves hold different faces: give one of "
-                                   "field.moves and field.guide_curves");
+    if ((!s.String("field.guide_curves").empty() || s.Given("field.rotations")) && s.Given("field.moves")) {
+      throw s.Error("field.moves", "moves and guide curves or rotations hold different faces: give "
+                                   "field.moves or field.guide_curves / field.rotations");
     }
     CheckFieldOutputs(s);
   };
@@ -811,7 +955,7 @@ ProblemDecl conjugate_field() {
     s.name = "field";
     s.rounds_key = "field.rounds";
     std::vector<Stage> stages{s};
-    if (!settings.String("field.guide_curves").empty()) {
+    if (!settings.String("field.guide_curves").empty() || settings.Given("field.rotations")) {
       s.name = "guide";
       s.before_round = &ApplyGuides;
       stages.push_back(s);

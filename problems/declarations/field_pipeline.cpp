@@ -88,6 +88,15 @@ std::vector<Key> FieldKeys() {
       "within r1 of `from` and 0 beyond r2; defaults r1 = 2 × the distance from `from` to `to`, "
       "r2 = 2 r1); z_N = z_M at `to`, then the faces of the transition band (r1 to r2) are "
       "re-optimised";
+  Key rotations;
+  rotations.name = "field.rotations";
+  rotations.type = Type::kCustom;
+  rotations.example = "[{at: [0, 0, 1], radius: 2, angle: 30}]";
+  rotations.doc =
+      "local rotations of the field (thesis §8.1.1): a list of {at: [x, y, z], radius: r, angle: "
+      "degrees} (file units; |angle| < 90); after the free field, the faces within r of the face "
+      "nearest `at` are re-solved with the free field turned by the angle at the centre, tapering to "
+      "0 at r (every other face held, as for guide curves; weight field.guide_weight)";
   Key file;
   file.name = "field.file";
   file.type = Type::kInputPath;
@@ -111,6 +120,7 @@ std::vector<Key> FieldKeys() {
           directions,
           constraints,
           file,
+          rotations,
           NumberKey("field.boundary_alignment", 1, 0, 1e6,
                     "weight of the boundary tangent as a prescribed direction of every boundary "
                     "face (through tcd_prescribed_direction, which must be on): level sets along "
@@ -418,7 +428,7 @@ double LayoutFacesAskedFor(const Settings& s, const Mesh& triangles, long long f
 
 bool NamesDesignFaces(const Settings& s) {
   for (const char* key : {"field.singularities", "field.moves", "field.directions",
-                          "field.constraints"}) {
+                          "field.constraints", "field.file"}) {
     if (NamesFaces(s, key)) return true;
   }
   return false;
@@ -432,7 +442,7 @@ Mesh DesignSurface(const Settings& parent, const Mesh& mesh, long long layout_fa
   for (FaceIndex f : mesh.faces()) triangles = triangles && mesh.degree(f) == 3;
   if (!triangles) {
     for (const char* key : {"field.singularities", "field.moves", "field.directions",
-                            "field.constraints"}) {
+                            "field.constraints", "field.file"}) {
       if (NamesFaces(parent, key)) {
         throw parent.Error(key, "names faces of a triangle mesh, but the mesh has polygons (its "
                                 "triangulation is the design surface): give the design surface "
