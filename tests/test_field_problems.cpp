@@ -913,6 +913,43 @@ TEST_F(FieldInputTest, ALocalRotationTurnsTheFieldInsideAndKeepsItOutside) {
                    "field.rotations[0].angle");
 }
 
+// field.sources: one source at the apex of the ellipsoid top makes the field
+// radial (the gradient of log |x − a| runs straight out of it); strength 0
+// and a source beside a field file are refused naming the key.
+TEST_F(FieldInputTest, ASourceMakesTheFieldRunOutOfIt) {
+  const Mesh mesh = EllipsoidTop(30, 20);
+  const auto free = SolveYaml(kUnconstrained, mesh);
+  const auto s = SolveYaml("problem: conjugate_field\nfield: {boundary_alignment: 0, sources: "
+                           "[{at: [0, 0, 0.6], strength: 1}]}\n",
+                           mesh);
+  const FieldResult& r = *FieldOf(*s);
+  EXPECT_LE(r.details.at("potential").at("deviation_max_deg").get<double>(), 0.5);
+  double worst = 0, free_worst = 0;
+  for (FaceIndex f : mesh.faces()) {
+    const V3 c = Centroid(r, f);
+    const double plan = std::hypot(c.x(), c.y());
+    if (plan < 0.2) continue;
+    // Straight out of the source: the chord direction from the apex, in the tangent plane.
+    const V3 n = V3(c.x() / (1.5 * 1.5), c.y(), c.z() / (0.6 * 0.6)).normalized();
+    V3 out = c - V3(0, 0, 0.6);
+    out = (out - n * n.dot(out)).normalized();
+    auto off = [&](const FieldResult& x) {
+      return std::min(LineDeg(V3D(x, f), out), LineDeg(V3D(x, f, true), out));
+    };
+    worst = std::max(worst, off(r));
+    free_worst = std::max(free_worst, off(*FieldOf(*free)));
+  }
+  EXPECT_LE(worst, 2.0);  // 1.35°: the face planes against the analytic tangent planes
+  EXPECT_GT(free_worst, 20.0);
+  WriteMesh(Path("top.obj"), mesh);
+  ExpectInputError("mesh: top.obj\nproblem: conjugate_field\nfield: {sources: [{at: [0, 0, 0.6], strength: 0}]}\n",
+                   "field.sources[0].strength");
+  WriteFile("f.rawfield", "1 0\n");
+  ExpectInputError("mesh: top.obj\nproblem: conjugate_field\nfield: {file: f.rawfield, sources: [{at: [0, 0, 0.6], "
+                   "strength: 1}]}\n",
+                   "field.sources");
+}
+
 // A regular octahedron's layout has a nearly degenerate polygon whose
 // constrained triangulation tripped a CGAL precondition with one thread
 // (exit 1; geometry/reference.h TriangulatedCopy): one and two threads both

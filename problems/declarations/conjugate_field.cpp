@@ -236,6 +236,50 @@ std::vector<Rotation> ReadRotations(const Settings& s) {
   return out;
 }
 
+// The sources and sinks of a potential field (field.sources, thesis §8.1.1):
+// φ(x) = Σ s_k log |x − a_k|, whose gradient Σ s_k (x − a_k)/|x − a_k|² runs
+// out of a source (s > 0) and into a sink (s < 0).
+struct Source {
+  V3 at = V3::Zero();  // file units, then canonical
+  double strength = 0;
+};
+
+std::vector<Source> ReadSources(const Settings& s) {
+  std::vector<Source> out;
+  const char* name = "field.sources";
+  if (!s.Given(name)) return out;
+  const CustomValue& list = *s.Custom(name);
+  if (!list.IsList()) throw s.ErrorAt(name, list, name, "expected a list of {at: [x, y, z], strength}");
+  for (size_t i = 0; i < list.items.size(); ++i) {
+    const CustomValue& m = list.items[i];
+    const std::string key = std::string(name) + "[" + std::to_string(i) + "]";
+    if (!m.IsMap()) throw s.ErrorAt(name, m, key, "expected {at: [x, y, z], strength: s}");
+    for (const CustomValue::Entry& e : m.entries) {
+      if (e.key.text != "at" && e.key.text != "strength") {
+        throw s.ErrorAt(name, e.key, key + "." + e.key.text, "unknown key (allowed: at, strength)");
+      }
+    }
+    Source src;
+    const CustomValue* at = m.Find("at");
+    if (!at || !at->IsList() || at->items.size() != 3) {
+      throw s.ErrorAt(name, at ? *at : m, key + ".at", "expected a point [x, y, z] (file units)");
+    }
+    for (int k = 0; k < 3; ++k) {
+      const CustomValue& x = at->items[size_t(k)];
+      if (!x.number || !std::isfinite(*x.number)) throw s.ErrorAt(name, x, key + ".at", "expected a finite number");
+      src.at[k] = *x.number;
+    }
+    const CustomValue* strength = m.Find("strength");
+    if (!strength || !strength->number || !std::isfinite(*strength->number) || *strength->number == 0) {
+      throw s.ErrorAt(name, strength ? *strength : m, key + ".strength",
+                      "expected a number ≠ 0 (> 0: a source, < 0: a sink)");
+    }
+    src.strength = *strength->number;
+    out.push_back(src);
+  }
+  return out;
+}
+
 JetOptions Jets(const Settings& s) {
   JetOptions o;
   o.degree = int(s.Integer("jets.degree"));
@@ -274,6 +318,8 @@ struct Constraints {
   int file_rows = 0, file_flagged = 0, file_skipped = 0;
   int raw_faces = 0, raw_skipped = 0;  // rows of field.file, those not prescribed
   std::vector<std::pair<int, V2>> from_field_file;  // face, direction in the face frame
+  std::vector<std::pair<int, V2>> from_potential;   // field.sources: the potential's gradient
+  int sources = 0, potential_skipped = 0;
   int boundary_faces = 0;  // boundary tangents prescribed (field.boundary_alignment)
   // Guide curves (field.guide_curves): face, direction in the face frame,
   // factor on the term's weight, falloff weight w (fields/guide_curves.h).
@@ -305,6 +351,15 @@ constexpr double kFieldFileFactor = 100;
 // A guide direction whose conjugate partner is closer than this to it (a
 // saddle's asymptotic direction has itself as partner) is not prescribed.
 constexpr double kGuideMinPairDeg = 30;
+
+// Whether the direction conjugate to d (⟂ M d, face frame) is at least
+// kGuideMinPairDeg from d: not near a saddle's asymptotic direction, where
+// prescribing d would fold the pair.
+bool TransversePartner(const Eigen::Matrix2d& M, const V2& d) {
+  const V2 md = M * d, partner(-md.y(), md.x());
+  return partner.norm() > 0 &&
+         std::abs(d.dot(partner)) / (d.norm() * partner.norm()) <= std::cos(kGuideMinPairDeg * M_PI / 180);
+}
 
 // Guide curves (field.guide_curves): every face within field.guide_radius
 // of a curve gets the curve's tangent as a prescribed direction, its weight
@@ -364,11 +419,7 @@ void AddGuideCurves(const HookContext& c, const FieldGeometry& g, double prescri
       ++con.guide_skipped;
       continue;
     }
-    // The direction conjugate to d is ⟂ M d: within kGuideMinPairDeg of d
-    // (d near an asymptotic direction of a saddle) the pair would fold.
-    const V2 md = M * d, w(-md.y(), md.x());
-    const double cosine = std::abs(d.dot(w)) / (d.norm() * w.norm());
-    if (!(w.norm() > 0) || cosine > std::cos(kGuideMinPairDeg * M_PI / 180)) {
+    if (!TransversePartner(M, d)) {
       ++con.guide_skipped;
       continue;
     }
@@ -514,6 +565,30 @@ void InitConjugateField(HookContext& c) {
       }
     }
   }
+  std::vector<Source> sources = ReadSources(s);
+  for (Source& src : sources) {
+    const Vec3 y = c.frame.ToCanonical(Vec3{src.at.x(), src.at.y(), src.at.z()});
+    src.at = V3(y[0], y[1], y[2]);
+  }
+  for (int f = 0; f < faces && !sources.empty(); ++f) {
+    const V3& x = g.frames.centroid[size_t(f)];
+    V3 gradient = V3::Zero();
+    for (const Source& src : sources) {
+      const V3 r = x - src.at;
+      gradient += src.strength * r / std::max(r.squaredNorm(), 1e-300);
+    }
+    const V2 d = ToFrame(g.frames, FaceIndex(f), gradient);
+    const Eigen::Matrix2d& M = g.curvature[size_t(f)].M;
+    const double m[3] = {M(0, 0), M(0, 1), M(1, 1)};
+    V2 point, line;
+    if (!(d.norm() > 1e-12 * std::max(1e-300, gradient.norm())) || !TcdPrescribedLine(m, d.data(), &point, &line) ||
+        !TransversePartner(M, d)) {
+      ++con.potential_skipped;
+      continue;
+    }
+    con.from_potential.push_back({f, d.normalized()});
+  }
+  con.sources = int(sources.size());
   for (const Prescribed& p : prescribed) {
     const FaceIndex f(p.face);
     const V2 d = ToFrame(g.frames, f, ToCanonicalDirection(c.frame, p.direction));
@@ -568,6 +643,7 @@ void InitConjugateField(HookContext& c) {
   for (const Move& m : con.moves) constrained[size_t(m.from)] = constrained[size_t(m.to)] = true;
   for (const auto& p : con.prescribed) constrained[size_t(p.first)] = true;
   for (const auto& p : con.from_field_file) constrained[size_t(p.first)] = true;
+  for (const auto& p : con.from_potential) constrained[size_t(p.first)] = true;
   for (const auto& p : con.guided) constrained[size_t(p.face)] = true;
 
   ElementSet edges, all, free_faces, placements, directions;
@@ -603,6 +679,7 @@ void InitConjugateField(HookContext& c) {
   }
   for (const auto& [list, factor] : {std::make_pair(&con.prescribed, 1.0),
                                      std::make_pair(&con.from_field_file, kFieldFileFactor),
+                                     std::make_pair(&con.from_potential, kFieldFileFactor),
                                      std::make_pair(&along_boundary, boundary_factor)}) {
     for (const auto& [f, d] : *list) {
       const Eigen::Matrix2d& M = g.curvature[size_t(f)].M;
@@ -715,9 +792,7 @@ void ApplyGuides(HookContext& c) {
       const Eigen::Matrix2d& M = state.geometry.curvature[f.idx()].M;
       const double m[3] = {M(0, 0), M(0, 1), M(1, 1)};
       V2 point, line;
-      const V2 md = M * d, partner(-md.y(), md.x());
-      if (!TcdPrescribedLine(m, d.data(), &point, &line) || !(partner.norm() > 0) ||
-          std::abs(d.dot(partner)) / partner.norm() > std::cos(kGuideMinPairDeg * M_PI / 180)) {
+      if (!TcdPrescribedLine(m, d.data(), &point, &line) || !TransversePartner(M, d)) {
         ++con.rotation_skipped;
         continue;
       }
@@ -779,6 +854,13 @@ void FinishConjugateField(HookContext& c) {
     file_sum += e;
   }
   const double file_mean = con.from_field_file.empty() ? 0.0 : file_sum / double(con.from_field_file.size());
+  double potential_max = 0, potential_sum = 0;
+  for (const auto& [f, dir] : con.from_potential) {
+    const ConjugatePair& p = field.pairs[size_t(f)];
+    const double e = p.valid ? std::min(LineDeg(dir, p.v), LineDeg(dir, p.w)) : 90.0;
+    potential_max = std::max(potential_max, e);
+    potential_sum += e;
+  }
   double guide_max = 0, guide_sum = 0;
   int guide_full = 0;
   for (const Constraints::Guided& q : con.guided) {
@@ -850,6 +932,14 @@ void FinishConjugateField(HookContext& c) {
     d["rotations"] = rotations;
     d["rotation_faces_skipped"] = con.rotation_skipped;
   }
+  if (con.sources > 0) {
+    d["potential"] = {{"sources", con.sources},
+                      {"faces", con.from_potential.size()},
+                      {"skipped", con.potential_skipped},
+                      {"deviation_max_deg", potential_max},
+                      {"deviation_mean_deg",
+                       con.from_potential.empty() ? 0.0 : potential_sum / double(con.from_potential.size())}};
+  }
   if (con.raw_faces > 0) {
     d["field_file"] = {{"faces", con.raw_faces},
                        {"skipped", con.raw_skipped},
@@ -877,6 +967,13 @@ void FinishConjugateField(HookContext& c) {
                 field.stats.max_conjugacy_error, field.stats.min_angle_deg, field.mean_angle_deg,
                 counted > 0 ? deviation / counted : 0.0);
   h += line;
+  if (con.sources > 0) {
+    std::snprintf(line, sizeof line,
+                  "potential field: %d sources and sinks, %zu faces prescribed (%d skipped), deviation "
+                  "max %.2f°\n",
+                  con.sources, con.from_potential.size(), con.potential_skipped, potential_max);
+    h += line;
+  }
   if (con.raw_faces > 0) {
     std::snprintf(line, sizeof line,
                   "field file: %zu of %d faces prescribed, deviation max %.2f°, mean %.2f°\n",
@@ -943,6 +1040,9 @@ ProblemDecl conjugate_field() {
                false, "z_N of the face in its own frame (Prop. 2; e1 = (1, 0): principal)"}};
   d.check = [](const Settings& s) {
     CheckNoMultiresolution(s, "conjugate_field");
+    if (s.Given("field.sources") && !s.String("field.file").empty()) {
+      throw s.Error("field.sources", "field.file and field.sources each give the whole field: give one");
+    }
     if ((!s.String("field.guide_curves").empty() || s.Given("field.rotations")) && s.Given("field.moves")) {
       throw s.Error("field.moves", "moves and guide curves or rotations hold different faces: give "
                                    "field.moves or field.guide_curves / field.rotations");

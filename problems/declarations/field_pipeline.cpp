@@ -97,6 +97,14 @@ std::vector<Key> FieldKeys() {
       "degrees} (file units; |angle| < 90); after the free field, the faces within r of the face "
       "nearest `at` are re-solved with the free field turned by the angle at the centre, tapering to "
       "0 at r (every other face held, as for guide curves; weight field.guide_weight)";
+  Key sources;
+  sources.name = "field.sources";
+  sources.type = Type::kCustom;
+  sources.example = "[{at: [0, 0, 1], strength: 1}]";
+  sources.doc =
+      "a potential field's gradient as the whole field (thesis §8.1.1): a list of {at: [x, y, z], "
+      "strength: s} (file units; s > 0 a source, s < 0 a sink); φ = Σ s log|x − at|, each face's "
+      "direction ∇φ prescribed as one direction of its pair (like field.file; not with it)";
   Key file;
   file.name = "field.file";
   file.type = Type::kInputPath;
@@ -121,6 +129,7 @@ std::vector<Key> FieldKeys() {
           constraints,
           file,
           rotations,
+          sources,
           NumberKey("field.boundary_alignment", 1, 0, 1e6,
                     "weight of the boundary tangent as a prescribed direction of every boundary "
                     "face (through tcd_prescribed_direction, which must be on): level sets along "
