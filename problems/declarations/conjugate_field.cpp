@@ -181,6 +181,22 @@ std::vector<Move> ReadMoves(const Settings& s) {
   return out;
 }
 
+// The `at: [x, y, z]` of the list entry `m` (file units) of the key `name`;
+// `key` names the entry in messages.
+V3 ReadPoint(const Settings& s, const char* name, const CustomValue& m, const std::string& key) {
+  const CustomValue* at = m.Find("at");
+  if (!at || !at->IsList() || at->items.size() != 3) {
+    throw s.ErrorAt(name, at ? *at : m, key + ".at", "expected a point [x, y, z] (file units)");
+  }
+  V3 p;
+  for (int k = 0; k < 3; ++k) {
+    const CustomValue& x = at->items[size_t(k)];
+    if (!x.number || !std::isfinite(*x.number)) throw s.ErrorAt(name, x, key + ".at", "expected a finite number");
+    p[k] = *x.number;
+  }
+  return p;
+}
+
 // A local rotation of the field (field.rotations, thesis §8.1.1): inside
 // `radius` of the face nearest `at`, the free field turned by `angle`
 // degrees at the centre, tapering to 0 at the radius (fields/guide_curves.h's
@@ -210,15 +226,7 @@ std::vector<Rotation> ReadRotations(const Settings& s) {
         throw s.ErrorAt(name, e.key, r.key + "." + k, "unknown key (allowed: at, radius, angle)");
       }
     }
-    const CustomValue* at = m.Find("at");
-    if (!at || !at->IsList() || at->items.size() != 3) {
-      throw s.ErrorAt(name, at ? *at : m, r.key + ".at", "expected a point [x, y, z] (file units)");
-    }
-    for (int k = 0; k < 3; ++k) {
-      const CustomValue& x = at->items[size_t(k)];
-      if (!x.number || !std::isfinite(*x.number)) throw s.ErrorAt(name, x, r.key + ".at", "expected a finite number");
-      r.at[k] = *x.number;
-    }
+    r.at = ReadPoint(s, name, m, r.key);
     const CustomValue* radius = m.Find("radius");
     if (!radius || !radius->number || !std::isfinite(*radius->number) || *radius->number <= 0) {
       throw s.ErrorAt(name, radius ? *radius : m, r.key + ".radius", "expected a length > 0 (file units)");
@@ -260,15 +268,7 @@ std::vector<Source> ReadSources(const Settings& s) {
       }
     }
     Source src;
-    const CustomValue* at = m.Find("at");
-    if (!at || !at->IsList() || at->items.size() != 3) {
-      throw s.ErrorAt(name, at ? *at : m, key + ".at", "expected a point [x, y, z] (file units)");
-    }
-    for (int k = 0; k < 3; ++k) {
-      const CustomValue& x = at->items[size_t(k)];
-      if (!x.number || !std::isfinite(*x.number)) throw s.ErrorAt(name, x, key + ".at", "expected a finite number");
-      src.at[k] = *x.number;
-    }
+    src.at = ReadPoint(s, name, m, key);
     const CustomValue* strength = m.Find("strength");
     if (!strength || !strength->number || !std::isfinite(*strength->number) || *strength->number == 0) {
       throw s.ErrorAt(name, strength ? *strength : m, key + ".strength",
