@@ -1,16 +1,26 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// archgeo — from a base complex on a closed triangle mesh to a conforming
-// quad mesh (Gebreiter 2012, §4.1): charts, their parameterisation over a
+// archgeo — from a base complex on a triangle mesh (closed, or open with
+// the base complex's boundary on the surface boundary) to a conforming quad
+// mesh (Gebreiter 2012, §4.1): charts, their parameterisation over a
 // primitive domain, and the extraction of a regular grid per chart.
 //
-//  1. Charts (§4.1.1–4.1.2, BuildChartLayout): one shortest path on the
-//     edge graph (Dijkstra, edge lengths) per base edge between its two
-//     nodes, over vertices no earlier path and no other node uses, so no
-//     two paths share a vertex other than their nodes; the triangles between
-//     the paths are flood-filled into charts; each chart must be the base
-//     face it lies left of, a disc (V − E + F = 1, one boundary loop) whose
-//     boundary is exactly that face's paths.
+//  1. Charts (§4.1.1–4.1.2, BuildChartLayout): a base edge on one base face
+//     (open surfaces) runs along the surface boundary between its nodes;
+//     every other base edge is one shortest path on the interior edge graph
+//     (Dijkstra, edge lengths) between its two nodes, over vertices no
+//     earlier path, no other node and no boundary uses, so no two paths
+//     share a vertex other than their nodes. Paths are traced as Praun et
+//     al. (2001, "Consistent mesh parameterizations") do: a spanning tree of
+//     the base edges first, then the rest, each shortest chord first, and
+//     every path leaves and enters its nodes between the paths of its
+//     neighbouring base edges in the cyclic order of the base complex. The
+//     triangles between the paths are flood-filled into charts; each chart
+//     must be the base face it lies left of, a disc (V − E + F = 1, one
+//     boundary loop) whose boundary is exactly that face's paths. Where the
+//     surface has no room for them (ChartRoomError), ChartQuads splits
+//     every surface triangle into four at its edge midpoints (the same
+//     surface, so samples stay on the input) and tries again, twice at most.
 //  2. Parameterisation (§4.1.3–4.1.5, ParameteriseChart): a triangle chart to
 //     the equilateral triangle (0,0), (1,0), (½, √3/2), a quad chart to the
 //     unit square, corners in the base face's order; boundary vertices by
@@ -61,10 +71,19 @@ class BaseComplexError : public std::invalid_argument {
   std::string element_;
 };
 
+// A base complex the surface has no room for at its resolution: a base edge
+// with no free path in its sectors, or charts that are not the discs of their
+// faces. ChartQuads refines the surface and tries again.
+class ChartRoomError : public BaseComplexError {
+ public:
+  using BaseComplexError::BaseComplexError;
+};
+
 struct BaseEdgePath {
   int a = 0, b = 0;       // base vertices, a < b
   std::vector<int> path;  // surface vertices from node a to node b
   double length = 0;      // along the surface edges
+  bool boundary = false;  // on one base face: its path is the surface boundary between its nodes
 };
 
 struct Chart {
@@ -87,10 +106,11 @@ struct ChartLayout {
   bool turned = false;  // the base faces were oriented against the surface and turned
 };
 
-// `triangles`: a closed, consistently oriented triangle mesh on `points`.
-// Throws BaseComplexError for a base complex that is not a closed manifold
-// of triangles and quads on distinct nodes, a base edge with no free path,
-// or a chart that is not the disc of its face.
+// `triangles`: a consistently oriented manifold triangle mesh on `points`.
+// Throws BaseComplexError for a base complex that is not a manifold of
+// triangles and quads on distinct nodes, closed where the surface is, with
+// its boundary nodes exactly on the surface boundary; ChartRoomError for a
+// base edge with no free path or a chart that is not the disc of its face.
 ChartLayout BuildChartLayout(const std::vector<Eigen::Vector3d>& points,
                              const std::vector<std::array<int, 3>>& triangles,
                              const BaseComplex& base);
@@ -135,6 +155,7 @@ int ChartSamples(const ChartLayout& layout, int n, double edge_length);
 
 // The whole path with the figures that judge it (spectral/base_complex_check.cpp).
 struct ChartQuadsResult {
+  int refinements = 0;  // midpoint splits of the surface the charts needed (layout is on the last)
   ChartLayout layout;
   std::vector<ChartMap> maps;
   QuadExtraction quads;
@@ -142,10 +163,12 @@ struct ChartQuadsResult {
   int flipped = 0;          // parameter triangles of signed area ≤ 0, all charts
   double min_area = 0;      // smallest signed parameter area / its domain's
   std::vector<int> valence;  // per output vertex: edges at it
-  // Output vertices of valence ≠ 4, and those the base complex predicts:
-  // its nodes of valence ≠ 4 and the centres of its triangles (valence 3).
+  // Output vertices of valence ≠ 4 inside or ≠ 3 on the boundary, and those
+  // the base complex predicts: its inner nodes with ≠ 4 base edges, its
+  // boundary nodes with ≠ 3, and the centres of its triangles (valence 3).
   std::vector<int> irregular, expected_irregular;
   int boundary_edges = 0;      // output edges on one quad
+  int expected_boundary_edges = 0;  // n per boundary base edge
   int non_manifold_edges = 0;  // output edges on more than two quads
   int t_junctions = 0;         // output vertices inside a boundary edge of another quad
   double seconds_charts = 0, seconds_parameterisation = 0, seconds_extraction = 0;

@@ -14,8 +14,48 @@
 namespace archgeo {
 namespace {
 
+constexpr int kChartRefinements = 2;  // midpoint splits of the surface before giving up
+
 double ChartSecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Each triangle split into four at its edge midpoints, then each triangle
+// at a node into three at its centroid, so a node has twice the surface
+// edges to leave by (new vertices after the old, so vertex ids stay): the
+// same surface, finer.
+void SplitTriangles(const std::vector<int>& nodes, std::vector<Eigen::Vector3d>& points,
+                    std::vector<std::array<int, 3>>& triangles) {
+  std::map<std::pair<int, int>, int> midpoint;
+  auto mid = [&](int u, int v) {
+    const auto [it, fresh] = midpoint.emplace(std::pair(std::min(u, v), std::max(u, v)), int(points.size()));
+    if (fresh) points.push_back(0.5 * (points[u] + points[v]));
+    return it->second;
+  };
+  std::vector<char> node(points.size(), 0);
+  for (int v : nodes) node[size_t(v)] = 1;
+  auto at_node = [&](int v) { return size_t(v) < node.size() && node[size_t(v)]; };
+  std::vector<std::array<int, 3>> finer;
+  finer.reserve(5 * triangles.size());
+  auto add = [&](int a, int b, int c) {
+    if (!at_node(a) && !at_node(b) && !at_node(c)) {
+      finer.push_back({a, b, c});
+      return;
+    }
+    const int g = int(points.size());
+    points.push_back((points[a] + points[b] + points[c]) / 3);
+    finer.push_back({a, b, g});
+    finer.push_back({b, c, g});
+    finer.push_back({c, a, g});
+  };
+  for (const auto& [a, b, c] : triangles) {
+    const int ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
+    add(a, ab, ca);
+    add(ab, b, bc);
+    add(ca, bc, c);
+    add(ab, bc, ca);
+  }
+  triangles = std::move(finer);
 }
 
 // Valences, boundary and non-manifold edges, and T-junctions: a vertex in
@@ -58,16 +98,21 @@ void CheckChartQuads(ChartQuadsResult& r) {
     }
   }
   for (size_t v = 0; v < r.valence.size(); ++v) {
-    if (r.valence[v] != 4) r.irregular.push_back(int(v));
+    if (r.valence[v] != (on_boundary.count(int(v)) ? 3 : 4)) r.irregular.push_back(int(v));
   }
   // The base complex's prediction.
   std::vector<int> base_valence(q.node_vertex.size(), 0);
+  std::vector<char> base_boundary(q.node_vertex.size(), 0);
   for (const BaseEdgePath& e : r.layout.edges) {
     ++base_valence[e.a];
     ++base_valence[e.b];
+    if (e.boundary) {
+      base_boundary[e.a] = base_boundary[e.b] = 1;
+      r.expected_boundary_edges += r.n;
+    }
   }
   for (size_t v = 0; v < base_valence.size(); ++v) {
-    if (base_valence[v] != 4) r.expected_irregular.push_back(q.node_vertex[v]);
+    if (base_valence[v] != (base_boundary[v] ? 3 : 4)) r.expected_irregular.push_back(q.node_vertex[v]);
   }
   for (int c : q.centre_vertex) {
     if (c >= 0) r.expected_irregular.push_back(c);
@@ -95,13 +140,23 @@ int ChartSamples(const ChartLayout& layout, int n, double edge_length) {
   return std::max(1, int(std::lround(mean / edge_length)));
 }
 
-ChartQuadsResult ChartQuads(const std::vector<Eigen::Vector3d>& points,
-                            const std::vector<std::array<int, 3>>& triangles,
+ChartQuadsResult ChartQuads(const std::vector<Eigen::Vector3d>& input_points,
+                            const std::vector<std::array<int, 3>>& input_triangles,
                             const BaseComplex& base, int n, double edge_length,
                             ChartWeights weights) {
   ChartQuadsResult r;
   auto start = std::chrono::steady_clock::now();
-  r.layout = BuildChartLayout(points, triangles, base);
+  std::vector<Eigen::Vector3d> points = input_points;
+  std::vector<std::array<int, 3>> triangles = input_triangles;
+  for (;; ++r.refinements) {
+    try {
+      r.layout = BuildChartLayout(points, triangles, base);
+      break;
+    } catch (const ChartRoomError&) {
+      if (r.refinements == kChartRefinements) throw;
+      SplitTriangles(base.nodes, points, triangles);
+    }
+  }
   r.n = ChartSamples(r.layout, n, edge_length);
   r.seconds_charts = ChartSecondsSince(start);
   start = std::chrono::steady_clock::now();

@@ -123,9 +123,19 @@ GridLineKinks MeasureGridLineKinks(const std::vector<Eigen::Vector3d>& points,
 
 void RelaxQuads(const std::vector<std::array<int, 4>>& quads, int sweeps,
                 const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& onto,
-                std::vector<Eigen::Vector3d>* points) {
+                std::vector<Eigen::Vector3d>* points, const std::vector<int>& centres) {
   std::vector<bool> regular;
   const auto pairs = OppositePairs(int(points->size()), quads, &regular);
+  std::vector<std::vector<int>> centre_ring;  // per entry of `centres`: its edge neighbours
+  for (int c : centres) {
+    std::vector<int> ring;
+    for (const auto& q : quads) {
+      for (int k = 0; k < 4; ++k) {
+        if (c >= 0 && q[size_t(k)] == c) ring.push_back(q[size_t((k + 1) % 4)]);
+      }
+    }
+    centre_ring.push_back(ring);
+  }
   std::vector<Eigen::Vector3d> mapped(quads.size());
   std::vector<unsigned> convex(quads.size());
   std::vector<double> shortest(quads.size());
@@ -141,6 +151,13 @@ void RelaxQuads(const std::vector<std::array<int, 4>>& quads, int sweeps,
       Eigen::Vector3d sum = Eigen::Vector3d::Zero();
       for (int u : pairs[v]) sum += (*points)[size_t(u)];
       next[v] = onto(0.5 * (*points)[v] + 0.125 * sum);
+    }
+    for (size_t i = 0; i < centres.size(); ++i) {
+      if (centre_ring[i].empty()) continue;
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      for (int u : centre_ring[i]) sum += (*points)[size_t(u)];
+      const size_t c = size_t(centres[i]);
+      next[c] = onto(0.5 * (*points)[c] + 0.5 / double(centre_ring[i].size()) * sum);
     }
     // A quad that would turn by more than 45° from its normal as mapped,
     // bend inward at a corner that was convex as mapped, or shrink its

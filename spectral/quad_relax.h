@@ -9,8 +9,11 @@
 // straightens them: every vertex of valence 4 moves half-way to the mean of
 // its four edge neighbours, then onto the design surface (its closest
 // point), `sweeps` times (Jacobi); the vertices of another valence — the
-// base complex's irregular nodes and triangle centres — and the
-// connectivity stay. (A node of valence 4 is a chart corner only: it moves
+// base complex's irregular nodes, the boundary — and the connectivity stay,
+// but for the `centres` (the triangle charts' centres, placed by the
+// parameterisation, not by the designer): each moves half-way to the mean
+// of its edge neighbours, so a centre mapped close to one side of a
+// distorted chart is drawn to the middle of its three spokes. (A node of valence 4 is a chart corner only: it moves
 // like any other vertex, so that no line turns there either.) No quad turns
 // over, folds or collapses: one whose normal would leave its normal as
 // mapped by more than 45°, that would bend inward at a corner convex as
@@ -37,10 +40,11 @@ struct GridLineKinks {
 GridLineKinks MeasureGridLineKinks(const std::vector<Eigen::Vector3d>& points,
                                    const std::vector<std::array<int, 4>>& quads);
 
-// Relaxes `points` (the vertices of `quads`, a closed all-quad mesh) as
-// above; `onto` maps a point to its closest point on the design surface.
+// Relaxes `points` (the vertices of `quads`, an all-quad mesh) as above;
+// `onto` maps a point to its closest point on the design surface;
+// `centres`: irregular vertices that move too (−1 entries ignored).
 void RelaxQuads(const std::vector<std::array<int, 4>>& quads, int sweeps,
                 const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& onto,
-                std::vector<Eigen::Vector3d>* points);
+                std::vector<Eigen::Vector3d>* points, const std::vector<int>& centres = {});
 
 }  // namespace archgeo

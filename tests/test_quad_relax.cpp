@@ -71,5 +71,24 @@ TEST(QuadRelax, SweepsStraightenTheLinesKeepTheBoundaryAndTheSurface) {
   EXPECT_EQ(same, start);
 }
 
+// A triangle chart's three quads around its centre G, with G mapped close to
+// corner A: listed among the centres, G moves to the mean of its spoke
+// neighbours (the midpoints, whose mean is the triangle's centroid); not
+// listed, it stays like any irregular vertex.
+TEST(QuadRelax, ATriangleCentreMovesToTheMiddleOfItsSpokes) {
+  const Eigen::Vector3d a(0, 0, 0), b(2, 0, 0), c(1, std::sqrt(3.0), 0);
+  const Eigen::Vector3d centroid = (a + b + c) / 3;
+  std::vector<Eigen::Vector3d> points = {a, b, c, (a + b) / 2, (b + c) / 2, (c + a) / 2,
+                                         centroid + 0.6 * (a - centroid)};
+  const std::vector<std::array<int, 4>> quads = {{0, 3, 6, 5}, {1, 4, 6, 3}, {2, 5, 6, 4}};
+  const auto onto_plane = [](const Eigen::Vector3d& p) { return Eigen::Vector3d(p.x(), p.y(), 0); };
+  std::vector<Eigen::Vector3d> held = points;
+  RelaxQuads(quads, 40, onto_plane, &held);
+  EXPECT_EQ(held, points);
+  RelaxQuads(quads, 40, onto_plane, &points, {6});
+  EXPECT_LT((points[6] - centroid).norm(), 1e-9);
+  for (int v = 0; v < 6; ++v) EXPECT_EQ(points[size_t(v)], held[size_t(v)]);
+}
+
 }  // namespace ARCHGEO_UNITY_ID
 }  // namespace archgeo

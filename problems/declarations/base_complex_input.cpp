@@ -104,6 +104,8 @@ nlohmann::json BcDetails(const ChartQuadsResult& r, double distance, double diag
           {"expected_irregular_vertices", r.expected_irregular.size()},
           {"irregular_as_predicted", r.irregular == r.expected_irregular},
           {"boundary_edges", r.boundary_edges},
+          {"expected_boundary_edges", r.expected_boundary_edges},
+          {"surface_refinements", r.refinements},
           {"non_manifold_edges", r.non_manifold_edges},
           {"t_junctions", r.t_junctions},
           {"shared_edge_mismatch_relative", r.quads.shared_edge_mismatch / diagonal},
@@ -118,12 +120,15 @@ std::string BcInvalid(const ChartQuadsResult& r, double distance_relative) {
   std::string out;
   if (r.flipped > 0) out += std::to_string(r.flipped) + " flipped parameter triangles\n";
   if (r.irregular != r.expected_irregular) {
-    out += "the irregular vertices are not the base complex's (nodes of valence ≠ 4, triangle "
-           "centres)\n";
+    out += "the irregular vertices are not the base complex's (inner nodes of valence ≠ 4, "
+           "boundary nodes of valence ≠ 3, triangle centres)\n";
   }
-  if (r.boundary_edges > 0 || r.non_manifold_edges > 0 || r.t_junctions > 0) {
+  if (r.boundary_edges != r.expected_boundary_edges || r.non_manifold_edges > 0 ||
+      r.t_junctions > 0) {
     out += "the quad mesh is not conforming (" + std::to_string(r.boundary_edges) +
-           " boundary edges, " + std::to_string(r.non_manifold_edges) + " non-manifold edges, " +
+           " boundary edges where the base complex's boundary gives " +
+           std::to_string(r.expected_boundary_edges) + ", " +
+           std::to_string(r.non_manifold_edges) + " non-manifold edges, " +
            std::to_string(r.t_junctions) + " T-junctions)\n";
   }
   if (!(distance_relative <= kBcOnSurface)) {
@@ -183,7 +188,7 @@ ChartStep RunChartStep(const Settings& s, const Mesh& design,
                const Vec3 c = surface.Closest(Vec3{p.x(), p.y(), p.z()}).point;
                return Eigen::Vector3d(c[0], c[1], c[2]);
              },
-             &r.quads.points);
+             &r.quads.points, r.quads.centre_vertex);
   const GridLineKinks relaxed = MeasureGridLineKinks(r.quads.points, r.quads.quads);
   double distance = 0;
   for (const Eigen::Vector3d& p : r.quads.points) {
@@ -201,12 +206,12 @@ ChartStep RunChartStep(const Settings& s, const Mesh& design,
   std::snprintf(line, sizeof line,
                 "charts: %zu, n = %d, flipped parameter triangles %d\nquads: %zu vertices, %zu "
                 "quads, irregular vertices %zu (base complex predicts %zu: %s), boundary edges "
-                "%d, T-junctions %d, distance to the input %.2e of the diagonal\ngrid lines turn "
+                "%d (its boundary gives %d), T-junctions %d, distance to the input %.2e of the diagonal\ngrid lines turn "
                 "at most %.1f° (mean %.2f°) after %d smoothing sweeps, %.1f° (%.2f°) as mapped\n",
                 r.layout.charts.size(), r.n, r.flipped, r.quads.points.size(), r.quads.quads.size(),
                 r.irregular.size(), r.expected_irregular.size(),
                 r.irregular == r.expected_irregular ? "the same vertices" : "differ",
-                r.boundary_edges, r.t_junctions, distance / diagonal, relaxed.max_degrees,
+                r.boundary_edges, r.expected_boundary_edges, r.t_junctions, distance / diagonal, relaxed.max_degrees,
                 relaxed.mean_degrees, int(s.Integer("charts.smoothing")), mapped.max_degrees,
                 mapped.mean_degrees);
   out.headline = line;

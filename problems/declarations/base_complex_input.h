@@ -54,12 +54,12 @@ struct ChartStep {
   nlohmann::json details;  // the report's details.charts
   std::string headline;    // lines for the terminal
   // "" or one line per failed check: a flipped parameter triangle, irregular
-  // vertices other than the base complex's, a boundary or non-manifold edge
-  // or T-junction, a vertex farther than 1e-9 of the diagonal from `design`.
+  // vertices other than the base complex's, a boundary edge off the base
+  // complex's boundary, a non-manifold edge or T-junction, a vertex farther than 1e-9 of the diagonal from `design`.
   std::string invalid;
 };
 
-// `base` on the closed triangle mesh (`points`, `triangles`; `design` or a
+// `base` on the triangle mesh (`points`, `triangles`; `design` or a
 // refinement of it: the output is judged against `design`) → charts →
 // parameterisation → the all-quad mesh, by the chart keys of `s`. Throws
 // BaseComplexError for a complex the surface cannot carry and

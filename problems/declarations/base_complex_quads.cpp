@@ -1,7 +1,8 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// archgeo — `base_complex_quads`: a closed triangle mesh of the design
-// surface and a base complex on it (from the user: base_complex.mesh or
+// archgeo — `base_complex_quads`: a triangle mesh of the design surface
+// (closed, or open with the base complex's boundary along its boundary) and
+// a base complex on it (from the user: base_complex.mesh or
 // base_complex.ids, problems/declarations/base_complex_input.h; or the
 // surface decimated to base_complex.decimate vertices [Gebreiter 2012,
 // §3.1.1], spectral/decimate.h) → charts →
@@ -17,9 +18,10 @@
 // T-junctions, how far the two charts of a base edge disagree on its
 // samples, and the output vertices' distance to the input surface. The
 // result is invalid (exit 4) unless no parameter triangle is flipped, the
-// irregular vertices are exactly the predicted ones, there is no boundary
-// edge, T-junction or non-manifold edge, and every output vertex is within
-// 1e-9 of the diagonal of the input surface.
+// irregular vertices are exactly the predicted ones, the only boundary edges
+// are the n samples of each boundary base edge, there is no T-junction or
+// non-manifold edge, and every output vertex is within 1e-9 of the diagonal
+// of the input surface.
 #include <chrono>
 
 #include "core/problem.h"
@@ -104,13 +106,6 @@ void BcCheck(const Settings& s) {
 void BcNet(HookContext& c) {
   const Settings& s = *c.settings;
   const Mesh& design = *c.input;
-  for (HalfedgeIndex h : design.halfedges()) {
-    if (design.is_border(h)) {
-      throw s.Error("mesh", s.String("mesh") +
-                                " has a boundary: base complexes on open surfaces (the boundary "
-                                "triangles of Gebreiter 2012, §4.1.4) are not done; give a closed mesh");
-    }
-  }
   std::vector<Eigen::Vector3d> points;
   std::vector<std::array<int, 3>> triangles;
   BcArrays(design, points, triangles);
@@ -132,8 +127,8 @@ void BcNet(HookContext& c) {
                     "the decimated base complex (" + std::to_string(user.complex.nodes.size()) +
                         " vertices) cannot be charted: " + e.what() +
                         ". The charts join the base vertices by shortest paths on the design "
-                        "mesh's edges that share no vertex; try another vertex count, or give the "
-                        "base complex with base_complex.mesh");
+                        "mesh's edges that share no vertex, even on the mesh split twice; try "
+                        "another vertex count, or give the base complex with base_complex.mesh");
     }
     throw InputError(user.file, 0, user.key, e.what());
   } catch (const std::invalid_argument& e) {
@@ -159,7 +154,7 @@ std::string BcInvalid(HookContext& c) { return c.State<BcState>().invalid; }
 ProblemDecl base_complex_quads() {
   ProblemDecl d;
   d.name = "base_complex_quads";
-  d.summary = "base complex (given or decimated) on a closed triangle mesh → charts → "
+  d.summary = "base complex (given or decimated) on a triangle mesh → charts → "
               "parameterisation → all-quad mesh";
   d.paper = "[Gebreiter 2012, §4.1]";
   d.input = InputKind::kTriangles;
