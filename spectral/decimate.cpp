@@ -241,9 +241,12 @@ void Collapse(DcMesh& m, int u, int v) {
 // stays and the smaller minimum angle grows; not if c-d is an edge already,
 // a valence leaves [3, cap] (2 on the boundary), or a new triangle is
 // degenerate, turns from the old normals by more than the collapse bound or
-// leaves its corners' input normals by more than theirs. Returns whether it
-// flipped.
-bool TryFlip(DcMesh& m, int a, int b, double cos_turn, const std::vector<int>& cap) {
+// leaves its corners' input normals by more than theirs. With `sliver` > 0
+// (radians) the flip is for shape instead: when the two triangles' smallest
+// angle is below `sliver` and grows, whatever the valences do (within the
+// same bounds). Returns whether it flipped.
+bool TryFlip(DcMesh& m, int a, int b, double cos_turn, const std::vector<int>& cap,
+             double sliver = 0) {
   int f1 = -1, f2 = -1;
   for (int f : m.at[size_t(a)]) {
     const auto& t = m.tri[size_t(f)];
@@ -270,7 +273,7 @@ bool TryFlip(DcMesh& m, int a, int b, double cos_turn, const std::vector<int>& c
   };
   const int before = dev(va, ba) + dev(vb, bb) + dev(vc, bc) + dev(vd, bd);
   const int after = dev(va - 1, ba) + dev(vb - 1, bb) + dev(vc + 1, bc) + dev(vd + 1, bd);
-  if (after > before) return false;
+  if (sliver == 0 && after > before) return false;
   const V3 &xa = m.p[size_t(a)], &xb = m.p[size_t(b)], &xc = m.p[size_t(c)], &xd = m.p[size_t(d)];
   const V3 n1 = (xa - xc).cross(xd - xc), n2 = (xb - xd).cross(xc - xd);
   const V3 o1 = (xb - xa).cross(xc - xa), o2 = (xa - xb).cross(xd - xb);
@@ -284,8 +287,11 @@ bool TryFlip(DcMesh& m, int a, int b, double cos_turn, const std::vector<int>& c
   if (!m.FacesAsInput(c, a, d, n1) || !m.FacesAsInput(d, b, c, n2)) return false;
   const double angle_before = std::min(MinAngle(xa, xb, xc), MinAngle(xb, xa, xd));
   const double angle_after = std::min(MinAngle(xc, xa, xd), MinAngle(xd, xb, xc));
-  // Fewer irregular valences at a small loss of shape, or the same with a better one.
-  if (after == before ? !(angle_after > angle_before) : !(angle_after > 0.8 * angle_before)) {
+  if (sliver > 0) {
+    if (!(angle_before < sliver && angle_after > angle_before)) return false;
+  } else if (after == before ? !(angle_after > angle_before)
+                             : !(angle_after > 0.8 * angle_before)) {
+    // Fewer irregular valences at a small loss of shape, or the same with a better one.
     return false;
   }
   m.tri[size_t(f1)] = {c, a, d};
@@ -299,6 +305,92 @@ bool TryFlip(DcMesh& m, int a, int b, double cos_turn, const std::vector<int>& c
   m.at[size_t(c)].push_back(f2);
   m.at[size_t(d)].push_back(f1);
   return true;
+}
+
+constexpr double kKeepImportance = 0.5;  // a relocated node keeps this share of its importance
+
+// The smallest angle of v's triangles with v at x (−1: one would be
+// degenerate, turn from its normal by more than the collapse bound, or leave
+// its corners' input normals, x's taken as v's).
+double FanAngle(const DcMesh& m, int v, int x, double cos_turn) {
+  double smallest = M_PI;
+  for (int f : m.at[size_t(v)]) {
+    const auto& t = m.tri[size_t(f)];
+    const int k = m.Slot(f, v);
+    const int ia = t[size_t((k + 1) % 3)], ib = t[size_t((k + 2) % 3)];
+    const V3 &a = m.p[size_t(ia)], &b = m.p[size_t(ib)], &xv = m.p[size_t(x)];
+    const V3 n0 = (a - m.p[size_t(v)]).cross(b - m.p[size_t(v)]), n1 = (a - xv).cross(b - xv);
+    const double l0 = n0.norm(), l1 = n1.norm();
+    if (!(l1 > 1e-12 * (a - xv).squaredNorm()) || !(l0 > 0)) return -1;
+    if (n0.dot(n1) < cos_turn * l0 * l1 || !m.FacesAsInput(x, ia, ib, n1)) return -1;
+    smallest = std::min(smallest, MinAngle(xv, a, b));
+  }
+  return smallest;
+}
+
+// Node relocation (§3.1.2, "a mesh vertex v_i is relocated"): node v moves
+// to the input vertex of its region (the vertices collapsed into it) whose
+// triangles have the largest smallest angle, when larger than v's; a
+// boundary node only along the boundary, an inner one only inside; the
+// node's valence within the vertex's input valence; the vertex at least
+// half as important on the input (a node on a feature stays on it).
+// Returns whether it moved.
+bool Relocate(DcMesh& m, int v, const std::vector<int>& region, const std::vector<char>& boundary,
+              const std::vector<double>& importance, const std::vector<int>& cap, double cos_turn,
+              std::vector<int>& parent) {
+  const size_t valence = m.RingOf(v).vertex.size();
+  double best_angle = FanAngle(m, v, v, cos_turn);
+  int best = -1;
+  for (int w : region) {
+    if (w == v || boundary[size_t(w)] != boundary[size_t(v)] || int(valence) > cap[size_t(w)] ||
+        importance[size_t(w)] < kKeepImportance * importance[size_t(v)]) {
+      continue;
+    }
+    const double angle = FanAngle(m, v, w, cos_turn);
+    if (angle > best_angle + 1e-12) {
+      best_angle = angle;
+      best = w;
+    }
+  }
+  if (best < 0) return false;
+  for (int f : m.at[size_t(v)]) m.tri[size_t(f)][size_t(m.Slot(f, v))] = best;
+  m.at[size_t(best)] = std::move(m.at[size_t(v)]);
+  m.at[size_t(v)].clear();
+  parent[size_t(best)] = -1;
+  parent[size_t(v)] = best;
+  return true;
+}
+
+// Rounds of relocations of the nodes not locked, then flips of the slivers'
+// edges (TryFlip for shape), until a round changes nothing.
+void ImproveShapes(DcMesh& m, const DecimateOptions& options, const std::vector<char>& locked,
+                   const std::vector<char>& boundary, const std::vector<int>& cap, double cos_turn,
+                   std::vector<int>& parent, DecimateResult& out) {
+  const double sliver = options.sliver_degrees * M_PI / 180;
+  for (int round = 0; round < options.shape_rounds; ++round) {
+    std::vector<std::vector<int>> region(m.at.size());
+    for (size_t u = 0; u < m.at.size(); ++u) {
+      int r = int(u);
+      while (parent[size_t(r)] >= 0) r = parent[size_t(r)];
+      if (!m.at[size_t(r)].empty()) region[size_t(r)].push_back(int(u));
+    }
+    int changed = 0;
+    for (size_t v = 0; v < m.at.size(); ++v) {
+      if (m.at[v].empty() || locked[v]) continue;
+      changed += Relocate(m, int(v), region[v], boundary, out.importance, cap, cos_turn, parent);
+    }
+    out.relocations += changed;
+    for (size_t a = 0; a < m.at.size(); ++a) {
+      if (m.at[a].empty()) continue;
+      for (int b : m.RingOf(int(a)).vertex) {
+        if (int(a) < b && TryFlip(m, int(a), b, cos_turn, cap, sliver)) {
+          ++out.shape_flips;
+          ++changed;
+        }
+      }
+    }
+    if (changed == 0) break;
+  }
 }
 
 int BoundaryLoops(const DcMesh& m) {
@@ -389,7 +481,12 @@ DecimateResult Decimate(const std::vector<Eigen::Vector3d>& points,
   // paths share no vertex but their nodes): its valence stays within the
   // input's.
   std::vector<int> cap(n, 0);
-  for (size_t v = 0; v < n; ++v) cap[v] = int(m.RingOf(int(v)).vertex.size());
+  std::vector<char> input_boundary(n, 0);
+  for (size_t v = 0; v < n; ++v) {
+    const DcMesh::Ring r = m.RingOf(int(v));
+    cap[v] = int(r.vertex.size());
+    input_boundary[v] = DcMesh::OnBoundary(r);
+  }
   const double cos_turn = std::cos(options.max_normal_turn_degrees * M_PI / 180);
 
   // Least important first; stale entries (an older stamp) are skipped.
@@ -446,6 +543,7 @@ DecimateResult Decimate(const std::vector<Eigen::Vector3d>& points,
     }
   }
   out.reached = count == options.target_vertices;
+  if (out.reached) ImproveShapes(m, options, locked, input_boundary, cap, cos_turn, parent, out);
 
   std::vector<int> index(n, -1);
   for (size_t v = 0; v < n; ++v) {

@@ -40,6 +40,18 @@
 //    surface edges), normals within the bounds above.
 //  - Every collapse removes one vertex: the target count is met exactly
 //    unless every remaining vertex is refused (`reached` false).
+//  - Then, for the charts (a sliver triangle gives a thin chart, sampled
+//    into folded quads), `shape_rounds` rounds of two operations of §3.1.2
+//    until one changes nothing: vertex relocation — each node not locked
+//    moves to the input vertex of its own region (the input vertices
+//    collapsed into it; a boundary node along the boundary only, an inner
+//    one inside only; at least half as important on the input, so a node on
+//    a feature stays there) whose triangles have the largest smallest angle,
+//    when larger, within the normal bounds above and the vertex's input
+//    valence —
+//    and flips of slivers: an edge whose two triangles' smallest angle is
+//    below `sliver_degrees` flips when that angle grows (valences within
+//    [3, cap], 2 on the boundary; normals within the bounds above).
 //
 // Plain arrays in, plain structs out (no CGAL): the nodes are surface vertex
 // ids, as BaseComplex (spectral/base_complex_charts.h) takes them.
@@ -60,6 +72,8 @@ struct DecimateOptions {
   double max_normal_turn_degrees = 60;   // largest turn of a triangle normal in one collapse
   double max_normal_deviation_degrees = 60;  // triangle normal against its corners' input normals
   double min_angle_degrees = 10;         // no collapse makes a triangle sharper than this (and than before)
+  int shape_rounds = 10;                 // rounds of node relocations and sliver flips after the collapses
+  double sliver_degrees = 20;            // a triangle with a smaller angle is a sliver
   std::vector<int> locked;               // further surface vertex ids that stay
 };
 
@@ -74,6 +88,7 @@ struct DecimateResult {
   bool reached = false;                         // nodes.size() == target_vertices
   int refused = 0;                              // collapse candidates refused on the way
   int flips = 0;                                // valence-improving flips
+  int relocations = 0, shape_flips = 0;         // of the shape rounds
 
   // The result as a base complex for ChartQuads: nodes and triangles.
   BaseComplex Complex() const;

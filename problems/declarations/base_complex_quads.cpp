@@ -23,6 +23,7 @@
 // non-manifold edge, and every output vertex is within 1e-9 of the diagonal
 // of the input surface.
 #include <chrono>
+#include <cmath>
 
 #include "core/problem.h"
 #include "core/input_error.h"
@@ -34,6 +35,8 @@
 
 namespace archgeo::problems {
 namespace {
+
+constexpr double kSliverDegrees = 20;  // a base triangle with a smaller angle is a sliver
 
 struct BcState : ProblemState {
   std::string invalid;  // ChartStep::invalid
@@ -76,11 +79,29 @@ UserBaseComplex DecimatedBaseComplex(const Settings& s, const std::vector<Eigen:
                       "and its valences at least 3; give more vertices");
   }
   const FeatureProximity near = MeasureFeatureProximity(points, triangles, r);
+  // The base triangles' shapes (straight between their nodes): slivers give thin charts.
+  double smallest = 180;
+  int slivers = 0;
+  for (const auto& t : r.triangles) {
+    double angle = 180;
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d& x = points[size_t(r.nodes[size_t(t[k])])];
+      const Eigen::Vector3d a = points[size_t(r.nodes[size_t(t[(k + 1) % 3])])] - x;
+      const Eigen::Vector3d b = points[size_t(r.nodes[size_t(t[(k + 2) % 3])])] - x;
+      angle = std::min(angle, std::atan2(a.cross(b).norm(), a.dot(b)) * 180 / M_PI);
+    }
+    smallest = std::min(smallest, angle);
+    slivers += angle < kSliverDegrees;
+  }
   details = {{"target_vertices", target},
              {"vertices", r.nodes.size()},
              {"triangles", r.triangles.size()},
              {"boundary_corners", r.corners},
              {"flips", r.flips},
+             {"relocations", r.relocations},
+             {"shape_flips", r.shape_flips},
+             {"min_angle_degrees", smallest},
+             {"triangles_under_20_degrees", slivers},
              {"irregular_vertices", near.irregular},
              {"irregular_near_feature", near.irregular_near},
              {"vertices_near_feature", near.near},
