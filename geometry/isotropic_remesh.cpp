@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -54,19 +55,51 @@ struct RmState {
   bool CurveEdge(EdgeIndex e) const { return mesh.is_border(e) || feature_edge[e]; }
 };
 
+// Distance from q to the segment ab.
+double RmSegmentDistance(const V3& q, const V3& a, const V3& b) {
+  const V3 d = b - a;
+  const double t = std::clamp((q - a).dot(d) / std::max(d.squaredNorm(), 1e-300), 0.0, 1.0);
+  return (q - (a + t * d)).norm();
+}
+
+// The first of `curves` whose segments pass within `tolerance` of the ends
+// and the midpoint of edge ab; −1 if none.
+int RmCurveAlong(const std::vector<std::vector<Vec3>>& curves, double tolerance, const V3& a,
+                 const V3& b) {
+  for (size_t c = 0; c < curves.size(); ++c) {
+    bool all = true;
+    for (const V3& q : {a, b, V3(0.5 * (a + b))}) {
+      double d = std::numeric_limits<double>::infinity();
+      for (size_t i = 1; i < curves[c].size() && d > tolerance; ++i) {
+        const Vec3 &p0 = curves[c][i - 1], &p1 = curves[c][i];
+        d = std::min(d, RmSegmentDistance(q, V3(p0[0], p0[1], p0[2]), V3(p1[0], p1[1], p1[2])));
+      }
+      all = all && d <= tolerance;
+    }
+    if (all) return int(c);
+  }
+  return -1;
+}
+
 // Feature edges: interior edges of the input whose faces' normals differ by
-// more than the angle. Feature vertices with other than two feature edges
+// more than the angle, or that lie along a feature curve (counted per curve
+// in `curve_edges`). Feature vertices with other than two feature edges
 // (ends, junctions) or on the boundary are corners.
-int RmMarkFeatures(RmState& s, double feature_angle_degrees) {
+int RmMarkFeatures(RmState& s, const RemeshOptions& options, std::vector<int>& curve_edges) {
   Mesh& m = s.mesh;
-  if (feature_angle_degrees <= 0) return 0;
-  const double limit = std::cos(feature_angle_degrees * M_PI / 180);
+  curve_edges.assign(options.feature_curves.size(), 0);
+  const double angle = options.feature_angle_degrees;
+  if (angle <= 0 && options.feature_curves.empty()) return 0;
+  const double limit = angle > 0 ? std::cos(angle * M_PI / 180) : -2;
   std::vector<int> count(m.number_of_vertices(), 0);
   for (EdgeIndex e : m.edges()) {
     if (m.is_border(e)) continue;
     const HalfedgeIndex h = m.halfedge(e);
     const V3 n1 = RmFaceNormal(m, h).normalized(), n2 = RmFaceNormal(m, m.opposite(h)).normalized();
-    if (n1.dot(n2) >= limit) continue;
+    const int curve = RmCurveAlong(options.feature_curves, options.curve_tolerance,
+                                   Rp(m, m.source(h)), Rp(m, m.target(h)));
+    if (curve >= 0) ++curve_edges[size_t(curve)];
+    if (n1.dot(n2) >= limit && curve < 0) continue;
     s.feature_edge[e] = true;
     s.feature_segments.emplace_back(Rp(m, m.source(h)), Rp(m, m.target(h)));
     for (VertexIndex v : {m.source(h), m.target(h)}) {
@@ -372,7 +405,7 @@ RemeshResult IsotropicRemesh(const Mesh& input, const RemeshOptions& options) {
   RmUpdateSizes(s);
   RemeshResult result;
   result.corners = RmMarkCorners(s, options.corner_angle_degrees);
-  result.corners += RmMarkFeatures(s, options.feature_angle_degrees);
+  result.corners += RmMarkFeatures(s, options, result.curve_edges);
   result.feature_edges = int(s.feature_segments.size());
   for (int it = 0; it < options.iterations; ++it) {
     result.splits += RmSplitLong(s);

@@ -15,13 +15,16 @@
 //     boundary neighbours, then the closest point of the input's boundary
 //     polylines).
 // Feature edges (input edges whose faces' normals differ by more than
-// `feature_angle`) are kept like the boundary. Boundary corners (the boundary
+// `feature_angle`, or that lie along a user's feature curve) are kept like
+// the boundary. Boundary corners (the boundary
 // turning by more than `corner_angle`) and feature corners (ends and
 // junctions of features, features meeting the boundary) keep their input
 // position and are never removed; boundary and feature edges are split and
 // collapsed only along their curve (vertices relaxed along it and projected
 // back onto the input's boundary or features), never flipped.
 #pragma once
+
+#include <vector>
 
 #include "mesh/surface_mesh.h"
 
@@ -36,12 +39,18 @@ struct RemeshOptions {
   // units; targets shrink to √(6ε/κ − 3ε²) (at least L/16) where the input
   // curves by κ. 0: every target is L.
   double tolerance = 0;
+  // Feature curves from the user (an OBJ's polylines, points in order): an
+  // interior input edge whose two ends and midpoint lie within
+  // `curve_tolerance` (file units) of one curve's segments is a feature edge.
+  std::vector<std::vector<Vec3>> feature_curves;
+  double curve_tolerance = 0;
 };
 
 struct RemeshResult {
   Mesh mesh;  // triangles on the input surface
   int corners = 0;        // boundary and feature corners (kept in place)
   int feature_edges = 0;  // of the input
+  std::vector<int> curve_edges;  // per feature curve: the input edges along it
   int splits = 0, collapses = 0, flips = 0;
 };
 

@@ -74,5 +74,19 @@ TEST_F(BaseComplexRoof, ThreeStepsKeepTheValenceSevenNodesThePerimeterAndBalance
   EXPECT_LE(r.at("edge_length_cv").get<double>(), 0.12);
 }
 
+// A feature curve along no edge of the input is refused naming the file and
+// the key, and nothing is written.
+TEST_F(BaseComplexRoof, RemeshRefusesAFeatureCurveOffTheInputEdges) {
+  {
+    std::ofstream curve(Path("curve.obj"));
+    curve << "v -10 0.3 1\nv 10 0.7 1.2\nl 1 2\n";
+  }
+  const Outcome o = Solve("remesh.yaml", "refused", "--set remesh.features=" + Path("curve.obj"));
+  EXPECT_EQ(o.code, 2) << o.output;
+  EXPECT_NE(o.output.find("remesh.features"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("curve.obj"), std::string::npos) << o.output;
+  EXPECT_FALSE(std::ifstream(Path("refused.obj")).good());
+}
+
 }  // namespace ARCHGEO_UNITY_ID
 }  // namespace archgeo

@@ -143,6 +143,37 @@ TEST(IsotropicRemesh, FoldedPlateKeepsItsRidgeAsAFeatureAndCutsItWithout) {
   EXPECT_GT(cut_face, 1e-3);  // triangles across the ridge cut the corner
 }
 
+// Sum of the lengths of the edges with both ends on the line x = 1, z = 0.
+double RmLengthOnTheMidline(const Mesh& m) {
+  double sum = 0;
+  for (EdgeIndex e : m.edges()) {
+    const Eigen::Vector3d a = Pos(m, m.source(m.halfedge(e))), b = Pos(m, m.target(m.halfedge(e)));
+    if (std::abs(a.x() - 1) < 1e-9 && std::abs(b.x() - 1) < 1e-9) sum += (b - a).norm();
+  }
+  return sum;
+}
+
+// A user's feature curve on a flat plate (no dihedral features): the input
+// edges along it become features and the output keeps an edge line on it,
+// its whole length; without the curve, the remeshing crosses the line.
+TEST(IsotropicRemesh, AUserCurveIsKeptAsAFeature) {
+  const Mesh input = FoldedPlate(12, 0, 3);  // x = 1 is an edge line of the input
+  RemeshOptions o;
+  o.target_edge_length = 0.07;
+  o.feature_angle_degrees = 0;
+  o.curve_tolerance = 1e-3;
+  o.feature_curves = {{Vec3{1, 0, 0}, Vec3{1, 1, 0}}, {Vec3{0.3, 0.2, 0}, Vec3{0.7, 0.45, 0}}};
+  const RemeshResult kept = IsotropicRemesh(input, o);
+  ASSERT_EQ(kept.curve_edges.size(), 2u);
+  EXPECT_EQ(kept.curve_edges[0], 12);
+  EXPECT_EQ(kept.curve_edges[1], 0);  // along no edge of the input
+  EXPECT_EQ(kept.feature_edges, 12);
+  EXPECT_NEAR(RmLengthOnTheMidline(kept.mesh), 1.0, 1e-9);
+  o.feature_curves.clear();
+  const RemeshResult free = IsotropicRemesh(input, o);
+  EXPECT_LT(RmLengthOnTheMidline(free.mesh), 0.5);
+}
+
 // The unit octahedron subdivided `levels` times, its vertices on the unit sphere.
 Mesh OctaSphere(int levels) {
   std::vector<Eigen::Vector3d> p;

@@ -8,7 +8,9 @@
 #include <cstdio>
 #include <string>
 
+#include "core/input_error.h"
 #include "core/problem.h"
+#include "geometry/curves.h"
 #include "geometry/isotropic_remesh.h"
 #include "problems/runtime/model.h"
 
@@ -26,6 +28,8 @@ double RemeshMeanEdge(const Mesh& mesh) {
   return count ? sum / double(count) : 0;
 }
 
+constexpr double kCurveTolerance = 0.05;  // of the mean input edge: an edge along a feature curve
+
 void RemeshNet(HookContext& c) {
   const Settings& s = *c.settings;
   const double input_mean = RemeshMeanEdge(*c.input);
@@ -41,7 +45,19 @@ void RemeshNet(HookContext& c) {
   if (!(options.target_edge_length > 0)) {
     throw s.Error("remesh.edge_length", "the input's mean edge length is 0: nothing to remesh");
   }
+  const std::string& features = s.String("remesh.features");
+  if (!features.empty()) {
+    for (const Polyline& p : ReadPolylines(features)) options.feature_curves.push_back(p.points);
+    options.curve_tolerance = kCurveTolerance * input_mean;
+  }
   RemeshResult r = IsotropicRemesh(*c.input, options);
+  for (size_t k = 0; k < r.curve_edges.size(); ++k) {
+    if (r.curve_edges[k] > 0) continue;
+    throw InputError(features, 0, "remesh.features",
+                     "polyline " + std::to_string(k + 1) + " ('l' record " + std::to_string(k + 1) +
+                         ") runs along no interior edge of the input: its points must follow the "
+                         "input's edges, within 5% of their mean length");
+  }
   const TriangleQuality q = MeasureTriangles(r.mesh);
   char line[512];
   std::snprintf(line, sizeof line,
@@ -57,6 +73,7 @@ void RemeshNet(HookContext& c) {
                          {"tolerance", options.tolerance},
                          {"corners", r.corners},
                          {"feature_edges", r.feature_edges},
+                         {"feature_curve_edges", r.curve_edges},
                          {"splits", r.splits},
                          {"collapses", r.collapses},
                          {"flips", r.flips},
@@ -93,6 +110,11 @@ ProblemDecl remesh() {
             NumberKey("remesh.feature_angle", 30, 0, 180,
                       "an input edge whose faces' normals differ by more than this (degrees) is a feature, "
                       "kept like the boundary (0: no features)"),
+            PathKey("remesh.features", Type::kInputPath,
+                    "feature curves as OBJ polylines ('l' records): every interior input edge "
+                    "along one (its ends and midpoint within 5% of the mean edge length) is a "
+                    "feature, kept like the boundary, besides those of remesh.feature_angle; a "
+                    "polyline along no edge is refused"),
             NumberKey("remesh.corner_angle", 30, 0, 180,
                       "a boundary vertex where the boundary turns by more than this (degrees) is a corner: "
                       "kept in place")};
