@@ -100,37 +100,38 @@ TEST(OpenCharts, PlateFromTwoByTwoQuadsIsSampledOnTheExactGrid) {
   }
 }
 
+// The surface decimated to `target` vertices, charted with n = 4.
+ChartQuadsResult ChartDecimated(const std::vector<V3>& p, const Triangles& t, int target) {
+  DecimateOptions options;
+  options.target_vertices = target;
+  const DecimateResult d = Decimate(p, t, options);
+  EXPECT_TRUE(d.reached) << target;
+  const ChartQuadsResult r = ChartQuads(p, t, d.Complex(), 4, 0, ChartWeights::kCotangent);
+  ExpectConforming(r, "decimated to " + std::to_string(target));
+  return r;
+}
+
 TEST(OpenCharts, DecimatedCapGivesAConformingQuadMesh) {
   std::vector<V3> p;
   Triangles t;
   OpenCap(0.3, p, t);
   for (int target : {15, 30, 60}) {
-    DecimateOptions options;
-    options.target_vertices = target;
-    const DecimateResult d = Decimate(p, t, options);
-    ASSERT_TRUE(d.reached) << target;
-    const ChartQuadsResult r = ChartQuads(p, t, d.Complex(), 4, 0, ChartWeights::kCotangent);
-    ExpectConforming(r, "cap to " + std::to_string(target));
+    const ChartQuadsResult r = ChartDecimated(p, t, target);
     EXPECT_GT(r.expected_boundary_edges, 0);
     for (const V3& x : r.quads.points) EXPECT_NEAR(x.norm(), 1, 0.05);  // on the faceted sphere
   }
 }
 
-// Without the cyclic order (a path may leave its node between any two
-// others) the decimated spheres' charts are not discs; without the split
-// of the surface, nodes of the surface's valence leave no room for it.
-TEST(ChartPaths, DecimatedSpheresAreChartedInTheCyclicOrderOfTheComplex) {
+// A decimated complex's nodes keep about their surface valence, so their
+// paths need nearly every surface edge at them: without the split of the
+// surface these spheres' complexes find no room for their paths.
+TEST(ChartPaths, DecimatedSpheresAreChartedOnTheSplitSurface) {
   std::vector<V3> p;
   Triangles t;
   OctahedronSphere(4, p, t);
   int refined = 0;
   for (int target : {9, 12, 20, 30, 40}) {
-    DecimateOptions options;
-    options.target_vertices = target;
-    const DecimateResult d = Decimate(p, t, options);
-    ASSERT_TRUE(d.reached) << target;
-    const ChartQuadsResult r = ChartQuads(p, t, d.Complex(), 4, 0, ChartWeights::kCotangent);
-    ExpectConforming(r, "sphere to " + std::to_string(target));
+    const ChartQuadsResult r = ChartDecimated(p, t, target);
     EXPECT_EQ(r.boundary_edges, 0);
     refined += r.refinements > 0;
     for (const V3& x : r.quads.points) EXPECT_NEAR(x.norm(), 1, 0.02);
