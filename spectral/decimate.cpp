@@ -244,7 +244,8 @@ void Collapse(DcMesh& m, int u, int v) {
 // leaves its corners' input normals by more than theirs. With `sliver` > 0
 // (radians) the flip is for shape instead: when the two triangles' smallest
 // angle is below `sliver` and grows, whatever the valences do (within the
-// same bounds). Returns whether it flipped.
+// same bounds, but up to cap + 2, as the collapses). Returns whether it
+// flipped.
 bool TryFlip(DcMesh& m, int a, int b, double cos_turn, const std::vector<int>& cap,
              double sliver = 0) {
   int f1 = -1, f2 = -1;
@@ -266,7 +267,8 @@ bool TryFlip(DcMesh& m, int a, int b, double cos_turn, const std::vector<int>& c
   const bool ba = DcMesh::OnBoundary(ra), bb = DcMesh::OnBoundary(rb), bc = DcMesh::OnBoundary(rc),
              bd = DcMesh::OnBoundary(rd);
   if (va - 1 < (ba ? 2 : 3) || vb - 1 < (bb ? 2 : 3)) return false;
-  if (vc + 1 > cap[size_t(c)] || vd + 1 > cap[size_t(d)]) return false;
+  const int slack = sliver > 0 ? 2 : 0;  // shape flips may raise a valence as far as collapses do
+  if (vc + 1 > cap[size_t(c)] + slack || vd + 1 > cap[size_t(d)] + slack) return false;
   auto dev = [](int valence, bool boundary) {
     const int e = valence - (boundary ? 4 : 6);
     return e * e;

@@ -50,8 +50,9 @@
 //    when larger, within the normal bounds above and the vertex's input
 //    valence —
 //    and flips of slivers: an edge whose two triangles' smallest angle is
-//    below `sliver_degrees` flips when that angle grows (valences within
-//    [3, cap], 2 on the boundary; normals within the bounds above).
+//    below `sliver_degrees` flips when that angle grows (valences from 3, 2
+//    on the boundary, to 2 above the input's, as for the collapses; normals
+//    within the bounds above).
 //
 // Plain arrays in, plain structs out (no CGAL): the nodes are surface vertex
 // ids, as BaseComplex (spectral/base_complex_charts.h) takes them.
