@@ -61,6 +61,12 @@ Key PathKey(std::string name, Type type, std::string doc) {
   return k;
 }
 
+Key CustomKey(std::string name, std::string example, std::string doc) {
+  Key k = PathKey(std::move(name), Type::kCustom, std::move(doc));
+  k.example = std::move(example);
+  return k;
+}
+
 void Schema::Add(Key key) {
   CHECK(!index_.count(key.name)) << "setting '" << key.name << "' declared twice";
   index_[key.name] = keys_.size();

@@ -62,6 +62,9 @@ Key ChoiceKey(std::string name, std::string fallback, std::vector<std::string> c
               std::string doc);
 // A file name (type kInputPath or kOutputPath) without a default.
 Key PathKey(std::string name, Type type, std::string doc);
+// A structured value the problem parses itself (type kCustom), shown by
+// `archgeo spec` with `example`.
+Key CustomKey(std::string name, std::string example, std::string doc);
 
 // An ordered set of keys (the order of `archgeo spec` and docs/keys.md).
 class Schema {

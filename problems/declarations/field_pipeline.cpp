@@ -71,53 +71,37 @@ std::vector<Key> FieldKeys() {
   singularities.lo = 0;
   singularities.doc =
       "faces (0-based ids) where a singularity is placed: z_N = z_M there (faces with K > 0)";
-  Key directions;
-  directions.name = "field.directions";
-  directions.type = Type::kCustom;
-  directions.example = "[{face: 0, direction: [1, 0, 0]}]";
-  directions.doc =
+  const Key directions = CustomKey(
+      "field.directions", "[{face: 0, direction: [1, 0, 0]}]",
       "prescribed conjugate directions: a list of {face: id, direction: [x, y, z]} (file units; "
-      "projected onto the face)";
-  Key moves;
-  moves.name = "field.moves";
-  moves.type = Type::kCustom;
-  moves.example = "[{from: 120, to: 180}]";
-  moves.doc =
+      "projected onto the face)");
+  const Key moves = CustomKey(
+      "field.moves", "[{from: 120, to: 180}]",
       "singularities moved locally after the solve [Zadravec 2010, §4, eq. 4]: a list of "
       "{from: face, to: face, inner_radius: r1, outer_radius: r2} (file units; the σ blend is 1 "
       "within r1 of `from` and 0 beyond r2; defaults r1 = 2 × the distance from `from` to `to`, "
       "r2 = 2 r1); z_N = z_M at `to`, then the faces of the transition band (r1 to r2) are "
-      "re-optimised";
-  Key rotations;
-  rotations.name = "field.rotations";
-  rotations.type = Type::kCustom;
-  rotations.example = "[{at: [0, 0, 1], radius: 2, angle: 30}]";
-  rotations.doc =
+      "re-optimised");
+  const Key rotations = CustomKey(
+      "field.rotations", "[{at: [0, 0, 1], radius: 2, angle: 30}]",
       "local rotations of the field (thesis §8.1.1): a list of {at: [x, y, z], radius: r, angle: "
       "degrees} (file units; |angle| < 90); after the free field, the faces within r of the face "
       "nearest `at` are re-solved with the free field turned by the angle at the centre, tapering to "
-      "0 at r (every other face held, as for guide curves; weight field.guide_weight)";
-  Key sources;
-  sources.name = "field.sources";
-  sources.type = Type::kCustom;
-  sources.example = "[{at: [0, 0, 1], strength: 1}]";
-  sources.doc =
+      "0 at r (every other face held, as for guide curves; weight field.guide_weight)");
+  const Key sources = CustomKey(
+      "field.sources", "[{at: [0, 0, 1], strength: 1}]",
       "a potential field's gradient as the whole field (thesis §8.1.1): a list of {at: [x, y, z], "
       "strength: s} (file units; s > 0 a source, s < 0 a sink); φ = Σ s log|x − at|, each face's "
-      "direction ∇φ prescribed as one direction of its pair (like field.file; not with it)";
-  Key file;
-  file.name = "field.file";
-  file.type = Type::kInputPath;
-  file.doc =
+      "direction ∇φ prescribed as one direction of its pair (like field.file; not with it)");
+  const Key file = PathKey(
+      "field.file", Type::kInputPath,
       "a complete field: Directional's raw field (.rawfield: \"N F\", then per face N vectors, file "
       "units, N = 1, 2 or 4; what output.field writes as .rawfield), one row per face; each "
-      "face's first vector is prescribed as one direction of the pair (like field.directions)";
-  Key constraints;
-  constraints.name = "field.constraints";
-  constraints.type = Type::kInputPath;
-  constraints.doc =
+      "face's first vector is prescribed as one direction of the pair (like field.directions)");
+  const Key constraints = PathKey(
+      "field.constraints", Type::kInputPath,
       "libigl DMAT file, one row per face: column 0 ≠ 0 marks a face whose prescribed "
-      "direction is columns 1–3 (file units); further columns are not used";
+      "direction is columns 1–3 (file units); further columns are not used");
   return {IntegerKey("jets.degree", 4, 2, 4,
                      "degree of the osculating jets fitted at every vertex (curvature)"),
           IntegerKey("jets.rings", 2, 1, 8,

@@ -718,13 +718,10 @@ ProblemDecl grid() {
              {"grid_fairness", 0.3}};
   d.blocks = {{"uv", Site::kVertex, 2, FrameMap::kInvariant, false, Carry::kReinitialise, true,
                false, "the vertex's surface parameters (u, v)"}};
-  Key surface;
-  surface.name = "surface";
-  surface.type = Type::kCustom;
-  surface.doc = "the surface: {name: " + Join(SurfaceNames()) +
-                ", <parameter>: value, ...} (surfaces/surface_factory.h; `archgeo spec grid` "
-                "and docs/keys.md list the parameters)";
-  surface.example = "{name: function_graph, a: 10, b: 10, h: 2, s: 3}";
+  Key surface = CustomKey("surface", "{name: function_graph, a: 10, b: 10, h: 2, s: 3}",
+                          "the surface: {name: " + Join(SurfaceNames()) +
+                              ", <parameter>: value, ...} (surfaces/surface_factory.h; `archgeo "
+                              "spec grid` and docs/keys.md list the parameters)");
   surface.required = true;
   d.keys = {
       surface,

@@ -159,12 +159,9 @@ ProblemDecl smooth_mesh() {
              {"fairness", 0.01, {{"relative_to_original", false}}, "straight_triples"},
              {"displacement_guard", 1, {}, "", true},
              {"step", 0.1}};
-  Key handles;
-  handles.name = "handles";
-  handles.type = Type::kCustom;
-  handles.doc = "design handles: a list of {vertex: i, position: [x, y, z]} or {vertex: i, "
-                "offset: [dx, dy, dz]} (file units)";
-  handles.example = "[{vertex: 0, offset: [0, 0, 0.1]}]";
+  const Key handles = CustomKey("handles", "[{vertex: 0, offset: [0, 0, 0.1]}]",
+                                "design handles: a list of {vertex: i, position: [x, y, z]} or "
+                                "{vertex: i, offset: [dx, dy, dz]} (file units)");
   d.keys = {NumberKey("tolerance.energy_relative", 1e-4, 0, 1,
                       "stop when 3 rounds in a row have not lowered the lowest true E by this "
                       "fraction (0: all rounds); not with handles"),
