@@ -32,13 +32,17 @@ Eigen::Matrix2d NOfZ(const Eigen::Vector2d& z_n) {
   return N;
 }
 
+SymmetricEigen2 EigenOfSymmetric2(const Eigen::Matrix2d& m) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(m);
+  return {eig.eigenvalues(), eig.eigenvectors()};
+}
+
 Principal PrincipalOf(const Eigen::Matrix2d& M) {
-  const Eigen::Matrix2d sym = 0.5 * (M + M.transpose());
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(sym);
+  const SymmetricEigen2 eig = EigenOfSymmetric2(0.5 * (M + M.transpose()));
   Principal p;
-  p.k1 = eig.eigenvalues()(1);
-  p.k2 = eig.eigenvalues()(0);
-  p.d1 = eig.eigenvectors().col(1).normalized();
+  p.k1 = eig.values(1);
+  p.k2 = eig.values(0);
+  p.d1 = eig.vectors.col(1).normalized();
   p.d2 = Eigen::Vector2d(-p.d1.y(), p.d1.x());
   return p;
 }

@@ -50,6 +50,16 @@ Eigen::Vector2d CirclePoint(const Eigen::Vector2d& d);
 // Precondition (CHECKed): z_N[0] ≠ 2.
 Eigen::Matrix2d NOfZ(const Eigen::Vector2d& z_n);
 
+// The eigen-decomposition of a symmetric 2 × 2 matrix: eigenvalues
+// ascending, unit eigenvectors as the columns in the same order (Eigen's
+// SelfAdjointEigenSolver, instantiated in conjugate.cpp alone: each
+// instantiation costs seconds of compile time).
+struct SymmetricEigen2 {
+  Eigen::Vector2d values;
+  Eigen::Matrix2d vectors;
+};
+SymmetricEigen2 EigenOfSymmetric2(const Eigen::Matrix2d& m);
+
 // Principal curvatures and directions of M (k1 ≥ k2; d1, d2 unit, d2 = J d1
 // with J the rotation by +90°).
 struct Principal {

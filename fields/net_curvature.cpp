@@ -8,8 +8,8 @@
 #include <array>
 #include <cmath>
 
-#include <Eigen/Eigenvalues>
 
+#include "fields/conjugate.h"
 #include "fields/face_curvature.h"
 #include "mesh/eigen_point.h"
 
@@ -37,11 +37,11 @@ Tangent Restrict(const Eigen::Matrix3d& S, const Eigen::Vector3d& n) {
   Eigen::Matrix2d M;
   M << a.dot(S * a), a.dot(S * b), b.dot(S * a), b.dot(S * b);
   M = 0.5 * (M + M.transpose()).eval();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(M);  // ascending
+  const SymmetricEigen2 eigen = EigenOfSymmetric2(M);  // ascending
   Tangent t;
-  t.k2 = eigen.eigenvalues()[0];
-  t.k1 = eigen.eigenvalues()[1];
-  const Eigen::Vector2d e1 = eigen.eigenvectors().col(1), e2 = eigen.eigenvectors().col(0);
+  t.k2 = eigen.values[0];
+  t.k1 = eigen.values[1];
+  const Eigen::Vector2d e1 = eigen.vectors.col(1), e2 = eigen.vectors.col(0);
   t.d1 = e1[0] * a + e1[1] * b;
   t.d2 = e2[0] * a + e2[1] * b;
   return t;

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <complex>
 #include <limits>
 #include <queue>
 
@@ -14,7 +13,6 @@
 #include <Eigen/Geometry>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
-#include <unsupported/Eigen/Polynomials>
 #include <glog/logging.h>
 
 #include "core/input_error.h"
@@ -24,12 +22,9 @@
 namespace archgeo {
 namespace {
 
-// Newton steps polishing a quartic root (quadratic convergence: 3–4 suffice
-// from an eigenvalue accurate to ~1e-8; the rest are cheap insurance).
+// Newton steps polishing a quartic root found by bisection (a step or two
+// settle the last bits; the rest are cheap insurance).
 constexpr int kNewtonSteps = 8;
-// A companion eigenvalue counts as real if |Im| ≤ this × max(1, |λ|); Newton
-// then removes the remaining error.
-constexpr double kRealRootTolerance = 1e-6;
 
 Eigen::Vector3d HnetE(const Point& p) { return {p.x(), p.y(), p.z()}; }
 Vec3 ToVec(const Eigen::Vector3d& x) { return {x[0], x[1], x[2]}; }
@@ -167,6 +162,43 @@ double ShapeEnergy(double lambda, const std::vector<double>& W) {
   return energy;
 }
 
+namespace {
+
+// The root of f in [lo, hi], where f(lo) and f(hi) have opposite signs (or
+// one is 0), by bisection to the last bit.
+template <class F>
+double HnetBisect(const F& f, double lo, double hi) {
+  const bool rising = f(lo) <= 0;
+  for (int i = 0; i < 1100 && lo < hi; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid <= lo || mid >= hi) break;
+    ((f(mid) <= 0) == rising ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+// The positive roots where p crosses from below zero to above it: the minima
+// of the shape energy, since dF/dλ = 2 p(λ) / λ³. A, B, C, D > 0, so
+// p'' = 6λ(2Aλ − B) makes p' fall on (0, B/2A) and rise after it, with
+// p'(0) = C > 0: p rises, then (if p'(B/2A) < 0) falls between the two
+// roots of p', then rises; p(0) = −D < 0, and every root is below Cauchy's
+// bound. Each rising stretch that crosses zero holds one such root.
+std::vector<double> RisingRoots(const ShapeQuartic& q) {
+  const auto p = [&](double x) { return q.Value(x); };
+  const auto dp = [&](double x) { return q.Derivative(x); };
+  const double bound = 1 + std::max({q.B, q.C, q.D}) / q.A;
+  const double m = q.B / (2 * q.A);
+  std::vector<std::pair<double, double>> rising = {{0.0, bound}};
+  if (dp(m) < 0) rising = {{0.0, HnetBisect(dp, 0.0, m)}, {HnetBisect(dp, m, bound), bound}};
+  std::vector<double> roots;
+  for (const auto& [lo, hi] : rising) {
+    if (p(lo) <= 0 && p(hi) >= 0) roots.push_back(HnetBisect(p, lo, hi));
+  }
+  return roots;
+}
+
+}  // namespace
+
 double OptimalShapeScale(const std::vector<double>& W) {
   CHECK(!W.empty()) << "OptimalShapeScale of no shape parameters";
   ShapeQuartic q;
@@ -177,32 +209,10 @@ double OptimalShapeScale(const std::vector<double>& W) {
     q.C += 1 / w;
     q.D += 1 / (w * w);
   }
-  // [Shi 2014, eq. 11]: dF/dλ = 2(Aλ − B + C/λ² − D/λ³) = 0 ⇔ p(λ) = 0,
-  // solved by Eigen's polynomial solver (the eigenvalues of the balanced
-  // companion matrix); its positive real roots are the candidates.
-  Eigen::Matrix<double, 5, 1> coefficients;  // increasing degree
-  coefficients << -q.D, q.C, 0, -q.B, q.A;
-  Eigen::PolynomialSolver<double, 4> solver(coefficients);
-  std::vector<double> candidates;
-  for (int i = 0; i < 4; ++i) {
-    const std::complex<double> root = solver.roots()[i];
-    if (root.real() <= 0) continue;
-    if (std::abs(root.imag()) > kRealRootTolerance * std::max(1.0, std::abs(root))) continue;
-    candidates.push_back(root.real());
-  }
-  // p(0) = −D < 0 and p → +∞: a positive root exists. If rounding hid it from
-  // the test above, bracket one and bisect.
-  if (candidates.empty()) {
-    double lo = 0, hi = 1;
-    while (q.Value(hi) <= 0) hi *= 2;
-    for (int i = 0; i < 200 && hi - lo > 1e-16 * hi; ++i) {
-      const double mid = 0.5 * (lo + hi);
-      (q.Value(mid) < 0 ? lo : hi) = mid;
-    }
-    candidates.push_back(0.5 * (lo + hi));
-  }
+  // [Shi 2014, eq. 11]: dF/dλ = 2(Aλ − B + C/λ² − D/λ³) = 0 ⇔ p(λ) = 0; the
+  // energy's minima are p's rising roots, the best of them is the scale.
   double best = -1, best_energy = std::numeric_limits<double>::infinity();
-  for (double x : candidates) {
+  for (double x : RisingRoots(q)) {
     for (int step = 0; step < kNewtonSteps; ++step) {
       const double d = q.Derivative(x);
       if (d == 0) break;

@@ -5,9 +5,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 
 #include "energies/wave_elements.h"
+#include "fields/conjugate.h"
 #include "fields/face_curvature.h"
 #include "geometry/reference.h"
 #include "mesh/eigen_point.h"
@@ -68,11 +69,11 @@ WaveFrames PrincipalWaveFrames(const Mesh& mesh, int smoothing) {
     S << t1.dot(tensors[v] * t1), t1.dot(tensors[v] * t2), t2.dot(tensors[v] * t1),
         t2.dot(tensors[v] * t2);
     S = 0.5 * (S + S.transpose()).eval();
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(S);
-    const int larger = std::abs(eig.eigenvalues()(1)) >= std::abs(eig.eigenvalues()(0)) ? 1 : 0;
-    const Eigen::Vector2d d1 = eig.eigenvectors().col(larger);  // larger |k|
+    const SymmetricEigen2 eig = EigenOfSymmetric2(S);
+    const int larger = std::abs(eig.values(1)) >= std::abs(eig.values(0)) ? 1 : 0;
+    const Eigen::Vector2d d1 = eig.vectors.col(larger);  // larger |k|
     out.x[v] = (d1.x() * t1 + d1.y() * t2).normalized();
-    out.anisotropy[v] = eig.eigenvalues()(1) - eig.eigenvalues()(0);
+    out.anisotropy[v] = eig.values(1) - eig.values(0);
     largest = std::max(largest, out.anisotropy[v]);
   }
   for (double& a : out.anisotropy) a = largest > 0 ? a / largest : 0.0;
