@@ -31,7 +31,7 @@ void AddCoSpherical(TermContext& c, size_t i) {
   }
 }
 
-void SphereNormals(TermContext& c) {
+void UnitVertexSphereNormals(TermContext& c) {
   for (size_t i = 0; i < c.elements->size(); ++i) {
     c.SetUnit(c.Block("sphere_normal", c.elements->Vertices(i)[0]));
   }
@@ -49,7 +49,7 @@ const TermSpec& co_spherical() {
     t.group = "principal_stars";
     t.reads = {"sphere_normal", "sphere_curvature"};
     t.add = &AddCoSpherical;
-    t.finish = &SphereNormals;
+    t.finish = &UnitVertexSphereNormals;
     return t;
   }();
   return spec;

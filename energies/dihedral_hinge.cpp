@@ -38,7 +38,7 @@ void InitPolygonNormals(TermContext& c) {
 }
 
 // Unit normals of the polygons an edge term used.
-void SphereNormals(TermContext& c) {
+void UnitFacePlaneNormals(TermContext& c) {
   const ElementSet& faces = c.Elements("faces");
   for (size_t f = 0; f < faces.size(); ++f) {
     if (faces.Count(f) > 3) c.SetUnit(c.Block("face_plane_normal", int(f)));
@@ -79,7 +79,7 @@ TermSpec HingeTermSpec() {
                  Carry::kReinitialise, false, false,
                  "unit normal of a face's plane (face_planarity, dihedral_energy)"}};
   t.init = &InitPolygonNormals;
-  t.finish = &SphereNormals;
+  t.finish = &UnitFacePlaneNormals;
   return t;
 }
 
