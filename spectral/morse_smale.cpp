@@ -15,6 +15,12 @@ namespace {
 
 using morse_smale::Draft;
 
+// Rounds of local refinement at most while arcs cannot all be placed, and
+// how many rings around the guides of the arcs left out each refines.
+// (More rounds were measured to place no further arc on the test sweeps.)
+constexpr int kMsRefinements = 1;
+constexpr int kMsRefineWidth = 2;
+
 // f(u) > f(v), ties broken by index (as spectral/critical_points.h).
 bool MsAbove(const Eigen::VectorXd& f, int u, int v) {
   return f[u] > f[v] || (f[u] == f[v] && u > v);
@@ -187,23 +193,52 @@ MorseSmaleComplex BuildMorseSmale(const std::vector<Eigen::Vector3d>& points,
   for (const std::vector<int>& ring : rings) {
     if (ring.size() < 3) throw std::invalid_argument("the Morse-Smale complex needs a closed mesh");
   }
-  MorseSmaleComplex out;
+  MorseSmaleComplex base;
   MsState s = MsTrace(rings, f);
-  MsCancelPairs(s, f, options, out.cancelled);
+  MsCancelPairs(s, f, options, base.cancelled);
   std::vector<int> renumber(s.nodes.size(), -1);
-  std::vector<bool> node_vertex(points.size(), false);
   for (size_t n = 0; n < s.nodes.size(); ++n) {
     if (!s.node_alive[n]) continue;
-    renumber[n] = int(out.nodes.size());
-    out.nodes.push_back(s.nodes[n]);
-    node_vertex[size_t(s.nodes[n].vertex)] = true;
+    renumber[n] = int(base.nodes.size());
+    base.nodes.push_back(s.nodes[n]);
     const MorseSmaleNode& node = s.nodes[n];
-    out.maxima += node.kind == 1;
-    out.minima += node.kind == -1;
-    out.saddles += node.multiplicity;
+    base.maxima += node.kind == 1;
+    base.minima += node.kind == -1;
+    base.saddles += node.multiplicity;
   }
-  morse_smale::EmbedArcs(points, rings, node_vertex, s.drafts, renumber, out);
-  morse_smale::BuildCells(int(points.size()), triangles, out);
+  // Round 0 places the arcs on the input; while some cannot be placed, the
+  // next refines the surface around their guides (two rings wide) and
+  // places them all again. The round with the fewest arcs left out is kept.
+  morse_smale::ArcMesh mesh{points, rings, std::vector<double>(f.data(), f.data() + f.size())};
+  const bool forward = morse_smale::RingsFollowTriangles(rings, triangles.at(0));
+  MorseSmaleComplex out;
+  for (int round = 0;; ++round) {
+    MorseSmaleComplex trial = base;
+    std::vector<bool> node_vertex(mesh.points.size(), false);
+    for (const MorseSmaleNode& n : trial.nodes) node_vertex[size_t(n.vertex)] = true;
+    std::vector<size_t> unplaced;
+    morse_smale::EmbedArcs(mesh.points, mesh.rings, node_vertex, s.drafts, renumber, trial, unplaced);
+    trial.triangles = round == 0 ? triangles : morse_smale::TrianglesOfRings(mesh.rings, forward);
+    morse_smale::BuildCells(int(mesh.points.size()), trial.triangles, trial);
+    trial.refinements = round;
+    const bool last = trial.valid || round == kMsRefinements;
+    if (round == 0 || trial.valid || trial.unresolved < out.unresolved) {
+      trial.points = last ? std::move(mesh.points) : mesh.points;
+      trial.values = last ? std::move(mesh.f) : mesh.f;
+      out = std::move(trial);
+    }
+    if (last) break;
+    std::vector<int> where;  // the guides of the arcs left out, else the invalid cells' corners
+    for (size_t i : unplaced) where.insert(where.end(), s.drafts[i].guide.begin(), s.drafts[i].guide.end());
+    if (where.empty()) {
+      for (const MorseSmaleCell& cell : out.cells) {
+        if (cell.valid) continue;
+        for (int c : cell.corners) where.push_back(out.nodes[size_t(c)].vertex);
+      }
+    }
+    morse_smale::SplitAround(mesh, where, kMsRefineWidth, s.drafts);
+    morse_smale::Rewedge(mesh, s.drafts);
+  }
   return out;
 }
 

@@ -16,7 +16,10 @@
 //     the rerouted arcs) keeps its path up to there and goes on by the
 //     shortest path (edge lengths) over free vertices, alongside the rest of
 //     its path first; what has no such path is left out and counted
-//     `unresolved` (passes that place those saddles first try again);
+//     `unresolved` (passes that place those saddles first try again); then
+//     the mesh is refined around those arcs' guides (edges split at their
+//     midpoints, f linear: the same surface and critical points) and every
+//     arc placed again, the round with fewer arcs left out kept;
 //  4. cells: the triangles between the arcs, each checked to be a disc with
 //     four distinct corners max, saddle, min, saddle.
 // Plain arrays in, plain structs out.
@@ -50,6 +53,14 @@ struct MorseSmaleCell {
 };
 
 struct MorseSmaleComplex {
+  // The mesh the arcs and cells live on: the input's vertices (same indices)
+  // followed by the midpoints local refinement added, on the input's edges
+  // (`values`: f, linear along them), and its triangles (the input's when
+  // nothing was refined).
+  std::vector<Eigen::Vector3d> points;
+  std::vector<double> values;
+  std::vector<std::array<int, 3>> triangles;
+  int refinements = 0;  // rounds of local refinement
   std::vector<MorseSmaleNode> nodes;  // the remaining nodes (cancelled ones dropped)
   std::vector<MorseSmaleArc> arcs;    // per saddle, in the cyclic order of its wedges
   std::vector<MorseSmaleCell> cells;

@@ -25,13 +25,48 @@ struct Draft {
   bool alive = true;
 };
 
+// f(u) > f(v), ties broken by index (as spectral/critical_points.h).
+inline bool Above(const std::vector<double>& f, int u, int v) {
+  return f[size_t(u)] > f[size_t(v)] || (f[size_t(u)] == f[size_t(v)] && u > v);
+}
+
+// The mesh the arcs are placed on: the input's vertices first, then those
+// local refinement adds (edge midpoints, f linear along the edge).
+struct ArcMesh {
+  std::vector<Eigen::Vector3d> points;
+  std::vector<std::vector<int>> rings;  // cyclic, in the input's orientation
+  std::vector<double> f;
+};
+
 // Replaces the drafts' guides by paths that share no vertex with another
 // arc or a node (shortest paths where the guide does not); appends the arcs
-// to `complex` and counts rerouted and unresolved ones.
+// to `complex` and counts rerouted and unresolved ones; `unplaced` gets the
+// drafts left without a path.
 void EmbedArcs(const std::vector<Eigen::Vector3d>& points,
                const std::vector<std::vector<int>>& rings, const std::vector<bool>& node_vertex,
                const std::vector<Draft>& drafts, const std::vector<int>& node_renumber,
-               MorseSmaleComplex& complex);
+               MorseSmaleComplex& complex, std::vector<size_t>& unplaced);
+
+// Splits every edge between two vertices within `width` rings of `seeds`
+// at its midpoint, f linear; the guides through a split edge go through
+// its midpoint. The region's resolution doubles; no vertex's class changes
+// and no midpoint is critical (see morse_smale_refine.cpp).
+void SplitAround(ArcMesh& mesh, const std::vector<int>& seeds, int width,
+                 std::vector<Draft>& drafts);
+
+// Recomputes the wedges of the drafts' saddles from their (refined) rings;
+// each draft keeps the wedge its guide's first step lies in.
+void Rewedge(const ArcMesh& mesh, std::vector<Draft>& drafts);
+
+// Whether triangle t's second corner follows its first in the ring of its
+// first (v, r_i, r_{i+1} are triangles as oriented), or precedes it.
+bool RingsFollowTriangles(const std::vector<std::vector<int>>& rings,
+                          const std::array<int, 3>& t);
+
+// The triangles of `rings`, each once: (v, r_i, r_{i+1}) when `forward`,
+// (v, r_{i+1}, r_i) otherwise.
+std::vector<std::array<int, 3>> TrianglesOfRings(const std::vector<std::vector<int>>& rings,
+                                                 bool forward);
 
 // The cells between the arcs and their check; sets shared_vertices,
 // invalid_cells and valid.

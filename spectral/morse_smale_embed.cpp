@@ -235,7 +235,7 @@ std::vector<size_t> EmbedPass(const std::vector<Eigen::Vector3d>& points,
 void EmbedArcs(const std::vector<Eigen::Vector3d>& points,
                const std::vector<std::vector<int>>& rings, const std::vector<bool>& node_vertex,
                const std::vector<Draft>& drafts, const std::vector<int>& node_renumber,
-               MorseSmaleComplex& complex) {
+               MorseSmaleComplex& complex, std::vector<size_t>& unplaced) {
   constexpr int kEmbedPasses = 32;
   std::vector<size_t> order;
   for (size_t i = 0; i < drafts.size(); ++i) {
@@ -249,6 +249,7 @@ void EmbedArcs(const std::vector<Eigen::Vector3d>& points,
       best_failed = failed.size();
       best = paths;
       complex.unresolved = int(failed.size());
+      unplaced = failed;
     }
     if (failed.empty()) break;
     std::vector<bool> first(drafts.size(), false);

@@ -83,10 +83,10 @@ struct SpectralRequest {
 // count beyond the vertices, or a target that is not positive.
 std::string SpectralList(const SpectralRequest& request);
 
-// The arcs of a Morse–Smale complex on `points` as OBJ polylines (saddle to
-// extremum), and its quasi-dual as an OBJ quad mesh (spectral_complex.cpp).
-std::string MorseSmaleArcsObj(const MorseSmaleComplex& c,
-                              const std::vector<Eigen::Vector3d>& points);
+// The arcs of a Morse–Smale complex as OBJ polylines over its vertices
+// (saddle to extremum), and its quasi-dual as an OBJ quad mesh
+// (spectral_complex.cpp).
+std::string MorseSmaleArcsObj(const MorseSmaleComplex& c);
 std::string QuasiDualObj(const QuadBaseComplex& q);
 
 struct SpectralComplexResult {

@@ -39,15 +39,14 @@ void ComplexCheckRequest(const SpectralRequest& q, int vertices) {
 }  // namespace
 
 // The arcs as polylines over the vertices they use.
-std::string MorseSmaleArcsObj(const MorseSmaleComplex& c,
-                              const std::vector<Eigen::Vector3d>& points) {
+std::string MorseSmaleArcsObj(const MorseSmaleComplex& c) {
   std::string vertices, lines;
   std::unordered_map<int, int> index;
   for (const MorseSmaleArc& a : c.arcs) {
     lines += "l";
     for (int v : a.path) {
       auto [it, fresh] = index.try_emplace(v, int(index.size()) + 1);
-      if (fresh) vertices += ComplexPoint(points[size_t(v)]);
+      if (fresh) vertices += ComplexPoint(c.points[size_t(v)]);
       lines += " " + std::to_string(it->second);
     }
     lines += "\n";
@@ -96,7 +95,7 @@ SpectralComplexResult SpectralComplex(const SpectralRequest& q) {
   StagedOutputs staged({q.mesh});
   if (!q.complex_out.empty()) {
     staged.Write(q.complex_out, "--complex", [&](const std::string& path) {
-      WriteTextFile(path, MorseSmaleArcsObj(c, m.points), "--complex");
+      WriteTextFile(path, MorseSmaleArcsObj(c), "--complex");
     });
   }
   if (!q.quasi_dual_out.empty()) {

@@ -45,7 +45,6 @@ constexpr int kSqTries = 8;  // candidates tried by the automatic choice at most
 struct SqState : ProblemState {
   Mesh design;              // the input, for output.function
   std::vector<double> phi;  // the chosen (or last tried) eigenfunction, max |φ| = 1
-  std::vector<Eigen::Vector3d> points;
   MorseSmaleComplex complex;
   QuadBaseComplex dual;
   bool quads = false;       // the chart step ran on it
@@ -152,7 +151,6 @@ void SqNet(HookContext& c) {
   MorseSmaleOptions options;
   options.persistence = s.Number("spectral.persistence");
   SqState& st = c.State<SqState>();
-  st.points = m.points;
   st.design = design;
   nlohmann::json tried = nlohmann::json::array();
   std::string reasons;
@@ -235,7 +233,7 @@ void SqWrite(HookContext& c) {
   for (const auto& [key, path] : c.temporaries) {
     const std::string name = "output." + key;
     if (key == "complex") {
-      WriteTextFile(path, MorseSmaleArcsObj(st.complex, st.points), name);
+      WriteTextFile(path, MorseSmaleArcsObj(st.complex), name);
     } else if (key == "quasi_dual") {
       WriteTextFile(path, QuasiDualObj(st.dual), name);
     } else if (key == "function") {

@@ -190,7 +190,7 @@ std::string WaveComplexArcsObj(const WaveComplex& c) {
     lines += "l";
     for (int v : a.path) {
       auto [it, fresh] = index.try_emplace(v, int(index.size()) + 1);
-      if (fresh) vertices += WaveObjPoint(c.points[size_t(v)]);
+      if (fresh) vertices += WaveObjPoint(c.complex.points[size_t(v)]);
       lines += " " + std::to_string(it->second);
     }
     lines += "\n";

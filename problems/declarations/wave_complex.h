@@ -28,7 +28,8 @@ struct WaveComplex {
   // The (doubled) triangle mesh the complex lies on: when arcs could not
   // all be placed on it, refined `refinements` times (0–2: the faces split
   // at their centroids, then 1 to 4), with the wave linear on each triangle,
-  // so the same critical points, until they can.
+  // so the same critical points, until they can. (BuildMorseSmale may refine
+  // further near arcs it cannot place: the arcs lie on complex.points.)
   std::vector<Eigen::Vector3d> points;
   std::vector<std::array<int, 3>> triangles;
   std::vector<int> original;  // per vertex of the double: the vertex of the input it copies
