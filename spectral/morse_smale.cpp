@@ -181,6 +181,107 @@ void MsCancelPairs(MsState& s, const Eigen::VectorXd& f, const MorseSmaleOptions
   }
 }
 
+// Saddle–saddle connections (Gebreiter 2012, §7.1.3: "an ascent line
+// reaching a saddle before it reaches a maximum"). A guide that enters the
+// ring of another saddle s through a wedge of the opposite kind (a
+// descending guide through an upper wedge of s: it comes down onto s) is
+// continued as the flow perturbed to one side continues: round s's ring to
+// the neighbouring wedge of its own kind, and along s's separatrix from
+// there to its extremum. When the separatrix of s leaving by that wedge
+// also runs onto the first saddle (the two are one connection traced from
+// both ends), both turn the same way round their rings: the perturbed
+// flow passes the lower saddle on one side and the upper on the other, and
+// on a consistently oriented surface that is one sense of rotation. Else
+// each turns to the nearer wedge. Without it a guide crosses s's ring
+// wherever its steps fell and, rerouted round the ring on the shorter side,
+// may pass s on the side away from its extremum.
+struct MsTurn {
+  size_t at = 0;       // the guide's first vertex in the ring of saddle `saddle`
+  int saddle = -1;     // the saddle's vertex
+  int partner = -1;    // the draft of that saddle leaving by the wedge entered
+  size_t back = 0, ahead = 0;  // ring steps to a wedge of the guide's kind
+};
+
+void MsRedirect(MsState& s, const Eigen::VectorXd& f, const std::vector<std::vector<int>>& rings) {
+  std::unordered_map<int, std::vector<size_t>> of_saddle;  // by the saddle's vertex
+  for (size_t i = 0; i < s.drafts.size(); ++i) {
+    if (s.drafts[i].alive) of_saddle[s.drafts[i].guide.front()].push_back(i);
+  }
+  std::unordered_map<int, int> ring_of;  // a ring vertex → its saddle's vertex (the first)
+  for (const auto& [v, list] : of_saddle) {
+    for (int u : rings[size_t(v)]) ring_of.emplace(u, v);
+  }
+  auto draft_by_wedge = [&](int saddle, int v) -> int {
+    for (size_t e : of_saddle[saddle]) {
+      const std::vector<int>& w = s.drafts[e].wedge;
+      if (std::find(w.begin(), w.end(), v) != w.end()) return int(e);
+    }
+    return -1;
+  };
+  const std::vector<Draft> drafts = s.drafts;  // as traced: `along` and the partners' targets
+  std::vector<MsTurn> turn(s.drafts.size());
+  for (size_t i = 0; i < s.drafts.size(); ++i) {
+    const Draft& d = s.drafts[i];
+    if (!d.alive) continue;
+    for (size_t k = 2; k + 1 < d.guide.size(); ++k) {
+      const auto it = ring_of.find(d.guide[k]);
+      if (it == ring_of.end() || it->second == d.guide.front()) continue;
+      const int sv = it->second;
+      if (MsAbove(f, d.guide[k], sv) == d.ascending) break;  // passes s on its own side
+      const std::vector<int>& ring = rings[size_t(sv)];
+      const size_t n = ring.size();
+      const size_t pos = size_t(std::find(ring.begin(), ring.end(), d.guide[k]) - ring.begin());
+      MsTurn& t = turn[i];
+      while (t.back < n && MsAbove(f, ring[(pos + n - t.back) % n], sv) != d.ascending) ++t.back;
+      while (t.ahead < n && MsAbove(f, ring[(pos + t.ahead) % n], sv) != d.ascending) ++t.ahead;
+      t.at = k;
+      t.saddle = sv;
+      t.partner = draft_by_wedge(sv, d.guide[k]);
+      break;
+    }
+  }
+  for (size_t i = 0; i < s.drafts.size(); ++i) {
+    const MsTurn& t = turn[i];
+    if (t.saddle < 0) continue;
+    Draft& d = s.drafts[i];
+    bool forward = t.ahead <= t.back;
+    if (t.partner >= 0 && turn[size_t(t.partner)].saddle == d.guide.front()) {
+      const MsTurn& p = turn[size_t(t.partner)];
+      forward = t.ahead + p.ahead <= t.back + p.back;
+    } else if (t.partner >= 0) {
+      // The partner passes d's saddle further out: it turned the way that
+      // reaches the extremum of d's neighbouring arc on that side.
+      const std::vector<int>& own = rings[size_t(d.guide.front())];
+      const size_t m = own.size();
+      const size_t first = size_t(std::find(own.begin(), own.end(), d.wedge.front()) - own.begin());
+      const size_t last = size_t(std::find(own.begin(), own.end(), d.wedge.back()) - own.begin());
+      const int ahead = draft_by_wedge(d.guide.front(), own[(last + 1) % m]);
+      const int behind = draft_by_wedge(d.guide.front(), own[(first + m - 1) % m]);
+      const int reached = drafts[size_t(t.partner)].target;
+      const bool to_ahead = ahead >= 0 && drafts[size_t(ahead)].target == reached;
+      const bool to_behind = behind >= 0 && drafts[size_t(behind)].target == reached;
+      if (to_ahead != to_behind) forward = to_ahead;
+    }
+    const std::vector<int>& ring = rings[size_t(t.saddle)];
+    const size_t n = ring.size();
+    const size_t pos = size_t(std::find(ring.begin(), ring.end(), d.guide[t.at]) - ring.begin());
+    const int entry = ring[forward ? (pos + t.ahead) % n : (pos + n - t.back) % n];
+    const int along = draft_by_wedge(t.saddle, entry);
+    if (along < 0) continue;
+    const Draft& a = drafts[size_t(along)];
+    // Round the ring the chosen way to the separatrix's first step, so that
+    // the arc, rerouted round the ring (which is kept for s's own arcs),
+    // keeps to that side.
+    std::vector<int> guide(d.guide.begin(), d.guide.begin() + long(t.at) + 1);
+    for (size_t step = 1; step < n && guide.back() != a.guide[1]; ++step) {
+      guide.push_back(ring[forward ? (pos + step) % n : (pos + n - step) % n]);
+    }
+    guide.insert(guide.end(), a.guide.begin() + 2, a.guide.end());
+    d.guide = MsLoopErased(guide);
+    d.target = a.target;
+  }
+}
+
 }  // namespace
 
 MorseSmaleComplex BuildMorseSmale(const std::vector<Eigen::Vector3d>& points,
@@ -196,6 +297,7 @@ MorseSmaleComplex BuildMorseSmale(const std::vector<Eigen::Vector3d>& points,
   MorseSmaleComplex base;
   MsState s = MsTrace(rings, f);
   MsCancelPairs(s, f, options, base.cancelled);
+  MsRedirect(s, f, rings);
   std::vector<int> renumber(s.nodes.size(), -1);
   for (size_t n = 0; n < s.nodes.size(); ++n) {
     if (!s.node_alive[n]) continue;

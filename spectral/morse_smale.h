@@ -10,7 +10,12 @@
 //     least persistent |f(saddle) − f(extremum)| first, down to a threshold
 //     or a number of extrema; the other saddles' arcs into the cancelled
 //     extremum rerouted through the pair to its partner;
-//  3. the degeneracies of §7.1.3: arcs are placed one by one; an arc whose
+//  3. saddle–saddle connections: a path that runs onto another saddle s
+//     (enters its ring from the other side) goes on round s's ring to the
+//     neighbouring wedge and along s's separatrix from there, the side
+//     chosen as a perturbation of the function would (the two ends of one
+//     connection turn the same way round their rings);
+//  4. the degeneracies of §7.1.3: arcs are placed one by one; an arc whose
 //     path meets an arc already placed, a node or another saddle's one-ring
 //     before its extremum (merging separatrices, saddle–saddle connections,
 //     the rerouted arcs) keeps its path up to there and goes on by the
@@ -20,7 +25,7 @@
 //     the mesh is refined around those arcs' guides (edges split at their
 //     midpoints, f linear: the same surface and critical points) and every
 //     arc placed again, the round with fewer arcs left out kept;
-//  4. cells: the triangles between the arcs, each checked to be a disc with
+//  5. cells: the triangles between the arcs, each checked to be a disc with
 //     four distinct corners max, saddle, min, saddle.
 // Plain arrays in, plain structs out.
 #pragma once

@@ -120,7 +120,9 @@ TEST(MorseSmale, SphereEigenfunctions10To100) {
   const Sweep s = SweepEigenfunctions(TriangulatedEllipsoid(1, 1, 1, 4), 2);
   EXPECT_EQ(s.complexes, 91);
   EXPECT_EQ(s.euler_ok, 91);
-  EXPECT_GE(s.valid, 85) << "invalid:" << s.invalid;  // measured 85 of 91 (84 without refinement)
+  // Measured 90 of 91; 89 without the refinement, 85 without the turns at
+  // saddle-saddle connections, 84 with neither.
+  EXPECT_GE(s.valid, 90) << "invalid:" << s.invalid;
   EXPECT_GE(s.refined, 1);
   EXPECT_EQ(s.dual_ok, s.valid);
 }
@@ -129,7 +131,9 @@ TEST(MorseSmale, TorusEigenfunctions10To100) {
   const Sweep s = SweepEigenfunctions(TriangulatedCopy(TorusPrincipalQuads(3, 1, 90, 30)), 0);
   EXPECT_EQ(s.complexes, 91);
   EXPECT_EQ(s.euler_ok, 91);
-  EXPECT_GE(s.valid, 84) << "invalid:" << s.invalid;  // measured 84 of 91 (81 without refinement)
+  // Measured 87 of 91; 84 without the refinement, 84 without the turns at
+  // saddle-saddle connections, 81 with neither.
+  EXPECT_GE(s.valid, 87) << "invalid:" << s.invalid;
   EXPECT_GE(s.refined, 1);
   EXPECT_EQ(s.dual_ok, s.valid);
 }
