@@ -207,9 +207,9 @@ void MsRedirect(MsState& s, const Eigen::VectorXd& f, const std::vector<std::vec
   for (size_t i = 0; i < s.drafts.size(); ++i) {
     if (s.drafts[i].alive) of_saddle[s.drafts[i].guide.front()].push_back(i);
   }
-  std::unordered_map<int, int> ring_of;  // a ring vertex → its saddle's vertex (the first)
+  std::unordered_map<int, std::vector<int>> ring_of;  // a ring vertex → the saddles' vertices
   for (const auto& [v, list] : of_saddle) {
-    for (int u : rings[size_t(v)]) ring_of.emplace(u, v);
+    for (int u : rings[size_t(v)]) ring_of[u].push_back(v);
   }
   auto draft_by_wedge = [&](int saddle, int v) -> int {
     for (size_t e : of_saddle[saddle]) {
@@ -223,21 +223,24 @@ void MsRedirect(MsState& s, const Eigen::VectorXd& f, const std::vector<std::vec
   for (size_t i = 0; i < s.drafts.size(); ++i) {
     const Draft& d = s.drafts[i];
     if (!d.alive) continue;
-    for (size_t k = 2; k + 1 < d.guide.size(); ++k) {
+    for (size_t k = 1; k + 1 < d.guide.size() && turn[i].saddle < 0; ++k) {
       const auto it = ring_of.find(d.guide[k]);
-      if (it == ring_of.end() || it->second == d.guide.front()) continue;
-      const int sv = it->second;
-      if (MsAbove(f, d.guide[k], sv) == d.ascending) break;  // passes s on its own side
-      const std::vector<int>& ring = rings[size_t(sv)];
+      if (it == ring_of.end()) continue;
+      for (int sv : it->second) {
+        // Passing s on the guide's own side (below s, descending) is no
+        // connection: the guide only runs near s.
+        if (sv == d.guide.front() || MsAbove(f, d.guide[k], sv) == d.ascending) continue;
+        const std::vector<int>& ring = rings[size_t(sv)];
       const size_t n = ring.size();
       const size_t pos = size_t(std::find(ring.begin(), ring.end(), d.guide[k]) - ring.begin());
       MsTurn& t = turn[i];
       while (t.back < n && MsAbove(f, ring[(pos + n - t.back) % n], sv) != d.ascending) ++t.back;
       while (t.ahead < n && MsAbove(f, ring[(pos + t.ahead) % n], sv) != d.ascending) ++t.ahead;
-      t.at = k;
-      t.saddle = sv;
-      t.partner = draft_by_wedge(sv, d.guide[k]);
-      break;
+        t.at = k;
+        t.saddle = sv;
+        t.partner = draft_by_wedge(sv, d.guide[k]);
+        break;
+      }
     }
   }
   for (size_t i = 0; i < s.drafts.size(); ++i) {

@@ -120,9 +120,9 @@ TEST(MorseSmale, SphereEigenfunctions10To100) {
   const Sweep s = SweepEigenfunctions(TriangulatedEllipsoid(1, 1, 1, 4), 2);
   EXPECT_EQ(s.complexes, 91);
   EXPECT_EQ(s.euler_ok, 91);
-  // Measured 90 of 91; 89 without the refinement, 85 without the turns at
+  // Every one valid; 89 without the refinement, 85 without the turns at
   // saddle-saddle connections, 84 with neither.
-  EXPECT_GE(s.valid, 90) << "invalid:" << s.invalid;
+  EXPECT_EQ(s.valid, 91) << "invalid:" << s.invalid;
   EXPECT_GE(s.refined, 1);
   EXPECT_EQ(s.dual_ok, s.valid);
 }
@@ -132,7 +132,10 @@ TEST(MorseSmale, TorusEigenfunctions10To100) {
   EXPECT_EQ(s.complexes, 91);
   EXPECT_EQ(s.euler_ok, 91);
   // Measured 87 of 91; 84 without the refinement, 84 without the turns at
-  // saddle-saddle connections, 81 with neither.
+  // saddle-saddle connections, 81 with neither. In the others (k = 81, 82,
+  // 95, 96) many saddles send arcs along one valley round the axis to its
+  // single minimum, and not all are placed side by side
+  // (docs/methods/spectral.md).
   EXPECT_GE(s.valid, 87) << "invalid:" << s.invalid;
   EXPECT_GE(s.refined, 1);
   EXPECT_EQ(s.dual_ok, s.valid);
