@@ -16,9 +16,9 @@ namespace {
 using morse_smale::Draft;
 
 // Rounds of local refinement at most while arcs cannot all be placed, and
-// how many rings around the guides of the arcs left out each refines.
-// (More rounds were measured to place no further arc on the test sweeps.)
-constexpr int kMsRefinements = 1;
+// how many rings around the guides of the arcs left out each refines. (Six
+// rounds placed no more complexes of the test sweeps than three.)
+constexpr int kMsRefinements = 3;
 constexpr int kMsRefineWidth = 2;
 
 // f(u) > f(v), ties broken by index (as spectral/critical_points.h).
@@ -312,8 +312,9 @@ MorseSmaleComplex BuildMorseSmale(const std::vector<Eigen::Vector3d>& points,
     base.saddles += node.multiplicity;
   }
   // Round 0 places the arcs on the input; while some cannot be placed, the
-  // next refines the surface around their guides (two rings wide) and
-  // places them all again. The round with the fewest arcs left out is kept.
+  // next refines the surface around their guides (two rings wide), doubles
+  // the valence of the extrema they are bound for, and places them all
+  // again. The round with the fewest arcs left out is kept.
   morse_smale::ArcMesh mesh{points, rings, std::vector<double>(f.data(), f.data() + f.size())};
   const bool forward = morse_smale::RingsFollowTriangles(rings, triangles.at(0));
   MorseSmaleComplex out;
@@ -342,6 +343,11 @@ MorseSmaleComplex BuildMorseSmale(const std::vector<Eigen::Vector3d>& points,
       }
     }
     morse_smale::SplitAround(mesh, where, kMsRefineWidth, s.drafts);
+    std::vector<int> targets;  // the extrema the arcs left out are bound for
+    for (size_t i : unplaced) targets.push_back(s.drafts[i].guide.back());
+    std::sort(targets.begin(), targets.end());
+    targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
+    for (int v : targets) morse_smale::SplitLink(mesh, v, s.drafts);
     morse_smale::Rewedge(mesh, s.drafts);
   }
   return out;

@@ -21,10 +21,12 @@
 //     the rerouted arcs) keeps its path up to there and goes on by the
 //     shortest path (edge lengths) over free vertices, alongside the rest of
 //     its path first; what has no such path is left out and counted
-//     `unresolved` (passes that place those saddles first try again); then
-//     the mesh is refined around those arcs' guides (edges split at their
-//     midpoints, f linear: the same surface and critical points) and every
-//     arc placed again, the round with fewer arcs left out kept;
+//     `unresolved` (passes that place those saddles first try again, and
+//     place an arc again when it cuts off one still to come from its
+//     extremum); then the mesh is refined around those arcs' guides (edges
+//     split at their midpoints, f linear: the same surface and critical
+//     points; their extrema's valence doubled) and every arc placed again,
+//     up to three rounds, the round with the fewest arcs left out kept;
 //  5. cells: the triangles between the arcs, each checked to be a disc with
 //     four distinct corners max, saddle, min, saddle.
 // Plain arrays in, plain structs out.

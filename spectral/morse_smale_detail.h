@@ -54,6 +54,11 @@ void EmbedArcs(const std::vector<Eigen::Vector3d>& points,
 void SplitAround(ArcMesh& mesh, const std::vector<int>& seeds, int width,
                  std::vector<Draft>& drafts);
 
+// Splits the edges of v's link (between consecutive vertices of its ring)
+// at their midpoints, as SplitAround: v's valence doubles, so twice as many
+// arcs can reach it apart.
+void SplitLink(ArcMesh& mesh, int v, std::vector<Draft>& drafts);
+
 // Recomputes the wedges of the drafts' saddles from their (refined) rings;
 // each draft keeps the wedge its guide's first step lies in.
 void Rewedge(const ArcMesh& mesh, std::vector<Draft>& drafts);

@@ -7,12 +7,17 @@
 #include <functional>
 #include <limits>
 #include <queue>
+#include <unordered_map>
 
 #include "spectral/morse_smale_detail.h"
 
 namespace archgeo {
 namespace morse_smale {
 namespace {
+
+// An arc that cuts off arcs still to be placed: how many times it is placed
+// again, keeping their ways free.
+constexpr int kEmbedLookahead = 3;
 
 // Whether an arc may run through v: `used` marks the nodes and the arcs
 // placed, `reserved` the one-rings of the saddles (kept for their own arcs).
@@ -167,12 +172,70 @@ std::vector<int> EmbedOne(const std::vector<Eigen::Vector3d>& points,
   return EmbedShortest(points, rings, space, d.guide.front(), d.wedge, target);
 }
 
+// The components of the free vertices (neither used nor reserved), to tell
+// which arcs still to be placed can reach their extrema: one that could
+// and no longer can after an arc is placed has been cut off by it.
+class EmbedComponents {
+ public:
+  explicit EmbedComponents(size_t n) : label_(n, -1) {}
+
+  void Label(const std::vector<std::vector<int>>& rings, const EmbedSpace& space) {
+    std::fill(label_.begin(), label_.end(), -1);
+    int next = 0;
+    std::vector<int> stack;
+    for (size_t v = 0; v < rings.size(); ++v) {
+      if (label_[v] >= 0 || !Open(space, int(v))) continue;
+      label_[v] = next;
+      stack.push_back(int(v));
+      while (!stack.empty()) {
+        const int w = stack.back();
+        stack.pop_back();
+        for (int u : rings[size_t(w)]) {
+          if (label_[size_t(u)] < 0 && Open(space, u)) {
+            label_[size_t(u)] = next;
+            stack.push_back(u);
+          }
+        }
+      }
+      ++next;
+    }
+  }
+
+  // Whether d's wedge reaches its extremum through free vertices (as
+  // EmbedReachable, from the last Label).
+  bool Reaches(const std::vector<std::vector<int>>& rings, const EmbedSpace& space,
+               const Draft& d) {
+    const int target = d.guide.back();
+    labels_.clear();
+    for (int w : d.wedge) {
+      if (space.used[size_t(w)]) continue;
+      for (int u : rings[size_t(w)]) {
+        if (u == target) return true;
+        if (label_[size_t(u)] >= 0) labels_.push_back(label_[size_t(u)]);
+      }
+    }
+    for (int u : rings[size_t(target)]) {
+      const int l = label_[size_t(u)];
+      if (l >= 0 && std::find(labels_.begin(), labels_.end(), l) != labels_.end()) return true;
+    }
+    return false;
+  }
+
+ private:
+  static bool Open(const EmbedSpace& space, int v) {
+    return !space.used[size_t(v)] && !space.reserved[size_t(v)];
+  }
+  std::vector<int> label_;
+  std::vector<int> labels_;
+};
+
 // One pass placing the drafts in `order`; the drafts left without a path
 // are returned.
 std::vector<size_t> EmbedPass(const std::vector<Eigen::Vector3d>& points,
                               const std::vector<std::vector<int>>& rings,
                               const std::vector<bool>& node_vertex, const std::vector<Draft>& drafts,
-                              const std::vector<size_t>& order, std::vector<std::vector<int>>& paths) {
+                              const std::vector<size_t>& order, bool look_ahead,
+                              std::vector<std::vector<int>>& paths) {
   EmbedSpace space{node_vertex, std::vector<bool>(points.size(), false), {}};
   for (size_t i : order) {
     for (int u : rings[size_t(drafts[i].guide.front())]) space.reserved[size_t(u)] = true;
@@ -185,10 +248,57 @@ std::vector<size_t> EmbedPass(const std::vector<Eigen::Vector3d>& points,
       owner[size_t(paths[i][k])] = mark ? int(i) : -1;
     }
   };
+  // Look ahead (in the passes after the first, which found arcs it could
+  // not place): when an arc cuts off an arc still to be placed from its
+  // extremum (the free vertices round its wedge and round its extremum fall
+  // into different components), the way that arc had (its shortest path) is
+  // kept free and the arc is placed again, up to kEmbedLookahead times.
+  std::vector<bool> pending(drafts.size(), false), reaches(drafts.size(), false);
+  for (size_t i : order) pending[i] = true;
+  EmbedComponents components(points.size());
+  if (look_ahead) {
+    components.Label(rings, space);
+    for (size_t i : order) reaches[i] = components.Reaches(rings, space, drafts[i]);
+  }
   for (size_t i : order) {
+    pending[i] = false;
     paths[i] = EmbedOne(points, rings, space, drafts[i]);
     if (paths[i].empty()) failed.push_back(i);
     place(i, true);
+    if (paths[i].empty() || !look_ahead) continue;
+    std::vector<int> kept_free;  // vertices marked used while arc i is placed again
+    for (int attempt = 0;; ++attempt) {
+      components.Label(rings, space);
+      std::vector<size_t> cut;
+      for (size_t z : order) {
+        if (!pending[z]) continue;
+        const bool now = components.Reaches(rings, space, drafts[z]);
+        if (reaches[z] && !now) cut.push_back(z);
+        reaches[z] = now;
+      }
+      if (cut.empty() || attempt == kEmbedLookahead) break;
+      place(i, false);
+      for (size_t z : cut) {
+        const Draft& d = drafts[z];
+        for (int v : EmbedShortest(points, rings, space, d.guide.front(), d.wedge, d.guide.back())) {
+          if (!space.used[size_t(v)]) {
+            space.used[size_t(v)] = true;
+            kept_free.push_back(v);
+          }
+        }
+      }
+      std::vector<int> other = EmbedOne(points, rings, space, drafts[i]);
+      for (int v : kept_free) space.used[size_t(v)] = false;
+      kept_free.clear();
+      const bool found = !other.empty();
+      if (found) paths[i] = std::move(other);
+      place(i, true);
+      if (!found) {
+        for (size_t z : cut) reaches[z] = false;
+        break;
+      }
+      for (size_t z : cut) reaches[z] = true;  // as before arc i: checked again above
+    }
   }
   // Rip up and reroute: an arc left out whose way is barred by one arc
   // only is placed before that arc, which is then placed again.
@@ -244,7 +354,7 @@ void EmbedArcs(const std::vector<Eigen::Vector3d>& points,
   std::vector<std::vector<int>> paths(drafts.size()), best;
   size_t best_failed = order.size() + 1;
   for (int pass = 0; pass < kEmbedPasses; ++pass) {
-    const std::vector<size_t> failed = EmbedPass(points, rings, node_vertex, drafts, order, paths);
+    const std::vector<size_t> failed = EmbedPass(points, rings, node_vertex, drafts, order, pass > 0, paths);
     if (failed.size() < best_failed) {
       best_failed = failed.size();
       best = paths;

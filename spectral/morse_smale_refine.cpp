@@ -72,6 +72,13 @@ bool RefineSplitEdge(ArcMesh& mesh, int a, int b, std::vector<Draft>& drafts) {
 
 }  // namespace
 
+void SplitLink(ArcMesh& mesh, int v, std::vector<Draft>& drafts) {
+  const std::vector<int> ring = mesh.rings[size_t(v)];
+  for (size_t i = 0; i < ring.size(); ++i) {
+    RefineSplitEdge(mesh, ring[i], ring[(i + 1) % ring.size()], drafts);
+  }
+}
+
 void SplitAround(ArcMesh& mesh, const std::vector<int>& seeds, int width,
                  std::vector<Draft>& drafts) {
   std::vector<char> in(mesh.points.size(), 0);
