@@ -114,4 +114,13 @@ struct QuadBaseComplex {
 QuadBaseComplex QuasiDual(const MorseSmaleComplex& complex,
                           const std::vector<Eigen::Vector3d>& points);
 
+// The complex itself as a quad base complex (§7.1.2: every cell a quad max,
+// saddle, min, saddle): all its nodes as vertices, one quad per cell,
+// oriented as the quasi-dual's (the cyclic order of the saddles' arcs), its
+// edges the arcs. For a valid complex whose quasi-dual repeats a corner (a
+// saddle with two arcs to one extremum): the cells still have four distinct
+// corners. `degenerate_quads` counts cells that are not.
+QuadBaseComplex PrimalQuads(const MorseSmaleComplex& complex,
+                            const std::vector<Eigen::Vector3d>& points);
+
 }  // namespace archgeo

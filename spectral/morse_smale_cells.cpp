@@ -178,4 +178,67 @@ QuadBaseComplex QuasiDual(const MorseSmaleComplex& c, const std::vector<Eigen::V
   return out;
 }
 
+QuadBaseComplex PrimalQuads(const MorseSmaleComplex& c, const std::vector<Eigen::Vector3d>& points) {
+  QuadBaseComplex out;
+  for (const MorseSmaleNode& n : c.nodes) {
+    out.points.push_back(points[size_t(n.vertex)]);
+    out.nodes.push_back(n.vertex);
+  }
+  // The arc of saddle s to extremum e that has cell `cell` on one side.
+  auto arc_of = [&](int s, int e, int cell) -> long {
+    for (size_t a = 0; a < c.arcs.size(); ++a) {
+      const MorseSmaleArc& arc = c.arcs[a];
+      if (arc.saddle == s && arc.extremum == e &&
+          (arc.side_cells[0] == cell || arc.side_cells[1] == cell)) {
+        return long(a);
+      }
+    }
+    return -1;
+  };
+  std::vector<bool> done(c.cells.size(), false);
+  std::unordered_set<long> edges;
+  for (size_t i = 0; i < c.arcs.size();) {
+    size_t j = i;
+    while (j < c.arcs.size() && c.arcs[j].saddle == c.arcs[i].saddle) ++j;
+    const int s = c.arcs[i].saddle;
+    // Consecutive arcs a, b of s (its wedges' cyclic order) bound the cell
+    // they share: the quad s, a's extremum, the cell's other saddle, b's.
+    for (size_t k = i; k < j; ++k) {
+      const MorseSmaleArc& a = c.arcs[k];
+      const MorseSmaleArc& b = c.arcs[k + 1 < j ? k + 1 : i];
+      int cell = -1;
+      for (int x : a.side_cells) {
+        if (x >= 0 && (x == b.side_cells[0] || x == b.side_cells[1])) cell = x;
+      }
+      if (cell < 0 || done[size_t(cell)]) continue;
+      done[size_t(cell)] = true;
+      int other = -1;
+      for (int n : c.cells[size_t(cell)].corners) {
+        if (c.nodes[size_t(n)].kind == 0 && n != s) other = n;
+      }
+      const std::array<int, 4> q{s, a.extremum, other, b.extremum};
+      const std::array<long, 4> e{long(k), other < 0 ? -1 : arc_of(other, a.extremum, cell),
+                                  other < 0 ? -1 : arc_of(other, b.extremum, cell),
+                                  long(k + 1 < j ? k + 1 : i)};
+      std::array<int, 4> sorted = q;
+      std::sort(sorted.begin(), sorted.end());
+      out.degenerate_quads += other < 0 || e[1] < 0 || e[2] < 0 ||
+                              std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
+      out.quads.push_back(q);
+      out.quad_edges.push_back(e);
+      for (long x : e) edges.insert(x);
+    }
+    i = j;
+  }
+  std::vector<int> valence(out.points.size(), 0);
+  for (const MorseSmaleArc& a : c.arcs) {
+    ++valence[size_t(a.saddle)];
+    ++valence[size_t(a.extremum)];
+  }
+  for (int v : valence) out.irregular_vertices += v != 4;
+  out.edges = int(edges.size());
+  out.euler = int(out.points.size()) - out.edges + int(out.quads.size());
+  return out;
+}
+
 }  // namespace archgeo

@@ -29,7 +29,7 @@ namespace archgeo {
 namespace ARCHGEO_UNITY_ID {
 
 struct Sweep {
-  int complexes = 0, euler_ok = 0, valid = 0, dual_ok = 0;
+  int complexes = 0, euler_ok = 0, valid = 0, dual_ok = 0, primal_ok = 0;
   int refined = 0;      // complexes kept from a round of local refinement
   std::string invalid;  // k (unresolved arcs, invalid cells) of the invalid ones
 };
@@ -112,6 +112,9 @@ Sweep SweepEigenfunctions(const Mesh& mesh, int chi) {
     const QuadBaseComplex dual = QuasiDual(c, c.points);
     s.dual_ok += dual.euler == chi && dual.missing_saddles == 0 &&
                  int(dual.quads.size()) == c.saddles && dual.edges == int(c.cells.size());
+    const QuadBaseComplex primal = PrimalQuads(c, c.points);
+    s.primal_ok += primal.degenerate_quads == 0 && primal.quads.size() == c.cells.size() &&
+                   primal.edges == int(c.arcs.size()) && primal.euler == chi;
   }
   return s;
 }
@@ -125,6 +128,7 @@ TEST(MorseSmale, SphereEigenfunctions10To100) {
   EXPECT_EQ(s.valid, 91) << "invalid:" << s.invalid;
   EXPECT_GE(s.refined, 1);
   EXPECT_EQ(s.dual_ok, s.valid);
+  EXPECT_EQ(s.primal_ok, s.valid);  // the cells as quads: four distinct corners, V − E + F = χ
 }
 
 TEST(MorseSmale, TorusEigenfunctions10To100) {
@@ -140,6 +144,7 @@ TEST(MorseSmale, TorusEigenfunctions10To100) {
   EXPECT_GE(s.valid, 89) << "invalid:" << s.invalid;
   EXPECT_GE(s.refined, 1);
   EXPECT_EQ(s.dual_ok, s.valid);
+  EXPECT_EQ(s.primal_ok, s.valid);  // the cells as quads: four distinct corners, V − E + F = χ
 }
 
 // φ_17 of the sphere plus a ±0.03 ripple: the raw complex has over twice

@@ -81,6 +81,27 @@ TEST(SpectralQuads, TorusGivesNoIrregularVertex) {
   EXPECT_LT(kink.at("output").get<double>(), 0.5 * kink.at("mapped").get<double>());
 }
 
+// Eigenfunction 13 of a 90 × 30 torus, a wave round the tube: its complex
+// is valid, but its saddles send two arcs to one extremum, so the
+// quasi-dual's quads repeat a corner; the complex's own cells (max, saddle,
+// min, saddle, four distinct corners) are charted instead, and the quad
+// mesh's irregular vertices are their nodes of valence ≠ 4. Without that
+// the run ends with exit 4.
+TEST(SpectralQuads, TorusWaveRoundTheTubeIsChartedOnTheComplexItself) {
+  const RunResult run = SqRun("problem: spectral_quads\nspectral: {eigenfunction: 13}\n",
+                              TorusPrincipalQuads(3, 1, 90, 30));
+  const auto& sp = run.report.at("details").at("spectral");
+  const auto& complex = sp.at("complex");
+  EXPECT_TRUE(complex.at("valid").get<bool>());
+  EXPECT_EQ(complex.at("euler_sum").get<int>(), 0);
+  EXPECT_GT(complex.at("quasi_dual").at("degenerate_quads").get<int>(), 0);
+  EXPECT_EQ(sp.at("base").get<std::string>(), "complex");
+  EXPECT_EQ(sp.at("base_quads").get<int>(), complex.at("cells").get<int>());
+  std::printf("torus k = 13: %d cells charted, %d irregular vertices\n",
+              sp.at("base_quads").get<int>(), sp.at("base_irregular_vertices").get<int>());
+  SqExpectQuads(run, sp.at("base_irregular_vertices").get<int>());
+}
+
 TEST(SpectralQuads, EigenfunctionBeyondTheVerticesIsAnErrorNamingTheKey) {
   const Mesh sphere = TriangulatedEllipsoid(1, 1, 1, 1);  // 42 vertices
   try {

@@ -47,6 +47,8 @@ struct SqState : ProblemState {
   std::vector<double> phi;  // the chosen (or last tried) eigenfunction, max |φ| = 1
   MorseSmaleComplex complex;
   QuadBaseComplex dual;
+  QuadBaseComplex base;     // the base complex charted: the quasi-dual, or the complex itself
+  bool primal = false;      // base is the complex itself (its quasi-dual repeats a corner)
   bool quads = false;       // the chart step ran on it
   std::string invalid;      // the chart step's failed checks
 };
@@ -163,10 +165,23 @@ void SqNet(HookContext& c) {
     st.phi.assign(f.data(), f.data() + f.size());
     st.complex = BuildMorseSmale(m.points, m.triangles, m.rings, f, options);
     st.dual = QuasiDual(st.complex, m.points);
+    st.base = st.dual;
+    st.primal = false;
     chosen = &cand;
     std::string fault = SqComplexFault(st.complex, st.dual);
+    if (!fault.empty() && st.complex.valid) {
+      // The quasi-dual repeats a corner (a saddle with two arcs to one
+      // extremum, a wave round the tube); the complex's own cells are
+      // quads with four distinct corners (§7.1.2): chart those.
+      QuadBaseComplex primal = PrimalQuads(st.complex, m.points);
+      if (primal.degenerate_quads == 0) {
+        st.base = std::move(primal);
+        st.primal = true;
+        fault.clear();
+      }
+    }
     if (fault.empty()) {
-      const BaseComplex base = QuasiDualBaseComplex(st.dual);
+      const BaseComplex base = QuasiDualBaseComplex(st.base);
       try {
         step = RunChartStep(s, design, m.points, m.triangles, base);
         st.quads = true;
@@ -174,7 +189,10 @@ void SqNet(HookContext& c) {
         fault = std::string("its charts fail: ") + e.what();
       }
     }
-    tried.push_back({{"k", cand.k}, {"charts", SpectralCharts(cand.critical)}, {"fault", fault}});
+    tried.push_back({{"k", cand.k},
+                     {"charts", SpectralCharts(cand.critical)},
+                     {"base", st.primal ? "complex" : "quasi_dual"},
+                     {"fault", fault}});
     if (st.quads) break;
     reasons += (reasons.empty() ? "" : "; ") + std::string("eigenfunction ") +
                std::to_string(cand.k) + ": " + fault;
@@ -197,16 +215,20 @@ void SqNet(HookContext& c) {
         {"multi_saddles", cp.multi_saddles},
         {"euler_sum", cp.EulerSum()}}},
       {"complex", SqComplexDetails(st.complex, st.dual)},
+      {"base", st.primal ? "complex" : "quasi_dual"},
+      {"base_quads", st.base.quads.size()},
+      {"base_irregular_vertices", st.base.irregular_vertices},
       {"seconds", {{"eigenpairs", seconds_eigen}, {"total", SqSecondsSince(t0)}}}};
-  char line[400];
+  char line[512];
   std::snprintf(line, sizeof line,
                 "spectral: eigenfunction %d (eigenvalue %.6g, %s), critical points max %d min %d "
                 "saddles %d (%d multi); complex after cancellation: max %d min %d saddles %d, "
-                "%zu cells, valid %s; quasi-dual %zu quads, %d irregular vertices\n",
+                "%zu cells, valid %s; quasi-dual %zu quads, %d irregular vertices%s\n",
                 chosen->k, chosen->eigenvalue, given > 0 ? "given" : "chosen for the target",
                 cp.maxima, cp.minima, cp.saddles, cp.multi_saddles, st.complex.maxima,
                 st.complex.minima, st.complex.saddles, st.complex.cells.size(),
-                st.complex.valid ? "yes" : "no", st.dual.quads.size(), st.dual.irregular_vertices);
+                st.complex.valid ? "yes" : "no", st.dual.quads.size(), st.dual.irregular_vertices,
+                st.primal ? " (it repeats a corner: the complex's cells charted instead)" : "");
   c.net.headline = line;
   if (!st.quads) {
     c.missed = "no quad mesh: " + reasons +
@@ -214,10 +236,10 @@ void SqNet(HookContext& c) {
     return;
   }
   st.invalid = step.invalid;
-  if (int(step.result.irregular.size()) != st.dual.irregular_vertices) {
+  if (int(step.result.irregular.size()) != st.base.irregular_vertices) {
     st.invalid += "the output has " + std::to_string(step.result.irregular.size()) +
-                  " irregular vertices, the quasi-dual " +
-                  std::to_string(st.dual.irregular_vertices) + "\n";
+                  " irregular vertices, the base complex " +
+                  std::to_string(st.base.irregular_vertices) + "\n";
   }
   c.details["charts"] = std::move(step.details);
   c.net.headline += step.headline;
@@ -235,7 +257,7 @@ void SqWrite(HookContext& c) {
     if (key == "complex") {
       WriteTextFile(path, MorseSmaleArcsObj(st.complex), name);
     } else if (key == "quasi_dual") {
-      WriteTextFile(path, QuasiDualObj(st.dual), name);
+      WriteTextFile(path, QuasiDualObj(st.base), name);
     } else if (key == "function") {
       const std::vector<PlyValues> values = {{"phi", st.phi}};
       WriteMesh(path, st.design, nullptr, false, nullptr, &values);
