@@ -138,8 +138,8 @@ TEST(MorseSmale, TorusEigenfunctions10To100) {
   // Measured 89 of 91; 88 without the look-ahead, 87 without doubling the
   // extrema's valence, 84 without the refinement, 85 without the turns at
   // saddle-saddle connections, 81 with none of them. In the other two
-  // (k = 81, 95) many saddles send arcs along one valley round the axis to
-  // its single minimum, and not all are placed side by side
+  // (k = 81, 95) a saddle's two arcs to one extremum round the tube close a
+  // loop that leaves another arc on the far side from its extremum
   // (docs/methods/spectral.md).
   EXPECT_GE(s.valid, 89) << "invalid:" << s.invalid;
   EXPECT_GE(s.refined, 1);
