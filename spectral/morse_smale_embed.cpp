@@ -174,35 +174,85 @@ std::vector<int> EmbedOne(const std::vector<Eigen::Vector3d>& points,
 
 // The components of the free vertices (neither used nor reserved), to tell
 // which arcs still to be placed can reach their extrema: one that could
-// and no longer can after an arc is placed has been cut off by it.
+// and no longer can after an arc is placed has been cut off by it. Labelled
+// once per pass, then kept in step as arcs are placed and taken back: a
+// label is a union-find node, so freed vertices join their neighbours'
+// components by union; marking vertices used splits at most the
+// components they touched, found by searches from their free neighbours
+// run side by side, so that only the pieces cut off are visited and
+// relabelled (the largest piece keeps its label).
 class EmbedComponents {
  public:
-  explicit EmbedComponents(size_t n) : label_(n, -1) {}
+  explicit EmbedComponents(size_t n) : label_(n, -1), seen_(n, -1) {}
 
   void Label(const std::vector<std::vector<int>>& rings, const EmbedSpace& space) {
     std::fill(label_.begin(), label_.end(), -1);
-    int next = 0;
+    parent_.clear();
     std::vector<int> stack;
     for (size_t v = 0; v < rings.size(); ++v) {
       if (label_[v] >= 0 || !Open(space, int(v))) continue;
-      label_[v] = next;
+      const int l = NewLabel();
+      label_[v] = l;
       stack.push_back(int(v));
       while (!stack.empty()) {
         const int w = stack.back();
         stack.pop_back();
         for (int u : rings[size_t(w)]) {
           if (label_[size_t(u)] < 0 && Open(space, u)) {
-            label_[size_t(u)] = next;
+            label_[size_t(u)] = l;
             stack.push_back(u);
           }
         }
       }
-      ++next;
+    }
+  }
+
+  // The interior vertices of `path`, free now, join their free neighbours.
+  void Restore(const std::vector<std::vector<int>>& rings, const EmbedSpace& space,
+               const std::vector<int>& path) {
+    for (size_t k = 1; k + 1 < path.size(); ++k) {
+      const int v = path[k];
+      if (!Open(space, v) || label_[size_t(v)] >= 0) continue;
+      int l = -1;
+      for (int u : rings[size_t(v)]) {
+        if (label_[size_t(u)] < 0 || !Open(space, u)) continue;
+        const int r = Root(label_[size_t(u)]);
+        if (l < 0) {
+          l = r;
+        } else if (r != l) {
+          parent_[size_t(r)] = l;
+        }
+      }
+      label_[size_t(v)] = l < 0 ? NewLabel() : l;
+    }
+  }
+
+  // The interior vertices of `path`, used now, leave their components.
+  void Remove(const std::vector<std::vector<int>>& rings, const EmbedSpace& space,
+              const std::vector<int>& path) {
+    std::vector<int> seeds;
+    for (size_t k = 1; k + 1 < path.size(); ++k) label_[size_t(path[k])] = -1;
+    for (size_t k = 1; k + 1 < path.size(); ++k) {
+      for (int u : rings[size_t(path[k])]) {
+        if (label_[size_t(u)] >= 0 && Open(space, u)) seeds.push_back(u);
+      }
+    }
+    std::sort(seeds.begin(), seeds.end());
+    seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+    std::stable_sort(seeds.begin(), seeds.end(), [&](int a, int b) {
+      return Root(label_[size_t(a)]) < Root(label_[size_t(b)]);
+    });
+    for (size_t a = 0; a < seeds.size();) {
+      size_t b = a;
+      const int root = Root(label_[size_t(seeds[a])]);
+      while (b < seeds.size() && Root(label_[size_t(seeds[b])]) == root) ++b;
+      Split(rings, space, std::vector<int>(seeds.begin() + long(a), seeds.begin() + long(b)));
+      a = b;
     }
   }
 
   // Whether d's wedge reaches its extremum through free vertices (as
-  // EmbedReachable, from the last Label).
+  // EmbedReachable, from the labels kept).
   bool Reaches(const std::vector<std::vector<int>>& rings, const EmbedSpace& space,
                const Draft& d) {
     const int target = d.guide.back();
@@ -211,12 +261,12 @@ class EmbedComponents {
       if (space.used[size_t(w)]) continue;
       for (int u : rings[size_t(w)]) {
         if (u == target) return true;
-        if (label_[size_t(u)] >= 0) labels_.push_back(label_[size_t(u)]);
+        if (label_[size_t(u)] >= 0) labels_.push_back(Root(label_[size_t(u)]));
       }
     }
     for (int u : rings[size_t(target)]) {
       const int l = label_[size_t(u)];
-      if (l >= 0 && std::find(labels_.begin(), labels_.end(), l) != labels_.end()) return true;
+      if (l >= 0 && std::find(labels_.begin(), labels_.end(), Root(l)) != labels_.end()) return true;
     }
     return false;
   }
@@ -225,7 +275,80 @@ class EmbedComponents {
   static bool Open(const EmbedSpace& space, int v) {
     return !space.used[size_t(v)] && !space.reserved[size_t(v)];
   }
-  std::vector<int> label_;
+  int NewLabel() {
+    parent_.push_back(int(parent_.size()));
+    return parent_.back();
+  }
+  int Root(int l) {
+    while (parent_[size_t(l)] != l) {
+      parent_[size_t(l)] = parent_[size_t(parent_[size_t(l)])];
+      l = parent_[size_t(l)];
+    }
+    return l;
+  }
+
+  // Breadth-first searches from `seeds` (free vertices of one component)
+  // in turn, one vertex each; searches that meet are one piece. A piece
+  // whose searches have all ended is cut off and relabelled; the last
+  // piece still searching keeps the component's label.
+  void Split(const std::vector<std::vector<int>>& rings, const EmbedSpace& space,
+             const std::vector<int>& seeds) {
+    const size_t m = seeds.size();
+    if (m < 2) return;
+    std::vector<std::vector<int>> queue(m);
+    std::vector<size_t> head(m, 0);
+    std::vector<int> group(m);
+    std::vector<bool> done(m, false);  // by group root: relabelled
+    for (size_t s = 0; s < m; ++s) {
+      group[s] = int(s);
+      queue[s].push_back(seeds[s]);
+      seen_[size_t(seeds[s])] = int(s);
+    }
+    auto find = [&](int s) {
+      while (group[size_t(s)] != s) s = group[size_t(s)] = group[size_t(group[size_t(s)])];
+      return s;
+    };
+    size_t searching = m;
+    while (searching > 1) {
+      for (size_t s = 0; s < m; ++s) {
+        if (head[s] == queue[s].size() || done[size_t(find(int(s)))]) continue;
+        const int w = queue[s][head[s]++];
+        for (int u : rings[size_t(w)]) {
+          if (label_[size_t(u)] < 0 || !Open(space, u)) continue;
+          if (seen_[size_t(u)] < 0) {
+            seen_[size_t(u)] = int(s);
+            queue[s].push_back(u);
+            continue;
+          }
+          const int a = find(int(s)), b = find(seen_[size_t(u)]);
+          if (a != b) {
+            group[size_t(b)] = a;
+            --searching;
+          }
+        }
+      }
+      std::vector<bool> open(m, false);
+      for (size_t s = 0; s < m; ++s) {
+        if (head[s] < queue[s].size()) open[size_t(find(int(s)))] = true;
+      }
+      for (size_t s = 0; s < m && searching > 0; ++s) {
+        const int g = find(int(s));
+        if (group[s] != int(s) || done[size_t(g)] || open[size_t(g)]) continue;
+        const int l = NewLabel();
+        for (size_t t = 0; t < m; ++t) {
+          if (find(int(t)) != g) continue;
+          for (int v : queue[t]) label_[size_t(v)] = l;
+        }
+        done[size_t(g)] = true;
+        --searching;
+      }
+    }
+    for (const std::vector<int>& q : queue) {
+      for (int v : q) seen_[size_t(v)] = -1;
+    }
+  }
+
+  std::vector<int> label_, parent_, seen_;
   std::vector<int> labels_;
 };
 
@@ -266,9 +389,9 @@ std::vector<size_t> EmbedPass(const std::vector<Eigen::Vector3d>& points,
     if (paths[i].empty()) failed.push_back(i);
     place(i, true);
     if (paths[i].empty() || !look_ahead) continue;
+    components.Remove(rings, space, paths[i]);
     std::vector<int> kept_free;  // vertices marked used while arc i is placed again
     for (int attempt = 0;; ++attempt) {
-      components.Label(rings, space);
       std::vector<size_t> cut;
       for (size_t z : order) {
         if (!pending[z]) continue;
@@ -291,8 +414,12 @@ std::vector<size_t> EmbedPass(const std::vector<Eigen::Vector3d>& points,
       for (int v : kept_free) space.used[size_t(v)] = false;
       kept_free.clear();
       const bool found = !other.empty();
-      if (found) paths[i] = std::move(other);
+      if (found) std::swap(paths[i], other);
       place(i, true);
+      if (found) {
+        components.Restore(rings, space, other);
+        components.Remove(rings, space, paths[i]);
+      }
       if (!found) {
         for (size_t z : cut) reaches[z] = false;
         break;
