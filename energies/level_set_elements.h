@@ -17,6 +17,8 @@
 //                            with left ≠ right; site = the cut vertex
 //   level_set_branch_points  one per relation with left = right (the source of
 //                            a singularity cut); site = the vertex
+//   level_set_boundary_edges one per boundary edge of a boundary row
+//                            (fields/boundary_rows.h); site = the edge's face
 #ifndef ARCHGEO_ENERGIES_LEVEL_SET_ELEMENTS_H_
 #define ARCHGEO_ENERGIES_LEVEL_SET_ELEMENTS_H_
 
@@ -34,6 +36,12 @@ inline constexpr int kFaceWidth = 17;
 // level_set_branch_points: wedge, (unused), chain, s for g, s for h, 1/L.
 inline constexpr int kLeft = 0, kRight = 1, kChain = 2, kSignG = 3, kSignH = 4, kInvLength = 5;
 inline constexpr int kRelationWidth = 6;
+
+// level_set_boundary_edges: the wedges of the edge's two corners in its face,
+// the function held (0 = g, 1 = h), 1/L. Block "level_set_boundary_zero": one
+// constant 0 (the α of a relation g_a = 0 + g_b).
+inline constexpr int kWedgeA = 0, kWedgeB = 1, kFunction = 2, kBoundaryInvLength = 3;
+inline constexpr int kBoundaryWidth = 4;
 
 }  // namespace archgeo::level_set_data
 

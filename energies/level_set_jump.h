@@ -52,6 +52,10 @@ struct LevelSetJump {
   double inv_length;
 };
 
+// The functor after checking its arguments (CHECK: sign ±1, inv_length
+// finite and > 0); defined in level_set_jump.cpp.
+LevelSetJump CheckedLevelSetJump(int sign, double inv_length);
+
 }  // namespace archgeo
 
 #endif  // ARCHGEO_ENERGIES_LEVEL_SET_JUMP_H_

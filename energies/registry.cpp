@@ -28,6 +28,7 @@
   X(handles)                   \
   X(laplacian)                 \
   X(level_set_alignment)       \
+  X(level_set_boundary)        \
   X(level_set_branch_point)    \
   X(level_set_conjugacy)       \
   X(level_set_jump)            \

@@ -140,7 +140,8 @@ std::vector<TermUse> LevelSetTerms() {
           {"level_set_normalised", 1},
           {"level_set_conjugacy", 1},
           {"level_set_jump", 100},
-          {"level_set_branch_point", 100}};
+          {"level_set_branch_point", 100},
+          {"level_set_boundary", 100}};
 }
 
 std::vector<Key> LevelSetKeys() {
@@ -170,6 +171,24 @@ std::vector<Key> LevelSetKeys() {
                     "jumps across cuts from ±1/2 singularities rounded to even multiples of Δw "
                     "(quads around the singularity) or odd ones (valence-4 vertices and an "
                     "extraordinary face)"),
+          BoolKey("level_sets.boundary_rows", true,
+                  "one family of layout lines runs along the boundary of an open surface "
+                  "(fields/boundary_rows.h): the field follows the boundary tangent "
+                  "(level_sets.boundary_rows_alignment), and on each boundary run (cut where the "
+                  "family along the boundary changes: corners, asymptotic tangents) the function "
+                  "whose level sets follow it is kept equal along it (level_set_boundary) and, "
+                  "for the last solve, held on a level, a multiple of its spacing; the boundary "
+                  "faces become quads with an edge on the boundary; false: off"),
+          NumberKey("level_sets.boundary_rows_alignment", 10000, 0, 1e8,
+                    "with level_sets.boundary_rows, the weight of the boundary tangent in the "
+                    "field (field.boundary_alignment's scale; the larger of the two is used): "
+                    "one direction of every boundary face runs along the boundary, so that the "
+                    "held level follows the field"),
+          NumberKey("level_sets.boundary_rows_max_shift", 2, 0, 1e6,
+                    "with level_sets.boundary_rows, a boundary run is held on a level only if "
+                    "no value moves by more than this many spacings from the level sets solved "
+                    "without it (else the level sets do not follow the boundary there and "
+                    "holding it would bend the rows beside it; the run is left free and counted)"),
           IntegerKey("level_sets.rounds", 1, 1, 100,
                      "Ceres solves per stage (eq. 5; eq. 6; with the jumps fixed)"),
           NumberKey("extraction.merge_fraction", 0.05, 0, 0.5,
@@ -357,9 +376,10 @@ ProblemSpec SubSpec(const ProblemDecl& sub, const Settings& parent) {
 }
 
 std::shared_ptr<const FieldResult> SolveField(const Settings& parent, const Mesh& mesh,
-                                              const ProgressSink& progress) {
+                                              const ProgressSink& progress,
+                                              const std::map<std::string, Value>& overrides) {
   std::shared_ptr<const FieldResult> field =
-      Nested("conjugate_field", parent, mesh, progress)->hooks.field;
+      Nested("conjugate_field", parent, mesh, progress, overrides)->hooks.field;
   CHECK(field) << "conjugate_field left no field";
   return field;
 }

@@ -102,7 +102,8 @@ StreamlineResult FieldStreamlines(const Settings& s, const FieldResult& field,
 // keys of `parent` (and then `overrides`, keys of level_sets). Throw
 // InputError as the stages do.
 std::shared_ptr<const FieldResult> SolveField(const Settings& parent, const Mesh& mesh,
-                                              const ProgressSink& progress);
+                                              const ProgressSink& progress,
+                                              const std::map<std::string, Value>& overrides = {});
 std::shared_ptr<const LevelSetResult> SolveLevelSets(
     const Settings& parent, const Mesh& mesh, const ProgressSink& progress,
     const std::map<std::string, Value>& overrides = {});

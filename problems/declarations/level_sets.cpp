@@ -58,6 +58,7 @@
 #include "core/problem.h"
 #include "energies/level_set_elements.h"
 #include "energies/level_set_gradient.h"
+#include "fields/boundary_rows.h"
 #include "fields/cut_jumps.h"
 #include "fields/field_io.h"
 #include "fields/pair_cancellation.h"
@@ -86,6 +87,7 @@ struct LevelSetState : ProblemState {
   double spacing_g = 1, spacing_h = 1;  // the levels' spacings (see Round)
   bool rounded = false;
   bool rounding_ok = true;
+  BoundaryRows boundary_rows;  // level_sets.boundary_rows (Round)
   std::string rounding_message;
   double field_seconds = 0;         // the field's nested solve and its pair cancellation
   Clock::time_point solve_start;    // the level sets' own rounds start (end of InitLevelSets)
@@ -176,7 +178,12 @@ void InitLevelSets(HookContext& c) {
   LevelSetState& st = St(c);
   st = LevelSetState{};
   const Clock::time_point field_start = Clock::now();
-  st.field = LevelSetCancelPairs(s, c, SolveField(s, *c.input, c.progress));
+  std::map<std::string, Value> field_overrides;
+  if (s.Bool("level_sets.boundary_rows")) {
+    field_overrides["field.boundary_alignment"] = std::max(
+        s.Number("field.boundary_alignment"), s.Number("level_sets.boundary_rows_alignment"));
+  }
+  st.field = LevelSetCancelPairs(s, c, SolveField(s, *c.input, c.progress, field_overrides));
   st.field_seconds = SecondsSince(field_start);
   const FieldGeometry& geo = st.field->geometry;
   const TcdField& field = st.field->field;
@@ -215,6 +222,8 @@ void InitLevelSets(HookContext& c) {
                    wedges);
   c.store->Declare(Values("level_set_alpha_g", "jump α_C of g per cut chain"), chains);
   c.store->Declare(Values("level_set_alpha_h", "jump α_C of h per cut chain"), chains);
+  c.store->Declare(Values("level_set_boundary_zero", "0: the α of level_set_boundary"), 1);
+  c.model->SetConstant("level_set_boundary_zero", 0);
   // The functions are defined up to g → g + c, which changes α_C by (1 − s_C) c:
   // with a chain from a ±1/2 singularity (s = −1) the gauge is fixed by
   // holding its α at an even (or odd) multiple of Δw — then rounding does not
@@ -263,6 +272,21 @@ void InitLevelSets(HookContext& c) {
     (r.left_wedge == r.right_wedge ? branches : jumps)
         .Add({int(r.vertex.idx())}, int(r.vertex.idx()), -1, -1, 0, data);
   }
+  ElementSet boundary;
+  boundary.site = Site::kFace;
+  boundary.data_width = ld::kBoundaryWidth;
+  if (s.Bool("level_sets.boundary_rows")) {
+    for (const BoundaryRowEdge& e : BoundaryRowEdges(mesh, geo.frames, st.v, st.w)) {
+      const HalfedgeIndex in = mesh.opposite(e.border);
+      const FaceIndex f = mesh.face(in);
+      boundary.Add({int(mesh.source(e.border).idx()), int(mesh.target(e.border).idx())},
+                   int(f.idx()), int(f.idx()), -1, 0,
+                   {double(st.cut.corner_wedge[in.idx()]),
+                    double(st.cut.corner_wedge[mesh.prev(in).idx()]), double(e.function),
+                    1.0 / st.spacing});
+    }
+  }
+  c.SetElements("level_set_boundary_edges", std::move(boundary));
   c.SetElements("level_set_faces", std::move(elements));
   c.SetElements("level_set_jumps", std::move(jumps));
   c.SetElements("level_set_branch_points", std::move(branches));
@@ -295,6 +319,40 @@ double MeanGradient(HookContext& c, const char* block, const std::vector<V2>& di
   return area > 0 ? sum / area : 1.0;
 }
 
+void RoundJumpConstants(HookContext& c);
+
+// level_sets.boundary_rows: each boundary run held on a level of the
+// function whose level sets follow it (fields/boundary_rows.h), with the
+// rounded jumps; constant blocks in the last solve.
+void HoldBoundaryRows(HookContext& c) {
+  LevelSetState& st = St(c);
+  const char* values[2] = {"level_set_g", "level_set_h"};
+  const char* alphas[2] = {"level_set_alpha_g", "level_set_alpha_h"};
+  std::vector<double> value[2], alpha[2];
+  for (int f = 0; f < 2; ++f) {
+    for (int k = 0; k < st.cut.num_wedges; ++k) value[f].push_back(*c.store->At(values[f], k));
+    for (size_t k = 0; k < st.cut.chains.size(); ++k) {
+      alpha[f].push_back(*c.store->At(alphas[f], int(k)));
+    }
+  }
+  WedgeFunctions fn;
+  for (int f = 0; f < 2; ++f) {
+    fn.values[f] = &value[f];
+    fn.alpha[f] = &alpha[f];
+  }
+  fn.sign[0] = &st.ov.chain_sign;
+  fn.sign[1] = &st.ow.chain_sign;
+  fn.spacing[0] = st.spacing_g;
+  fn.spacing[1] = st.spacing_h;
+  st.boundary_rows = BoundaryRowLevels(c.store->mesh(), st.cut, st.field->geometry.frames, st.v,
+                                       st.w, fn, c.settings->Number("extraction.corner_angle"),
+                                       c.settings->Number("level_sets.boundary_rows_max_shift"));
+  for (const BoundaryLevel& b : st.boundary_rows.fixed) {
+    *c.store->At(values[b.function], b.wedge) = b.value;
+    c.model->SetConstant(values[b.function], b.wedge);
+  }
+}
+
 // Before the last stage: the level spacings and the rounded jumps. Eq. 6 only
 // asks for the direction of ∇g, eq. 5's smaller weight keeps its size near 1
 // on average, not exactly: the levels are taken at multiples of Δw_g = Δw ·
@@ -307,6 +365,14 @@ void Round(HookContext& c) {
   st.rounded = true;
   st.spacing_g = st.spacing * MeanGradient(c, "level_set_g", st.v);
   st.spacing_h = st.spacing * MeanGradient(c, "level_set_h", st.w);
+  RoundJumpConstants(c);
+  if (c.settings->Bool("level_sets.boundary_rows") && st.spacing_g > 0 && st.spacing_h > 0) {
+    HoldBoundaryRows(c);
+  }
+}
+
+void RoundJumpConstants(HookContext& c) {
+  LevelSetState& st = St(c);
   if (st.cut.chains.empty()) return;
   const int parity = c.settings->String("level_sets.rounding") == "odd" ? 1 : 0;
   for (const auto& [block, orientation, spacing] :
@@ -438,7 +504,18 @@ void FinishLevelSets(HookContext& c) {
                                   {"g_vs_Rv_area_weighted", angle_g[1]},
                                   {"h_vs_Rw_area_weighted", angle_h[1]}};
   d["conjugacy_mean"] = LevelSetConjugacy(c);
-  char line[512];
+  const BoundaryRows& rows = st.boundary_rows;
+  d["boundary_rows"] = {{"on", c.settings->Bool("level_sets.boundary_rows")},
+                        {"loops", rows.loops},
+                        {"corners", rows.corners},
+                        {"runs_g", rows.runs_g},
+                        {"runs_h", rows.runs_h},
+                        {"skipped_runs", rows.skipped_runs},
+                        {"held_wedges", rows.fixed.size()},
+                        {"max_shift_spacings", rows.max_shift},
+                        {"field_angle_mean_deg", rows.angle_mean_deg},
+                        {"field_angle_max_deg", rows.angle_max_deg}};
+  char line[768];
   std::snprintf(line, sizeof line,
                 "level sets: spacing %.4g (file units), %zu cut chains; mean angle ∇g vs Rv "
                 "%.2f°, ∇h vs Rw %.2f°\n",
@@ -471,6 +548,7 @@ void FinishLevelSets(HookContext& c) {
     MetricsOptions metrics_options;
     const Metrics m = ComputeMetrics(x.mesh, c.reference, nullptr, metrics_options);
     const double diagonal = PrincipalBoxDiagonal(mesh);
+    const BoundaryFaceCounts on_boundary = CountBoundaryFaces(x.mesh);
     const int faces = int(x.mesh.number_of_faces());
     nlohmann::json valence = nlohmann::json::object();
     for (const auto& [k, n] : x.interior_valence) valence[std::to_string(k)] = n;
@@ -484,6 +562,9 @@ void FinishLevelSets(HookContext& c) {
         {"pentagons", x.pentagons},
         {"other_faces", x.other_faces},
         {"quad_fraction", faces > 0 ? double(x.quads) / faces : 0.0},
+        {"boundary_faces", on_boundary.boundary_faces},
+        {"boundary_quads_with_edge", on_boundary.quads_on_boundary},
+        {"boundary_quad_fraction", on_boundary.fraction()},
         {"face_degrees", degrees},
         {"interior_valence", valence},
         {"irregular_interior_vertices", x.irregular_interior_vertices.size()},
@@ -510,11 +591,13 @@ void FinishLevelSets(HookContext& c) {
         {"max_jump_correction_spacings", x.max_jump_correction}};
     std::snprintf(line, sizeof line,
                   "layout: %d faces, %d quads (%.1f%%), %d triangles, %d pentagons, %d other; "
+                  "boundary faces %d, quads with an edge on the boundary %.1f%%; "
                   "%zu irregular interior vertices; singularities as irregular vertices or faces "
                   "%d of %zu; distance to the input %.3g%% of the diagonal (Hausdorff %.3g%%); "
                   "δ_PQ,n max %.3e mean %.3e\n",
                   faces, x.quads, faces > 0 ? 100.0 * x.quads / faces : 0.0, x.triangles,
-                  x.pentagons, x.other_faces, x.irregular_interior_vertices.size(), matched,
+                  x.pentagons, x.other_faces, on_boundary.boundary_faces,
+                  100 * on_boundary.fraction(), x.irregular_interior_vertices.size(), matched,
                   st.field->field.singularities.size(), 100 * m.surface_distance_max / diagonal,
                   100 * m.hausdorff / diagonal, m.pq_normalized_max, m.pq_normalized_mean);
     result->headline += line;
@@ -566,7 +649,8 @@ ProblemDecl level_sets() {
   };
   d.init = &InitLevelSets;
   d.stages = [](const Settings&) {
-    const std::vector<std::string> jumps = {"level_set_jump", "level_set_branch_point"};
+    const std::vector<std::string> jumps = {"level_set_jump", "level_set_branch_point",
+                                            "level_set_boundary"};
     Stage eq5;
     eq5.name = "eq5";
     eq5.rounds_key = "level_sets.rounds";
