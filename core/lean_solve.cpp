@@ -394,7 +394,10 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
     if (direct) {
       // Not positive definite: no step; it is rejected and the damping
       // grows, as after Ceres' linear solver failure.
-      if (!kept.cholesky) kept.cholesky = std::make_shared<NormalCholesky>(kept);
+      if (!kept.cholesky) {
+        kept.cholesky = std::make_shared<NormalCholesky>(kept);
+        ++out.analyses;
+      }
       solved = kept.cholesky->Solve(kept, damping, gradient, &delta);
       if (!solved) delta.setZero(gradient.size());
     } else {

@@ -116,6 +116,7 @@ struct SolveSummary {
   bool cholesky = false;  // solved by LeanSolve with sparse Cholesky steps
   int iterations = 0;  // accepted and rejected steps, as Ceres counts them
   int cg_iterations = 0;
+  int analyses = 0;  // sparse Cholesky analyses made (ordering, symbolic factorisation)
   double seconds = 0, linear_solver_seconds = 0, jacobian_seconds = 0, residual_seconds = 0;
   double initial_cost = 0, final_cost = 0;  // ½ Σ ρ(‖r‖²)
   bool usable = true;

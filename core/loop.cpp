@@ -192,6 +192,7 @@ class Loop {
   }
 
   LoopResult Run() {
+    result_.weight_scale = scale_;
     LogInput();
     last_valid_ = model_.SaveState();
     for (const Stage& stage : stages_) {
@@ -322,6 +323,7 @@ class Loop {
     }
     RoundLog row = Log(stage, plan, step, before, undo_before);
     row.seconds = SecondsSince(round_start);
+    result_.weight_scale = row.weight_scale;
     result_.log.push_back(row);
     Report(label, row, Where(stage, plan, k));
     if (Stopping()) {
@@ -392,7 +394,7 @@ class Loop {
     SolveSummary summary;
     if (residuals_.NumResiduals() > 0) {
       CheckSolverFits(solver);
-      summary = SolveRound(solver, how_, residuals_, &pattern_);
+      summary = SolveRound(solver, how_, residuals_, pattern_);
     }
     model_.StateChanged();
     return Account(summary);
@@ -431,6 +433,7 @@ class Loop {
       result_.cg_iterations += summary.cg_iterations;
     }
     result_.cholesky_rounds += summary.cholesky;
+    result_.cholesky_analyses += summary.analyses;
     StepResult step;
     step.iterations = summary.iterations;
     step.cost = summary.final_cost;
@@ -651,13 +654,16 @@ class Loop {
   std::vector<Tolerance> all_bounds_;  // of every stage
   const Clock::time_point start_ = Clock::now();
   LoopResult result_;
-  double scale_ = 1;  // continuation, carried from stage to stage
+  double scale_ = options_.weight_scale;  // continuation, carried from stage to stage
   // The last state that passed the validity checks (round 0: the input).
   std::vector<double> last_valid_;
   int last_valid_round_ = 0;
   Residuals residuals_;  // the last round's
   bool built_ = false;
-  NormalPattern pattern_;  // PCG rounds' pattern of J^T J, reused while it fits
+  NormalPattern own_pattern_;
+  // LeanSolve's pattern of J^T J (and its Cholesky analysis), reused while it
+  // fits: LoopOptions::pattern, else own_pattern_.
+  NormalPattern* const pattern_ = options_.pattern ? options_.pattern : &own_pattern_;
   int round_number_ = 0;
   // The current stage's best round (keep_best) and patience.
   double best_ = 0;

@@ -36,6 +36,8 @@
 
 namespace archgeo {
 
+struct NormalPattern;  // core/normal_equations.h
+
 // A term as the loop activates it for one round.
 struct ActiveTerm {
   const TermSpec* spec = nullptr;
@@ -103,6 +105,10 @@ struct LoopResult {
   int pcg_rounds = 0;     // rounds solved by LeanSolve (solver.pcg_above)
   int cg_iterations = 0;  // their conjugate-gradient steps
   int cholesky_rounds = 0;  // rounds solved by LeanSolve's Cholesky steps (solver.back_end)
+  // Orderings and symbolic factorisations those rounds made: one per new
+  // structure of the residuals (0 when a kept pattern, LoopOptions::pattern,
+  // fits every round).
+  int cholesky_analyses = 0;
   std::map<std::string, double> objective;  // ½ Σ w r² per part and "total", final state
   std::map<std::string, double> seconds;    // "solver" (Ceres or PCG), "linear_solver", "jacobian",
                                             // "residual", "projection"
@@ -118,6 +124,7 @@ struct LoopResult {
   bool restored_valid = false;              // the last round was invalid: the output is
                                             // the last valid round (output_round)
   bool stopped = false;                     // LoopOptions::stop ended the run
+  double weight_scale = 1;                  // the continuation's scale in the last round run
 };
 
 struct LoopOptions {
@@ -129,6 +136,15 @@ struct LoopOptions {
   // round or stage runs, and the output is the last valid state (as
   // validity.keep_last_valid, whatever its value). Null: never stops.
   const std::atomic<bool>* stop = nullptr;
+  // The pattern of J^T J and its Cholesky analysis (core/normal_equations.h),
+  // kept beyond this run when given (a session's re-solves on the same
+  // store: while the residuals keep their structure, no run analyses it
+  // again). Null: the run's own.
+  NormalPattern* pattern = nullptr;
+  // The continuation's scale of the weights at the start (Stage::continued):
+  // 1 for a solve from its input; a session's re-solve starts at the scale
+  // its last solve ended with (LoopResult::weight_scale).
+  double weight_scale = 1;
 };
 
 // Runs `declaration` on `model`. Never throws for a failed solve (see
