@@ -34,6 +34,7 @@
 #include "problems/report/picture.h"
 #include "problems/runtime/model.h"
 #include "problems/report/report.h"
+#include "problems/runtime/session.h"
 #include "problems/runtime/solve.h"
 
 namespace archgeo {
@@ -253,10 +254,13 @@ MeasuredValidity ValidityAsMeasured(const Mesh& mesh, const Mesh* reference,
 // report's `seconds`.
 class SpecRun {
  public:
+  // `session` (may be null): solves it (SolveSession::Run) instead of
+  // Solve; its start is the mesh and its reference (or first mesh, once it
+  // has solved) the reference.
   SpecRun(const ProblemSpec& spec, const ProgressSink& progress, const MeshInputs& meshes,
-          const std::atomic<bool>* stop)
+          const std::atomic<bool>* stop, SolveSession* session = nullptr)
       : spec_(spec), s_(spec.settings), d_(*spec.declaration), progress_(progress),
-        meshes_(meshes), stop_(stop) {}
+        meshes_(meshes), stop_(stop), session_(session) {}
 
   RunResult Run() {
     StageOutputs();
@@ -306,6 +310,18 @@ class SpecRun {
 
   void ReadInputs() {
     const ReadLimits limits = LimitsOfSpec(s_);
+    if (session_) {
+      read_ = session_->start();
+      info_.format = "memory";
+      const Mesh* reference = session_->reference();
+      if (reference) {
+        reference_mesh_ = std::make_unique<Mesh>(*reference);
+      } else if (session_->solved()) {
+        reference_mesh_ = std::make_unique<Mesh>(session_->first());
+      }
+      seconds_["read"] = SecondsSince(start_);
+      return;
+    }
     read_ = d_.makes_input ? Mesh()
             : meshes_.mesh ? *meshes_.mesh
                            : ReadMesh(spec_.mesh(), &info_, limits);
@@ -325,7 +341,12 @@ class SpecRun {
   // LocalFrame) and its lengths reported in file units.
   void SolveAndMeasureInput() {
     const auto solve_start = Clock::now();
-    solution_ = Solve(spec_, read_, reference_mesh_.get(), progress_, stop_);
+    if (session_) {
+      solution_ = &session_->Run(progress_, stop_);
+    } else {
+      owned_ = Solve(spec_, read_, reference_mesh_.get(), progress_, stop_);
+      solution_ = owned_.get();
+    }
     solve_seconds_ = SecondsSince(solve_start);
     seconds_["solve"] = solve_seconds_;
     local_ = LocalFrame(solution_->input);
@@ -398,6 +419,7 @@ class SpecRun {
     rep["variables"] = solved.variables;
     rep["residuals"] = solved.residuals;
     rep["cholesky_rounds"] = solved.cholesky_rounds;
+    rep["cholesky_analyses"] = solved.cholesky_analyses;
     rep["pcg"] = {{"rounds", solved.pcg_rounds}, {"cg_iterations", solved.cg_iterations}};
     rep["iterations"] = {{"outer", solved.rounds}, {"inner", solved.iterations}};
     rep["objective"] = solved.objective;
@@ -819,7 +841,9 @@ class SpecRun {
   ReadInfo info_;
   Mesh read_;
   std::unique_ptr<Mesh> reference_mesh_;
-  std::unique_ptr<Solution> solution_;
+  SolveSession* session_;
+  std::unique_ptr<Solution> owned_;  // Solve's (no session)
+  Solution* solution_ = nullptr;
   Similarity local_;    // the frame input_ and output_ are measured in
   Mesh input_, output_;  // the solution's input and output in local_
   std::future<Validity> validity_check_;
@@ -853,6 +877,20 @@ RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const M
   CHECK(spec.declaration) << "RunSpec: the spec has no problem (use ReadSpec)";
   SolverOptions(spec.settings);  // a combination Ceres rejects fails before any work
   return SpecRun(spec, progress, meshes, stop).Run();
+}
+
+RunResult RunSession(SolveSession& session, const ProgressSink& progress,
+                     const std::atomic<bool>* stop) {
+  ConfigureThreading();
+  RunResult run;
+  try {
+    run = SpecRun(session.spec(), progress, MeshInputs{}, stop, &session).Run();
+  } catch (...) {
+    if (session.solved()) session.Keep(false);
+    throw;
+  }
+  session.Keep(run.exit_code == 0 || run.exit_code == 4 || run.exit_code == 5);
+  return run;
 }
 
 RunResult MeasureFiles(const std::string& mesh_path, const std::string& reference_path,

@@ -43,6 +43,17 @@ struct MeshInputs;
 RunResult RunSpec(const ProblemSpec& spec, const ProgressSink& progress, const MeshInputs& meshes,
                   const std::atomic<bool>* stop = nullptr);
 
+// One solve of `session` (problems/runtime/session.h) as RunSpec runs the
+// spec: the same validity checks, measures, report, exit codes and outputs
+// of the spec; the mesh solved is the session's start, measured against its
+// reference (the first mesh when none was given, once the session has
+// solved). A result that is written (exit 0, 4, 5) becomes the start of the
+// next solve (SolveSession::Keep: session.start() is then that result).
+// Throws InputError.
+class SolveSession;
+RunResult RunSession(SolveSession& session, const ProgressSink& progress,
+                     const std::atomic<bool>* stop = nullptr);
+
 // `archgeo measure`: metrics of `mesh_path`, against `reference_path` if not
 // empty (displacement too when the vertex counts agree). `arrays`: the report
 // gets "arrays" as output.arrays gives a solve's (per-face planarity, the

@@ -180,6 +180,10 @@ ProblemDecl CustomProblem(const CustomValue* terms, const std::string& file) {
   d.keys.push_back(NumberKey("continuation.factor", 10, 1, 1e6,
                              "weight growth of the terms driving a tolerance, per round short "
                              "of it"));
+  d.keys.push_back(NumberKey("continuation.start", 1, 1, 1e30,
+                             "scale of the continued weights (planarity, barriers) in the first round; it grows by "
+                             "continuation.factor per round short of the tolerance. A session's re-solve "
+                             "(archgeo::Session) starts at the scale its last solve ended with"));
   d.keys.push_back(NumberKey("continuation.band", 0, 0, 1,
                              "a pq_diagonal/face_planarity residual within band × tolerance "
                              "costs nothing"));

@@ -103,6 +103,10 @@ ProblemDecl PlanarQuadsGoals() {
                 "less movement for a loose tolerance"),
       NumberKey("continuation.factor", 10, 1, 1e6,
                 "planarity weight growth per round that ends short of the tolerance"),
+      NumberKey("continuation.start", 1, 1, 1e30,
+                "scale of the continued weights (planarity, barriers) in the first round; it grows by "
+                "continuation.factor per round short of the tolerance. A session's re-solve "
+                "(archgeo::Session) starts at the scale its last solve ended with"),
       NumberKey("stall.fraction", 0.01, 0, 1,
                 "stall: the run ends (exit 4: the tolerance is missed) once stall.rounds "
                 "rounds in a row have not lowered the best valid max δ_PQ,n by more than "

@@ -255,10 +255,38 @@ MeshModel::MeshModel(const ProblemDecl& declaration, std::vector<const TermSpec*
     : declaration_(declaration), terms_(std::move(terms)), hooks_(hooks), store_(*hooks.store) {
   hooks_.model = this;
   const Mesh& mesh = store_.mesh();
-  const size_t n = mesh.number_of_vertices();
-  if (hooks_.fixed.size() != n) hooks_.fixed.assign(n, false);
+  if (hooks_.fixed.size() != mesh.number_of_vertices()) hooks_.fixed.assign(mesh.number_of_vertices(), false);
   boundary_ = BoundaryVertices(mesh);
-  box_diagonal_ = mesh.number_of_vertices() > 0 ? PrincipalBoxDiagonal(mesh) : 0.0;
+  for (const TermSpec* t : terms_) {
+    views_[t->name] = std::make_unique<View>(*this, *t);
+  }
+  // Blocks: the declaration's, then those of every term (declared even when
+  // the term is off: another term may read them).
+  for (const BlockDecl& b : declaration_.blocks) store_.Declare(b);
+  for (const TermSpec* t : terms_) {
+    for (const BlockDecl& b : t->declares) store_.Declare(b);
+  }
+  Start();
+}
+
+void MeshModel::Restart() {
+  // Every block back to zero, as declared on a new store: the inits set
+  // what they set on a new model (some only a block still zero, e.g. the
+  // plane normals two terms share).
+  std::vector<double> state = store_.Save();
+  std::fill(state.begin() + long(3 * store_.mesh().number_of_vertices()), state.end(), 0.0);
+  store_.Restore(state);
+  // Selections may read positions (problems/spec/selection.h): made anew.
+  selected_.clear();
+  subsets_.clear();
+  StateChanged();
+  Start();
+}
+
+void MeshModel::Start() {
+  const Mesh& mesh = store_.mesh();
+  const size_t n = mesh.number_of_vertices();
+  box_diagonal_ = n > 0 ? PrincipalBoxDiagonal(mesh) : 0.0;
   start_ = mesh;
   original_.resize(3 * n);
   for (VertexIndex v : mesh.vertices()) {
@@ -269,15 +297,6 @@ MeshModel::MeshModel(const ProblemDecl& declaration, std::vector<const TermSpec*
   }
   previous_ = original_;
   ComputeVertexNormals();
-  for (const TermSpec* t : terms_) {
-    views_[t->name] = std::make_unique<View>(*this, *t);
-  }
-  // Blocks: the declaration's, then those of every term (declared even when
-  // the term is off: another term may read them).
-  for (const BlockDecl& b : declaration_.blocks) store_.Declare(b);
-  for (const TermSpec* t : terms_) {
-    for (const BlockDecl& b : t->declares) store_.Declare(b);
-  }
   if (declaration_.init) declaration_.init(hooks_);
   for (const TermSpec* t : terms_) {
     if (!t->init) continue;

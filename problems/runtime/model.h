@@ -138,6 +138,14 @@ class MeshModel : public Model {
             HookContext& hooks);
   ~MeshModel() override;
 
+  // A new solve on the same store (a session's re-solve): the current state
+  // becomes the start — the original positions (anchor, fairness relative to
+  // the original), the validity checks' reference, the guard's box — and the
+  // declaration's and the terms' `init` run again on blocks set to zero, as
+  // for a new model. The element sets, the blocks' declarations and the
+  // fixed vertices stay.
+  void Restart();
+
   void BeginRound(bool project) override;
   void Build(const std::vector<ActiveTerm>& terms, int round, Residuals& residuals) override;
   int Guard(double bound_relative) override;
@@ -167,6 +175,7 @@ class MeshModel : public Model {
  private:
   class View;
   friend class View;
+  void Start();  // the constructor's and Restart's start of a solve
   void ComputeVertexNormals();
   bool IsConstant(const double* block) const;
 

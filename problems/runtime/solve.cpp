@@ -100,11 +100,12 @@ void CheckInput(const ProblemDecl& d, const Mesh& mesh, const std::string& path)
   }
 }
 
-// `solved` (canonical frame) in file units: on a copy of the input when the
-// topology is the input's, else rebuilt from positions and faces. A vertex of
-// the input that did not move (its canonical position is bit for bit the one
-// it started from, `start`) keeps its exact file coordinates: fixed supports
-// do not drift by the rounding of the frame change.
+}  // namespace
+
+double ContinuationStart(const Settings& s) {
+  return s.schema().Find("continuation.start") ? s.Number("continuation.start") : 1.0;
+}
+
 Mesh InFileFrame(const Mesh& input, const Mesh& solved, const Mesh& start,
                  const Similarity& frame) {
   Mesh out;
@@ -129,10 +130,9 @@ Mesh InFileFrame(const Mesh& input, const Mesh& solved, const Mesh& start,
   return out;
 }
 
-}  // namespace
-
 std::unique_ptr<Solution> Solve(const ProblemSpec& spec, const Mesh& mesh, const Mesh* reference,
-                                const ProgressSink& progress, const std::atomic<bool>* stop) {
+                                const ProgressSink& progress, const std::atomic<bool>* stop,
+                                NormalPattern* pattern) {
   CHECK(spec.declaration) << "Solve: the spec has no problem (use ReadSpec)";
   const ProblemDecl& d = *spec.declaration;
   const Settings& s = spec.settings;
@@ -249,6 +249,8 @@ std::unique_ptr<Solution> Solve(const ProblemSpec& spec, const Mesh& mesh, const
     options.terms = terms;
     options.progress = progress;
     options.stop = stop;
+    if (level == levels) options.pattern = pattern;
+    options.weight_scale = ContinuationStart(s);
     solved = RunLoop(d, options, *sol->model);
     fixed = hooks.fixed;
     work = sol->store->mesh();
@@ -276,6 +278,8 @@ std::unique_ptr<Solution> Solve(const ProblemSpec& spec, const Mesh& mesh, const
   solved.iterations = iterations;
   solved.seconds = seconds;
   hooks.RecordChecks(true);
+  sol->input_details = hooks.details;
+  sol->input_headline = hooks.headline;
   hooks.loop = &solved;
   if (solved.usable && d.finish) d.finish(hooks);
   sol->details = hooks.details;

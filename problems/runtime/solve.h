@@ -36,6 +36,11 @@ struct Solution {
   nlohmann::json levels = nlohmann::json::array();  // one entry per level
   nlohmann::json details = nlohmann::json::object();  // the problem's report entries
   std::string headline;   // the problem's lines for the terminal
+  // What the `net` hook and its input checks recorded (details and headline
+  // before `finish`): a re-solve on the same net (problems/runtime/session.h)
+  // starts from them.
+  nlohmann::json input_details = nlohmann::json::object();
+  std::string input_headline;
   std::unique_ptr<ReferenceSurface> reference;  // canonical frame
   std::unique_ptr<MeshModel> model;             // the last level's
 };
@@ -45,9 +50,23 @@ struct Solution {
 // surface, for a net the problem made from it (Solution::on_design), else the
 // net itself).
 // `stop` (may be null): LoopOptions::stop; a stop also ends multiresolution
-// before its next level. Throws InputError for unsuitable input.
+// before its next level. `pattern` (may be null): LoopOptions::pattern of
+// the last level. Throws InputError for unsuitable input.
 std::unique_ptr<Solution> Solve(const ProblemSpec& spec, const Mesh& mesh, const Mesh* reference,
                                 const ProgressSink& progress,
-                                const std::atomic<bool>* stop = nullptr);
+                                const std::atomic<bool>* stop = nullptr,
+                                NormalPattern* pattern = nullptr);
+
+// LoopOptions::weight_scale of the settings: `continuation.start` where the
+// problem has it, else 1.
+double ContinuationStart(const Settings& settings);
+
+// `solved` (canonical frame) in file units: on a copy of `input` (file
+// units) when the topology is the input's, else rebuilt from positions and
+// faces. A vertex of the input that did not move (its canonical position is
+// bit for bit the one it started from, `start`) keeps its exact file
+// coordinates: fixed supports do not drift by the rounding of the frame
+// change.
+Mesh InFileFrame(const Mesh& input, const Mesh& solved, const Mesh& start, const Similarity& frame);
 
 }  // namespace archgeo
