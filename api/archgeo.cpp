@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <cctype>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -19,6 +20,7 @@
 #include "problems/declarations/registry.h"
 #include "problems/commands/run.h"
 #include "problems/runtime/mesh_inputs.h"
+#include "problems/runtime/session.h"
 #include "problems/spec/schema.h"
 #include "problems/spec/spec.h"
 
@@ -159,6 +161,62 @@ SolveResult SolveFile(const std::string& spec_path, const std::vector<std::strin
     return FromRun(run, output);
   });
 }
+
+struct Session::Impl {
+  std::unique_ptr<SolveSession> session;
+};
+
+Session::Session(const std::string& spec_yaml, const MeshData& mesh, const MeshData* reference,
+                 const std::vector<std::string>& overrides, const std::string& spec_name) {
+  QuietLogging();
+  Translated([&] {
+    ProblemSpec spec = ParseSpec(spec_yaml, spec_name, overrides);
+    std::unique_ptr<archgeo::Mesh> ref;
+    if (reference) ref = std::make_unique<archgeo::Mesh>(ToMesh(*reference, "<reference>"));
+    // No mesh: the spec's `mesh` file.
+    const bool none = mesh.vertices.empty() && mesh.faces.empty();
+    archgeo::Mesh input = none ? ReadMesh(spec.mesh()) : ToMesh(mesh, "<mesh>");
+    impl_ = std::make_unique<Impl>();
+    impl_->session =
+        std::make_unique<SolveSession>(std::move(spec), std::move(input), std::move(ref));
+  });
+}
+
+Session::~Session() = default;
+Session::Session(Session&&) noexcept = default;
+Session& Session::operator=(Session&&) noexcept = default;
+
+SolveResult Session::Solve(const SolveControl& control) {
+  return Translated([&] {
+    SolveSession& session = *impl_->session;
+    const RunResult run = RunSession(session, SinkOf(control), control.stop);
+    return FromRun(run, session.start());  // a result written is the next start
+  });
+}
+
+void Session::MoveVertices(const std::vector<int>& ids,
+                           const std::vector<std::array<double, 3>>& positions) {
+  if (ids.size() != positions.size()) {
+    throw std::invalid_argument("Session::MoveVertices: " + std::to_string(ids.size()) +
+                                " vertex ids for " + std::to_string(positions.size()) +
+                                " positions");
+  }
+  Translated([&] {
+    const std::vector<long long> vertices(ids.begin(), ids.end());
+    const std::vector<Vec3> points(positions.begin(), positions.end());
+    impl_->session->Move(vertices, points);
+  });
+}
+
+void Session::SetWeight(const std::string& term, double weight) {
+  Translated([&] { impl_->session->SetWeight(term, weight); });
+}
+
+double Session::Weight(const std::string& term) const {
+  return Translated([&] { return impl_->session->Weight(term); });
+}
+
+MeshData Session::Current() const { return ToData(impl_->session->start()); }
 
 std::string Measure(const MeshData& mesh, const MeshData* reference, bool arrays) {
   QuietLogging();

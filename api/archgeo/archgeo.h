@@ -18,6 +18,7 @@
 #include <atomic>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -101,6 +102,69 @@ SolveResult Solve(const std::string& spec_yaml, const MeshData& mesh,
                   const MeshData* reference = nullptr,
                   const std::vector<std::string>& overrides = {},
                   const std::string& spec_name = "<spec>", const SolveControl& control = {});
+
+// A problem kept for solving again, for interaction: drag a few vertices or
+// change a term weight, solve to tolerance from the last solution.
+//
+//   archgeo::Session session("problem: planar_quads\nfixed: boundary\n", mesh);
+//   archgeo::SolveResult r = session.Solve();          // as Solve
+//   session.MoveVertices({17}, {{1.0, 2.0, 0.3}});      // a boundary vertex, file units
+//   r = session.Solve();                               // from the last solution
+//
+// The first Solve is Solve(spec_yaml, mesh, reference, overrides, spec_name).
+// After it the session keeps the problem: the spec, the mesh's variables and
+// element sets, the reference surface (`reference`, else `mesh` itself), and
+// the pattern of the normal equations with its sparse Cholesky analysis; a
+// later Solve reads and builds none of them again and, while the same
+// vertices are fixed and the same terms on, analyses no new structure. Each
+// later Solve starts from the last result written (status 0, 4 or 5; after a
+// status 3 from where that solve started) with the vertices moved since,
+// and is the solve of that mesh against the session's reference: the same
+// terms (anchor and fairness relative to that start), schedule, tolerance
+// stops, validity checks, SolveResult, report and the spec's outputs as
+// Solve(spec_yaml, start, reference or mesh) with `continuation.start` set
+// to the weight scale the last solve ended with (planar_quads, custom: the
+// planarity weights and barriers start where they made the last result
+// planar, instead of growing from 1 again over several rounds; the report's
+// settings give the value). Only its frame (the canonical frame of the
+// first mesh, mesh/similarity.h) is the session's.
+// A session takes a problem that solves the mesh it is given (not hnet's
+// derived net, relayout: auto or a problem that makes its own net) without
+// multiresolution; others throw Error. Not thread-safe: one call at a time.
+class Session {
+ public:
+  // Parses and checks the spec and the meshes as Solve does (throws Error);
+  // solves nothing yet. An empty `mesh`: the spec's `mesh` file (read with
+  // the readers' default limits).
+  Session(const std::string& spec_yaml, const MeshData& mesh, const MeshData* reference = nullptr,
+          const std::vector<std::string>& overrides = {},
+          const std::string& spec_name = "<spec>");
+  ~Session();
+  Session(Session&&) noexcept;
+  Session& operator=(Session&&) noexcept;
+
+  // Solves (see above). `control` as Solve's.
+  SolveResult Solve(const SolveControl& control = {});
+  // Vertex ids[i] (0-based, the mesh's order) to positions[i] (file units)
+  // for the next Solve: a fixed vertex (the spec's `fixed`) stays there, a
+  // free one starts there. Throws Error (key "vertex": an index out of range,
+  // a non-finite position; nothing moves then) or std::invalid_argument when
+  // the two lists differ in length.
+  void MoveVertices(const std::vector<int>& ids,
+                    const std::vector<std::array<double, 3>>& positions);
+  // terms.<term>.weight for the next Solves. Throws Error (key "terms": not a
+  // term of the problem; the key itself: out of its range).
+  void SetWeight(const std::string& term, double weight);
+  // The weight terms.<term>.weight has now. Throws Error as SetWeight.
+  double Weight(const std::string& term) const;
+  // The mesh the next Solve starts from (file units): the last result
+  // written with the moves since (before the first Solve: `mesh`, moved).
+  MeshData Current() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 // `archgeo solve SPEC.yaml --set ...`: the spec's files, the result read back.
 SolveResult SolveFile(const std::string& spec_path, const std::vector<std::string>& overrides = {},
