@@ -13,6 +13,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "archgeo/archgeo.h"
@@ -272,6 +273,57 @@ PYBIND11_MODULE(_archgeo, m) {
       py::arg("scale") = 1.0, py::arg("seed") = 1u, py::arg("refinement") = 1,
       "An analytic test mesh as (V, F), as `archgeo generate` (see its --help for the "
       "surfaces; noise None: the surface's default).");
+  py::class_<archgeo::Session>(m, "Session",
+                                "archgeo::Session on numpy arrays (use archgeo.Session).")
+      .def(py::init([](const std::string& text, const std::string& name, const py::handle& v,
+                       const py::handle& f, const py::handle& ref_v, const py::handle& ref_f,
+                       const std::vector<std::string>& overrides) {
+             const archgeo::MeshData mesh = Optional(v, f).value_or(archgeo::MeshData{});
+             const std::optional<archgeo::MeshData> ref = Optional(ref_v, ref_f);
+             py::gil_scoped_release release;
+             return archgeo::Session(text, mesh, ref ? &*ref : nullptr, overrides, name);
+           }),
+           py::arg("text"), py::arg("name"), py::arg("V"), py::arg("F"), py::arg("reference_V"),
+           py::arg("reference_F"), py::arg("overrides"))
+      .def(
+          "solve",
+          [](archgeo::Session& session, const py::object& on_event) {
+            return GuardedSolve(on_event).Run(
+                [&](const archgeo::SolveControl& control) { return session.Solve(control); });
+          },
+          py::arg("on_event"), "archgeo::Session::Solve; returns as solve.")
+      .def(
+          "move",
+          [](archgeo::Session& session, const py::handle& ids, const py::handle& positions) {
+            const auto i = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(ids);
+            const auto p =
+                py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(positions);
+            if (!i || i.ndim() != 1) throw py::value_error("ids must be a sequence of vertex indices");
+            if (!p || p.ndim() != 2 || p.shape(1) != 3 || p.shape(0) != i.shape(0)) {
+              throw py::value_error("positions must be an (n, 3) array, one row per vertex id");
+            }
+            std::vector<int> vertices;
+            std::vector<std::array<double, 3>> points;
+            const auto iv = i.unchecked<1>();
+            const auto pv = p.unchecked<2>();
+            for (py::ssize_t k = 0; k < iv.shape(0); ++k) {
+              const long long id = iv(k);
+              if (id < std::numeric_limits<int>::min() || id > std::numeric_limits<int>::max()) {
+                throw archgeo::Error("vertex index " + std::to_string(id) + " out of range",
+                                     "<session>", 0, "vertex");
+              }
+              vertices.push_back(int(id));
+              points.push_back({pv(k, 0), pv(k, 1), pv(k, 2)});
+            }
+            session.MoveVertices(vertices, points);
+          },
+          py::arg("ids"), py::arg("positions"), "archgeo::Session::MoveVertices.")
+      .def("set_weight", &archgeo::Session::SetWeight, py::arg("term"), py::arg("weight"),
+           "archgeo::Session::SetWeight.")
+      .def("weight", &archgeo::Session::Weight, py::arg("term"), "archgeo::Session::Weight.")
+      .def(
+          "current", [](const archgeo::Session& session) { return MeshTuple(session.Current()); },
+          "archgeo::Session::Current: (V, F).");
   m.def("problems", &archgeo::Problems, "The problem names.");
   m.def("keys", &archgeo::ProblemKeys, py::arg("problem"),
         "A problem's spec keys as JSON text: [{name, default, doc}, ...].");

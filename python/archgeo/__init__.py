@@ -26,7 +26,7 @@ os.environ.setdefault("OMP_WAIT_POLICY", "passive")
 from . import _archgeo  # noqa: E402
 from ._archgeo import STOP, InputError, __version__, generate, problems
 
-__all__ = ["STOP", "InputError", "NoValidResult", "Result", "solve", "measure", "read_mesh",
+__all__ = ["STOP", "InputError", "NoValidResult", "Result", "Session", "solve", "measure", "read_mesh",
            "write_mesh", "from_compas", "to_compas", "generate", "problems", "keys",
            "__version__"]
 
@@ -203,6 +203,88 @@ def _result(answer):
         raise NoValidResult(result.report.get("message", "no valid result") + "\n" + summary,
                             result)
     return result
+
+
+class Session:
+    """A problem kept for solving again: drag a few vertices or change a term
+    weight, then solve to tolerance from the last solution.
+
+        session = archgeo.Session({"problem": "planar_quads", "fixed": "boundary"}, V, F)
+        result = session.solve()                 # as archgeo.solve
+        session.move([17], [[1.0, 2.0, 0.3]])    # a boundary vertex, file units
+        result = session.solve()                 # from the last solution
+
+    spec, V, F, reference and **keys as archgeo.solve (a spec path's `mesh`
+    file when V is None). The first solve() is archgeo.solve(spec, V, F,
+    reference=reference, **keys). After it the session keeps the problem: the
+    spec, the mesh's variables and element sets, the reference surface
+    (`reference`, else the first mesh) and the pattern of the normal
+    equations with its sparse Cholesky analysis; a later solve() reads and
+    sets up none of them again and, while the same vertices are fixed and
+    the same terms on, analyses no new structure. Each later solve() starts
+    from the last result returned (after a NoValidResult: from where that
+    solve started) with the vertices moved since, and is the solve of that
+    mesh against the session's reference: the same terms (anchor and
+    fairness relative to that start), schedule, tolerance stops, validity
+    checks, Result and spec outputs as archgeo.solve(spec, V_start, F,
+    reference=reference or the first mesh). Only its frame is the first
+    mesh's.
+
+    Problems that solve a net of their own (hnet, relayout: "auto", grid)
+    and multiresolution are refused (InputError). One call at a time.
+    """
+
+    def __init__(self, spec, V=None, F=None, *, reference=None, **keys):
+        overrides = _overrides("", keys, ["output.arrays=true"])
+        V, F = _mesh(V, F)
+        if isinstance(spec, dict):
+            text, name = json.dumps(spec), "<spec>"
+        elif _is_spec_path(spec):
+            with open(spec, encoding="utf-8") as f:
+                text, name = f.read(), spec
+        else:
+            text, name = spec, "<spec>"
+        if isinstance(reference, tuple):
+            ref_V, ref_F = _mesh(reference[0], reference[1])
+        else:
+            ref_V, ref_F = _mesh(reference, None)
+        self._session = _archgeo.Session(text, name, V, F, ref_V, ref_F, overrides)
+
+    def solve(self, on_iteration=None):
+        """Solves (see the class) and returns a Result; on_iteration, Ctrl-C
+        and the exceptions as archgeo.solve."""
+        return _result(self._session.solve(on_iteration))
+
+    def move(self, ids, positions):
+        """Puts vertices ids[i] (0-based) at positions[i] ((n, 3), file units)
+        for the next solve(): a fixed vertex (the spec's `fixed`) stays
+        there, a free one starts there. Raises InputError (key "vertex") for
+        an index out of range or a non-finite position; nothing moves then."""
+        ids = np.atleast_1d(np.asarray(ids))
+        if ids.size and not np.issubdtype(ids.dtype, np.integer):
+            raise _input_error("vertex ids must be integers", "vertex")
+        positions = np.asarray(positions, dtype=float).reshape(-1, 3)
+        self._session.move(ids.astype(np.int64), positions)
+
+    def set_weight(self, term, weight):
+        """terms.<term>.weight for the next solve()s. Raises InputError for a
+        term the problem does not have (key "terms") or a weight out of the
+        key's range."""
+        self._session.set_weight(term, float(weight))
+
+    def weight(self, term):
+        """The weight terms.<term>.weight has now."""
+        return self._session.weight(term)
+
+    @property
+    def V(self):
+        """(n, 3): the vertices the next solve() starts from (file units)."""
+        return self._session.current()[0]
+
+    @property
+    def F(self):
+        """The faces of V."""
+        return self._session.current()[1]
 
 
 def measure(V, F=None, reference=None):
