@@ -469,6 +469,7 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
       if (small_step) break;
     }
   }
+  out.trust_region_radius = radius;
   out.final_cost = cost;
   out.seconds = SecondsSince(start);
   return out;

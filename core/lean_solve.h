@@ -119,6 +119,7 @@ struct SolveSummary {
   int analyses = 0;  // sparse Cholesky analyses made (ordering, symbolic factorisation)
   double seconds = 0, linear_solver_seconds = 0, jacobian_seconds = 0, residual_seconds = 0;
   double initial_cost = 0, final_cost = 0;  // ½ Σ ρ(‖r‖²)
+  double trust_region_radius = 0;  // LeanSolve's at the end (0: Ceres solved it)
   bool usable = true;
   std::string message;
   bool terminated_by_callback = false;

@@ -434,6 +434,7 @@ class Loop {
     }
     result_.cholesky_rounds += summary.cholesky;
     result_.cholesky_analyses += summary.analyses;
+    if (summary.trust_region_radius > 0) result_.trust_region_radius = summary.trust_region_radius;
     StepResult step;
     step.iterations = summary.iterations;
     step.cost = summary.final_cost;

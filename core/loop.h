@@ -125,6 +125,8 @@ struct LoopResult {
                                             // the last valid round (output_round)
   bool stopped = false;                     // LoopOptions::stop ended the run
   double weight_scale = 1;                  // the continuation's scale in the last round run
+  double trust_region_radius = 0;           // LeanSolve's at the end of the last round it
+                                            // solved (0: none)
 };
 
 struct LoopOptions {

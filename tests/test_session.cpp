@@ -122,12 +122,17 @@ void ExpectPlanarAndValid(const archgeo::SolveResult& r) {
   EXPECT_TRUE(rep["tolerances"]["tolerance.surface_distance_max"]["met"].get<bool>());
 }
 
-// The weight scale a session's solve started its continuation at.
-std::string ContinuationStart(const archgeo::SolveResult& r) {
-  char text[64];
-  std::snprintf(text, sizeof text, "continuation.start=%.17g",
-                Report(r)["settings"]["continuation"]["start"].get<double>());
-  return text;
+// What a session's solve started from besides the mesh: the continuation's
+// weight scale and the trust region the last solve ended with (its report's
+// settings), as --set arguments.
+std::vector<std::string> WarmStart(const archgeo::SolveResult& r) {
+  const nlohmann::json settings = Report(r)["settings"];
+  char scale[64], radius[80];
+  std::snprintf(scale, sizeof scale, "continuation.start=%.17g",
+                settings["continuation"]["start"].get<double>());
+  std::snprintf(radius, sizeof radius, "solver.initial_trust_region_radius=%.17g",
+                settings["solver"]["initial_trust_region_radius"].get<double>());
+  return {scale, radius};
 }
 
 TEST(Session, WarmSolveAfterAMoveIsTheColdSolveOfTheSameStart) {
@@ -164,11 +169,12 @@ TEST(Session, WarmSolveAfterAMoveIsTheColdSolveOfTheSameStart) {
   // The cold solve of the same start against the same reference (the first
   // mesh), the same vertices fixed.
   // The warm solve starts the weights where the first solve's rounds left
-  // them (continuation.start, in its report's settings).
+  // them (continuation.start, in its report's settings), and its trust
+  // region where the first solve's last round left it.
   EXPECT_GT(Report(warm)["settings"]["continuation"]["start"].get<double>(), 1.0);
   EXPECT_EQ(Report(warm)["rounds"][1]["weight_scale"].get<double>(),
             first_report["rounds"].back()["weight_scale"].get<double>());
-  const archgeo::SolveResult cold = ColdSolve(start, roof, {ContinuationStart(warm)});
+  const archgeo::SolveResult cold = ColdSolve(start, roof, WarmStart(warm));
   ExpectPlanarAndValid(cold);
   EXPECT_EQ(cold.mesh.vertices[v], target);
   EXPECT_EQ(cold.status, warm.status);
@@ -218,8 +224,9 @@ TEST(Session, AWeightChangeTakesEffect) {
   }
   EXPECT_LT(moved_heavy, 0.9 * moved_light);
   // And it is the cold solve with that weight.
-  const archgeo::SolveResult cold =
-      ColdSolve(start, roof, {"terms.anchor.weight=100", ContinuationStart(b)});
+  std::vector<std::string> heavier = WarmStart(b);
+  heavier.push_back("terms.anchor.weight=100");
+  const archgeo::SolveResult cold = ColdSolve(start, roof, heavier);
   ExpectPlanarAndValid(cold);
   EXPECT_LT(MaxDistance(b.mesh, cold.mesh), 0.01 * move);
   EXPECT_EQ(Report(b)["settings"]["terms"]["anchor"]["weight"].get<double>(), 100.0);

@@ -122,12 +122,15 @@ SolveResult Solve(const std::string& spec_yaml, const MeshData& mesh,
 // and is the solve of that mesh against the session's reference: the same
 // terms (anchor and fairness relative to that start), schedule, tolerance
 // stops, validity checks, SolveResult, report and the spec's outputs as
-// Solve(spec_yaml, start, reference or mesh) with `continuation.start` set
-// to the weight scale the last solve ended with (planar_quads, custom: the
-// planarity weights and barriers start where they made the last result
-// planar, instead of growing from 1 again over several rounds; the report's
-// settings give the value). Only its frame (the canonical frame of the
-// first mesh, mesh/similarity.h) is the session's.
+// Solve(spec_yaml, start, reference or mesh) with two settings where the
+// last solve left them (the report's settings give both): `continuation.start`,
+// the weight scale it ended with (planar_quads, custom: the planarity
+// weights and barriers start where they made the last result planar,
+// instead of growing from 1 again over several rounds), and
+// `solver.initial_trust_region_radius`, Levenberg–Marquardt's trust region
+// at the end of its last round (LeanSolve's: no steps rejected again to find
+// its size). Only its frame (the canonical frame of the first mesh,
+// mesh/similarity.h) is the session's.
 // A session takes a problem that solves the mesh it is given (not hnet's
 // derived net, relayout: auto or a problem that makes its own net) without
 // multiresolution; others throw Error. Not thread-safe: one call at a time.

@@ -169,6 +169,12 @@ void SolveSession::Keep(bool kept) {
     if (const Key* k = s.schema().Find("continuation.start")) {
       s.Set(k->name, std::clamp(solution_->loop.weight_scale, k->lo, k->hi), Origin{"<session>", 0});
     }
+    // And Levenberg–Marquardt's trust region where the last one left it
+    // (LeanSolve's rounds): no steps rejected again to find its size.
+    const double radius = solution_->loop.trust_region_radius;
+    if (const Key* k = s.schema().Find("solver.initial_trust_region_radius"); k && radius > 0) {
+      s.Set(k->name, std::clamp(radius, std::max(k->lo, 1e-6), k->hi), Origin{"<session>", 0});
+    }
     return;
   }
   // Back to where the last solve started: its start mesh (file units) is

@@ -9,10 +9,12 @@
 // solution with those moves, as a solve of that mesh would (the model
 // restarts there: original positions, blocks' `init`, validity's start) but
 // against the session's reference, in its frame, and with the continuation
-// of the weights where the last solve left it (`continuation.start` set to
-// the scale it ended with, where the problem has that key: a solve near a
-// planar state needs the weights that made it planar, not the rounds that
-// grew them from 1). While the residuals
+// of the weights and the trust region where the last solve left them
+// (`continuation.start` set to the scale it ended with, where the problem
+// has that key: a solve near a planar state needs the weights that made it
+// planar, not the rounds that grew them from 1; and
+// `solver.initial_trust_region_radius` to LeanSolve's radius at its end).
+// While the residuals
 // keep their structure (the same fixed vertices, the same terms on) no
 // pattern is read and no ordering or symbolic factorisation made again.
 //

@@ -227,8 +227,10 @@ class Session:
     mesh against the session's reference: the same terms (anchor and
     fairness relative to that start), schedule, tolerance stops, validity
     checks, Result and spec outputs as archgeo.solve(spec, V_start, F,
-    reference=reference or the first mesh). Only its frame is the first
-    mesh's.
+    reference=reference or the first mesh) with continuation.start and
+    solver.initial_trust_region_radius where the last solve left them (its
+    report's settings: the planarity weights and the trust region that made
+    the last result planar). Only its frame is the first mesh's.
 
     Problems that solve a net of their own (hnet, relayout: "auto", grid)
     and multiresolution are refused (InputError). One call at a time.

@@ -23,10 +23,13 @@ def roof():
 
 
 def cold(start, F, reference, warm, **keys):
-    """archgeo.solve of `start` against `reference` with the continuation
-    where the session's solve `warm` started it."""
+    """archgeo.solve of `start` against `reference` with the continuation and
+    the trust region where the session's solve `warm` started them."""
+    settings = warm.report["settings"]
     return archgeo.solve(SPEC, start, F, reference=reference, **KEYS,
-                         continuation__start=warm.report["settings"]["continuation"]["start"],
+                         continuation__start=settings["continuation"]["start"],
+                         solver__initial_trust_region_radius=settings["solver"][
+                             "initial_trust_region_radius"],
                          **keys)
 
 
