@@ -24,11 +24,7 @@
 namespace ARCHGEO_UNITY_ID {
 
 int Main(int argc, char** argv) {
-  if (argc > 1) {
-    std::fprintf(stderr, "%s: unknown argument '%s'\nusage: %s (no arguments)\n", argv[0], argv[1],
-                 argv[0]);
-    return 2;
-  }
+  if (!bench::NoArguments(argc, argv)) return 2;
   constexpr double kTargetSeconds = 5.0;
   constexpr int kU = 200, kV = 125;
   const archgeo::SpectralMesh m =

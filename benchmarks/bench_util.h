@@ -7,6 +7,7 @@
 //   RunProcess(...)   a subprocess with wall-clock and CPU time, peak RSS and a timeout
 //   SolveCommand(...) `archgeo solve --quiet` as a subprocess, report read back
 //   Table             a left-aligned text table
+//   PrintMarkdown     rows as a Markdown table
 #pragma once
 
 #include <fcntl.h>
@@ -39,6 +40,22 @@ namespace bench {
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 using Clock = std::chrono::steady_clock;
+
+using Rows = std::vector<std::vector<std::string>>;
+
+// `rows` (the first the header) as a Markdown table on stdout.
+inline void PrintMarkdown(const Rows& rows) {
+  for (size_t i = 0; i < rows.size(); ++i) {
+    std::string line = "|";
+    for (const std::string& cell : rows[i]) line += " " + cell + " |";
+    std::cout << line << "\n";
+    if (i == 0) {
+      std::string rule = "|";
+      for (size_t c = 0; c < rows[0].size(); ++c) rule += "---|";
+      std::cout << rule << "\n";
+    }
+  }
+}
 
 inline std::string Source(const std::string& rel) {
   return std::string(ARCHGEO_SOURCE_DIR) + "/" + rel;

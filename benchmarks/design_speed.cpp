@@ -102,21 +102,8 @@ Run SolveOnce(const Side& side, const std::string& mesh, double timeout) {
   return r;
 }
 
-using Rows = std::vector<std::vector<std::string>>;
-
-// `rows` (the first the header) as a Markdown table.
-void PrintMarkdown(const Rows& rows) {
-  for (size_t i = 0; i < rows.size(); ++i) {
-    std::string line = "|";
-    for (const std::string& cell : rows[i]) line += " " + cell + " |";
-    std::cout << line << "\n";
-    if (i == 0) {
-      std::string rule = "|";
-      for (size_t c = 0; c < rows[0].size(); ++c) rule += "---|";
-      std::cout << rule << "\n";
-    }
-  }
-}
+using bench::PrintMarkdown;
+using bench::Rows;
 
 double MedianOf(const std::vector<Run>& runs, double (*f)(const Run&)) {
   std::vector<double> v;

@@ -26,11 +26,7 @@
 namespace ARCHGEO_UNITY_ID {
 
 int Main(int argc, char** argv) {
-  if (argc > 1) {
-    std::fprintf(stderr, "%s: unknown argument '%s'\nusage: %s (no arguments)\n", argv[0], argv[1],
-                 argv[0]);
-    return 2;
-  }
+  if (!bench::NoArguments(argc, argv)) return 2;
   constexpr double kTargetSeconds = 10;
   constexpr int kCount = 100;
   const archgeo::SpectralMesh m =

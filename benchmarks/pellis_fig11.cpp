@@ -82,11 +82,7 @@ bool Curve(double alpha, double beta) {
 int Main(int argc, char** argv) {
   google::InitGoogleLogging(argv[0]);
   FLAGS_logtostderr = true;
-  if (argc > 1) {
-    std::fprintf(stderr, "%s: unknown argument '%s'\nusage: %s (no arguments)\n", argv[0], argv[1],
-                 argv[0]);
-    return 2;
-  }
+  if (!bench::NoArguments(argc, argv)) return 2;
   std::printf("Pellis 2019, Fig. 11 — energy per area of lattices inscribed in z = a x^2 + b y^2\n");
   std::printf("paper: \"the energy is minimal if the polar angle is a multiple of pi/2, where faces "
               "are actually rectangles\"\n");

@@ -25,11 +25,7 @@ namespace ARCHGEO_UNITY_ID {
 int Main(int argc, char** argv) {
   google::InitGoogleLogging(argv[0]);
   FLAGS_logtostderr = true;
-  if (argc > 1) {
-    std::fprintf(stderr, "%s: unknown argument '%s'\nusage: %s (no arguments)\n", argv[0], argv[1],
-                 argv[0]);
-    return 2;
-  }
+  if (!bench::NoArguments(argc, argv)) return 2;
   constexpr double kR = 3.0, kr = 1.0;
   constexpr double kMaxFinestError = 0.02;
   const int n_u[] = {12, 24, 48, 96, 192};

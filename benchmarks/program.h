@@ -15,6 +15,10 @@ using ProgramMain = int (*)(int argc, char** argv);
 // Adds `main` under `name`; called during static initialisation.
 bool RegisterProgram(const char* name, ProgramMain main);
 
+// For a program that takes no arguments: false, with "unknown argument"
+// and its usage on stderr, when it was given one (the program exits 2).
+bool NoArguments(int argc, char** argv);
+
 }  // namespace bench
 
 #define ARCHGEO_BENCHMARK_PROGRAM(name, main) \

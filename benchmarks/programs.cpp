@@ -31,6 +31,13 @@ bool RegisterProgram(const char* name, ProgramMain main) {
   return true;
 }
 
+bool NoArguments(int argc, char** argv) {
+  if (argc <= 1) return true;
+  std::fprintf(stderr, "%s: unknown argument '%s'\nusage: %s (no arguments)\n", argv[0], argv[1],
+               argv[0]);
+  return false;
+}
+
 }  // namespace bench
 
 int main(int argc, char** argv) {

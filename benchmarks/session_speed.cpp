@@ -60,21 +60,8 @@ archgeo::MeshData DesignMesh(const Size& s) {
   return archgeo::Generate(o);
 }
 
-using Rows = std::vector<std::vector<std::string>>;
-
-// `rows` (the first the header) as a Markdown table.
-void PrintMarkdown(const Rows& rows) {
-  for (size_t i = 0; i < rows.size(); ++i) {
-    std::string line = "|";
-    for (const std::string& cell : rows[i]) line += " " + cell + " |";
-    std::cout << line << "\n";
-    if (i == 0) {
-      std::string rule = "|";
-      for (size_t c = 0; c < rows[0].size(); ++c) rule += "---|";
-      std::cout << rule << "\n";
-    }
-  }
-}
+using bench::PrintMarkdown;
+using bench::Rows;
 
 double Seconds(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

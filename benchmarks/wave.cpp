@@ -72,11 +72,7 @@ int ValidStarts(const char* name, const archgeo::Mesh& mesh) {
 }
 
 int Main(int argc, char** argv) {
-  if (argc > 1) {
-    std::fprintf(stderr, "%s: unknown argument '%s'\nusage: %s (no arguments)\n", argv[0], argv[1],
-                 argv[0]);
-    return 2;
-  }
+  if (!bench::NoArguments(argc, argv)) return 2;
   archgeo::ConfigureThreading();  // as `archgeo solve` does
   const double torus = TimeWave(
       "torus", archgeo::TorusPrincipalQuads(3, 1, 125, 80),

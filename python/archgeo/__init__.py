@@ -177,20 +177,28 @@ def solve(spec, V=None, F=None, *, reference=None, on_iteration=None, **keys):
     """
     overrides = _overrides("", keys, ["output.arrays=true"])
     V, F = _mesh(V, F)
-    if isinstance(spec, dict):
-        text, name = json.dumps(spec), "<spec>"
-    elif _is_spec_path(spec):
-        if V is None:
-            return _result(_archgeo.solve_file(spec, overrides, on_iteration))
-        with open(spec, encoding="utf-8") as f:
-            text, name = f.read(), spec
-    else:
-        text, name = spec, "<spec>"
-    if isinstance(reference, tuple):
-        ref_V, ref_F = _mesh(reference[0], reference[1])
-    else:
-        ref_V, ref_F = _mesh(reference, None)
+    if V is None and not isinstance(spec, dict) and _is_spec_path(spec):
+        return _result(_archgeo.solve_file(spec, overrides, on_iteration))
+    text, name = _spec_text(spec)
+    ref_V, ref_F = _reference_mesh(reference)
     return _result(_archgeo.solve(text, name, V, F, ref_V, ref_F, overrides, on_iteration))
+
+
+def _spec_text(spec):
+    """(YAML or JSON text, name for messages) of a dict, a spec path or text."""
+    if isinstance(spec, dict):
+        return json.dumps(spec), "<spec>"
+    if _is_spec_path(spec):
+        with open(spec, encoding="utf-8") as f:
+            return f.read(), spec
+    return spec, "<spec>"
+
+
+def _reference_mesh(reference):
+    """(V, F) of a reference given as a (V, F) pair, a path or None."""
+    if isinstance(reference, tuple):
+        return _mesh(reference[0], reference[1])
+    return _mesh(reference, None)
 
 
 def _result(answer):
@@ -239,17 +247,8 @@ class Session:
     def __init__(self, spec, V=None, F=None, *, reference=None, **keys):
         overrides = _overrides("", keys, ["output.arrays=true"])
         V, F = _mesh(V, F)
-        if isinstance(spec, dict):
-            text, name = json.dumps(spec), "<spec>"
-        elif _is_spec_path(spec):
-            with open(spec, encoding="utf-8") as f:
-                text, name = f.read(), spec
-        else:
-            text, name = spec, "<spec>"
-        if isinstance(reference, tuple):
-            ref_V, ref_F = _mesh(reference[0], reference[1])
-        else:
-            ref_V, ref_F = _mesh(reference, None)
+        text, name = _spec_text(spec)
+        ref_V, ref_F = _reference_mesh(reference)
         self._session = _archgeo.Session(text, name, V, F, ref_V, ref_F, overrides)
 
     def solve(self, on_iteration=None):
