@@ -161,7 +161,9 @@ TEST(ChartPaths, APathRunsOnTheSideOfANodeTheComplexSays) {
   EXPECT_GT(r.refinements, 0);  // the corners' three surface edges are too few for their paths
   // The path of C–B runs above D: a detour of about 1.1 over the way below A.
   for (const BaseEdgePath& e : r.layout.edges) {
-    if (e.a == C && e.b == B) EXPECT_GT(e.length, 3.4);
+    if (e.a == C && e.b == B) {
+      EXPECT_GT(e.length, 3.4);
+    }
   }
 }
 

@@ -64,7 +64,9 @@ TEST_F(BaseComplexRoof, ThreeStepsKeepTheValenceSevenNodesThePerimeterAndBalance
   EXPECT_GT(load.at("rise").get<double>(), 0.05 * load.at("span").get<double>());
   const Mesh vault = ReadMesh(Path("vault.obj"));
   for (VertexIndex v : vault.vertices()) {
-    if (vault.is_border(v)) EXPECT_EQ(vault.point(v), fine.point(v));
+    if (vault.is_border(v)) {
+      EXPECT_EQ(vault.point(v), fine.point(v));
+    }
   }
   // 3. Remeshing the vault: even, well-shaped triangles.
   const Outcome remeshed = Solve("remesh.yaml", "remeshed", "--set mesh=" + Path("vault.obj"));
