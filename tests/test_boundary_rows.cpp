@@ -73,7 +73,7 @@ double BoundaryEdgesOnALevel(const LevelSetResult& r) {
   return edges > 0 ? double(on_level) / edges : 0.0;
 }
 
-TEST(BoundaryRows, OneFamilyRunsAlongTheBoundaryOfAnObliqueParaboloid) {
+TEST(BoundaryRows, LevelSetBoundaryRunsOneFamilyAlongTheBoundaryOfAnObliqueParaboloid) {
   const Mesh mesh = ObliqueParaboloid();
   const auto on = LevelSets(mesh, true);
   const auto off = LevelSets(mesh, false);
