@@ -31,9 +31,16 @@
 //  3. Extraction (§4.1.6, ExtractQuads): every base edge sampled once at n
 //     equal arc-length steps (welded into both its charts); a quad chart's
 //     interior at the (i/n, j/n) grid, a triangle chart split into three
-//     quads (corner, edge midpoints, centre) of (n/2)² each (n even); every
-//     sample mapped back through the barycentric coordinates of the
-//     parameter triangle holding it, so it lies on the input surface.
+//     quads (corner, edge midpoints, centre) of (n/2)² each (n even) — or,
+//     with boundary strips (§4.1.4: "along the boundary of quadrilateral
+//     meshes, triangular patches ... are divided into a combination of quads
+//     lined up with the neighbouring charts with triangles along the open
+//     boundary"), a triangle chart with one side on the open boundary as the
+//     lattice A + (i/n)(B − A) + (j/n)(C − A), A the corner opposite that
+//     side: quads for i + j ≤ n − 2, n triangles along the boundary side, no
+//     centre vertex; every sample mapped back through the barycentric
+//     coordinates of the parameter triangle holding it, so it lies on the
+//     input surface.
 //
 // Plain arrays in, plain structs out (no CGAL). Errors in the base complex
 // throw BaseComplexError naming the element.
@@ -133,6 +140,10 @@ ChartMap ParameteriseChart(const std::vector<Eigen::Vector3d>& points,
 struct QuadExtraction {
   std::vector<Eigen::Vector3d> points;
   std::vector<std::array<int, 4>> quads;  // oriented as the surface
+  std::vector<std::array<int, 3>> triangles;  // along the open boundary of strip charts
+  // Samples strictly inside a strip chart's boundary side: 2 triangles and 1
+  // quad meet there, so their regular valence is 4, not 3.
+  std::vector<int> strip_boundary_vertex;
   std::vector<int> node_vertex;           // output vertex of each base vertex
   std::vector<int> centre_vertex;         // per base face: its centre (triangles), else −1
   // Every base edge's samples (at equal arc length along its path, welded)
@@ -142,16 +153,21 @@ struct QuadExtraction {
   int unlocated = 0;  // samples in no parameter triangle (taken from the nearest one)
 };
 
-// `n`: samples per base edge (even when the complex has a triangle face).
+// Whether triangle chart f is extracted as a boundary strip: `strips` asked
+// and exactly one of its three sides on the surface boundary.
+bool StripChart(const ChartLayout& layout, int f, bool strips);
+
+// `n`: samples per base edge (even when a triangle chart is split into three quads).
 QuadExtraction ExtractQuads(const std::vector<Eigen::Vector3d>& points,
                             const std::vector<std::array<int, 3>>& triangles,
                             const BaseComplex& base, const ChartLayout& layout,
-                            const std::vector<ChartMap>& maps, int n);
+                            const std::vector<ChartMap>& maps, int n, bool strips = false);
 
 // The samples per base edge: `n` if > 0, else the mean path length over
-// `edge_length`, rounded (at least 1); even (at least 2) when a face is a
-// triangle. Throws std::invalid_argument for an odd n > 0 with a triangle face.
-int ChartSamples(const ChartLayout& layout, int n, double edge_length);
+// `edge_length`, rounded (at least 1); even (at least 2) when a triangle chart
+// is split into three quads (not a strip). Throws std::invalid_argument for an
+// odd n > 0 with such a chart.
+int ChartSamples(const ChartLayout& layout, int n, double edge_length, bool strips = false);
 
 // The whole path with the figures that judge it (spectral/base_complex_check.cpp).
 struct ChartQuadsResult {
@@ -163,20 +179,22 @@ struct ChartQuadsResult {
   int flipped = 0;          // parameter triangles of signed area ≤ 0, all charts
   double min_area = 0;      // smallest signed parameter area / its domain's
   std::vector<int> valence;  // per output vertex: edges at it
-  // Output vertices of valence ≠ 4 inside or ≠ 3 on the boundary, and those
-  // the base complex predicts: its inner nodes with ≠ 4 base edges, its
-  // boundary nodes with ≠ 3, and the centres of its triangles (valence 3).
+  // Output vertices of valence ≠ 4 inside or ≠ 3 on the boundary (≠ 4 inside
+  // a strip's boundary side), and those the base complex predicts: its inner
+  // nodes with ≠ 4 base edges, its boundary nodes with ≠ 3, and the centres
+  // of its split triangles (valence 3).
   std::vector<int> irregular, expected_irregular;
-  int boundary_edges = 0;      // output edges on one quad
+  int strips = 0;              // triangle charts extracted as boundary strips
+  int boundary_edges = 0;      // output edges on one face
   int expected_boundary_edges = 0;  // n per boundary base edge
-  int non_manifold_edges = 0;  // output edges on more than two quads
-  int t_junctions = 0;         // output vertices inside a boundary edge of another quad
+  int non_manifold_edges = 0;  // output edges on more than two faces
+  int t_junctions = 0;         // output vertices inside a boundary edge of another face
   double seconds_charts = 0, seconds_parameterisation = 0, seconds_extraction = 0;
 };
 
 ChartQuadsResult ChartQuads(const std::vector<Eigen::Vector3d>& points,
                             const std::vector<std::array<int, 3>>& triangles,
                             const BaseComplex& base, int n, double edge_length,
-                            ChartWeights weights);
+                            ChartWeights weights, bool strips = false);
 
 }  // namespace archgeo

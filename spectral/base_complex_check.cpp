@@ -63,12 +63,15 @@ void SplitTriangles(const std::vector<int>& nodes, std::vector<Eigen::Vector3d>&
 void CheckChartQuads(ChartQuadsResult& r) {
   const QuadExtraction& q = r.quads;
   std::map<std::pair<int, int>, int> faces_at;
-  for (const auto& quad : q.quads) {
-    for (int k = 0; k < 4; ++k) {
-      const int u = quad[k], v = quad[(k + 1) % 4];
+  auto count = [&faces_at](const auto& face) {
+    const int sides = int(face.size());
+    for (int k = 0; k < sides; ++k) {
+      const int u = face[k], v = face[(k + 1) % sides];
       ++faces_at[{std::min(u, v), std::max(u, v)}];
     }
-  }
+  };
+  for (const auto& quad : q.quads) count(quad);
+  for (const auto& triangle : q.triangles) count(triangle);
   r.valence.assign(q.points.size(), 0);
   std::vector<std::pair<int, int>> boundary;
   for (const auto& [edge, count] : faces_at) {
@@ -97,8 +100,10 @@ void CheckChartQuads(ChartQuadsResult& r) {
       if (t > 0 && t < 1 && (q.points[w] - (a + t * d)).norm() <= tolerance) ++r.t_junctions;
     }
   }
+  const std::set<int> strip(q.strip_boundary_vertex.begin(), q.strip_boundary_vertex.end());
   for (size_t v = 0; v < r.valence.size(); ++v) {
-    if (r.valence[v] != (on_boundary.count(int(v)) ? 3 : 4)) r.irregular.push_back(int(v));
+    const int regular = on_boundary.count(int(v)) && !strip.count(int(v)) ? 3 : 4;
+    if (r.valence[v] != regular) r.irregular.push_back(int(v));
   }
   // The base complex's prediction.
   std::vector<int> base_valence(q.node_vertex.size(), 0);
@@ -122,14 +127,16 @@ void CheckChartQuads(ChartQuadsResult& r) {
 
 }  // namespace
 
-int ChartSamples(const ChartLayout& layout, int n, double edge_length) {
-  bool triangles = false;
-  for (const auto& sides : layout.sides) triangles = triangles || sides.size() == 3;
+int ChartSamples(const ChartLayout& layout, int n, double edge_length, bool strips) {
+  bool triangles = false;  // a triangle chart split into three quads
+  for (size_t f = 0; f < layout.sides.size(); ++f) {
+    triangles = triangles || (layout.sides[f].size() == 3 && !StripChart(layout, int(f), strips));
+  }
   if (n > 0) {
     if (triangles && n % 2 != 0) {
       throw std::invalid_argument(
-          "must be even when the base complex has a triangle face (each is split into three "
-          "quads of n/2 × n/2)");
+          "must be even when the base complex has a triangle face off the boundary (each is "
+          "split into three quads of n/2 × n/2)");
     }
     return n;
   }
@@ -143,7 +150,7 @@ int ChartSamples(const ChartLayout& layout, int n, double edge_length) {
 ChartQuadsResult ChartQuads(const std::vector<Eigen::Vector3d>& input_points,
                             const std::vector<std::array<int, 3>>& input_triangles,
                             const BaseComplex& base, int n, double edge_length,
-                            ChartWeights weights) {
+                            ChartWeights weights, bool strips) {
   ChartQuadsResult r;
   auto start = std::chrono::steady_clock::now();
   std::vector<Eigen::Vector3d> points = input_points;
@@ -157,7 +164,8 @@ ChartQuadsResult ChartQuads(const std::vector<Eigen::Vector3d>& input_points,
       SplitTriangles(base.nodes, points, triangles);
     }
   }
-  r.n = ChartSamples(r.layout, n, edge_length);
+  r.n = ChartSamples(r.layout, n, edge_length, strips);
+  for (size_t f = 0; f < r.layout.sides.size(); ++f) r.strips += StripChart(r.layout, int(f), strips);
   r.seconds_charts = ChartSecondsSince(start);
   start = std::chrono::steady_clock::now();
   r.min_area = std::numeric_limits<double>::infinity();
@@ -168,7 +176,7 @@ ChartQuadsResult ChartQuads(const std::vector<Eigen::Vector3d>& input_points,
   }
   r.seconds_parameterisation = ChartSecondsSince(start);
   start = std::chrono::steady_clock::now();
-  r.quads = ExtractQuads(points, triangles, base, r.layout, r.maps, r.n);
+  r.quads = ExtractQuads(points, triangles, base, r.layout, r.maps, r.n, strips);
   r.seconds_extraction = ChartSecondsSince(start);
   CheckChartQuads(r);
   return r;

@@ -221,12 +221,62 @@ void ExtractTriangleChart(const ChartLayout& layout, const ChartLocator& locate,
   }
 }
 
+// A triangle chart with side `b` on the open boundary (§4.1.4): the lattice
+// A + (i/n)(B − A) + (j/n)(C − A) over A = corner b + 2 (opposite the
+// boundary side), B = corner b + 2 + 1, C = corner b + 2 + 2. Its lines run
+// parallel to the two inner sides and meet them at their n samples, as the
+// neighbouring charts' grid lines do; the cells that the boundary side cuts
+// are triangles.
+void ExtractStripChart(const ChartLayout& layout, const ChartLocator& locate,
+                       const std::vector<Eigen::Vector2d>& c, int f, int b, ExtractState& st) {
+  const int n = st.n, a = (b + 2) % 3;
+  const Eigen::Vector2d &A = c[size_t(a)], &B = c[size_t((a + 1) % 3)], &C = c[size_t((a + 2) % 3)];
+  std::vector<int> inner(size_t(n + 1) * (n + 1), -1);
+  for (int i = 1; i < n; ++i) {
+    for (int j = 1; i + j < n; ++j) {
+      bool missed = false;
+      const Eigen::Vector2d q = A + double(i) / n * (B - A) + double(j) / n * (C - A);
+      inner[size_t(i) * (n + 1) + j] = st.Add(locate.Map(q, &missed));
+      st.out->unlocated += missed;
+    }
+  }
+  auto at = [&](int i, int j) {
+    if (j == 0) return ChartSideVertex(layout, st, f, a, i);          // A → B
+    if (i == 0) return ChartSideVertex(layout, st, f, a + 2, n - j);  // C → A
+    if (i + j == n) return ChartSideVertex(layout, st, f, a + 1, j);  // B → C
+    return inner[size_t(i) * (n + 1) + j];
+  };
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; i + j < n; ++j) {
+      if (i + j + 1 == n) {
+        st.out->triangles.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
+      } else {
+        st.out->quads.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+      }
+    }
+  }
+  for (int j = 1; j < n; ++j) st.out->strip_boundary_vertex.push_back(at(n - j, j));
+}
+
+// The side of triangle chart f on the surface boundary, or −1 unless exactly one is.
+int StripSide(const ChartLayout& layout, int f) {
+  int side = -1, count = 0;
+  for (int k = 0; k < 3; ++k) {
+    if (layout.edges[size_t(layout.sides[f][k].first)].boundary) side = k, ++count;
+  }
+  return count == 1 ? side : -1;
+}
+
 }  // namespace
+
+bool StripChart(const ChartLayout& layout, int f, bool strips) {
+  return strips && layout.sides[size_t(f)].size() == 3 && StripSide(layout, f) >= 0;
+}
 
 QuadExtraction ExtractQuads(const std::vector<Eigen::Vector3d>& points,
                             const std::vector<std::array<int, 3>>& triangles,
                             const BaseComplex& base, const ChartLayout& layout,
-                            const std::vector<ChartMap>& maps, int n) {
+                            const std::vector<ChartMap>& maps, int n, bool strips) {
   QuadExtraction out;
   ExtractState st;
   st.out = &out;
@@ -245,7 +295,9 @@ QuadExtraction ExtractQuads(const std::vector<Eigen::Vector3d>& points,
     const std::vector<Eigen::Vector2d> corners = ChartDomain(int(layout.sides[f].size()));
     const ChartLocator locate(points, triangles, layout.charts[f], maps[f]);
     CompareSides(locate, layout, corners, int(f), st);
-    if (corners.size() == 3) {
+    if (StripChart(layout, int(f), strips)) {
+      ExtractStripChart(layout, locate, corners, int(f), StripSide(layout, int(f)), st);
+    } else if (corners.size() == 3) {
       ExtractTriangleChart(layout, locate, corners, int(f), st);
     } else {
       ExtractQuadChart(layout, locate, int(f), st);

@@ -167,6 +167,50 @@ TEST(ChartPaths, APathRunsOnTheSideOfANodeTheComplexSays) {
   }
 }
 
+// Thesis §4.1.4: a triangle chart of a quad complex with one side on the
+// open boundary is quads lined up with its two inner sides and triangles
+// along the boundary. The plate [0, 4] × [0, 2] with four quads round the
+// interior node A (2, 1) and the triangle L (1, 0), R (3, 0), A between them.
+TEST(OpenCharts, BoundaryTriangleOfAQuadComplexIsAStripOfQuadsAndBoundaryTriangles) {
+  std::vector<V3> p;
+  Triangles t;
+  OpenPlate(32, 16, 0.125, p, t);
+  auto at = [](double x, double y) { return int(std::lround(y * 8)) * 33 + int(std::lround(x * 8)); };
+  BaseComplex base;
+  base.nodes = {at(0, 0), at(1, 0), at(3, 0), at(4, 0), at(4, 1), at(4, 2), at(2, 2), at(0, 2),
+                at(0, 1), at(2, 1)};
+  enum { C0, L, R, C1, E, C2, M, C3, W, A };
+  base.faces = {{C0, L, A, W}, {R, C1, E, A}, {L, R, A}, {W, A, M, C3}, {A, E, C2, M}};
+  const int n = 4;
+  const ChartQuadsResult split = ChartQuads(p, t, base, n, 0, ChartWeights::kCotangent, false);
+  const ChartQuadsResult strip = ChartQuads(p, t, base, n, 0, ChartWeights::kCotangent, true);
+  ExpectConforming(split, "split");
+  ExpectConforming(strip, "strip");
+  EXPECT_EQ(split.strips, 0);
+  EXPECT_EQ(strip.strips, 1);
+  EXPECT_TRUE(split.quads.triangles.empty());
+  EXPECT_EQ(split.quads.quads.size(), 4u * n * n + 3 * (n / 2) * (n / 2));
+  // The strip: (n − 1) n / 2 quads, n triangles, no centre vertex.
+  EXPECT_EQ(strip.quads.quads.size(), 4u * n * n + (n - 1) * n / 2);
+  ASSERT_EQ(strip.quads.triangles.size(), size_t(n));
+  EXPECT_EQ(strip.irregular.size() + 1, split.irregular.size());  // the split's valence-3 centre
+  EXPECT_EQ(strip.quads.strip_boundary_vertex.size(), size_t(n - 1));
+  for (int v : strip.quads.strip_boundary_vertex) EXPECT_EQ(strip.valence[v], 4);
+  // Each triangle has its boundary edge on y = 0, between L and R, at spacing 2 / n.
+  for (const auto& tri : strip.quads.triangles) {
+    const V3 &a = strip.quads.points[tri[1]], &b = strip.quads.points[tri[2]];
+    EXPECT_NEAR(a.y(), 0, 1e-12);
+    EXPECT_NEAR(b.y(), 0, 1e-12);
+    EXPECT_NEAR(std::abs(a.x() - b.x()), 2.0 / n, 1e-12);
+    EXPECT_GE(std::min(a.x(), b.x()), 1 - 1e-12);
+    EXPECT_LE(std::max(a.x(), b.x()), 3 + 1e-12);
+  }
+  for (const V3& x : strip.quads.points) EXPECT_EQ(x.z(), 0);
+  // An odd n: the strip needs no even n (the split would).
+  EXPECT_EQ(ChartQuads(p, t, base, 3, 0, ChartWeights::kCotangent, true).quads.triangles.size(), 3u);
+  EXPECT_THROW(ChartQuads(p, t, base, 3, 0, ChartWeights::kCotangent, false), std::invalid_argument);
+}
+
 TEST(OpenCharts, ABaseBoundaryOffTheSurfaceBoundaryIsRefusedNamingTheVertex) {
   std::vector<V3> p;
   Triangles t;

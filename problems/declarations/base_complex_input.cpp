@@ -71,6 +71,10 @@ Mesh BcQuadMesh(const QuadExtraction& q) {
                                      VertexIndex(quad[2]), VertexIndex(quad[3]));
     CHECK(f != Mesh::null_face()) << "chart step: the extracted quads are not a manifold";
   }
+  for (const auto& t : q.triangles) {
+    const FaceIndex f = out.add_face(VertexIndex(t[0]), VertexIndex(t[1]), VertexIndex(t[2]));
+    CHECK(f != Mesh::null_face()) << "chart step: the boundary strips' triangles are not a manifold";
+  }
   return out;
 }
 
@@ -100,6 +104,8 @@ nlohmann::json BcDetails(const ChartQuadsResult& r, double distance, double diag
           {"parameter_area_min_relative", r.min_area},
           {"output_vertices", r.quads.points.size()},
           {"output_quads", r.quads.quads.size()},
+          {"output_triangles", r.quads.triangles.size()},
+          {"strip_charts", r.strips},
           {"irregular_vertices", r.irregular.size()},
           {"expected_irregular_vertices", r.expected_irregular.size()},
           {"irregular_as_predicted", r.irregular == r.expected_irregular},
@@ -151,7 +157,7 @@ BaseComplex QuasiDualBaseComplex(const QuadBaseComplex& q) {
 std::vector<Key> ChartKeys() {
   return {IntegerKey("charts.n", 8, 1, 100000,
                      "samples per base edge: an n × n grid per quad chart, three (n/2) × (n/2) "
-                     "grids per triangle chart (n even then)"),
+                     "grids per triangle chart (n even then), a lattice per boundary strip"),
           NumberKey("charts.edge_length", 0, 0, kMaxCoordinate,
                     "or the output's edge length in file units: n = mean base-edge path length / "
                     "this, rounded (to an even number with triangle faces); 0 = charts.n"),
@@ -162,7 +168,12 @@ std::vector<Key> ChartKeys() {
                      "sweeps that straighten the grid lines where they cross chart boundaries: "
                      "each vertex of valence 4 half-way to the mean of its neighbours, then onto "
                      "the design surface; irregular vertices stay (spectral/quad_relax.h); 0 = "
-                     "the charts' samples as mapped")};
+                     "the charts' samples as mapped"),
+          ChoiceKey("charts.boundary_triangles", "auto", {"auto", "strip", "split"},
+                    "a triangle chart with one side on the open boundary: `strip` = quads lined "
+                    "up with its two inner sides and n triangles along the boundary (thesis "
+                    "§4.1.4; n may be odd), `split` = three quads around a valence-3 centre like "
+                    "any triangle chart; `auto` = strip when the base complex has a quad face")};
 }
 
 void CheckChartKeys(const Settings& s) {
@@ -175,11 +186,15 @@ ChartStep RunChartStep(const Settings& s, const Mesh& design,
                        const std::vector<Eigen::Vector3d>& points,
                        const std::vector<std::array<int, 3>>& triangles, const BaseComplex& base) {
   const std::string weights = s.String("charts.weights");
+  const std::string& fill = s.String("charts.boundary_triangles");
+  bool quad_face = false;
+  for (const auto& f : base.faces) quad_face = quad_face || f.size() == 4;
   ChartStep out;
   ChartQuadsResult& r = out.result;
   r = ChartQuads(points, triangles, base, int(s.Integer("charts.n")),
                  s.Number("charts.edge_length"),
-                 weights == "mean_value" ? ChartWeights::kMeanValue : ChartWeights::kCotangent);
+                 weights == "mean_value" ? ChartWeights::kMeanValue : ChartWeights::kCotangent,
+                 fill == "strip" || (fill == "auto" && quad_face));
   const double diagonal = PrincipalBoxDiagonal(design);
   const ReferenceSurface surface(design);
   const GridLineKinks mapped = MeasureGridLineKinks(r.quads.points, r.quads.quads);
@@ -205,11 +220,11 @@ ChartStep RunChartStep(const Settings& s, const Mesh& design,
   char line[768];
   std::snprintf(line, sizeof line,
                 "charts: %zu, n = %d, flipped parameter triangles %d\nquads: %zu vertices, %zu "
-                "quads, irregular vertices %zu (base complex predicts %zu: %s), boundary edges "
+                "quads, %zu triangles, irregular vertices %zu (base complex predicts %zu: %s), boundary edges "
                 "%d (its boundary gives %d), T-junctions %d, distance to the input %.2e of the diagonal\ngrid lines turn "
                 "at most %.1f° (mean %.2f°) after %d smoothing sweeps, %.1f° (%.2f°) as mapped\n",
                 r.layout.charts.size(), r.n, r.flipped, r.quads.points.size(), r.quads.quads.size(),
-                r.irregular.size(), r.expected_irregular.size(),
+                r.quads.triangles.size(), r.irregular.size(), r.expected_irregular.size(),
                 r.irregular == r.expected_irregular ? "the same vertices" : "differ",
                 r.boundary_edges, r.expected_boundary_edges, r.t_junctions, distance / diagonal, relaxed.max_degrees,
                 relaxed.mean_degrees, int(s.Integer("charts.smoothing")), mapped.max_degrees,

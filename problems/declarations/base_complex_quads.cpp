@@ -7,7 +7,8 @@
 // surface decimated to base_complex.decimate vertices [Gebreiter 2012,
 // §3.1.1], spectral/decimate.h) → charts →
 // their parameterisation over the equilateral triangle or the unit square →
-// an all-quad mesh sampled from them [Gebreiter 2012, §4.1]
+// an all-quad mesh sampled from them (a quad complex's triangles on the open
+// boundary: quads and a row of boundary triangles, §4.1.4) [Gebreiter 2012, §4.1]
 // (spectral/base_complex_charts.h).
 //
 // The `net` hook builds the quad mesh; it is the net the run measures and
