@@ -38,7 +38,11 @@
 //     boundary"), a triangle chart with one side on the open boundary as the
 //     lattice A + (i/n)(B − A) + (j/n)(C − A), A the corner opposite that
 //     side: quads for i + j ≤ n − 2, n triangles along the boundary side, no
-//     centre vertex; every sample mapped back through the barycentric
+//     centre vertex; or, for triangle output (§4.1.4: "a triangular base
+//     complex, each chart is mapped onto an equilateral triangle"; §9.2.4,
+//     remeshing using subdivision: at n = 2^k the connectivity of k Loop
+//     steps of the base complex), every chart as the whole lattice, n²
+//     triangles; every sample mapped back through the barycentric
 //     coordinates of the parameter triangle holding it, so it lies on the
 //     input surface.
 //
@@ -140,7 +144,7 @@ ChartMap ParameteriseChart(const std::vector<Eigen::Vector3d>& points,
 struct QuadExtraction {
   std::vector<Eigen::Vector3d> points;
   std::vector<std::array<int, 4>> quads;  // oriented as the surface
-  std::vector<std::array<int, 3>> triangles;  // along the open boundary of strip charts
+  std::vector<std::array<int, 3>> triangles;  // of lattice charts (strips: along the open boundary)
   // Samples strictly inside a strip chart's boundary side: 2 triangles and 1
   // quad meet there, so their regular valence is 4, not 3.
   std::vector<int> strip_boundary_vertex;
@@ -153,21 +157,29 @@ struct QuadExtraction {
   int unlocated = 0;  // samples in no parameter triangle (taken from the nearest one)
 };
 
-// Whether triangle chart f is extracted as a boundary strip: `strips` asked
-// and exactly one of its three sides on the surface boundary.
-bool StripChart(const ChartLayout& layout, int f, bool strips);
+// How triangle charts are filled: split into three quads; as boundary
+// strips where they have one side on the open boundary (split elsewhere);
+// or all charts as triangle lattices (a triangle complex only).
+enum class ChartFill { kSplit, kStrip, kTriangles };
 
-// `n`: samples per base edge (even when a triangle chart is split into three quads).
+// Whether triangle chart f is extracted as a boundary strip: kStrip and
+// exactly one of its three sides on the surface boundary.
+bool StripChart(const ChartLayout& layout, int f, ChartFill fill);
+
+// `n`: samples per base edge (even when a triangle chart is split into three
+// quads). Throws BaseComplexError naming a quad face for kTriangles.
 QuadExtraction ExtractQuads(const std::vector<Eigen::Vector3d>& points,
                             const std::vector<std::array<int, 3>>& triangles,
                             const BaseComplex& base, const ChartLayout& layout,
-                            const std::vector<ChartMap>& maps, int n, bool strips = false);
+                            const std::vector<ChartMap>& maps, int n,
+                            ChartFill fill = ChartFill::kSplit);
 
 // The samples per base edge: `n` if > 0, else the mean path length over
 // `edge_length`, rounded (at least 1); even (at least 2) when a triangle chart
 // is split into three quads (not a strip). Throws std::invalid_argument for an
 // odd n > 0 with such a chart.
-int ChartSamples(const ChartLayout& layout, int n, double edge_length, bool strips = false);
+int ChartSamples(const ChartLayout& layout, int n, double edge_length,
+                 ChartFill fill = ChartFill::kSplit);
 
 // The whole path with the figures that judge it (spectral/base_complex_check.cpp).
 struct ChartQuadsResult {
@@ -182,7 +194,9 @@ struct ChartQuadsResult {
   // Output vertices of valence ≠ 4 inside or ≠ 3 on the boundary (≠ 4 inside
   // a strip's boundary side), and those the base complex predicts: its inner
   // nodes with ≠ 4 base edges, its boundary nodes with ≠ 3, and the centres
-  // of its split triangles (valence 3).
+  // of its split triangles (valence 3). Triangle output (kTriangles):
+  // valence ≠ 6 inside, ≠ 4 on the boundary, and the nodes with as many
+  // base edges.
   std::vector<int> irregular, expected_irregular;
   int strips = 0;              // triangle charts extracted as boundary strips
   int boundary_edges = 0;      // output edges on one face
@@ -195,6 +209,6 @@ struct ChartQuadsResult {
 ChartQuadsResult ChartQuads(const std::vector<Eigen::Vector3d>& points,
                             const std::vector<std::array<int, 3>>& triangles,
                             const BaseComplex& base, int n, double edge_length,
-                            ChartWeights weights, bool strips = false);
+                            ChartWeights weights, ChartFill fill = ChartFill::kSplit);
 
 }  // namespace archgeo

@@ -60,7 +60,8 @@ void SplitTriangles(const std::vector<int>& nodes, std::vector<Eigen::Vector3d>&
 
 // Valences, boundary and non-manifold edges, and T-junctions: a vertex in
 // the open interior of a boundary edge (within 1e-9 of the output's extent).
-void CheckChartQuads(ChartQuadsResult& r) {
+void CheckChartQuads(ChartQuadsResult& r, bool triangle_output) {
+  const int inner = triangle_output ? 6 : 4, outer = triangle_output ? 4 : 3;
   const QuadExtraction& q = r.quads;
   std::map<std::pair<int, int>, int> faces_at;
   auto count = [&faces_at](const auto& face) {
@@ -102,7 +103,7 @@ void CheckChartQuads(ChartQuadsResult& r) {
   }
   const std::set<int> strip(q.strip_boundary_vertex.begin(), q.strip_boundary_vertex.end());
   for (size_t v = 0; v < r.valence.size(); ++v) {
-    const int regular = on_boundary.count(int(v)) && !strip.count(int(v)) ? 3 : 4;
+    const int regular = on_boundary.count(int(v)) && !strip.count(int(v)) ? outer : inner;
     if (r.valence[v] != regular) r.irregular.push_back(int(v));
   }
   // The base complex's prediction.
@@ -117,7 +118,7 @@ void CheckChartQuads(ChartQuadsResult& r) {
     }
   }
   for (size_t v = 0; v < base_valence.size(); ++v) {
-    if (base_valence[v] != (base_boundary[v] ? 3 : 4)) r.expected_irregular.push_back(q.node_vertex[v]);
+    if (base_valence[v] != (base_boundary[v] ? outer : inner)) r.expected_irregular.push_back(q.node_vertex[v]);
   }
   for (int c : q.centre_vertex) {
     if (c >= 0) r.expected_irregular.push_back(c);
@@ -127,10 +128,11 @@ void CheckChartQuads(ChartQuadsResult& r) {
 
 }  // namespace
 
-int ChartSamples(const ChartLayout& layout, int n, double edge_length, bool strips) {
+int ChartSamples(const ChartLayout& layout, int n, double edge_length, ChartFill fill) {
   bool triangles = false;  // a triangle chart split into three quads
   for (size_t f = 0; f < layout.sides.size(); ++f) {
-    triangles = triangles || (layout.sides[f].size() == 3 && !StripChart(layout, int(f), strips));
+    triangles = triangles || (layout.sides[f].size() == 3 && fill != ChartFill::kTriangles &&
+                              !StripChart(layout, int(f), fill));
   }
   if (n > 0) {
     if (triangles && n % 2 != 0) {
@@ -150,7 +152,7 @@ int ChartSamples(const ChartLayout& layout, int n, double edge_length, bool stri
 ChartQuadsResult ChartQuads(const std::vector<Eigen::Vector3d>& input_points,
                             const std::vector<std::array<int, 3>>& input_triangles,
                             const BaseComplex& base, int n, double edge_length,
-                            ChartWeights weights, bool strips) {
+                            ChartWeights weights, ChartFill fill) {
   ChartQuadsResult r;
   auto start = std::chrono::steady_clock::now();
   std::vector<Eigen::Vector3d> points = input_points;
@@ -164,8 +166,8 @@ ChartQuadsResult ChartQuads(const std::vector<Eigen::Vector3d>& input_points,
       SplitTriangles(base.nodes, points, triangles);
     }
   }
-  r.n = ChartSamples(r.layout, n, edge_length, strips);
-  for (size_t f = 0; f < r.layout.sides.size(); ++f) r.strips += StripChart(r.layout, int(f), strips);
+  r.n = ChartSamples(r.layout, n, edge_length, fill);
+  for (size_t f = 0; f < r.layout.sides.size(); ++f) r.strips += StripChart(r.layout, int(f), fill);
   r.seconds_charts = ChartSecondsSince(start);
   start = std::chrono::steady_clock::now();
   r.min_area = std::numeric_limits<double>::infinity();
@@ -176,9 +178,9 @@ ChartQuadsResult ChartQuads(const std::vector<Eigen::Vector3d>& input_points,
   }
   r.seconds_parameterisation = ChartSecondsSince(start);
   start = std::chrono::steady_clock::now();
-  r.quads = ExtractQuads(points, triangles, base, r.layout, r.maps, r.n, strips);
+  r.quads = ExtractQuads(points, triangles, base, r.layout, r.maps, r.n, fill);
   r.seconds_extraction = ChartSecondsSince(start);
-  CheckChartQuads(r);
+  CheckChartQuads(r, fill == ChartFill::kTriangles);
   return r;
 }
 

@@ -221,14 +221,15 @@ void ExtractTriangleChart(const ChartLayout& layout, const ChartLocator& locate,
   }
 }
 
-// A triangle chart with side `b` on the open boundary (§4.1.4): the lattice
-// A + (i/n)(B − A) + (j/n)(C − A) over A = corner b + 2 (opposite the
-// boundary side), B = corner b + 2 + 1, C = corner b + 2 + 2. Its lines run
-// parallel to the two inner sides and meet them at their n samples, as the
-// neighbouring charts' grid lines do; the cells that the boundary side cuts
-// are triangles.
-void ExtractStripChart(const ChartLayout& layout, const ChartLocator& locate,
-                       const std::vector<Eigen::Vector2d>& c, int f, int b, ExtractState& st) {
+// A triangle chart on the lattice A + (i/n)(B − A) + (j/n)(C − A) over
+// A = corner b + 2, B = corner b + 2 + 1, C = corner b + 2 + 2. A strip
+// (side b on the open boundary, §4.1.4): its lines run parallel to the two
+// inner sides and meet them at their n samples, as the neighbouring charts'
+// grid lines do; cells are quads but the n the boundary side cuts, which
+// are triangles. Otherwise (`strip` false) every cell is two triangles.
+void ExtractLatticeChart(const ChartLayout& layout, const ChartLocator& locate,
+                         const std::vector<Eigen::Vector2d>& c, int f, int b, bool strip,
+                         ExtractState& st) {
   const int n = st.n, a = (b + 2) % 3;
   const Eigen::Vector2d &A = c[size_t(a)], &B = c[size_t((a + 1) % 3)], &C = c[size_t((a + 2) % 3)];
   std::vector<int> inner(size_t(n + 1) * (n + 1), -1);
@@ -248,13 +249,16 @@ void ExtractStripChart(const ChartLayout& layout, const ChartLocator& locate,
   };
   for (int i = 0; i < n; ++i) {
     for (int j = 0; i + j < n; ++j) {
-      if (i + j + 1 == n) {
-        st.out->triangles.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
-      } else {
+      if (i + j + 1 == n || !strip) st.out->triangles.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
+      if (i + j + 1 == n) continue;
+      if (strip) {
         st.out->quads.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+      } else {
+        st.out->triangles.push_back({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
       }
     }
   }
+  if (!strip) return;
   for (int j = 1; j < n; ++j) st.out->strip_boundary_vertex.push_back(at(n - j, j));
 }
 
@@ -269,14 +273,14 @@ int StripSide(const ChartLayout& layout, int f) {
 
 }  // namespace
 
-bool StripChart(const ChartLayout& layout, int f, bool strips) {
-  return strips && layout.sides[size_t(f)].size() == 3 && StripSide(layout, f) >= 0;
+bool StripChart(const ChartLayout& layout, int f, ChartFill fill) {
+  return fill == ChartFill::kStrip && layout.sides[size_t(f)].size() == 3 && StripSide(layout, f) >= 0;
 }
 
 QuadExtraction ExtractQuads(const std::vector<Eigen::Vector3d>& points,
                             const std::vector<std::array<int, 3>>& triangles,
                             const BaseComplex& base, const ChartLayout& layout,
-                            const std::vector<ChartMap>& maps, int n, bool strips) {
+                            const std::vector<ChartMap>& maps, int n, ChartFill fill) {
   QuadExtraction out;
   ExtractState st;
   st.out = &out;
@@ -295,8 +299,15 @@ QuadExtraction ExtractQuads(const std::vector<Eigen::Vector3d>& points,
     const std::vector<Eigen::Vector2d> corners = ChartDomain(int(layout.sides[f].size()));
     const ChartLocator locate(points, triangles, layout.charts[f], maps[f]);
     CompareSides(locate, layout, corners, int(f), st);
-    if (StripChart(layout, int(f), strips)) {
-      ExtractStripChart(layout, locate, corners, int(f), StripSide(layout, int(f)), st);
+    if (fill == ChartFill::kTriangles) {
+      if (corners.size() != 3) {
+        throw BaseComplexError("base face " + std::to_string(f),
+                               "a quad: triangle output (charts.output: triangles) needs a "
+                               "triangle base complex");
+      }
+      ExtractLatticeChart(layout, locate, corners, int(f), 1, false, st);
+    } else if (StripChart(layout, int(f), fill)) {
+      ExtractLatticeChart(layout, locate, corners, int(f), StripSide(layout, int(f)), true, st);
     } else if (corners.size() == 3) {
       ExtractTriangleChart(layout, locate, corners, int(f), st);
     } else {

@@ -9,6 +9,8 @@
 // the file and the element.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -124,6 +126,41 @@ TEST_P(BaseComplexSphere, OctahedronGivesEightValenceThreeCentresAndRegularNodes
   EXPECT_LE(r.quads.shared_edge_mismatch, kSameSample * diagonal);
   EXPECT_EQ(r.quads.unlocated, 0);
   EXPECT_LE(OffSurface(p, t, r.quads), kOnSurface * diagonal);
+}
+
+// Triangle output (charts.output: triangles; thesis §4.1.4 for a triangle
+// complex, §9.2.4 remeshing using subdivision): each chart the whole lattice,
+// n² triangles. At n = 4 the octahedron gives the connectivity of two Loop
+// steps — 66 vertices, 128 triangles, the six nodes of valence 4 the only
+// irregular ones — with every vertex on the input surface.
+TEST(BaseComplexTriangles, OctahedronLatticeHasTheConnectivityOfTwoLoopSteps) {
+  std::vector<V3> p;
+  Triangles t;
+  OctahedronSphere(4, p, t);
+  BaseComplex base;
+  base.nodes = {0, 1, 2, 3, 4, 5};
+  base.faces = kOctahedronFaces;
+  const ChartQuadsResult r = ChartQuads(p, t, base, 4, 0, ChartWeights::kCotangent, ChartFill::kTriangles);
+  EXPECT_TRUE(r.quads.quads.empty());
+  EXPECT_EQ(r.quads.triangles.size(), 128u);
+  EXPECT_EQ(r.quads.points.size(), 66u);
+  EXPECT_EQ(r.boundary_edges, 0);
+  EXPECT_EQ(r.non_manifold_edges, 0);
+  EXPECT_EQ(r.t_junctions, 0);
+  ASSERT_EQ(r.irregular.size(), 6u);
+  EXPECT_EQ(r.irregular, r.expected_irregular);
+  for (int v : r.quads.node_vertex) EXPECT_EQ(r.valence[v], 4);
+  for (size_t v = 0; v < r.valence.size(); ++v) {
+    if (std::find(r.irregular.begin(), r.irregular.end(), int(v)) == r.irregular.end()) {
+      EXPECT_EQ(r.valence[v], 6) << v;
+    }
+  }
+  const double diagonal = Diagonal(p);
+  EXPECT_LE(r.quads.shared_edge_mismatch, kSameSample * diagonal);
+  EXPECT_EQ(r.quads.unlocated, 0);
+  EXPECT_LE(OffSurface(p, t, r.quads), kOnSurface * diagonal);
+  // An odd n is fine (no triangle is split).
+  EXPECT_EQ(ChartQuads(p, t, base, 3, 0, ChartWeights::kCotangent, ChartFill::kTriangles).quads.triangles.size(), 72u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Weights, BaseComplexSphere,

@@ -182,8 +182,8 @@ TEST(OpenCharts, BoundaryTriangleOfAQuadComplexIsAStripOfQuadsAndBoundaryTriangl
   enum { C0, L, R, C1, E, C2, M, C3, W, A };
   base.faces = {{C0, L, A, W}, {R, C1, E, A}, {L, R, A}, {W, A, M, C3}, {A, E, C2, M}};
   const int n = 4;
-  const ChartQuadsResult split = ChartQuads(p, t, base, n, 0, ChartWeights::kCotangent, false);
-  const ChartQuadsResult strip = ChartQuads(p, t, base, n, 0, ChartWeights::kCotangent, true);
+  const ChartQuadsResult split = ChartQuads(p, t, base, n, 0, ChartWeights::kCotangent, ChartFill::kSplit);
+  const ChartQuadsResult strip = ChartQuads(p, t, base, n, 0, ChartWeights::kCotangent, ChartFill::kStrip);
   ExpectConforming(split, "split");
   ExpectConforming(strip, "strip");
   EXPECT_EQ(split.strips, 0);
@@ -207,8 +207,8 @@ TEST(OpenCharts, BoundaryTriangleOfAQuadComplexIsAStripOfQuadsAndBoundaryTriangl
   }
   for (const V3& x : strip.quads.points) EXPECT_EQ(x.z(), 0);
   // An odd n: the strip needs no even n (the split would).
-  EXPECT_EQ(ChartQuads(p, t, base, 3, 0, ChartWeights::kCotangent, true).quads.triangles.size(), 3u);
-  EXPECT_THROW(ChartQuads(p, t, base, 3, 0, ChartWeights::kCotangent, false), std::invalid_argument);
+  EXPECT_EQ(ChartQuads(p, t, base, 3, 0, ChartWeights::kCotangent, ChartFill::kStrip).quads.triangles.size(), 3u);
+  EXPECT_THROW(ChartQuads(p, t, base, 3, 0, ChartWeights::kCotangent, ChartFill::kSplit), std::invalid_argument);
 }
 
 TEST(OpenCharts, ABaseBoundaryOffTheSurfaceBoundaryIsRefusedNamingTheVertex) {

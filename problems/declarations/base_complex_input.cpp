@@ -126,8 +126,8 @@ std::string BcInvalid(const ChartQuadsResult& r, double distance_relative) {
   std::string out;
   if (r.flipped > 0) out += std::to_string(r.flipped) + " flipped parameter triangles\n";
   if (r.irregular != r.expected_irregular) {
-    out += "the irregular vertices are not the base complex's (inner nodes of valence ≠ 4, "
-           "boundary nodes of valence ≠ 3, triangle centres)\n";
+    out += "the irregular vertices are not the base complex's (its nodes of irregular "
+           "valence, the centres of split triangles)\n";
   }
   if (r.boundary_edges != r.expected_boundary_edges || r.non_manifold_edges > 0 ||
       r.t_junctions > 0) {
@@ -173,7 +173,12 @@ std::vector<Key> ChartKeys() {
                     "a triangle chart with one side on the open boundary: `strip` = quads lined "
                     "up with its two inner sides and n triangles along the boundary (thesis "
                     "§4.1.4; n may be odd), `split` = three quads around a valence-3 centre like "
-                    "any triangle chart; `auto` = strip when the base complex has a quad face")};
+                    "any triangle chart; `auto` = strip when the base complex has a quad face"),
+          ChoiceKey("charts.output", "quads", {"quads", "triangles"},
+                    "`triangles`: a triangle base complex's every chart sampled as the whole "
+                    "lattice, n² triangles (thesis §4.1.4; at n = 2^k the connectivity of k Loop "
+                    "steps of the base complex, its vertices on the design surface: remeshing "
+                    "using subdivision, §9.2.4); no smoothing sweeps")};
 }
 
 void CheckChartKeys(const Settings& s) {
@@ -186,15 +191,18 @@ ChartStep RunChartStep(const Settings& s, const Mesh& design,
                        const std::vector<Eigen::Vector3d>& points,
                        const std::vector<std::array<int, 3>>& triangles, const BaseComplex& base) {
   const std::string weights = s.String("charts.weights");
-  const std::string& fill = s.String("charts.boundary_triangles");
+  const std::string& strips = s.String("charts.boundary_triangles");
   bool quad_face = false;
   for (const auto& f : base.faces) quad_face = quad_face || f.size() == 4;
+  const ChartFill fill = s.String("charts.output") == "triangles" ? ChartFill::kTriangles
+                         : strips == "strip" || (strips == "auto" && quad_face) ? ChartFill::kStrip
+                                                                                : ChartFill::kSplit;
   ChartStep out;
   ChartQuadsResult& r = out.result;
   r = ChartQuads(points, triangles, base, int(s.Integer("charts.n")),
                  s.Number("charts.edge_length"),
                  weights == "mean_value" ? ChartWeights::kMeanValue : ChartWeights::kCotangent,
-                 fill == "strip" || (fill == "auto" && quad_face));
+                 fill);
   const double diagonal = PrincipalBoxDiagonal(design);
   const ReferenceSurface surface(design);
   const GridLineKinks mapped = MeasureGridLineKinks(r.quads.points, r.quads.quads);
@@ -219,17 +227,22 @@ ChartStep RunChartStep(const Settings& s, const Mesh& design,
   out.invalid = BcInvalid(r, distance / diagonal);
   char line[768];
   std::snprintf(line, sizeof line,
-                "charts: %zu, n = %d, flipped parameter triangles %d\nquads: %zu vertices, %zu "
+                "charts: %zu, n = %d, flipped parameter triangles %d\noutput: %zu vertices, %zu "
                 "quads, %zu triangles, irregular vertices %zu (base complex predicts %zu: %s), boundary edges "
-                "%d (its boundary gives %d), T-junctions %d, distance to the input %.2e of the diagonal\ngrid lines turn "
-                "at most %.1f° (mean %.2f°) after %d smoothing sweeps, %.1f° (%.2f°) as mapped\n",
+                "%d (its boundary gives %d), T-junctions %d, distance to the input %.2e of the diagonal\n",
                 r.layout.charts.size(), r.n, r.flipped, r.quads.points.size(), r.quads.quads.size(),
                 r.quads.triangles.size(), r.irregular.size(), r.expected_irregular.size(),
                 r.irregular == r.expected_irregular ? "the same vertices" : "differ",
-                r.boundary_edges, r.expected_boundary_edges, r.t_junctions, distance / diagonal, relaxed.max_degrees,
-                relaxed.mean_degrees, int(s.Integer("charts.smoothing")), mapped.max_degrees,
-                mapped.mean_degrees);
+                r.boundary_edges, r.expected_boundary_edges, r.t_junctions, distance / diagonal);
   out.headline = line;
+  if (!r.quads.quads.empty()) {
+    std::snprintf(line, sizeof line,
+                  "grid lines turn at most %.1f° (mean %.2f°) after %d smoothing sweeps, %.1f° "
+                  "(%.2f°) as mapped\n",
+                  relaxed.max_degrees, relaxed.mean_degrees, int(s.Integer("charts.smoothing")),
+                  mapped.max_degrees, mapped.mean_degrees);
+    out.headline += line;
+  }
   return out;
 }
 
@@ -256,7 +269,7 @@ UserBaseComplex ReadUserBaseComplex(const Settings& s, const std::vector<Eigen::
 }
 
 std::vector<Stage> NetIsTheResult(const Settings&) {
-  return {ResultWithoutSolve("extract", "the quad mesh is the result (no solve)")};
+  return {ResultWithoutSolve("extract", "the charts' mesh is the result (no solve)")};
 }
 
 }  // namespace archgeo
