@@ -38,6 +38,15 @@ constexpr double kSameSample = 1e-12;  // of the diagonal
 const std::vector<std::vector<int>> kOctahedronFaces = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
                                                         {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
 
+// OctahedronSphere(levels) into p, t and the octahedron on its first six vertices.
+BaseComplex OctahedronOnSphere(int levels, std::vector<V3>& p, Triangles& t) {
+  OctahedronSphere(levels, p, t);
+  BaseComplex base;
+  base.nodes = {0, 1, 2, 3, 4, 5};
+  base.faces = kOctahedronFaces;
+  return base;
+}
+
 // The 4 × 4 quad complex on GridTorus(u, v): nodes at every u/4-th and v/4-th vertex.
 BaseComplex TorusComplex(int u, int v) {
   BaseComplex b;
@@ -92,10 +101,7 @@ class BaseComplexSphere : public ::testing::TestWithParam<ChartWeights> {};
 TEST_P(BaseComplexSphere, OctahedronGivesEightValenceThreeCentresAndRegularNodes) {
   std::vector<V3> p;
   Triangles t;
-  OctahedronSphere(4, p, t);  // 2048 triangles
-  BaseComplex base;
-  base.nodes = {0, 1, 2, 3, 4, 5};
-  base.faces = kOctahedronFaces;
+  const BaseComplex base = OctahedronOnSphere(4, p, t);  // 2048 triangles
   const ChartQuadsResult r = ChartQuads(p, t, base, 8, 0, GetParam());
   ASSERT_EQ(r.layout.charts.size(), 8u);
   for (const Chart& c : r.layout.charts) {
@@ -136,10 +142,7 @@ TEST_P(BaseComplexSphere, OctahedronGivesEightValenceThreeCentresAndRegularNodes
 TEST(BaseComplexTriangles, OctahedronLatticeHasTheConnectivityOfTwoLoopSteps) {
   std::vector<V3> p;
   Triangles t;
-  OctahedronSphere(4, p, t);
-  BaseComplex base;
-  base.nodes = {0, 1, 2, 3, 4, 5};
-  base.faces = kOctahedronFaces;
+  const BaseComplex base = OctahedronOnSphere(4, p, t);
   const ChartQuadsResult r = ChartQuads(p, t, base, 4, 0, ChartWeights::kCotangent, ChartFill::kTriangles);
   EXPECT_TRUE(r.quads.quads.empty());
   EXPECT_EQ(r.quads.triangles.size(), 128u);
@@ -175,10 +178,7 @@ INSTANTIATE_TEST_SUITE_P(Weights, BaseComplexSphere,
 TEST(BaseComplexCharts, WeightsChangeTheInterior) {
   std::vector<V3> p;
   Triangles t;
-  OctahedronSphere(3, p, t);
-  BaseComplex base;
-  base.nodes = {0, 1, 2, 3, 4, 5};
-  base.faces = kOctahedronFaces;
+  const BaseComplex base = OctahedronOnSphere(3, p, t);
   const ChartLayout layout = BuildChartLayout(p, t, base);
   const ChartMap cotan = ParameteriseChart(p, t, layout, 0, ChartWeights::kCotangent);
   const ChartMap mean = ParameteriseChart(p, t, layout, 0, ChartWeights::kMeanValue);
@@ -256,10 +256,7 @@ TEST(BaseComplexCharts, TetrahedronOnATorusIsNotADisc) {
 TEST(BaseComplexCharts, OddSamplesWithTrianglesAreRefused) {
   std::vector<V3> p;
   Triangles t;
-  OctahedronSphere(2, p, t);
-  BaseComplex base;
-  base.nodes = {0, 1, 2, 3, 4, 5};
-  base.faces = kOctahedronFaces;
+  const BaseComplex base = OctahedronOnSphere(2, p, t);
   EXPECT_THROW(ChartQuads(p, t, base, 5, 0, ChartWeights::kCotangent), std::invalid_argument);
   // From an edge length: the quarter great circle over 0.2 rounds to 8 (even).
   EXPECT_EQ(ChartQuads(p, t, base, 0, 0.2, ChartWeights::kCotangent).n, 8);

@@ -37,6 +37,9 @@ void OpenPlate(int mx, int my, double h, std::vector<V3>& p, Triangles& t) {
   }
 }
 
+// The surface vertex at (x, y) of OpenPlate(32, 16, 0.125): [0, 4] × [0, 2].
+int PlateVertex(double x, double y) { return int(std::lround(y * 8)) * 33 + int(std::lround(x * 8)); }
+
 // The unit sphere's triangles whose centroid lies above z = `above`, on
 // their own vertices: a cap with one boundary loop.
 void OpenCap(double above, std::vector<V3>& p, Triangles& t) {
@@ -150,7 +153,7 @@ TEST(ChartPaths, APathRunsOnTheSideOfANodeTheComplexSays) {
   std::vector<V3> p;
   Triangles t;
   OpenPlate(32, 16, 0.125, p, t);
-  auto at = [](double x, double y) { return int(std::lround(y * 8)) * 33 + int(std::lround(x * 8)); };
+  const auto at = PlateVertex;
   BaseComplex base;
   base.nodes = {at(0, 0), at(4, 0), at(4, 2), at(0, 2), at(1, 1), at(2, 1), at(3, 0.5), at(2, 1.75)};
   enum { P0, P1, P2, P3, C, A, B, D };
@@ -175,7 +178,7 @@ TEST(OpenCharts, BoundaryTriangleOfAQuadComplexIsAStripOfQuadsAndBoundaryTriangl
   std::vector<V3> p;
   Triangles t;
   OpenPlate(32, 16, 0.125, p, t);
-  auto at = [](double x, double y) { return int(std::lround(y * 8)) * 33 + int(std::lround(x * 8)); };
+  const auto at = PlateVertex;
   BaseComplex base;
   base.nodes = {at(0, 0), at(1, 0), at(3, 0), at(4, 0), at(4, 1), at(4, 2), at(2, 2), at(0, 2),
                 at(0, 1), at(2, 1)};
