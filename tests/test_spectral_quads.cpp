@@ -112,5 +112,17 @@ TEST(SpectralQuads, EigenfunctionBeyondTheVerticesIsAnErrorNamingTheKey) {
   }
 }
 
+// The quasi-dual is all quads: triangle output is refused before anything
+// runs, naming the key (an exit-4 "missed goal" after the solve otherwise).
+TEST(SpectralQuads, TriangleOutputIsAnErrorNamingTheKey) {
+  const Mesh sphere = TriangulatedEllipsoid(1, 1, 1, 1);
+  try {
+    SqRun("problem: spectral_quads\nspectral: {eigenfunction: 9}\ncharts: {output: triangles}\n", sphere);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("charts.output"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace ARCHGEO_UNITY_ID
 }  // namespace archgeo

@@ -187,6 +187,15 @@ void CheckChartKeys(const Settings& s) {
   }
 }
 
+void CheckQuadComplexChartKeys(const Settings& s) {
+  CheckChartKeys(s);
+  if (s.String("charts.output") == "triangles") {
+    throw s.Error("charts.output",
+                  "triangles need a triangle base complex (base_complex_quads); this problem's "
+                  "base complex, the quasi-dual of a Morse–Smale complex, is all quads");
+  }
+}
+
 ChartStep RunChartStep(const Settings& s, const Mesh& design,
                        const std::vector<Eigen::Vector3d>& points,
                        const std::vector<std::array<int, 3>>& triangles, const BaseComplex& base) {

@@ -39,10 +39,12 @@ UserBaseComplex ReadUserBaseComplex(const Settings& s, const std::vector<Eigen::
 // vertices the nodes, its quads the faces, each side's edge its own.
 BaseComplex QuasiDualBaseComplex(const QuadBaseComplex& q);
 
-// The keys charts.n, charts.edge_length and charts.weights, and the check
-// that charts.n and charts.edge_length are not both given.
+// The keys charts.* (n, edge_length, weights, smoothing, boundary_triangles,
+// output), and the check that charts.n and charts.edge_length are not both given.
 std::vector<Key> ChartKeys();
 void CheckChartKeys(const Settings& s);
+// CheckChartKeys, and charts.output: triangles refused (a quad base complex).
+void CheckQuadComplexChartKeys(const Settings& s);
 
 // The schedule of a problem whose `net` hook makes the result (the quads of
 // the charts): one stage, `extract`, of one round that records it; no solve.

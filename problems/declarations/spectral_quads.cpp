@@ -266,7 +266,7 @@ void SqWrite(HookContext& c) {
 }
 
 void SqCheck(const Settings& s) {
-  CheckChartKeys(s);
+  CheckQuadComplexChartKeys(s);
   if (s.Integer("spectral.eigenfunction") > 0 &&
       (s.Given("spectral.charts") || s.Number("spectral.chart_edge_length") > 0)) {
     throw s.Error("spectral.eigenfunction",

@@ -446,7 +446,7 @@ ProblemDecl wave_quads() {
   d.defaults = {{"solver.max_num_iterations", 100LL}, {"solver.function_tolerance", 1e-4}};
   d.keys = WaveKeys();
   for (Key& k : ChartKeys()) d.keys.push_back(std::move(k));
-  d.check = &CheckChartKeys;
+  d.check = &CheckQuadComplexChartKeys;
   d.blocks = {{"wave_f", Site::kVertex, wd::kWidth, FrameMap::kInvariant, false,
                Carry::kReinitialise, true, false,
                "the standing wave's 4-vector (cos θ cos φ, cos θ sin φ, sin θ cos φ, "
