@@ -18,6 +18,7 @@ namespace archgeo {
 namespace {
 
 using V3 = Eigen::Vector3d;
+using Quadric = Eigen::Matrix4d;
 
 // The current mesh: triangles with an alive flag, the alive triangles at each
 // vertex (cleaned as they die).
@@ -29,6 +30,10 @@ struct DcMesh {
   std::vector<V3> normal0;           // the input's unit vertex normals (area-weighted)
   double cos_input = -1;             // least cosine of a triangle normal to its corners' normal0
   double min_angle = 0;              // collapses do not make a triangle sharper than this
+  double error_level = 0;            // the largest RMS distance of a collapse so far
+  double flip_factor = -1;           // flips move the surface by less than this times error_level (< 0: any)
+  double relocation_factor = -1;     // relocations: RMS distance to the node's planes within this times it
+  std::vector<Quadric> quadric;      // per vertex: the input quadrics of the vertices collapsed into it
   DcMesh(const std::vector<V3>& points, const std::vector<std::array<int, 3>>& t)
       : p(points), tri(t), tri_alive(t.size(), 1), at(points.size()) {
     for (size_t f = 0; f < t.size(); ++f) {
@@ -141,6 +146,66 @@ double BoundaryTurn(const DcMesh& m, int v) {
   return M_PI - Angle(m.p[size_t(next)] - x, m.p[size_t(prev)] - x);
 }
 
+// Plane quadrics (Garland & Heckbert 1997) of the input, per vertex: the
+// area-weighted squared distance to the planes of its triangles, plus, on
+// the boundary, to the planes through each boundary edge perpendicular to
+// its triangle (weighted by the edge's squared length times
+// kBoundaryQuadricWeight), so that the boundary keeps its course.
+constexpr double kBoundaryQuadricWeight = 10;
+
+Quadric PlaneQuadric(const V3& n, const V3& x, double weight) {
+  const Eigen::Vector4d plane(n.x(), n.y(), n.z(), -n.dot(x));
+  return weight * plane * plane.transpose();
+}
+
+std::vector<Quadric> InputQuadrics(const std::vector<V3>& p, const std::vector<std::array<int, 3>>& t) {
+  std::vector<Quadric> q(p.size(), Quadric::Zero());
+  std::map<std::pair<int, int>, int> use;
+  for (const auto& f : t) {
+    for (int k = 0; k < 3; ++k) {
+      const int a = f[size_t(k)], b = f[size_t((k + 1) % 3)];
+      ++use[{std::min(a, b), std::max(a, b)}];
+    }
+  }
+  for (const auto& f : t) {
+    const V3 &a = p[size_t(f[0])], &b = p[size_t(f[1])], &c = p[size_t(f[2])];
+    const V3 n = (b - a).cross(c - a);
+    const double twice_area = n.norm();
+    if (!(twice_area > 0)) continue;
+    const V3 unit = n / twice_area;
+    const Quadric face = PlaneQuadric(unit, a, twice_area / 2);
+    for (int k = 0; k < 3; ++k) {
+      const int i = f[size_t(k)], j = f[size_t((k + 1) % 3)];
+      q[size_t(i)] += face;
+      if (use[{std::min(i, j), std::max(i, j)}] != 1) continue;
+      const V3 e = p[size_t(j)] - p[size_t(i)];
+      const V3 side = e.cross(unit);
+      if (!(side.norm() > 0)) continue;
+      const Quadric edge = PlaneQuadric(side.normalized(), p[size_t(i)], kBoundaryQuadricWeight * e.squaredNorm());
+      q[size_t(i)] += edge;
+      q[size_t(j)] += edge;
+    }
+  }
+  return q;
+}
+
+double QuadricError(const Quadric& q, const V3& x) {
+  const Eigen::Vector4d h(x.x(), x.y(), x.z(), 1);
+  return std::max(0.0, h.dot(q * h));
+}
+
+// The angle defect at an inner vertex v (radians): 2π − Σθ.
+double AngleDefect(const DcMesh& m, int v) {
+  double angles = 0;
+  for (int f : m.at[size_t(v)]) {
+    const int k = m.Slot(f, v);
+    const V3& x = m.p[size_t(v)];
+    angles += Angle(m.p[size_t(m.tri[size_t(f)][size_t((k + 1) % 3)])] - x,
+                    m.p[size_t(m.tri[size_t(f)][size_t((k + 2) % 3)])] - x);
+  }
+  return 2 * M_PI - angles;
+}
+
 struct Candidate {
   bool ok = false;
   double min_angle = -1;  // smallest angle of the new triangles
@@ -233,6 +298,26 @@ void Collapse(DcMesh& m, int u, int v) {
   m.at[size_t(u)].clear();
 }
 
+// The distance between the segments pq and rs (Ericson, Real-Time
+// Collision Detection, §5.1.9): how far a flip of pq into rs moves the
+// surface where the two cross.
+double SegmentDistance(const V3& p, const V3& q, const V3& r, const V3& s) {
+  const V3 d1 = q - p, d2 = s - r, w = p - r;
+  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(w);
+  if (!(a > 0) || !(e > 0)) return w.norm();
+  const double c = d1.dot(w), b = d1.dot(d2), denom = a * e - b * b;
+  double sc = denom > 0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+  double tc = (b * sc + f) / e;
+  if (tc < 0) {
+    tc = 0;
+    sc = std::clamp(-c / a, 0.0, 1.0);
+  } else if (tc > 1) {
+    tc = 1;
+    sc = std::clamp((b - c) / a, 0.0, 1.0);
+  }
+  return (p + sc * d1 - (r + tc * d2)).norm();
+}
+
 // Valence-improving flip of edge ab (Gebreiter 2012, §3.1.2: "edges are
 // flipped if the result leads to an overall increase in regularity of the
 // vertices affected"): triangles (a, b, c) and (b, a, d) become (c, a, d)
@@ -287,6 +372,7 @@ bool TryFlip(DcMesh& m, int a, int b, double cos_turn, const std::vector<int>& c
     }
   }
   if (!m.FacesAsInput(c, a, d, n1) || !m.FacesAsInput(d, b, c, n2)) return false;
+  if (m.flip_factor >= 0 && !(SegmentDistance(xa, xb, xc, xd) < m.flip_factor * m.error_level)) return false;
   const double angle_before = std::min(MinAngle(xa, xb, xc), MinAngle(xb, xa, xd));
   const double angle_after = std::min(MinAngle(xc, xa, xd), MinAngle(xd, xb, xc));
   if (sliver > 0) {
@@ -309,7 +395,15 @@ bool TryFlip(DcMesh& m, int a, int b, double cos_turn, const std::vector<int>& c
   return true;
 }
 
-constexpr double kKeepImportance = 0.5;  // a relocated node keeps this share of its importance
+
+// The RMS distance to the planes of quadric q at x: its error over its area
+// (the trace of its 3 × 3 part: the weights of its unit-normal planes).
+double RmsDistance(const Quadric& q, const V3& x) {
+  const double area = q.topLeftCorner<3, 3>().trace();
+  return area > 0 ? std::sqrt(QuadricError(q, x) / area) : 0;
+}
+constexpr double kKeepImportance = 0.5;
+constexpr double kTieBreak = 1e-9;  // collapses of no error go by importance  // a relocated node keeps this share of its importance
 
 // The smallest angle of v's triangles with v at x (−1: one would be
 // degenerate, turn from its normal by more than the collapse bound, or leave
@@ -348,6 +442,11 @@ bool Relocate(DcMesh& m, int v, const std::vector<int>& region, const std::vecto
         importance[size_t(w)] < kKeepImportance * importance[size_t(v)]) {
       continue;
     }
+    if (m.relocation_factor >= 0 &&
+        RmsDistance(m.quadric[size_t(v)], m.p[size_t(w)]) >
+            std::max(m.relocation_factor * m.error_level, RmsDistance(m.quadric[size_t(v)], m.p[size_t(v)]))) {
+      continue;  // it would leave the node's planes by more than the collapses did
+    }
     const double angle = FanAngle(m, v, w, cos_turn);
     if (angle > best_angle + 1e-12) {
       best_angle = angle;
@@ -358,6 +457,7 @@ bool Relocate(DcMesh& m, int v, const std::vector<int>& region, const std::vecto
   for (int f : m.at[size_t(v)]) m.tri[size_t(f)][size_t(m.Slot(f, v))] = best;
   m.at[size_t(best)] = std::move(m.at[size_t(v)]);
   m.at[size_t(v)].clear();
+  m.quadric[size_t(best)] = m.quadric[size_t(v)];
   parent[size_t(best)] = -1;
   parent[size_t(v)] = best;
   return true;
@@ -468,17 +568,6 @@ DecimateResult Decimate(const std::vector<Eigen::Vector3d>& points,
   for (int v : options.locked) {
     if (v >= 0 && size_t(v) < n) locked[size_t(v)] = 1;
   }
-  const double corner_turn = options.corner_degrees * M_PI / 180;
-  for (size_t v = 0; v < n; ++v) {
-    if (m.at[v].empty()) continue;
-    out.importance[v] = Importance(m, int(v));
-    if (BoundaryTurn(m, int(v)) > corner_turn) {
-      out.corner[v] = 1;
-      locked[v] = 1;
-      ++out.corners;
-    }
-  }
-  out.boundary_loops = BoundaryLoops(m);
   // A node's base edges leave it along distinct surface edges (the charts'
   // paths share no vertex but their nodes): its valence stays within the
   // input's.
@@ -489,41 +578,105 @@ DecimateResult Decimate(const std::vector<Eigen::Vector3d>& points,
     cap[v] = int(r.vertex.size());
     input_boundary[v] = DcMesh::OnBoundary(r);
   }
+  const double corner_turn = options.corner_degrees * M_PI / 180;
+  for (size_t v = 0; v < n; ++v) {
+    if (m.at[v].empty()) continue;
+    out.importance[v] = Importance(m, int(v));
+    if (BoundaryTurn(m, int(v)) > corner_turn) {
+      out.corner[v] = 1;
+      locked[v] = 1;
+      ++out.corners;
+    } else if (!input_boundary[v] && std::abs(AngleDefect(m, int(v))) > corner_turn) {
+      out.corner[v] = 1;  // a feature corner: the surface's cone point (a cube's corner)
+      locked[v] = 1;
+      ++out.feature_corners;
+    }
+  }
+  out.boundary_loops = BoundaryLoops(m);
   const double cos_turn = std::cos(options.max_normal_turn_degrees * M_PI / 180);
 
-  // Least important first; stale entries (an older stamp) are skipped.
-  using Entry = std::pair<double, std::pair<int, int>>;  // importance, (vertex, stamp)
+  // Cheapest first; stale entries (an older stamp) are skipped. The key of
+  // u: error-driven, the least quadric error of a collapse of u into a
+  // neighbour (admissible or not: a lower bound, made exact when popped)
+  // times 1 + importance_weight · I(u); otherwise I(u) alone.
+  m.quadric = InputQuadrics(points, triangles);
+  std::vector<Quadric>& quadric = m.quadric;
+  m.flip_factor = options.flip_error_factor;
+  m.relocation_factor = options.relocation_error_factor;
+  const bool by_error = options.error_driven;
+  const double weight = options.importance_weight;
+  auto collapse_error = [&](int u, int v) {
+    return QuadricError(quadric[size_t(u)] + quadric[size_t(v)], points[size_t(v)]);
+  };
+  double scale4 = 0;  // the input's mean edge length to the fourth: an error's units
+  {
+    double length = 0;
+    for (const auto& t : triangles) {
+      for (int k = 0; k < 3; ++k) length += (points[size_t(t[size_t(k)])] - points[size_t(t[size_t((k + 1) % 3)])]).norm();
+    }
+    length /= 3.0 * double(triangles.size());
+    scale4 = std::pow(length, 4);
+  }
+  auto key_of = [&](int u, double error) {
+    const double importance = Importance(m, u);
+    return by_error ? error * (1 + weight * importance) + kTieBreak * importance * scale4 : importance;
+  };
+  auto estimate = [&](int u) {
+    double least = INFINITY;
+    if (by_error) {
+      for (int v : m.RingOf(u).vertex) least = std::min(least, collapse_error(u, v));
+    }
+    return key_of(u, least);
+  };
+  using Entry = std::pair<double, std::pair<int, int>>;  // key, (vertex, stamp)
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
   std::vector<int> stamp(n, 0), parent(n, -1);
   for (size_t v = 0; v < n; ++v) {
-    if (!m.at[v].empty() && !locked[v]) queue.push({out.importance[v], {int(v), 0}});
+    if (!m.at[v].empty() && !locked[v]) queue.push({estimate(int(v)), {int(v), 0}});
   }
   while (count > options.target_vertices && !queue.empty()) {
-    const auto [importance, key] = queue.top();
+    const auto [key, item] = queue.top();
     queue.pop();
-    const int u = key.first;
-    if (key.second != stamp[size_t(u)] || m.at[size_t(u)].empty()) continue;
+    const int u = item.first;
+    if (item.second != stamp[size_t(u)] || m.at[size_t(u)].empty()) continue;
     const DcMesh::Ring ru = m.RingOf(u);
     int best = -1;
-    double best_angle = -1;
+    double best_angle = -1, best_error = INFINITY;
+    std::vector<std::pair<int, Candidate>> admissible;
     for (int v : ru.vertex) {
       const Candidate c = Evaluate(m, u, v, ru, cos_turn, cap);
       if (!c.ok) {
         ++out.refused;
         continue;
       }
+      admissible.push_back({v, c});
+      if (by_error) best_error = std::min(best_error, collapse_error(u, v));
+    }
+    // Error-driven: of the collapses of the least error (up to the tie
+    // break), the one of the roundest triangles; otherwise the roundest.
+    for (const auto& [v, c] : admissible) {
+      if (by_error && collapse_error(u, v) > best_error + kTieBreak * scale4) continue;
       if (c.min_angle > best_angle) {
         best_angle = c.min_angle;
         best = v;
       }
     }
     if (best < 0) continue;  // waits until its one ring changes (a new stamp)
+    if (by_error) {
+      const double exact = key_of(u, best_error);
+      if (exact > key * (1 + 1e-12)) {
+        queue.push({exact, item});  // its cheapest collapse was refused: back in line
+        continue;
+      }
+    }
     Collapse(m, u, best);
+    quadric[size_t(best)] += quadric[size_t(u)];
+    m.error_level = std::max(m.error_level, RmsDistance(quadric[size_t(best)], points[size_t(best)]));
     parent[size_t(u)] = best;
     --count;
     // Flips on the edges at best and around its ring; every vertex they
-    // touch gets a new importance and is queued again (its collapses may
-    // have become admissible).
+    // touch gets a new key and is queued again (its collapses may have
+    // become admissible).
     std::vector<int> touched = m.RingOf(best).vertex;
     touched.push_back(best);
     for (int w : std::vector<int>(touched)) {
@@ -541,7 +694,7 @@ DecimateResult Decimate(const std::vector<Eigen::Vector3d>& points,
     for (int w : requeue) {
       if (locked[size_t(w)] || m.at[size_t(w)].empty()) continue;
       ++stamp[size_t(w)];
-      queue.push({Importance(m, w), {w, stamp[size_t(w)]}});
+      queue.push({estimate(w), {w, stamp[size_t(w)]}});
     }
   }
   out.reached = count == options.target_vertices;

@@ -69,13 +69,17 @@ namespace archgeo {
 
 struct DecimateOptions {
   int target_vertices = 0;               // vertices to keep (≥ 3)
-  double corner_degrees = 30;            // boundary turning angle that locks a vertex
+  double corner_degrees = 30;            // boundary turning angle, or inner angle defect, that locks a vertex
   double max_normal_turn_degrees = 60;   // largest turn of a triangle normal in one collapse
   double max_normal_deviation_degrees = 60;  // triangle normal against its corners' input normals
   double min_angle_degrees = 10;         // no collapse makes a triangle sharper than this (and than before)
   int shape_rounds = 10;                 // rounds of node relocations and sliver flips after the collapses
   double sliver_degrees = 20;            // a triangle with a smaller angle is a sliver
   std::vector<int> locked;               // further surface vertex ids that stay
+  bool error_driven = true;              // order by the collapses' quadric error (false: by I(v) alone)
+  double importance_weight = 1;          // error-driven key: error · (1 + importance_weight · I(v))
+  double flip_error_factor = 1;          // a flip moves the surface by less than this × the error level (< 0: off)
+  double relocation_error_factor = 1;    // a relocation stays within this × the error level (< 0: off)
 };
 
 struct DecimateResult {
@@ -83,8 +87,9 @@ struct DecimateResult {
   std::vector<std::array<int, 3>> triangles;    // node indices, oriented as the input
   std::vector<int> representative;              // per input vertex: the node it went into (−1: unused)
   std::vector<double> importance;               // per input vertex: I(v) on the input
-  std::vector<char> corner;                     // per input vertex: a locked boundary corner
+  std::vector<char> corner;                     // per input vertex: a locked boundary or feature corner
   int corners = 0;                              // locked boundary corners
+  int feature_corners = 0;                      // locked inner vertices of angle defect > corner_degrees
   int boundary_loops = 0;                       // of the input (and of the result)
   bool reached = false;                         // nodes.size() == target_vertices
   int refused = 0;                              // collapse candidates refused on the way
