@@ -15,9 +15,23 @@
 //    mean-curvature normal Hn_v = ½ Σ_j (cot α_ij + cot β_ij)(x_v − x_j)
 //    (Meyer et al. 2003; only its normal part, so a flat boundary scores 0),
 //    h_v the mean length of the edges at v. Both terms are dimensionless.
-//  - The least important vertex u is removed by a half-edge collapse
-//    u → v into the neighbour v whose new triangles have the largest
-//    minimum angle (isotropy). A collapse is refused if it breaks the link
+//  - The error of a half-edge collapse u → v (Garland & Heckbert 1997, with
+//    the kept vertex at v: the nodes stay input vertices, on the surface):
+//    (Q_u + Q_v)(x_v), Q the sum of the plane quadrics of the input
+//    vertices collapsed into the vertex, each the area-weighted squared
+//    distance to the planes of its input triangles, plus, at a boundary
+//    edge, 10 |e|² times that to the plane through the edge perpendicular to
+//    its triangle (the boundary keeps its course).
+//  - Order (`error_driven`, the default): the vertex u of least key
+//        E(u) · (1 + importance_weight · I(u))  +  10⁻⁹ · I(u) · l⁴
+//    goes first (E(u) the least error of an admissible collapse of u, l the
+//    input's mean edge length: collapses of no error, on a plane or along a
+//    straight crease, go by importance), into the neighbour of least error,
+//    of those the one whose new triangles have the largest minimum angle.
+//    With `error_driven` false, the order of the thesis alone: the least
+//    important vertex first, into the neighbour whose new triangles have the
+//    largest minimum angle (isotropy).
+//  - A collapse is refused if it breaks the link
 //    condition (N(u) ∩ N(v) = the vertices opposite edge uv; so a closed
 //    surface keeps its genus and stays manifold), leaves a vertex of
 //    valence < 3 (< 2 on the boundary) or v more than 2 above its input
@@ -28,9 +42,17 @@
 //    `min_angle_degrees` and less than it was. A boundary vertex collapses
 //    only along a boundary edge (the boundary keeps its loops and its
 //    vertices stay on it); a boundary corner (the boundary turns there by
-//    more than `corner_degrees` on the input) and any vertex in `locked`
-//    never collapses. A vertex with no admissible collapse waits until its
-//    one ring changes.
+//    more than `corner_degrees` on the input), a feature corner (an inner
+//    vertex of angle defect above `corner_degrees`: a cube's corner) and any
+//    vertex in `locked` never collapse. A vertex with no admissible collapse
+//    waits until its one ring changes.
+//  - The error level: the largest RMS distance sqrt(Q_v(x_v) / area of Q_v)
+//    of a kept vertex after a collapse so far. Every flip below moves the
+//    surface (the distance between the two diagonals) by less than
+//    `flip_error_factor` times it, and every relocation leaves the node's
+//    RMS distance within `relocation_error_factor` times it (or within its
+//    own): the shape operations cost no more accuracy than the collapses
+//    did (on a plane, no flip until a collapse has made an error).
 //  - After each collapse, valence-improving flips on the edges around the
 //    kept vertex (§3.1.2: "edges are flipped if the result leads to an
 //    overall increase in regularity"): Σ (valence − ideal)² over the four
@@ -47,12 +69,12 @@
 //    collapsed into it; a boundary node along the boundary only, an inner
 //    one inside only; at least half as important on the input, so a node on
 //    a feature stays there) whose triangles have the largest smallest angle,
-//    when larger, within the normal bounds above and the vertex's input
-//    valence —
+//    when larger, within the normal and error-level bounds above and the
+//    vertex's input valence —
 //    and flips of slivers: an edge whose two triangles' smallest angle is
 //    below `sliver_degrees` flips when that angle grows (valences from 3, 2
 //    on the boundary, to 2 above the input's, as for the collapses; normals
-//    within the bounds above).
+//    and the surface's move within the bounds above).
 //
 // Plain arrays in, plain structs out (no CGAL): the nodes are surface vertex
 // ids, as BaseComplex (spectral/base_complex_charts.h) takes them.

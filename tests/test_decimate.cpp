@@ -1,8 +1,9 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Decimation to a base complex (spectral/decimate.h, Gebreiter 2012, §3.1.1)
-// and base_complex.decimate in base_complex_quads: the target count is met
-// exactly; a sphere keeps V − E + F = 2 and a torus 0, as closed manifolds;
+// and base_complex.decimate in base_complex_quads: ordered by the
+// collapses' quadric error, the decimated surface stays closer to the input
+// than ordered by curvature alone; the target count is met exactly; a sphere keeps V − E + F = 2 and a torus 0, as closed manifolds;
 // the eight corners of a cube (its only curvature: angle defect π/2 each)
 // survive as base vertices; an open surface keeps its boundary corners and
 // its boundary loop; a decimated sphere goes through the charts to a quad
@@ -198,9 +199,8 @@ TEST(Decimate, CubeKeepsItsEightCorners) {
     EXPECT_EQ(corners(r), 8) << target;
     EXPECT_EQ(Topology(r.nodes.size(), r.triangles).euler, 2);
   }
-  // Below 20 the 10° minimum-angle bound blocks the edges' vertices and the
-  // corners go first; without it they stay down to 11 vertices (the normal
-  // bound stops the collapses there).
+  // The corners are locked (angle defect π/2 > corner_degrees); without the
+  // 10° minimum-angle bound the decimation goes below 20 and they stay.
   DecimateOptions options;
   options.min_angle_degrees = 0;
   for (int target : {11, 14}) {
@@ -360,8 +360,9 @@ TEST(Decimate, ErrorDrivenOrderKeepsTheSurfaceCloser) {
 }
 
 // The shape rounds (relocations within each node's region, sliver flips)
-// leave no triangle under 20° on the decimated spheres, where the collapses
-// alone leave some, and keep the topology; without them, slivers stay.
+// leave no triangle under 15° on the decimated spheres, where the collapses
+// alone leave some (at 30 vertices), and keep the topology; without them,
+// slivers stay.
 TEST(Decimate, ShapeRoundsRemoveTheSlivers) {
   std::vector<V3> p;
   Triangles t;

@@ -98,6 +98,7 @@ UserBaseComplex DecimatedBaseComplex(const Settings& s, const std::vector<Eigen:
              {"vertices", r.nodes.size()},
              {"triangles", r.triangles.size()},
              {"boundary_corners", r.corners},
+             {"feature_corners", r.feature_corners},
              {"flips", r.flips},
              {"relocations", r.relocations},
              {"shape_flips", r.shape_flips},
@@ -188,9 +189,9 @@ ProblemDecl base_complex_quads() {
               "or the base complex as surface vertex ids and faces: lines 'v ID' (0-based) and "
               "'f I J K [L]' (1-based base vertices, counter-clockwise)"),
       IntegerKey("base_complex.decimate", 0, 0, 10000000,
-                 "or decimate the design mesh to this many base vertices: the least curved "
-                 "vertices collapse first, into the neighbour that keeps triangles best shaped "
-                 "(spectral/decimate.h); 0 = off"),
+                 "or decimate the design mesh to this many base vertices: half-edge collapses "
+                 "onto surface vertices, the least quadric error (weighted by curvature) first; "
+                 "boundary and feature corners stay (spectral/decimate.h); 0 = off"),
       NumberKey("base_complex.tolerance", 0.01, 0, 1,
                 "a base vertex farther than this (fraction of the design mesh's diagonal) from "
                 "every vertex of the design mesh is refused")};
