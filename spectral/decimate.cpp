@@ -402,8 +402,9 @@ double RmsDistance(const Quadric& q, const V3& x) {
   const double area = q.topLeftCorner<3, 3>().trace();
   return area > 0 ? std::sqrt(QuadricError(q, x) / area) : 0;
 }
-constexpr double kKeepImportance = 0.5;
-constexpr double kTieBreak = 1e-9;  // collapses of no error go by importance  // a relocated node keeps this share of its importance
+
+constexpr double kKeepImportance = 0.5;  // a relocated node keeps this share of its importance
+constexpr double kTieBreak = 1e-9;       // collapses of no error go by importance
 
 // The smallest angle of v's triangles with v at x (−1: one would be
 // degenerate, turn from its normal by more than the collapse bound, or leave
