@@ -961,4 +961,24 @@ Extraction ExtractQuadMesh(const Mesh& mesh, const LevelSetFunctions& fn,
   return out;
 }
 
+Extraction LayoutFromSoup(std::vector<Eigen::Vector3d> points, std::vector<bool> on_boundary,
+                          std::vector<bool> is_corner, std::vector<std::vector<int>> faces,
+                          const ExtractOptions& options) {
+  CHECK_EQ(points.size(), on_boundary.size());
+  CHECK_EQ(points.size(), is_corner.size());
+  for (const auto& f : faces)
+    for (int v : f) CHECK(v >= 0 && v < int(points.size()));
+  Extraction out;
+  Soup soup{std::move(points), std::move(on_boundary), std::move(is_corner), std::move(faces)};
+  CleanUp(options, &soup, &out);
+  BuildMesh(&soup, &out);
+  CountDegrees(&out);
+  if (out.mesh.number_of_faces() == 0) {
+    out.error = "no face was left";
+    return out;
+  }
+  out.ok = true;
+  return out;
+}
+
 }  // namespace archgeo

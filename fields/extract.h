@@ -89,6 +89,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "fields/cuts.h"
 #include "mesh/surface_mesh.h"
 
@@ -165,5 +167,13 @@ struct Extraction {
 // alpha_*, sign_* match the cut (or the vertex count); spacings > 0; signs ±1.
 Extraction ExtractQuadMesh(const Mesh& triangles, const LevelSetFunctions& functions,
                            const ExtractOptions& options = {});
+
+// Steps 6 and the counts for a layout made otherwise (e.g. the crossings of
+// streamlines, fields/streamline_mesh.h): a polygon soup whose faces are
+// oriented as the surface, per point whether it lies on the boundary and is a
+// boundary corner. Not ok when no face is left.
+Extraction LayoutFromSoup(std::vector<Eigen::Vector3d> points, std::vector<bool> on_boundary,
+                          std::vector<bool> is_corner, std::vector<std::vector<int>> faces,
+                          const ExtractOptions& options = {});
 
 }  // namespace archgeo
