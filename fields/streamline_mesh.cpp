@@ -25,6 +25,7 @@ namespace {
 
 using V3 = Eigen::Vector3d;
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr int kLargestFace = 64;  // nodes
 
 // Items (by id) hashed into cubic cells by their boxes.
 class CellHash {
@@ -598,6 +599,11 @@ class Builder {
         }
         if (!closed) {
           ++out_.dropped_faces;
+          continue;
+        }
+        if (cycle.size() > size_t(kLargestFace)) {  // a region the lines do not divide
+          ++out_.dropped_faces;
+          ++out_.dropped_large_faces;
           continue;
         }
         SimpleCycles(cycle, &cycles, &out_.dropped_faces);

@@ -37,7 +37,8 @@
 //     boundary loop's direction (the surface on their left), so no outer face
 //     appears. Cycles that visit a node twice are split into simple faces
 //     (fields/layout_cleanup.h SimpleCycles); faces with fewer than three
-//     nodes are dropped and counted.
+//     nodes or more than 64 (a region the lines do not divide, e.g. around a
+//     boundary loop no line reaches) are dropped and counted.
 // A T-junction (a line stopped between two lines of the other family) makes
 // a face of five nodes on its open side.
 #pragma once
@@ -66,7 +67,8 @@ struct StreamlineMesh {
   int dangling_ends = 0;      // line ends that reached nothing
   int pruned_edges = 0;       // dangling edges removed
   int joined_nodes = 0;       // interior nodes on two straight edges removed
-  int dropped_faces = 0;      // cycles with fewer than three nodes, or not closed
+  int dropped_faces = 0;      // cycles with fewer than three nodes, not closed, or too large
+  int dropped_large_faces = 0;  // of those: more than 64 nodes (a region no line divides)
 };
 
 // Preconditions (CHECKed): d_sep > 0, the input's sizes consistent.

@@ -41,6 +41,7 @@
 #include "io/io.h"
 #include "problems/declarations/field_pipeline.h"
 #include "problems/declarations/relayout.h"
+#include "problems/declarations/streamline_layout.h"
 #include "problems/declarations/worst_quads.h"
 #include "problems/runtime/model.h"
 
@@ -51,10 +52,29 @@ struct LayoutState : ProblemState {
   StreamlineResult streamlines;  // output.streamlines
 };
 
+// layout.method: streamlines — the field's streamlines, their crossings as
+// the layout (streamline_layout.h).
+void StreamlineNet(HookContext& c, const Mesh& design, int refinements) {
+  const Settings& s = *c.settings;
+  StreamlineResult lines;
+  const std::shared_ptr<const LevelSetResult> result = SolveStreamlineLayout(
+      s, design, c.progress, SplitDesignOverrides(s, refinements), &lines);
+  UseLayoutAsNet(c, result, "conjugate layout (streamlines)");
+  c.net.details["field"] = result->field->details;
+  c.net.details["design_surface"] = {{"triangles", design.number_of_faces()},
+                                     {"midpoint_splits", refinements}};
+  c.State<LayoutState>().streamlines = std::move(lines);
+  c.net.headline = result->headline + "solving the layout for planar faces (planar_quads)\n";
+}
+
 void Net(HookContext& c) {
   const Settings& s = *c.settings;
   int refinements = 0;
   const Mesh design = DesignSurface(s, *c.input, 0, &refinements);
+  if (s.String("layout.method") == "streamlines") {
+    StreamlineNet(c, design, refinements);
+    return;
+  }
   const std::shared_ptr<const LevelSetResult> result =
       SolveLevelSets(s, design, c.progress, SplitDesignOverrides(s, refinements));
   if (!result->layout.ok) {
@@ -140,6 +160,7 @@ ProblemDecl conjugate_layout() {
   for (const Key& k : FieldKeys()) d.keys.push_back(k);
   for (const Key& k : LevelSetKeys()) d.keys.push_back(k);
   for (const Key& k : StreamlineKeys()) d.keys.push_back(k);
+  d.keys.push_back(LayoutMethodKey());
   const auto stages = d.stages;
   d.stages = [stages, planar](const Settings& s) {
     std::vector<Stage> out = stages(s);

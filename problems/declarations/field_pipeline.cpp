@@ -238,6 +238,18 @@ std::vector<Key> StreamlineKeys() {
                   "2|1 - index| per family) before the streamlines")};
 }
 
+ExtractOptions ExtractOptionsOf(const Settings& s) {
+  ExtractOptions options;
+  options.merge_fraction = s.Number("extraction.merge_fraction");
+  options.corner_angle_deg = s.Number("extraction.corner_angle");
+  options.boundary_snap_fraction = s.Number("extraction.boundary_snap");
+  options.merge_valence_two = s.Bool("extraction.merge_valence_two");
+  options.cap_angle_deg = s.Number("extraction.cap_angle");
+  options.slit_angle_deg = s.Number("extraction.slit_angle");
+  options.reflex_margin_deg = s.Number("extraction.reflex_margin");
+  return options;
+}
+
 StreamlineResult FieldStreamlines(const Settings& s, const FieldResult& field,
                                   nlohmann::json* details, std::string* headline) {
   if (!s.schema().Find("output.streamlines") || s.String("output.streamlines").empty()) return {};

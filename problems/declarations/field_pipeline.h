@@ -50,6 +50,8 @@ std::vector<Key> FieldKeys();
 // The level-set stage's terms and keys (extraction included).
 std::vector<TermUse> LevelSetTerms();
 std::vector<Key> LevelSetKeys();
+// The extraction.* keys of `s` as options of the clean-up (fields/extract.h).
+ExtractOptions ExtractOptionsOf(const Settings& s);
 // The streamline keys (streamlines.*: fields/streamlines.h) of conjugate_field
 // and conjugate_layout.
 std::vector<Key> StreamlineKeys();

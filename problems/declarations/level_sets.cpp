@@ -469,14 +469,7 @@ void FinishLevelSets(HookContext& c) {
   fn.sign_h = st.ow.chain_sign;
   fn.spacing_g = st.spacing_g;
   fn.spacing_h = st.spacing_h;
-  ExtractOptions options;
-  options.merge_fraction = c.settings->Number("extraction.merge_fraction");
-  options.corner_angle_deg = c.settings->Number("extraction.corner_angle");
-  options.boundary_snap_fraction = c.settings->Number("extraction.boundary_snap");
-  options.merge_valence_two = c.settings->Bool("extraction.merge_valence_two");
-  options.cap_angle_deg = c.settings->Number("extraction.cap_angle");
-  options.slit_angle_deg = c.settings->Number("extraction.slit_angle");
-  options.reflex_margin_deg = c.settings->Number("extraction.reflex_margin");
+  const ExtractOptions options = ExtractOptionsOf(*c.settings);
   if (st.spacing_g > 0 && st.spacing_h > 0) {
     result->layout = ExtractQuadMesh(mesh, fn, options);
   } else {
