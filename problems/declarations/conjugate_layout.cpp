@@ -8,6 +8,11 @@
 //       (level_sets: §5; fields/extract.h),
 //   (c) optimisation of the layout for planar faces (planar_quads: §6, eq. 8).
 //
+// With layout.method: streamlines, (b) is instead the streamline-intersection
+// layout of [Gebreiter 2012, §8.2] (streamline_layout.h): the field's evenly
+// spaced streamlines of both families, their crossings as vertices, the same
+// clean-up, then (c) as above.
+//
 // The input may also be a polygon mesh (e.g. a quad net too far from
 // conjugate to be planarised): its triangulation is the design surface
 // (field_pipeline.h DesignSurface).

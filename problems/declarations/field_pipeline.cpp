@@ -238,6 +238,22 @@ std::vector<Key> StreamlineKeys() {
                   "2|1 - index| per family) before the streamlines")};
 }
 
+EdgeFieldAngle LayoutFieldAngle(const FieldResult& field, const Mesh& layout) {
+  std::vector<Eigen::Vector3d> points;
+  std::vector<std::vector<int>> faces;
+  for (VertexIndex v : layout.vertices()) {
+    const Point& p = layout.point(v);
+    points.emplace_back(p.x(), p.y(), p.z());
+  }
+  for (FaceIndex f : layout.faces()) {
+    std::vector<int> face;
+    for (VertexIndex v : CGAL::vertices_around_face(layout.halfedge(f), layout)) face.push_back(int(v.idx()));
+    faces.push_back(face);
+  }
+  return MeasureEdgeFieldAngle(StreamlineInputOf(field.mesh, field.geometry, field.field), points,
+                               faces);
+}
+
 ExtractOptions ExtractOptionsOf(const Settings& s) {
   ExtractOptions options;
   options.merge_fraction = s.Number("extraction.merge_fraction");

@@ -25,6 +25,7 @@
 #include "core/settings.h"
 #include "fields/cuts.h"
 #include "fields/extract.h"
+#include "fields/streamline_mesh.h"
 #include "fields/streamlines.h"
 #include "fields/tcd_field.h"
 #include "mesh/similarity.h"
@@ -79,6 +80,12 @@ struct FieldResult {
   nlohmann::json details = nlohmann::json::object();
   std::string headline;
 };
+
+// The mean and largest angle between the interior edges of `layout`
+// (canonical frame, as the field's mesh) and the field
+// (fields/streamline_mesh.h MeasureEdgeFieldAngle): the same figure for
+// either layout.method.
+EdgeFieldAngle LayoutFieldAngle(const FieldResult& field, const Mesh& layout);
 
 // The level sets and the layout of a level_sets solve (canonical frame).
 struct LevelSetResult {

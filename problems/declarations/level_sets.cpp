@@ -582,6 +582,9 @@ void FinishLevelSets(HookContext& c) {
         {"duplicated_vertices", x.duplicated_vertices},
         {"anomalies", x.anomalies},
         {"max_jump_correction_spacings", x.max_jump_correction}};
+    const EdgeFieldAngle angle = LayoutFieldAngle(*st.field, x.mesh);
+    d["layout"]["edge_field_angle_mean_deg"] = angle.mean_deg;
+    d["layout"]["edge_field_angle_max_deg"] = angle.max_deg;
     std::snprintf(line, sizeof line,
                   "layout: %d faces, %d quads (%.1f%%), %d triangles, %d pentagons, %d other; "
                   "boundary faces %d, quads with an edge on the boundary %.1f%%; "

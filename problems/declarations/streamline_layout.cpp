@@ -37,20 +37,6 @@ double Separation(const Settings& s, const FieldResult& field, const StreamlineI
   return std::sqrt(Area(in) / double(s.Integer("level_sets.target_faces")));
 }
 
-// The layout mesh as arrays (canonical frame).
-void Arrays(const Mesh& mesh, std::vector<Eigen::Vector3d>* points,
-            std::vector<std::vector<int>>* faces) {
-  for (VertexIndex v : mesh.vertices()) {
-    const Point& p = mesh.point(v);
-    points->emplace_back(p.x(), p.y(), p.z());
-  }
-  for (FaceIndex f : mesh.faces()) {
-    std::vector<int> face;
-    for (VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) face.push_back(int(v.idx()));
-    faces->push_back(face);
-  }
-}
-
 }  // namespace
 
 Key LayoutMethodKey() {
@@ -106,10 +92,7 @@ std::shared_ptr<const LevelSetResult> SolveStreamlineLayout(
                                        std::to_string(traced.lines.size()) + " lines, " +
                                        std::to_string(m.crossings) + " crossings)");
   }
-  std::vector<Eigen::Vector3d> points;
-  std::vector<std::vector<int>> faces;
-  Arrays(x.mesh, &points, &faces);
-  const EdgeFieldAngle angle = MeasureEdgeFieldAngle(input, points, faces);
+  const EdgeFieldAngle angle = LayoutFieldAngle(*field, x.mesh);
   const int count = int(x.mesh.number_of_faces());
   int lines_v = 0, lines_w = 0, separatrices = 0;
   for (const Streamline& l : traced.lines) ++(l.separatrix ? separatrices : l.family == 0 ? lines_v : lines_w);
