@@ -14,6 +14,8 @@
 
 #include <Eigen/Geometry>
 
+#include "core/segments.h"
+
 namespace archgeo {
 namespace {
 
@@ -298,24 +300,11 @@ void Collapse(DcMesh& m, int u, int v) {
   m.at[size_t(u)].clear();
 }
 
-// The distance between the segments pq and rs (Ericson, Real-Time
-// Collision Detection, §5.1.9): how far a flip of pq into rs moves the
-// surface where the two cross.
+// The distance between the segments pq and rs (core/segments.h): how far a
+// flip of pq into rs moves the surface where the two cross.
 double SegmentDistance(const V3& p, const V3& q, const V3& r, const V3& s) {
-  const V3 d1 = q - p, d2 = s - r, w = p - r;
-  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(w);
-  if (!(a > 0) || !(e > 0)) return w.norm();
-  const double c = d1.dot(w), b = d1.dot(d2), denom = a * e - b * b;
-  double sc = denom > 0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
-  double tc = (b * sc + f) / e;
-  if (tc < 0) {
-    tc = 0;
-    sc = std::clamp(-c / a, 0.0, 1.0);
-  } else if (tc > 1) {
-    tc = 1;
-    sc = std::clamp((b - c) / a, 0.0, 1.0);
-  }
-  return (p + sc * d1 - (r + tc * d2)).norm();
+  const auto [sc, tc] = ClosestSegmentParameters(p, q, r, s);
+  return (p + sc * (q - p) - (r + tc * (s - r))).norm();
 }
 
 // Valence-improving flip of edge ab (Gebreiter 2012, §3.1.2: "edges are
