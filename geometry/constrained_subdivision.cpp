@@ -519,6 +519,54 @@ void ConstrainedSubdivision::Step() {
   locked_ = std::move(locked);
   tagged_ = std::move(tagged);
   ++levels_;
+  if (options_.tangent) ImposeTangency(mesh_.points);
+}
+
+void ConstrainedSubdivision::ImposeTangency(std::vector<Eigen::Vector3d>& points) const {
+  const CsTopology t(mesh_);
+  const size_t n = points.size();
+  std::vector<Eigen::Vector3d> shift(n, Eigen::Vector3d::Zero());
+  std::vector<int> count(n, 0);
+  Eigen::Vector3d normal;
+  for (size_t b = 0; b < n; ++b) {
+    if (on_[b].empty() || !options_.tangent(points[b], &normal)) continue;
+    for (int e : t.vertex_edges[b]) {
+      const int v = t.Other(e, static_cast<int>(b));
+      if (!on_[v].empty() || fixed_[v] || locked_[v]) continue;
+      shift[v] -= (points[v] - points[b]).dot(normal) * normal;
+      ++count[v];
+    }
+  }
+  for (size_t v = 0; v < n; ++v) {
+    if (count[v] > 0) points[v] += shift[v] / count[v];
+  }
+}
+
+TangencyMeasure ConstrainedSubdivision::Tangency(const std::vector<Eigen::Vector3d>& points) const {
+  CHECK_EQ(points.size(), mesh_.points.size());
+  TangencyMeasure out;
+  if (!options_.tangent) return out;
+  const CsTopology t(mesh_);
+  Eigen::Vector3d normal;
+  double sum = 0;
+  for (size_t b = 0; b < points.size(); ++b) {
+    if (on_[b].empty() || !options_.tangent(points[b], &normal)) continue;
+    Eigen::Vector3d mesh_normal = Eigen::Vector3d::Zero();
+    for (int f : t.vertex_faces[b]) {
+      const auto& face = mesh_.faces[f];
+      for (size_t i = 0; i < face.size(); ++i) {
+        mesh_normal += points[face[i]].cross(points[face[(i + 1) % face.size()]]);  // Newell
+      }
+    }
+    if (mesh_normal.norm() == 0) continue;
+    const double cosine = std::min(1.0, std::abs(mesh_normal.normalized().dot(normal)));
+    const double degrees = std::acos(cosine) * 180 / M_PI;
+    out.max_degrees = std::max(out.max_degrees, degrees);
+    sum += degrees;
+    ++out.vertices;
+  }
+  out.mean_degrees = out.vertices ? sum / out.vertices : 0;
+  return out;
 }
 
 std::vector<Eigen::Vector3d> ConstrainedSubdivision::LimitPositions() const {
@@ -580,6 +628,7 @@ std::vector<Eigen::Vector3d> ConstrainedSubdivision::LimitPositions() const {
       out[v] = (1 - k * chi) * p + chi * neighbours;
     }
   }
+  if (options_.tangent) ImposeTangency(out);  // the limit of the corrected scheme is tangent too
   return out;
 }
 

@@ -16,6 +16,13 @@
 //    neighbours are simply locked in place"): the boundary vertices and their
 //    neighbours keep their positions, and a new vertex whose parents are all
 //    locked is their midpoint (edge) or centroid (face), locked in turn;
+//  - tangency to boundary surfaces (§9.2.2, Fig. 17), in the manner of
+//    Levin's combined subdivision (standard rules, then a correction towards
+//    the boundary condition at every level): a curve vertex b on a boundary
+//    surface with unit normal n there moves each interior edge neighbour v
+//    by −((v − b)·n) n, so the cross-boundary edges lie in the surface's
+//    tangent plane (a neighbour of several such vertices takes the mean of
+//    their corrections); limit positions get the same correction;
 //  - limit positions (§9.1.2): Catmull–Clark (n²v + 4Σe_j + Σf_j)/(n(n+5))
 //    [Sharp 2000], Loop v∞ = (1 − nχ)v + χΣv_j, χ = 1/(3/(8β) + n) (the left
 //    eigenvector of the 1-ring subdivision matrix, for any β); on curves the
@@ -28,6 +35,7 @@
 //    subdivided with those masks, the residual reported otherwise.
 #pragma once
 
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -66,11 +74,23 @@ class SubdivisionError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A boundary surface the subdivided surface meets tangentially: true and the
+// unit normal of its tangent plane at `point` when the point lies on it.
+using TangentNormal = std::function<bool(const Eigen::Vector3d& point, Eigen::Vector3d* normal)>;
+
 struct SubdivisionOptions {
   SubdivisionScheme scheme = SubdivisionScheme::kLoop;
   SubdivisionBoundary boundary = SubdivisionBoundary::kStandard;
   double tolerance = 1e-6;    // a mesh vertex this close to a curve (× diagonal) is on it
   double kink_degrees = 30;   // a curve vertex turning more than this is a kink
+  TangentNormal tangent;      // empty: no boundary surface
+};
+
+// How far the subdivided surface's tangent planes turn from the boundary
+// surface's along the curves on it (degrees; see Tangency()).
+struct TangencyMeasure {
+  int vertices = 0;  // curve vertices on the boundary surface
+  double max_degrees = 0, mean_degrees = 0;
 };
 
 class ConstrainedSubdivision {
@@ -99,6 +119,10 @@ class ConstrainedSubdivision {
   double MaxCurveDistance() const { return MaxCurveDistance(mesh_.points); }
   double MaxCurveDistance(const std::vector<Eigen::Vector3d>& points) const;  // e.g. limit positions
   int CornerCount() const;
+  // At each curve vertex on the boundary surface (options.tangent): the angle
+  // between the surface's tangent plane and the mesh's at `points` (the plane
+  // normal to the sum of the incident faces' Newell normals).
+  TangencyMeasure Tangency(const std::vector<Eigen::Vector3d>& points) const;
   // Per vertex: on a curve (1), fixed corner or locked (2), else 0.
   std::vector<int> VertexKinds() const;
   double diagonal() const { return diagonal_; }
@@ -119,6 +143,8 @@ class ConstrainedSubdivision {
     int from, to, curve;  // from before to along the curve
   };
   void Tag();
+  // The correction above on `points` (the current level's positions or their limits).
+  void ImposeTangency(std::vector<Eigen::Vector3d>& points) const;
 
   SubdivisionOptions options_;
   PolyMesh mesh_;

@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // End to end: `archgeo solve` with problem `subdivide` [Gebreiter 2012, §9]
 // (problems/declarations/subdivide.cpp): the example roof with perimeter and
-// ridge curves, reverse subdivision of its output, and the refusals of bad
-// curve files (exit 2 naming file and element).
+// ridge curves, reverse subdivision of its output, the funnel meeting its
+// column tangentially (§9.2.2), and the refusals of bad curve files and
+// tangent surfaces (exit 2 naming file and element).
 #include <fstream>
 #include <string>
 
@@ -126,6 +127,45 @@ TEST_F(Subdivide_, CurveFileWithNaNExits2NamingFileAndLine) {
   EXPECT_EQ(o.code, 2) << o.output;
   EXPECT_NE(o.output.find("perimeter.obj"), std::string::npos) << o.output;
   EXPECT_NE(o.output.find(":4"), std::string::npos) << o.output;
+  EXPECT_FALSE(std::filesystem::exists(Path("out.obj")));
+}
+
+// §9.2.2 end to end: examples/subdivide_funnel.yaml, four levels of
+// Catmull–Clark whose first row meets the column in its tangent plane
+// (the acceptance's 0.5°) with both boundary curves kept.
+TEST_F(Subdivide_, FunnelMeetsItsColumnTangentially) {
+  const Outcome o = Shell(std::string(ARCHGEO_BINARY) + " solve " + Example("subdivide_funnel.yaml") +
+                          " --quiet --set output.report=" + Path("r.json") + " --set output.mesh=" + Path("out.obj"));
+  ASSERT_EQ(o.code, 0) << o.output;
+  const nlohmann::json d = Details();
+  EXPECT_EQ(d.at("levels"), 4);
+  EXPECT_LE(d.at("curve_distance_max_relative").get<double>(), kOnCurve);
+  const nlohmann::json& t = d.at("tangency");
+  EXPECT_EQ(t.at("vertices"), 8 << 4);  // the column top's 8 coarse edges, 4 levels
+  EXPECT_LE(t.at("deviation_max_deg").get<double>(), 0.5);
+  EXPECT_NE(o.output.find("tangent planes turn from its by"), std::string::npos) << o.output;
+}
+
+TEST_F(Subdivide_, TangentSurfaceAwayFromTheCurvesOrWithALockedRingExits2) {
+  // The column moved 10 units aside: no curve vertex lies on it.
+  std::string text = ReadFile(Example("subdivide_funnel_column.obj"));
+  std::string moved;
+  for (size_t at = 0; at < text.size();) {
+    const size_t end = text.find('\n', at);
+    std::string line = text.substr(at, end - at);
+    if (line.rfind("v ", 0) == 0) line = "v " + std::to_string(std::stod(line.substr(2)) + 10) + line.substr(line.find(' ', 2));
+    moved += line + "\n";
+    at = end == std::string::npos ? text.size() : end + 1;
+  }
+  const std::string column = WriteFile("column.obj", moved);
+  const std::string base = std::string(ARCHGEO_BINARY) + " solve " + Example("subdivide_funnel.yaml") +
+                           " --quiet --set output.report=" + Path("r.json") + " --set output.mesh=" + Path("out.obj");
+  const Outcome away = Shell(base + " --set subdivision.tangent_surface=" + column);
+  EXPECT_EQ(away.code, 2) << away.output;
+  EXPECT_NE(away.output.find("key 'subdivision.tangent_surface': no curve vertex"), std::string::npos) << away.output;
+  const Outcome locked = Shell(base + " --set subdivision.boundary=locked --set \"subdivision.boundary_curves=''\"");
+  EXPECT_EQ(locked.code, 2) << locked.output;
+  EXPECT_NE(locked.output.find("key 'subdivision.tangent_surface'"), std::string::npos) << locked.output;
   EXPECT_FALSE(std::filesystem::exists(Path("out.obj")));
 }
 

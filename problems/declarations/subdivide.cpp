@@ -12,10 +12,13 @@
 // run measures and writes (output.mesh). No solve follows. The report's
 // details.subdivision gives the levels, counts, the largest distance of a
 // curve vertex from its curve (relative to the diagonal), and for reverse
-// subdivision the least-squares residual of each level.
+// subdivision the least-squares residual of each level; with a tangent
+// surface (§9.2.2), how far the tangent planes along it turn from its.
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -23,6 +26,8 @@
 #include "core/problem.h"
 #include "geometry/constrained_subdivision.h"
 #include "geometry/curves.h"
+#include "geometry/reference.h"
+#include "io/io.h"
 #include "problems/runtime/model.h"
 
 namespace archgeo::problems {
@@ -106,6 +111,39 @@ double SdMeanEdge(const PolyMesh& m) {
     }
   }
   return count ? sum / double(count) : 0;
+}
+
+// The boundary surfaces of subdivision.tangent_surface (§9.2.2), put into
+// options.tangent: a point within tangent_tolerance × the coarse mesh's
+// diagonal of the surface lies on it, with the surface's interpolated normal.
+std::unique_ptr<ReferenceSurface> SdTangentSurface(const Settings& s, const PolyMesh& coarse,
+                                                   SubdivisionOptions& options) {
+  const std::string& path = s.String("subdivision.tangent_surface");
+  if (path.empty()) return nullptr;
+  if (s.String("subdivision.boundary") == "locked") {
+    throw s.Error("subdivision.tangent_surface", "a tangent surface moves the ring that boundary: locked keeps; "
+                                                 "give one or the other");
+  }
+  std::unique_ptr<ReferenceSurface> surface;
+  try {
+    surface = std::make_unique<ReferenceSurface>(ReadMesh(path));
+  } catch (const std::invalid_argument& e) {
+    throw InputError(path, 0, "subdivision.tangent_surface", e.what());
+  }
+  Eigen::Vector3d lo = coarse.points[0], hi = coarse.points[0];
+  for (const auto& p : coarse.points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const double tolerance = s.Number("subdivision.tangent_tolerance") * (hi - lo).norm();
+  const ReferenceSurface* on = surface.get();
+  options.tangent = [on, tolerance](const Eigen::Vector3d& p, Eigen::Vector3d* normal) {
+    const ReferenceSurface::SurfacePoint q = on->Closest({p.x(), p.y(), p.z()});
+    if (!((Eigen::Vector3d(q.point[0], q.point[1], q.point[2]) - p).norm() <= tolerance)) return false;
+    *normal = Eigen::Vector3d(q.normal[0], q.normal[1], q.normal[2]);
+    return true;
+  };
+  return surface;
 }
 
 void SdNet(HookContext& c) {
@@ -192,6 +230,7 @@ void SdNet(HookContext& c) {
     options.boundary = boundary == "locked" ? SubdivisionBoundary::kLocked : SubdivisionBoundary::kStandard;
     options.tolerance = s.Number("subdivision.curve_tolerance");
     options.kink_degrees = s.Number("subdivision.kink_angle");
+    const std::unique_ptr<ReferenceSurface> tangent = SdTangentSurface(s, coarse, options);
     std::unique_ptr<ConstrainedSubdivision> cs;
     try {
       cs = std::make_unique<ConstrainedSubdivision>(coarse, curves.curves, options);
@@ -251,6 +290,22 @@ void SdNet(HookContext& c) {
     details["curve_distance_max_relative"] = distance;
     details["mean_edge_length"] = SdMeanEdge(out_mesh);
     details["output"] = {{"vertices", out_mesh.points.size()}, {"faces", out_mesh.faces.size()}};
+    std::string tangency_line;
+    if (tangent) {
+      const TangencyMeasure m = cs->Tangency(points);
+      if (m.vertices == 0) {
+        throw s.Error("subdivision.tangent_surface",
+                      "no curve vertex of the subdivided mesh lies on the tangent surface (within "
+                      "subdivision.tangent_tolerance): the surface must carry a boundary or crease curve");
+      }
+      details["tangency"] = {{"vertices", m.vertices}, {"deviation_max_deg", m.max_degrees},
+                             {"deviation_mean_deg", m.mean_degrees}};
+      std::snprintf(line, sizeof line,
+                    "tangent surface: %d curve vertices on it; tangent planes turn from its by %.3g° at most "
+                    "(mean %.3g°)\n",
+                    m.vertices, m.max_degrees, m.mean_degrees);
+      tangency_line = line;
+    }
     c.net.mesh = SdMesh(out_mesh, points);
     std::snprintf(line, sizeof line,
                   "%s, %d levels%s: %zu vertices, %zu faces, mean edge %.4g; %zu curves, %d curve vertices "
@@ -258,7 +313,7 @@ void SdNet(HookContext& c) {
                   s.String("subdivision.scheme").c_str(), cs->levels(), s.Bool("subdivision.limit") ? " + limit" : "",
                   out_mesh.points.size(), out_mesh.faces.size(), SdMeanEdge(out_mesh), curves.curves.size(),
                   cs->CurveVertexCount(), distance, cs->CornerCount());
-    c.net.headline = line;
+    c.net.headline = line + tangency_line;
   }
   c.net.derived = true;
   c.net.source.clear();
@@ -297,6 +352,12 @@ ProblemDecl subdivide() {
       NumberKey("subdivision.kink_angle", 30, 0, 180,
                 "a curve point turning more than this (degrees) at a mesh vertex makes it a fixed corner"),
       BoolKey("subdivision.limit", false, "move the last level's vertices to their limit positions"),
+      PathKey("subdivision.tangent_surface", Type::kInputPath,
+              "a mesh of boundary surfaces (e.g. columns) the subdivided surface meets tangentially along "
+              "the curves on it (§9.2.2): at every level the cross-boundary edges are put into its tangent "
+              "plane"),
+      NumberKey("subdivision.tangent_tolerance", 1e-3, 0, 0.1,
+                "a curve vertex this close to the tangent surface (fraction of the diagonal) lies on it"),
       IntegerKey("subdivision.reverse", 0, 0, 6,
                  "reverse subdivision: this many levels back by least squares (instead of subdividing)")};
   d.net = &SdNet;
