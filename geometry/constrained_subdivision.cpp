@@ -9,6 +9,8 @@
 #include <array>
 #include <cmath>
 #include <deque>
+#include <functional>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -887,7 +889,137 @@ bool CsClassifyCatmullClark(const CsFine& fm, int seed, CsClassified& out) {
 
 }  // namespace
 
-ReverseResult ReverseSubdivision(const PolyMesh& fine, SubdivisionScheme scheme) {
+// The curves of a mesh subdivided with curve rules, as Reverse() sees them:
+// per fine vertex its curve parameters and whether it is fixed, and the
+// curves' arc-length maps.
+struct CsCurveView {
+  std::vector<std::vector<std::pair<int, double>>> on;  // per fine vertex: (curve, s)
+  std::vector<char> fixed;
+  std::function<Eigen::Vector3d(int, double)> at;            // curve k at parameter s
+  std::function<double(int, double, double)> interval;       // forward arc length on curve k
+};
+
+namespace {
+
+double CsParam(const std::vector<std::pair<int, double>>& on, int curve) {
+  for (const auto& [k, s] : on) {
+    if (k == curve) return s;
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+// The curve part of a reverse candidate: the coarse curve vertices (known
+// positions) from the fine curve vertices by linear least squares in their
+// parameters, s = t + d with t the parameter of the coarse vertex's fine
+// old vertex: an old vertex moved to (s₋ + 6s + s₊)/8 and a tagged edge's
+// point is at (s_a + s_b)/2 (Step's rules), so per old vertex
+// ¾d + (d₋ + d₊)/8 = (Δ₋ − Δ₊)/8 and per tagged edge (d_a + d_b)/2 =
+// τ − Δ_ab/2 (Δ the fine arc lengths between the vertices' parameters, τ
+// from a to the edge point); corners keep d = 0. Marks the fine vertices
+// the curve rules made (their rows are not masks) and returns the largest
+// and summed squared distances of those from where the recovered curve
+// parameters put them; false when the coarse curve vertices do not form
+// chains of tagged edges.
+bool CsReverseCurves(const CsCurveView& view, const PolyMesh& fine, const CsTopology& t, const CsRefinement& r,
+                     const std::vector<int>& map, std::vector<char>& known, std::vector<Eigen::Vector3d>& coarse,
+                     std::vector<char>& made, double& worst, double& squares) {
+  const int nc = static_cast<int>(coarse.size());
+  // Tagged coarse edges: their fine edge point and both ends on one curve.
+  std::vector<std::array<int, 2>> prev(nc, {-1, -1}), next(nc, {-1, -1});  // (neighbour, fine edge point)
+  std::vector<int> curve_of(nc, -1);
+  for (size_t i = 0; i < r.rows.size(); ++i) {
+    if (view.fixed[map[i]]) made[i] = 1;  // corners and a locked ring keep their positions
+  }
+  for (int a = 0; a < nc; ++a) {
+    if (view.fixed[map[a]]) {
+      known[a] = 1;
+      coarse[a] = fine.points[map[a]];
+      made[a] = 1;
+    } else if (!view.on[map[a]].empty()) {
+      curve_of[a] = view.on[map[a]][0].first;
+      made[a] = 1;
+    }
+  }
+  struct Tagged {
+    int a, b, m, curve;  // a before b along the curve; m the fine edge point
+  };
+  std::vector<Tagged> tagged;
+  for (size_t e = 0; e < t.edges.size(); ++e) {
+    const int m = map[r.edge_points_begin + static_cast<int>(e)];
+    for (const auto& [k, tm] : view.on[m]) {
+      int a = t.edges[e][0], b = t.edges[e][1];
+      const double ta = CsParam(view.on[map[a]], k), tb = CsParam(view.on[map[b]], k);
+      if (std::isnan(ta) || std::isnan(tb)) continue;
+      if (view.interval(k, ta, tm) > view.interval(k, ta, tb)) std::swap(a, b);
+      tagged.push_back({a, b, m, k});
+      made[r.edge_points_begin + static_cast<int>(e)] = 1;
+      if (curve_of[a] == k) next[a] = {b, m};
+      if (curve_of[b] == k) prev[b] = {a, m};
+      break;
+    }
+  }
+  std::vector<int> col(nc, -1);
+  int unknowns = 0;
+  for (int a = 0; a < nc; ++a) {
+    if (curve_of[a] < 0) continue;
+    if (prev[a][0] < 0 || next[a][0] < 0) return false;
+    col[a] = unknowns++;
+  }
+  auto t_of = [&](int a, int k) { return CsParam(view.on[map[a]], k); };
+  std::vector<Eigen::Triplet<double>> triplets;
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(unknowns);
+  auto equation = [&](const std::vector<std::pair<int, double>>& terms, double value) {
+    for (const auto& [a, wa] : terms) {
+      if (col[a] < 0) continue;
+      rhs[col[a]] += wa * value;
+      for (const auto& [b, wb] : terms) {
+        if (col[b] >= 0) triplets.emplace_back(col[a], col[b], wa * wb);
+      }
+    }
+  };
+  for (int a = 0; a < nc; ++a) {
+    if (col[a] < 0) continue;
+    const int k = curve_of[a];
+    const int p = prev[a][0], n = next[a][0];
+    const double dp = view.interval(k, t_of(p, k), t_of(a, k)), dn = view.interval(k, t_of(a, k), t_of(n, k));
+    equation({{a, 0.75}, {p, 0.125}, {n, 0.125}}, (dp - dn) / 8);
+  }
+  for (const Tagged& g : tagged) {
+    const double ta = t_of(g.a, g.curve);
+    const double tau = view.interval(g.curve, ta, CsParam(view.on[g.m], g.curve));
+    equation({{g.a, 0.5}, {g.b, 0.5}}, tau - view.interval(g.curve, ta, t_of(g.b, g.curve)) / 2);
+  }
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(unknowns);
+  if (unknowns > 0) {
+    Eigen::SparseMatrix<double> normal(unknowns, unknowns);
+    normal.setFromTriplets(triplets.begin(), triplets.end());
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(normal);
+    if (ldlt.info() != Eigen::Success) return false;
+    d = ldlt.solve(rhs);
+  }
+  auto s_of = [&](int a, int k) { return t_of(a, k) + (col[a] >= 0 ? d[col[a]] : 0.0); };
+  auto deviation = [&](const Eigen::Vector3d& q, int fine_vertex) {
+    const double e = (q - fine.points[fine_vertex]).norm();
+    worst = std::max(worst, e);
+    squares += e * e;
+  };
+  for (int a = 0; a < nc; ++a) {
+    if (col[a] < 0) continue;
+    const int k = curve_of[a];
+    const double s = s_of(a, k);
+    known[a] = 1;
+    coarse[a] = view.at(k, s);
+    const double lp = view.interval(k, s_of(prev[a][0], k), s), ln = view.interval(k, s, s_of(next[a][0], k));
+    deviation(view.at(k, s + (ln - lp) / 8), map[a]);
+  }
+  for (const Tagged& g : tagged) {
+    const double sa = s_of(g.a, g.curve);
+    deviation(view.at(g.curve, sa + view.interval(g.curve, sa, s_of(g.b, g.curve)) / 2), g.m);
+  }
+  return true;
+}
+
+ReverseResult CsReverse(const PolyMesh& fine, SubdivisionScheme scheme, const CsCurveView* curves) {
   if (fine.points.empty()) throw SubdivisionError("empty mesh");
   const CsFine fm(fine);
   std::vector<int> seeds = {0};
@@ -932,39 +1064,67 @@ ReverseResult ReverseSubdivision(const PolyMesh& fine, SubdivisionScheme scheme)
       map[r.edge_points_begin + e] = it->second;
     }
     if (!complete) continue;
-    // Normal equations SᵀS·c = Sᵀp assembled row by row (S: the masks, one
-    // row per fine vertex), one right-hand side per coordinate.
+    // Known coarse vertices (curve rules) and the fine vertices those made.
+    const int nc = static_cast<int>(coarse.points.size());
+    std::vector<char> known(static_cast<size_t>(nc), 0), made(r.rows.size(), 0);
+    std::vector<Eigen::Vector3d> fixed_positions(static_cast<size_t>(nc), Eigen::Vector3d::Zero());
+    double worst = 0, squares = 0;
+    if (curves && !CsReverseCurves(*curves, fine, t, r, map, known, fixed_positions, made, worst, squares)) continue;
+    std::vector<int> col(static_cast<size_t>(nc), -1);
+    int unknowns = 0;
+    for (int v = 0; v < nc; ++v) {
+      if (!known[v]) col[v] = unknowns++;
+    }
+    // Normal equations SᵀS·c = Sᵀp over the unknown coarse vertices,
+    // assembled row by row (S: the masks, one row per fine vertex the masks
+    // made; the known vertices' terms on the right), one right-hand side
+    // per coordinate.
     std::vector<Eigen::Triplet<double>> triplets;
     Eigen::VectorXd rhs[3];
-    for (auto& r3 : rhs) r3 = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(coarse.points.size()));
+    for (auto& r3 : rhs) r3 = Eigen::VectorXd::Zero(unknowns);
     for (size_t i = 0; i < r.rows.size(); ++i) {
-      const Eigen::Vector3d& p = fine.points[map[i]];
+      if (made[i]) continue;
+      Eigen::Vector3d p = fine.points[map[i]];
       for (const auto& [a, wa] : r.rows[i]) {
-        for (int k = 0; k < 3; ++k) rhs[k][a] += wa * p[k];
-        for (const auto& [b, wb] : r.rows[i]) triplets.emplace_back(a, b, wa * wb);
+        if (known[a]) p -= wa * fixed_positions[a];
+      }
+      for (const auto& [a, wa] : r.rows[i]) {
+        if (known[a]) continue;
+        for (int k = 0; k < 3; ++k) rhs[k][col[a]] += wa * p[k];
+        for (const auto& [b, wb] : r.rows[i]) {
+          if (!known[b]) triplets.emplace_back(col[a], col[b], wa * wb);
+        }
       }
     }
-    Eigen::SparseMatrix<double> normal(static_cast<Eigen::Index>(coarse.points.size()),
-                                       static_cast<Eigen::Index>(coarse.points.size()));
+    Eigen::SparseMatrix<double> normal(unknowns, unknowns);
     normal.setFromTriplets(triplets.begin(), triplets.end());
     const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(normal);
-    if (ldlt.info() != Eigen::Success) continue;
+    if (unknowns > 0 && ldlt.info() != Eigen::Success) continue;
     ReverseResult result;
     result.coarse = coarse;
-    for (int k = 0; k < 3; ++k) {
-      const Eigen::VectorXd x = ldlt.solve(rhs[k]);
-      for (size_t v = 0; v < coarse.points.size(); ++v) result.coarse.points[v][k] = x[static_cast<Eigen::Index>(v)];
+    for (int v = 0; v < nc; ++v) {
+      if (known[v]) result.coarse.points[v] = fixed_positions[v];
     }
-    double sum = 0;
+    for (int k = 0; k < 3 && unknowns > 0; ++k) {
+      const Eigen::VectorXd x = ldlt.solve(rhs[k]);
+      for (int v = 0; v < nc; ++v) {
+        if (!known[v]) result.coarse.points[v][k] = x[col[v]];
+      }
+    }
+    result.residual_max = worst;
+    double sum = squares;
     for (size_t i = 0; i < r.rows.size(); ++i) {
+      if (made[i]) continue;
       Eigen::Vector3d q = -fine.points[map[i]];
       for (const auto& [a, wa] : r.rows[i]) q += wa * result.coarse.points[a];
       result.residual_max = std::max(result.residual_max, q.norm());
       sum += q.squaredNorm();
     }
     result.residual_rms = std::sqrt(sum / static_cast<double>(fine.points.size()));
-    const Eigen::VectorXd d = ldlt.vectorD();
-    result.unique = d.minCoeff() > 1e-12 * d.cwiseAbs().maxCoeff();
+    if (unknowns > 0) {
+      const Eigen::VectorXd d = ldlt.vectorD();
+      result.unique = d.minCoeff() > 1e-12 * d.cwiseAbs().maxCoeff();
+    }
     if (!found || result.residual_max < best.residual_max) best = std::move(result);
     found = true;
   }
@@ -975,6 +1135,25 @@ ReverseResult ReverseSubdivision(const PolyMesh& fine, SubdivisionScheme scheme)
                            "cannot be reverse-subdivided");
   }
   return best;
+}
+
+}  // namespace
+
+ReverseResult ReverseSubdivision(const PolyMesh& fine, SubdivisionScheme scheme) {
+  return CsReverse(fine, scheme, nullptr);
+}
+
+ReverseResult ConstrainedSubdivision::Reverse() const {
+  CsCurveView view;
+  view.on.resize(on_.size());
+  for (size_t v = 0; v < on_.size(); ++v) {
+    for (const Entry& e : on_[v]) view.on[v].emplace_back(e.curve, e.s);
+  }
+  view.fixed.assign(fixed_.begin(), fixed_.end());
+  for (size_t v = 0; v < locked_.size(); ++v) view.fixed[v] = view.fixed[v] || locked_[v];
+  view.at = [this](int k, double s) { return curves_[k].At(s); };
+  view.interval = [this](int k, double from, double to) { return curves_[k].Interval(from, to); };
+  return CsReverse(mesh_, options_.scheme, &view);
 }
 
 }  // namespace archgeo

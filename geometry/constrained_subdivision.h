@@ -31,8 +31,9 @@
 //  - reverse subdivision (§9.2.3, after Lanquetin and Neveu 2009): the
 //    coarse connectivity is recovered from the fine mesh (vertex classes
 //    old/edge/face), then the coarse positions by linear least squares
-//    against the standard masks (standard boundary rules); exact for a mesh
-//    subdivided with those masks, the residual reported otherwise.
+//    against the standard masks (standard boundary rules) and, given the
+//    curves, the curve rules in arc-length parameters; exact for a mesh
+//    subdivided with those rules, the residual reported otherwise.
 #pragma once
 
 #include <functional>
@@ -93,6 +94,16 @@ struct TangencyMeasure {
   double max_degrees = 0, mean_degrees = 0;
 };
 
+struct ReverseResult {
+  PolyMesh coarse;
+  double residual_max = 0;  // max over fine vertices of |S·coarse − fine|
+  double residual_rms = 0;
+  // False when the masks are singular on this connectivity (e.g. Catmull–Clark
+  // on a cube: the ±1 pattern of its bipartite vertices subdivides to zero
+  // at valence 3), so the coarse positions are one of many exact solutions.
+  bool unique = true;
+};
+
 class ConstrainedSubdivision {
  public:
   // Tags the mesh against the curves: vertices within tolerance of a curve
@@ -123,6 +134,13 @@ class ConstrainedSubdivision {
   // between the surface's tangent plane and the mesh's at `points` (the plane
   // normal to the sum of the incident faces' Newell normals).
   TangencyMeasure Tangency(const std::vector<Eigen::Vector3d>& points) const;
+  // Reverse subdivision (§9.2.3) of the current mesh as one subdivided with
+  // these curves and options: the coarse curve vertices from the curve
+  // rules by least squares in their arc-length parameters, the others from
+  // the masks; exact for a mesh this class subdivided (not for limit
+  // positions or a tangent surface: their residual is reported). Throws
+  // SubdivisionError as ReverseSubdivision.
+  ReverseResult Reverse() const;
   // Per vertex: on a curve (1), fixed corner or locked (2), else 0.
   std::vector<int> VertexKinds() const;
   double diagonal() const { return diagonal_; }
@@ -159,15 +177,6 @@ class ConstrainedSubdivision {
 // One step of the standard (unconstrained, standard boundary) masks.
 PolyMesh SubdivideStandard(const PolyMesh& mesh, SubdivisionScheme scheme);
 
-struct ReverseResult {
-  PolyMesh coarse;
-  double residual_max = 0;  // max over fine vertices of |S·coarse − fine|
-  double residual_rms = 0;
-  // False when the masks are singular on this connectivity (e.g. Catmull–Clark
-  // on a cube: the ±1 pattern of its bipartite vertices subdivides to zero
-  // at valence 3), so the coarse positions are one of many exact solutions.
-  bool unique = true;
-};
 
 // Reverse subdivision: the coarse mesh whose standard subdivision is closest
 // to `fine` in least squares. Throws SubdivisionError if `fine` does not have

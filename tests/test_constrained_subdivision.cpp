@@ -515,5 +515,41 @@ TEST(ConstrainedSubdivision, TangentSurfaceMakesTheJointSmooth) {
   EXPECT_LE(far, 0.05 * Funnel::r);
 }
 
+// §9.2.3 with curves: a mesh subdivided with the curve rules (the funnel's
+// column top, its coarse vertices among the curve's points) comes back to
+// its coarse mesh to 1e-10 through Reverse() with the same curve, level by
+// level; the standard masks alone leave a residual.
+TEST(ConstrainedSubdivision, ReverseWithTheCurvesRecoversACurveSubdividedMesh) {
+  const Funnel funnel;
+  PolyMesh triangles = funnel.mesh;  // each quad split along its first diagonal, for Loop
+  triangles.faces.clear();
+  for (const auto& f : funnel.mesh.faces) {
+    triangles.faces.push_back({f[0], f[1], f[2]});
+    triangles.faces.push_back({f[0], f[2], f[3]});
+  }
+  for (const SubdivisionScheme scheme : {SubdivisionScheme::kCatmullClark, SubdivisionScheme::kLoop}) {
+    SCOPED_TRACE(scheme == SubdivisionScheme::kLoop ? "Loop" : "Catmull-Clark");
+    const PolyMesh& coarse = scheme == SubdivisionScheme::kLoop ? triangles : funnel.mesh;
+    SubdivisionOptions options;
+    options.scheme = scheme;
+    ConstrainedSubdivision forward(coarse, {funnel.top}, options);
+    forward.Step();
+    forward.Step();
+    const double diagonal = forward.diagonal();
+    PolyMesh m = forward.mesh();
+    EXPECT_GT(ReverseSubdivision(m, scheme).residual_max / diagonal, 1e-6);
+    for (int level = 0; level < 2; ++level) {
+      const ReverseResult r = ConstrainedSubdivision(m, {funnel.top}, options).Reverse();
+      EXPECT_LE(r.residual_max / diagonal, kReverseTolerance);
+      EXPECT_TRUE(r.unique);
+      m = r.coarse;
+    }
+    ASSERT_EQ(m.points.size(), coarse.points.size());
+    double worst = 0;
+    for (size_t v = 0; v < m.points.size(); ++v) worst = std::max(worst, (m.points[v] - coarse.points[v]).norm());
+    EXPECT_LE(worst / diagonal, kReverseTolerance);
+  }
+}
+
 }  // namespace ARCHGEO_UNITY_ID
 }  // namespace archgeo

@@ -95,6 +95,30 @@ TEST_F(Subdivide_, ReverseOfACurveConstrainedMeshReportsItsResidual) {
   EXPECT_GT(Details().at("reverse").at(0).at("residual_max_relative").get<double>(), 1e-6);
 }
 
+// The same roof reversed with its curves: the curve rules reversed in
+// arc-length parameters, exact to rounding; the coarse roof back up to the
+// snap of its vertices onto the sampled curves (curve_tolerance).
+TEST_F(Subdivide_, ReverseWithTheCurvesRecoversTheCurveConstrainedRoof) {
+  const std::string fine = Path("fine.obj");
+  ASSERT_EQ(Solve("--set subdivision.target_edge_length=0 --set subdivision.levels=2 --set subdivision.limit=false").code, 0);
+  std::filesystem::rename(Path("out.obj"), fine);
+  const Outcome o = Solve("--set mesh=" + fine + " --set subdivision.target_edge_length=0 --set subdivision.levels=0 "
+                          "--set subdivision.limit=false --set subdivision.reverse=2");
+  ASSERT_EQ(o.code, 0) << o.output;
+  const nlohmann::json d = Details();
+  EXPECT_EQ(d.at("curves"), 2);
+  ASSERT_EQ(d.at("reverse").size(), 2u);
+  for (const auto& level : d.at("reverse")) EXPECT_LE(level.at("residual_max_relative").get<double>(), kRecover);
+  const Mesh coarse = ReadMesh(Example("subdivide_roof.obj"));
+  const Mesh back = ReadMesh(Path("out.obj"));
+  ASSERT_EQ(back.number_of_vertices(), coarse.number_of_vertices());
+  double worst = 0;
+  for (VertexIndex v : coarse.vertices()) {
+    worst = std::max(worst, std::sqrt(CGAL::squared_distance(coarse.point(v), back.point(v))));
+  }
+  EXPECT_LE(worst, 1e-6 * 25);  // subdivision.curve_tolerance × the diagonal (≈ 24.6)
+}
+
 TEST_F(Subdivide_, CrossingCurvesExit2NamingFileAndCurves) {
   std::string text = ReadFile(Example("subdivide_roof_ridge.obj"));
   text += "v 0 -6 3\nv 0 6 3\nl 402 403\n";

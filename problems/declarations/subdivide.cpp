@@ -5,7 +5,8 @@
 // or polylines from an OBJ file) and crease curves taken up by the
 // subdivided mesh by arc length (§9.2.1), or the boundary ring locked
 // (§9.2.2), a number of levels or a target edge length, optionally the limit
-// positions (§9.1.2); or reverse subdivision (§9.2.3). The rules are in
+// positions (§9.1.2); or reverse subdivision (§9.2.3), with the curves'
+// rules when curves are given. The rules are in
 // geometry/constrained_subdivision.h.
 //
 // The `net` hook makes the subdivided (or reversed) mesh; it is the net the
@@ -113,6 +114,61 @@ double SdMeanEdge(const PolyMesh& m) {
   return count ? sum / double(count) : 0;
 }
 
+// The curves of subdivision.boundary (mesh: the input's boundary loops;
+// curves: boundary_curves) and subdivision.crease_curves.
+SdCurves SdGatherCurves(const Settings& s, const Mesh& input, const std::string& mesh_file) {
+  SdCurves curves;
+  const std::string& boundary = s.String("subdivision.boundary");
+  if (boundary == "curves" && s.String("subdivision.boundary_curves").empty()) {
+    throw s.Error("subdivision.boundary", "boundary: curves needs subdivision.boundary_curves (an OBJ of 'l' polylines)");
+  }
+  if (boundary != "curves" && !s.String("subdivision.boundary_curves").empty()) {
+    throw s.Error("subdivision.boundary_curves", "boundary curves are used with subdivision.boundary: curves");
+  }
+  if (boundary == "mesh") {
+    int k = 0;
+    for (const auto& loop : BoundaryLoops(input)) {
+      const Polyline p = LoopPolyline(input, loop);
+      SubdivisionCurve curve;
+      for (const Vec3& q : p.points) curve.points.emplace_back(q[0], q[1], q[2]);
+      curve.closed = true;
+      curve.boundary = true;
+      curve.name = mesh_file + ": boundary loop " + std::to_string(++k);
+      curves.curves.push_back(std::move(curve));
+      curves.files.push_back(mesh_file);
+      curves.keys.push_back("subdivision.boundary");
+      curves.shorts.push_back("boundary loop " + std::to_string(k));
+      curves.lines.push_back(0);
+    }
+  }
+  SdReadCurves(s, "subdivision.boundary_curves", true, curves);
+  SdReadCurves(s, "subdivision.crease_curves", false, curves);
+  return curves;
+}
+
+// A SubdivisionError of the tagging as an InputError naming the curve's
+// file, line and key (or the mesh's).
+[[noreturn]] void SdCurveError(const SubdivisionError& e, const SdCurves& curves, const std::string& mesh_file) {
+  const std::string what = e.what();
+  for (size_t k = 0; k < curves.curves.size(); ++k) {
+    const std::string& name = curves.curves[k].name;
+    if (what.rfind(name, 0) == 0) {
+      throw InputError(curves.files[k], curves.lines[k], curves.keys[k], curves.shorts[k] + what.substr(name.size()));
+    }
+  }
+  throw InputError(mesh_file, 0, "subdivision.scheme", what);
+}
+
+SubdivisionOptions SdOptions(const Settings& s, SubdivisionScheme scheme) {
+  SubdivisionOptions options;
+  options.scheme = scheme;
+  options.boundary =
+      s.String("subdivision.boundary") == "locked" ? SubdivisionBoundary::kLocked : SubdivisionBoundary::kStandard;
+  options.tolerance = s.Number("subdivision.curve_tolerance");
+  options.kink_degrees = s.Number("subdivision.kink_angle");
+  return options;
+}
+
 // The boundary surfaces of subdivision.tangent_surface (§9.2.2), put into
 // options.tangent: a point within tangent_tolerance × the coarse mesh's
 // diagonal of the surface lies on it, with the surface's interpolated normal.
@@ -160,17 +216,26 @@ void SdNet(HookContext& c) {
   char line[512];
   if (reverse > 0) {
     if (s.Integer("subdivision.levels") > 0 || s.Number("subdivision.target_edge_length") > 0 ||
-        s.Bool("subdivision.limit")) {
-      throw s.Error("subdivision.reverse",
-                    "reverse subdivision takes no levels, target_edge_length or limit: give one or the other");
+        s.Bool("subdivision.limit") || !s.String("subdivision.tangent_surface").empty()) {
+      throw s.Error("subdivision.reverse", "reverse subdivision takes no levels, target_edge_length, limit or "
+                                           "tangent_surface: give one or the other");
     }
     PolyMesh m = coarse;
     nlohmann::json levels = nlohmann::json::array();
     std::string summary;
+    const SdCurves curves = SdGatherCurves(s, input, mesh_file);
     for (int k = 0; k < reverse; ++k) {
       ReverseResult r;
+      std::unique_ptr<ConstrainedSubdivision> tagged;
+      if (!curves.curves.empty()) {
+        try {
+          tagged = std::make_unique<ConstrainedSubdivision>(m, curves.curves, SdOptions(s, scheme));
+        } catch (const SubdivisionError& e) {
+          SdCurveError(e, curves, mesh_file);
+        }
+      }
       try {
-        r = ReverseSubdivision(m, scheme);
+        r = tagged ? tagged->Reverse() : ReverseSubdivision(m, scheme);
       } catch (const SubdivisionError& e) {
         throw InputError(mesh_file, 0, "subdivision.reverse",
                          "level " + std::to_string(k + 1) + " of the reverse subdivision: " + e.what());
@@ -195,54 +260,20 @@ void SdNet(HookContext& c) {
       m = std::move(r.coarse);
     }
     details["reverse"] = levels;
+    details["curves"] = curves.curves.size();
     details["output"] = {{"vertices", m.points.size()}, {"faces", m.faces.size()}};
     c.net.mesh = SdMesh(m, m.points);
     c.net.headline = summary;
   } else {
-    SdCurves curves;
     const std::string& boundary = s.String("subdivision.boundary");
-    if (boundary == "curves" && s.String("subdivision.boundary_curves").empty()) {
-      throw s.Error("subdivision.boundary", "boundary: curves needs subdivision.boundary_curves (an OBJ of 'l' polylines)");
-    }
-    if (boundary != "curves" && !s.String("subdivision.boundary_curves").empty()) {
-      throw s.Error("subdivision.boundary_curves", "boundary curves are used with subdivision.boundary: curves");
-    }
-    if (boundary == "mesh") {
-      int k = 0;
-      for (const auto& loop : BoundaryLoops(input)) {
-        const Polyline p = LoopPolyline(input, loop);
-        SubdivisionCurve curve;
-        for (const Vec3& q : p.points) curve.points.emplace_back(q[0], q[1], q[2]);
-        curve.closed = true;
-        curve.boundary = true;
-        curve.name = mesh_file + ": boundary loop " + std::to_string(++k);
-        curves.curves.push_back(std::move(curve));
-        curves.files.push_back(mesh_file);
-        curves.keys.push_back("subdivision.boundary");
-        curves.shorts.push_back("boundary loop " + std::to_string(k));
-        curves.lines.push_back(0);
-      }
-    }
-    SdReadCurves(s, "subdivision.boundary_curves", true, curves);
-    SdReadCurves(s, "subdivision.crease_curves", false, curves);
-    SubdivisionOptions options;
-    options.scheme = scheme;
-    options.boundary = boundary == "locked" ? SubdivisionBoundary::kLocked : SubdivisionBoundary::kStandard;
-    options.tolerance = s.Number("subdivision.curve_tolerance");
-    options.kink_degrees = s.Number("subdivision.kink_angle");
+    const SdCurves curves = SdGatherCurves(s, input, mesh_file);
+    SubdivisionOptions options = SdOptions(s, scheme);
     const std::unique_ptr<ReferenceSurface> tangent = SdTangentSurface(s, coarse, options);
     std::unique_ptr<ConstrainedSubdivision> cs;
     try {
       cs = std::make_unique<ConstrainedSubdivision>(coarse, curves.curves, options);
     } catch (const SubdivisionError& e) {
-      const std::string what = e.what();
-      for (size_t k = 0; k < curves.curves.size(); ++k) {
-        const std::string& name = curves.curves[k].name;
-        if (what.rfind(name, 0) == 0) {
-          throw InputError(curves.files[k], curves.lines[k], curves.keys[k], curves.shorts[k] + what.substr(name.size()));
-        }
-      }
-      throw InputError(mesh_file, 0, "subdivision.scheme", what);
+      SdCurveError(e, curves, mesh_file);
     }
     const double target = s.Number("subdivision.target_edge_length");
     const int max_levels = int(s.Integer("subdivision.max_levels"));
@@ -359,7 +390,8 @@ ProblemDecl subdivide() {
       NumberKey("subdivision.tangent_tolerance", 1e-3, 0, 0.1,
                 "a curve vertex this close to the tangent surface (fraction of the diagonal) lies on it"),
       IntegerKey("subdivision.reverse", 0, 0, 6,
-                 "reverse subdivision: this many levels back by least squares (instead of subdividing)")};
+                 "reverse subdivision: this many levels back by least squares (instead of subdividing); with "
+                 "the boundary and crease curves of the forward run, their rules reversed too")};
   d.net = &SdNet;
   d.stages = &SdStages;
   d.colors = "none";
