@@ -143,6 +143,18 @@ TEST_F(Render, RefusesANameThatIsNotPngAndNamesIt) {
   EXPECT_FALSE(fs::exists(Path("view.jpg")));
 }
 
+// Kinks belong to an H-net (all quads): a mesh with a triangle is refused
+// naming the mesh and the option, nothing written.
+TEST_F(Render, KinksOfAMeshWithATriangleNameTheMeshAndTheOption) {
+  const std::string mixed = WriteFile("mixed.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\n"
+                                                   "f 1 2 3 4\nf 2 5 3\n");
+  const Outcome o = Shell(Archgeo() + " render " + mixed + " --value kinks --out " + Path("kinks.png"));
+  EXPECT_EQ(o.code, 2) << o.output;
+  EXPECT_NE(o.output.find(mixed + ": key '--value': kinks"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("face 1 has 3 sides"), std::string::npos) << o.output;
+  EXPECT_FALSE(fs::exists(Path("kinks.png")));
+}
+
 TEST_F(Render, SolveWritesImageAndPlyValuesThatMeshioReads) {
   const Outcome o = Shell(Archgeo() + " solve " + Source("examples/planar_quads_gentle.yaml") +
                           " --quiet --set output.mesh=" + Path("out.ply") +

@@ -173,7 +173,8 @@ std::vector<Key> ChartKeys() {
                     "a triangle chart with one side on the open boundary: `strip` = quads lined "
                     "up with its two inner sides and n triangles along the boundary (thesis "
                     "§4.1.4; n may be odd), `split` = three quads around a valence-3 centre like "
-                    "any triangle chart; `auto` = strip when the base complex has a quad face"),
+                    "any triangle chart; `auto` = strip when the base complex has a quad face (with output: "
+                    "triangles every chart is a triangle lattice and this key is not used)"),
           ChoiceKey("charts.output", "quads", {"quads", "triangles"},
                     "`triangles`: a triangle base complex's every chart sampled as the whole "
                     "lattice, n² triangles (thesis §4.1.4; at n = 2^k the connectivity of k Loop "

@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
 #include <utility>
 
+#include "core/input_error.h"
 #include "geometry/hnet.h"
 #include "analysis/metrics.h"
 #include "analysis/smoothness_metrics.h"
@@ -101,6 +103,14 @@ double Percentile95(std::vector<double> values) {
 }
 
 std::vector<double> Kinks(const Mesh& mesh, const Settings* s) {
+  for (FaceIndex f : mesh.faces()) {
+    if (mesh.degree(f) != 4) {
+      throw InputError("", 0, "--value",
+                       "kinks are the angles between an H-net's patches, which need an all-quad mesh; "
+                       "face " + std::to_string(f.idx()) + " has " + std::to_string(mesh.degree(f)) +
+                           " sides (another --value, e.g. bending, shows this mesh)");
+    }
+  }
   const HNet h = BuildHNet(mesh, s ? HNetOptionsOf(*s) : HNetOptions{});
   std::vector<double> values(mesh.num_faces(), 0.0);
   for (EdgeIndex e : mesh.edges()) {

@@ -149,8 +149,13 @@ std::string RenderFiles(const RenderRequest& r) {
       continue;
     }
     // The first mesh is the "before": it sets the scale of every panel.
-    const FaceValues v =
-        ComputeFaceValues(value, meshes[i], &meshes.front(), nullptr, r.color_max);
+    FaceValues v;
+    try {
+      v = ComputeFaceValues(value, meshes[i], &meshes.front(), nullptr, r.color_max);
+    } catch (const InputError& e) {
+      if (!e.file().empty()) throw;
+      throw InputError(r.meshes[i], 0, e.key(), e.message());  // the value does not fit this mesh
+    }
     if (i == 0) scale = ScaleOf(v);
     panels.push_back(PanelOf(meshes[i], v.values, title));
     if (i < lines.size()) panels.back().lines = lines[i];
