@@ -87,6 +87,84 @@ std::vector<std::array<int, 4>> OppositePairs(int vertices,
   return pairs;
 }
 
+// The interior vertices of valence other than 4 (the base complex's
+// irregular nodes) with their edge neighbours in cyclic order; a vertex on
+// the boundary (its quads do not close round it) is left out.
+struct Spokes {
+  int vertex;
+  std::vector<int> around;
+};
+std::vector<Spokes> IrregularSpokes(int vertices, const std::vector<std::array<int, 4>>& quads,
+                                    const std::vector<bool>& regular, const std::vector<int>& centres) {
+  std::vector<std::vector<std::array<int, 2>>> beside(static_cast<size_t>(vertices));
+  for (const auto& q : quads) {
+    for (int k = 0; k < 4; ++k) {
+      beside[size_t(q[size_t(k)])].push_back({q[size_t((k + 3) % 4)], q[size_t((k + 1) % 4)]});
+    }
+  }
+  std::vector<Spokes> out;
+  for (int v = 0; v < vertices; ++v) {
+    const auto& b = beside[size_t(v)];
+    if (regular[size_t(v)] || b.size() < 3 ||
+        std::find(centres.begin(), centres.end(), v) != centres.end()) {
+      continue;
+    }
+    // Chain the quads round v: each quad's next neighbour is the following quad's previous one.
+    Spokes s{v, {b[0][0]}};
+    int at = b[0][1];
+    bool closed = true;
+    for (size_t step = 1; step < b.size() && closed; ++step) {
+      s.around.push_back(at);
+      closed = false;
+      for (const auto& pair : b) {
+        if (pair[0] == at) {
+          at = pair[1];
+          closed = true;
+          break;
+        }
+      }
+    }
+    if (closed && at == s.around.front() && s.around.size() == b.size()) out.push_back(std::move(s));
+  }
+  return out;
+}
+
+// Turns each spoke of an irregular vertex (an edge neighbour of valence 4;
+// the boundary and other nodes stay) about the vertex's normal, a quarter
+// of the way per sweep, towards the spokes dividing the tangent plane
+// evenly (360°/valence apart, the fan turned as a whole to fit the spokes
+// as they are), keeping its length.
+void BalanceSpokes(const Spokes& s, const std::vector<Eigen::Vector3d>& points, const std::vector<bool>& regular,
+                   std::vector<Eigen::Vector3d>* next) {
+  const Eigen::Vector3d& v = points[size_t(s.vertex)];
+  const size_t k = s.around.size();
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+  for (size_t j = 0; j < k; ++j) {
+    normal += (points[size_t(s.around[j])] - v).cross(points[size_t(s.around[(j + 1) % k])] - v);
+  }
+  if (normal.norm() == 0) return;
+  normal.normalize();
+  const Eigen::Vector3d x0 = points[size_t(s.around[0])] - v;
+  const Eigen::Vector3d e1 = (x0 - x0.dot(normal) * normal).normalized();
+  const Eigen::Vector3d e2 = normal.cross(e1);
+  std::vector<double> angle(k);
+  double offset = 0, previous = 0;
+  for (size_t j = 0; j < k; ++j) {
+    const Eigen::Vector3d d = points[size_t(s.around[j])] - v;
+    double a = std::atan2(d.dot(e2), d.dot(e1));
+    while (a < previous) a += 2 * kPi;  // counter-clockwise order, unwrapped
+    angle[j] = previous = a;
+    offset += a - 2 * kPi * double(j) / double(k);
+  }
+  offset /= double(k);
+  for (size_t j = 0; j < k; ++j) {
+    if (!regular[size_t(s.around[j])]) continue;  // the boundary and other nodes stay
+    const double turn = 0.25 * (offset + 2 * kPi * double(j) / double(k) - angle[j]);
+    const Eigen::Vector3d d = (*next)[size_t(s.around[j])] - v;
+    (*next)[size_t(s.around[j])] = v + Eigen::AngleAxisd(turn, normal) * d;
+  }
+}
+
 }  // namespace
 
 GridLineKinks MeasureGridLineKinks(const std::vector<Eigen::Vector3d>& points,
@@ -144,13 +222,18 @@ void RelaxQuads(const std::vector<std::array<int, 4>>& quads, int sweeps,
     convex[q] = ConvexCorners(*points, quads[q], mapped[q]);
     shortest[q] = ShortestSide(*points, quads[q]);
   }
+  const std::vector<Spokes> spokes = IrregularSpokes(int(points->size()), quads, regular, centres);
   std::vector<Eigen::Vector3d> next = *points;
   for (int sweep = 0; sweep < sweeps; ++sweep) {
     for (size_t v = 0; v < points->size(); ++v) {
       if (!regular[v]) continue;
       Eigen::Vector3d sum = Eigen::Vector3d::Zero();
       for (int u : pairs[v]) sum += (*points)[size_t(u)];
-      next[v] = onto(0.5 * (*points)[v] + 0.125 * sum);
+      next[v] = 0.5 * (*points)[v] + 0.125 * sum;
+    }
+    for (const Spokes& s : spokes) BalanceSpokes(s, *points, regular, &next);
+    for (size_t v = 0; v < points->size(); ++v) {
+      if (regular[v]) next[v] = onto(next[v]);
     }
     for (size_t i = 0; i < centres.size(); ++i) {
       if (centre_ring[i].empty()) continue;

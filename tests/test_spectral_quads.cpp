@@ -102,6 +102,18 @@ TEST(SpectralQuads, TorusWaveRoundTheTubeIsChartedOnTheComplexItself) {
   SqExpectQuads(run, sp.at("base_irregular_vertices").get<int>());
 }
 
+// Eigenfunction 22 of the 2,562-vertex icosphere: a base edge leaves a
+// valence-3 node nearly straight on from its neighbour, and the panel in
+// that corner folds (34° bent inward) unless the relaxation turns the
+// node's spokes towards 120° apart (spectral/quad_relax.h): then every
+// panel is convex within validity's 10° and the run exits 0.
+TEST(SpectralQuads, SpokesOfAnIrregularNodeAreTurnedApartSoNoPanelFolds) {
+  const RunResult run = SqRun("problem: spectral_quads\nspectral: {eigenfunction: 22}\n",
+                              TriangulatedEllipsoid(1, 1, 1, 4));
+  SqExpectQuads(run, run.report.at("details").at("spectral").at("complex").at("quasi_dual")
+                         .at("irregular_vertices").get<int>());
+}
+
 TEST(SpectralQuads, EigenfunctionBeyondTheVerticesIsAnErrorNamingTheKey) {
   const Mesh sphere = TriangulatedEllipsoid(1, 1, 1, 1);  // 42 vertices
   try {
