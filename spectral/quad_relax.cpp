@@ -87,14 +87,14 @@ std::vector<std::array<int, 4>> OppositePairs(int vertices,
   return pairs;
 }
 
-// The interior vertices of valence other than 4 (the base complex's
-// irregular nodes) with their edge neighbours in cyclic order; a vertex on
-// the boundary (its quads do not close round it) is left out.
+// The interior vertices of valence 3 (irregular nodes of the base complex,
+// not triangle centres) with their edge neighbours in cyclic order; a
+// vertex on the boundary (its quads do not close round it) is left out.
 struct Spokes {
   int vertex;
   std::vector<int> around;
 };
-std::vector<Spokes> IrregularSpokes(int vertices, const std::vector<std::array<int, 4>>& quads,
+std::vector<Spokes> ValenceThreeSpokes(int vertices, const std::vector<std::array<int, 4>>& quads,
                                     const std::vector<bool>& regular, const std::vector<int>& centres) {
   std::vector<std::vector<std::array<int, 2>>> beside(static_cast<size_t>(vertices));
   for (const auto& q : quads) {
@@ -105,7 +105,7 @@ std::vector<Spokes> IrregularSpokes(int vertices, const std::vector<std::array<i
   std::vector<Spokes> out;
   for (int v = 0; v < vertices; ++v) {
     const auto& b = beside[size_t(v)];
-    if (regular[size_t(v)] || b.size() < 3 ||
+    if (regular[size_t(v)] || b.size() != 3 ||
         std::find(centres.begin(), centres.end(), v) != centres.end()) {
       continue;
     }
@@ -129,11 +129,11 @@ std::vector<Spokes> IrregularSpokes(int vertices, const std::vector<std::array<i
   return out;
 }
 
-// Turns each spoke of an irregular vertex (an edge neighbour of valence 4;
-// the boundary and other nodes stay) about the vertex's normal, a quarter
-// of the way per sweep, towards the spokes dividing the tangent plane
-// evenly (360°/valence apart, the fan turned as a whole to fit the spokes
-// as they are), keeping its length.
+// Turns each spoke of such a vertex (an edge neighbour of valence 4; the
+// boundary and other nodes stay) about the vertex's normal, a quarter of
+// the way per sweep, towards the spokes dividing the tangent plane evenly
+// (360°/valence apart, the fan turned as a whole to fit the spokes as they
+// are), keeping its length.
 void BalanceSpokes(const Spokes& s, const std::vector<Eigen::Vector3d>& points, const std::vector<bool>& regular,
                    std::vector<Eigen::Vector3d>* next) {
   const Eigen::Vector3d& v = points[size_t(s.vertex)];
@@ -222,7 +222,7 @@ void RelaxQuads(const std::vector<std::array<int, 4>>& quads, int sweeps,
     convex[q] = ConvexCorners(*points, quads[q], mapped[q]);
     shortest[q] = ShortestSide(*points, quads[q]);
   }
-  const std::vector<Spokes> spokes = IrregularSpokes(int(points->size()), quads, regular, centres);
+  const std::vector<Spokes> spokes = ValenceThreeSpokes(int(points->size()), quads, regular, centres);
   std::vector<Eigen::Vector3d> next = *points;
   for (int sweep = 0; sweep < sweeps; ++sweep) {
     for (size_t v = 0; v < points->size(); ++v) {

@@ -9,10 +9,11 @@
 // straightens them: every vertex of valence 4 moves half-way to the mean of
 // its four edge neighbours, then onto the design surface (its closest
 // point), `sweeps` times (Jacobi), except that the edge neighbours (spokes)
-// of an interior irregular node turn about it, a quarter of the way per
-// sweep, towards dividing its tangent plane evenly (a base edge that leaves
-// a node at 180° from its neighbour otherwise leaves a corner of 180° or
-// more: a folded panel); the vertices of another valence — the
+// of an interior node of valence 3 turn about it, a quarter of the way per
+// sweep, towards 120° apart (a base edge that leaves the node at 180° from
+// its neighbour otherwise leaves a corner of 180° or more: a folded panel;
+// at valences 5–7 the turn folded more panels than it saved, so it is not
+// done there); the vertices of another valence — the
 // base complex's irregular nodes, the boundary — and the connectivity stay,
 // but for the `centres` (the triangle charts' centres, placed by the
 // parameterisation, not by the designer): each moves half-way to the mean
