@@ -43,6 +43,9 @@
   X(proximity)                 \
   X(saddle_sign)               \
   X(shear)                     \
+  X(size_curl)                 \
+  X(size_smoothing)            \
+  X(size_target)               \
   X(smoothed_dihedral_energy)  \
   X(spring)                    \
   X(step)                      \
