@@ -18,7 +18,11 @@
 // fields μ (along X) and η (along Y): wave.wavelength (file units), constant
 // or times the distance to the file's z axis (wave.size_field,
 // wave.size_field_y). ω = 2π / μ: cos θ has period μ, so the extrema of
-// cos θ cos φ lie μ/2 apart along X.
+// cos θ cos φ lie μ/2 apart along X. With wave.curl_correction (§8.1.4) a
+// stage `curl` first solves the log sizes (block wave_size) for the least
+// curl of X/μ and Y/η (size_curl, size_target, size_smoothing;
+// problems/declarations/wave_size_curl.h), and those sizes scale the
+// transfer.
 //
 // Starts: the stage `restart` runs wave.restarts rounds, each from a new
 // start (seed wave.seed + round): the fields integrated along a spanning
@@ -41,8 +45,11 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "core/problem.h"
+#include "energies/size_elements.h"
 #include "energies/wave_elements.h"
 #include "energies/wave_feature.h"
 #include "energies/wave_norm.h"
@@ -54,6 +61,7 @@
 #include "problems/declarations/base_complex_input.h"
 #include "problems/declarations/wave_complex.h"
 #include "problems/declarations/wave_field.h"
+#include "problems/declarations/wave_size_curl.h"
 #include "problems/declarations/wave_start.h"
 #include "problems/runtime/model.h"
 
@@ -61,6 +69,7 @@ namespace archgeo::problems {
 namespace {
 
 namespace wd = wave_data;
+namespace sd = size_data;
 
 struct WaveState : ProblemState {
   ElementSet edges, vertices, features;
@@ -74,6 +83,13 @@ struct WaveState : ProblemState {
   std::vector<double> best_valid_f;
   std::shared_ptr<const WaveComplex> best_valid_complex;
   double seconds_field = 0, seconds_start = 0, seconds_complex = 0;
+  // The size fields: the guidance field, the designated sizes (canonical),
+  // the sizes the wave uses (corrected with wave.curl_correction) and the
+  // curl of the phase gradient with each.
+  WaveFrames frames;
+  std::vector<double> mu, eta, mu_used, eta_used;
+  WaveSizeCurl curl_target, curl_used;
+  double seconds_curl = 0;
   Mesh quads;  // output.quads: the kept complex's quasi-dual through the charts
 };
 
@@ -131,6 +147,76 @@ std::vector<double> WaveSizes(HookContext& c, const std::string& key, double wav
   return out;
 }
 
+// The curl correction's element sets (empty when wave.curl_correction is
+// off) and the designated sizes' curl; the log sizes start at 0 (one mean
+// edge length): the linear least squares' solution does not depend on it.
+void InitWaveSizes(HookContext& c) {
+  WaveState& st = WaveSt(c);
+  const auto t0 = std::chrono::steady_clock::now();
+  const Mesh& mesh = c.store->mesh();
+  WaveSizeSets sets;
+  if (c.settings->String("wave.curl_correction") == "on") {
+    sets = WaveSizeCurlSets(mesh, st.frames, st.mu, st.eta);
+  }
+  sets.triangles.site = Site::kFace;
+  sets.triangles.data_width = sd::kTriangleWidth;
+  sets.vertices.site = Site::kVertex;
+  sets.vertices.data_width = sd::kVertexWidth;
+  sets.edges.site = Site::kEdge;
+  sets.edges.data_width = sd::kEdgeWidth;
+  c.SetElements("size_triangles", sets.triangles);
+  c.SetElements("size_vertices", sets.vertices);
+  c.SetElements("size_edges", sets.edges);
+  for (int v = 0; v < int(mesh.number_of_vertices()); ++v) {
+    for (int k = 0; k < sd::kWidth; ++k) c.store->At("wave_size", v)[k] = 0;
+  }
+  st.curl_target = st.curl_used = MeasureWaveSizeCurl(mesh, st.frames, st.mu, st.eta);
+  st.seconds_curl = WaveSecondsSince(t0);
+}
+
+// After the curl correction's stage: the sizes e^μ̃, e^η̃ scale the transfer
+// (the wave_edges' α, β), their curl, and the first start.
+void WaveSizesSolved(HookContext& c) {
+  WaveState& st = WaveSt(c);
+  const auto t0 = std::chrono::steady_clock::now();
+  const Mesh& mesh = c.store->mesh();
+  for (int v = 0; v < int(mesh.number_of_vertices()); ++v) {
+    st.mu_used[size_t(v)] = std::exp(c.store->At("wave_size", v)[0]);
+    st.eta_used[size_t(v)] = std::exp(c.store->At("wave_size", v)[1]);
+  }
+  st.edges = WaveEdges(mesh, st.frames, st.mu_used, st.eta_used);
+  c.SetElements("wave_edges", st.edges);
+  st.curl_used = MeasureWaveSizeCurl(mesh, st.frames, st.mu_used, st.eta_used);
+  st.seconds_curl += WaveSecondsSince(t0);
+  WaveRandomise(c, 0);
+}
+
+// The range of used / designated sizes.
+std::pair<double, double> WaveSizeRatios(const std::vector<double>& used,
+                                         const std::vector<double>& target) {
+  double lo = 1, hi = 1;
+  for (size_t v = 0; v < used.size(); ++v) {
+    lo = std::min(lo, used[v] / target[v]);
+    hi = std::max(hi, used[v] / target[v]);
+  }
+  return {lo, hi};
+}
+
+nlohmann::json WaveCurlDetails(HookContext& c) {
+  const WaveState& st = WaveSt(c);
+  const auto mu = WaveSizeRatios(st.mu_used, st.mu), eta = WaveSizeRatios(st.eta_used, st.eta);
+  return {{"correction", c.settings->String("wave.curl_correction") == "on"},
+          {"curl_x_target", st.curl_target.x},
+          {"curl_y_target", st.curl_target.y},
+          {"curl_x", st.curl_used.x},
+          {"curl_y", st.curl_used.y},
+          {"mu_ratio_min", mu.first},
+          {"mu_ratio_max", mu.second},
+          {"eta_ratio_min", eta.first},
+          {"eta_ratio_max", eta.second},
+          {"seconds", st.seconds_curl}};
+}
+
 void InitWave(HookContext& c) {
   WaveState& st = WaveSt(c);
   st = WaveState{};
@@ -153,7 +239,10 @@ void InitWave(HookContext& c) {
   if (wavelength_y == 0) wavelength_y = wavelength;
   const std::vector<double> mu = WaveSizes(c, "wave.size_field", wavelength);
   const std::vector<double> eta = WaveSizes(c, "wave.size_field_y", wavelength_y);
-  const WaveFrames frames = PrincipalWaveFrames(mesh, int(s.Integer("wave.field_smoothing")));
+  st.frames = PrincipalWaveFrames(mesh, int(s.Integer("wave.field_smoothing")));
+  const WaveFrames& frames = st.frames;
+  st.mu = st.mu_used = mu;
+  st.eta = st.eta_used = eta;
   st.edges = WaveEdges(mesh, frames, mu, eta);
   st.vertices = WaveVertices(mesh);
   st.features = s.String("wave.features") == "boundary"
@@ -165,7 +254,9 @@ void InitWave(HookContext& c) {
   c.SetElements("wave_vertices", st.vertices);
   c.SetElements("wave_features", st.features);
   st.seconds_field = WaveSecondsSince(t0);
-  WaveRandomise(c, 0);
+  InitWaveSizes(c);
+  // With the curl correction the start follows its stage (WaveSizesSolved).
+  if (s.String("wave.curl_correction") == "off") WaveRandomise(c, 0);
 }
 
 void WaveNextRestart(HookContext& c) {
@@ -327,6 +418,7 @@ void FinishWave(HookContext& c) {
       {"feature_vertices", st.features.size()},
       {"feature_sin_max", WaveFeatureMax(c)},
       {"restarts", st.restart},
+      {"curl", WaveCurlDetails(c)},
       {"valid_starts", std::count(st.valid_starts.begin(), st.valid_starts.end(), true)},
       {"kept_start", st.best_valid},
       {"seconds",
@@ -408,6 +500,13 @@ std::vector<Key> WaveKeys() {
                 "file's z axis (a torus about z: wave.wavelength = 2π/N gives N waves around)"),
       ChoiceKey("wave.size_field_y", "constant", {"constant", "axis_distance"},
                 "η per vertex, as wave.size_field"),
+      ChoiceKey("wave.curl_correction", "off", {"off", "on"},
+                "curl correction of the size fields (Gebreiter 2012, §8.1.4): before the "
+                "wave, log μ and log η per vertex minimise the curl of X/μ and Y/η "
+                "(size_curl) held to the designated sizes (size_target) and smooth "
+                "(size_smoothing); the corrected sizes scale the transfer"),
+      IntegerKey("wave.curl_rounds", 1, 1, 100,
+                 "solves of the curl correction (a linear least squares: one solves it)"),
       IntegerKey("wave.field_smoothing", 10, 0, 10000,
                  "sweeps of 4-RoSy smoothing of the principal field (weighted by the "
                  "anisotropy |k1 − k2|): propagates it into umbilic regions"),
@@ -440,7 +539,8 @@ ProblemDecl wave_quads() {
               "complex and quad base complex (quasi-dual)";
   d.paper = "[Gebreiter 2012, §8.3; Zhang et al. 2010]";
   d.terms = {{"wave_transfer", 1}, {"wave_norm", 0.15}, {"wave_product", 0.15},
-             {"wave_feature", 1e8}};
+             {"wave_feature", 1e8}, {"size_curl", 1}, {"size_target", 1e-3},
+             {"size_smoothing", 1e-2}};
   // The complex needs the wave's shape, not its last digits: a solve ends
   // when an iteration lowers E by less than 1e-4 of it.
   d.defaults = {{"solver.max_num_iterations", 100LL}, {"solver.function_tolerance", 1e-4}};
@@ -450,17 +550,32 @@ ProblemDecl wave_quads() {
   d.blocks = {{"wave_f", Site::kVertex, wd::kWidth, FrameMap::kInvariant, false,
                Carry::kReinitialise, true, false,
                "the standing wave's 4-vector (cos θ cos φ, cos θ sin φ, sin θ cos φ, "
-               "sin θ sin φ) per vertex"}};
+               "sin θ sin φ) per vertex"},
+              {"wave_size", Site::kVertex, sd::kWidth, FrameMap::kInvariant, false,
+               Carry::kReinitialise, false, false,
+               "the log sizes (log μ, log η) of the curl correction per vertex (canonical "
+               "lengths)"}};
   d.init = &InitWave;
-  d.stages = [](const Settings&) {
+  d.stages = [](const Settings& s) {
+    std::vector<Stage> stages;
+    if (s.String("wave.curl_correction") == "on") {
+      Stage sizes;
+      sizes.name = "curl";
+      sizes.terms = {"size_curl", "size_target", "size_smoothing"};
+      sizes.rounds_key = "wave.curl_rounds";
+      sizes.after_round = &WaveSizesSolved;
+      stages.push_back(sizes);
+    }
     Stage restart;
+    restart.terms = {"wave_transfer", "wave_norm", "wave_product", "wave_feature"};
     restart.name = "restart";
     restart.rounds_key = "wave.restarts";
     restart.keep_best = "wave_energy";  // the result when no start is valid
     restart.before_round = &WaveNextRestart;
     restart.after_round = &WaveAfterStart;
     restart.logged = {"wave_energy", "wave_feature_max", "wave_valid"};
-    return std::vector<Stage>{restart};
+    stages.push_back(restart);
+    return stages;
   };
   d.measures["wave_energy"] = &WaveEnergy;
   d.measures["wave_feature_max"] = &WaveFeatureMax;
