@@ -19,10 +19,10 @@
 #include "tests/energy_checks.h"
 
 namespace archgeo {
-namespace {
+namespace ARCHGEO_UNITY_ID {
 
 using namespace energy_checks;
-constexpr double kExact = 1e-12;
+constexpr double kSizeExact = 1e-12;
 
 // r = a + Σ g_k s_k[source_k]: each corner reads the log size its source names.
 TEST(SizeCurl, ValuesForEverySourceAndGradientsMatch) {
@@ -33,7 +33,7 @@ TEST(SizeCurl, ValuesForEverySourceAndGradientsMatch) {
     std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(SizeCurl(0.25, g, source)));
     double expected = 0.25;
     for (int k = 0; k < 3; ++k) expected += g[size_t(k)] * s[size_t(k)][size_t(source[size_t(k)])];
-    EXPECT_NEAR(Evaluate(*cost, s)[0], expected, kExact) << code;
+    EXPECT_NEAR(Evaluate(*cost, s)[0], expected, kSizeExact) << code;
     ExpectGradientsMatch(*cost, s);
   }
 }
@@ -42,9 +42,9 @@ TEST(SizeCurl, ValuesForEverySourceAndGradientsMatch) {
 TEST(SizeTarget, ValuesAndGradients) {
   std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(SizeTarget(0.5, -1.0, 2.0, 3.0)));
   const std::vector<double> r = Evaluate(*cost, {{1.5, 0.0}});
-  EXPECT_NEAR(r[0], 2.0, kExact);
-  EXPECT_NEAR(r[1], 3.0, kExact);
-  EXPECT_LT(SquaredNorm(Evaluate(*cost, {{0.5, -1.0}})), kExact);
+  EXPECT_NEAR(r[0], 2.0, kSizeExact);
+  EXPECT_NEAR(r[1], 3.0, kSizeExact);
+  EXPECT_LT(SquaredNorm(Evaluate(*cost, {{0.5, -1.0}})), kSizeExact);
   ExpectGradientsMatch(*cost, {{0.3, -0.2}});
 }
 
@@ -53,11 +53,11 @@ TEST(SizeSmoothing, MatchedDifferencesAndGradients) {
   for (int source : {0, 1}) {
     std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(SizeSmoothing(source)));
     const std::vector<double> r = Evaluate(*cost, {{1.0, 2.0}, {0.25, 0.5}});
-    EXPECT_NEAR(r[0], source == 0 ? 0.75 : 0.5, kExact);
-    EXPECT_NEAR(r[1], source == 0 ? 1.5 : 1.75, kExact);
+    EXPECT_NEAR(r[0], source == 0 ? 0.75 : 0.5, kSizeExact);
+    EXPECT_NEAR(r[1], source == 0 ? 1.5 : 1.75, kSizeExact);
     ExpectGradientsMatch(*cost, {{0.3, -0.2}, {0.7, 0.1}});
   }
 }
 
-}  // namespace
+}  // namespace ARCHGEO_UNITY_ID
 }  // namespace archgeo

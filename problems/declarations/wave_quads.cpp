@@ -148,8 +148,9 @@ std::vector<double> WaveSizes(HookContext& c, const std::string& key, double wav
 }
 
 // The curl correction's element sets (empty when wave.curl_correction is
-// off) and the designated sizes' curl; the log sizes start at 0 (one mean
-// edge length): the linear least squares' solution does not depend on it.
+// off) and the designated sizes' curl; the log sizes start at the
+// designated ones (the solve's relative function tolerance would stop the
+// nearly free constant mode short of them from another start).
 void InitWaveSizes(HookContext& c) {
   WaveState& st = WaveSt(c);
   const auto t0 = std::chrono::steady_clock::now();
@@ -168,7 +169,8 @@ void InitWaveSizes(HookContext& c) {
   c.SetElements("size_vertices", sets.vertices);
   c.SetElements("size_edges", sets.edges);
   for (int v = 0; v < int(mesh.number_of_vertices()); ++v) {
-    for (int k = 0; k < sd::kWidth; ++k) c.store->At("wave_size", v)[k] = 0;
+    c.store->At("wave_size", v)[0] = std::log(st.mu[size_t(v)]);
+    c.store->At("wave_size", v)[1] = std::log(st.eta[size_t(v)]);
   }
   st.curl_target = st.curl_used = MeasureWaveSizeCurl(mesh, st.frames, st.mu, st.eta);
   st.seconds_curl = WaveSecondsSince(t0);
@@ -194,8 +196,9 @@ void WaveSizesSolved(HookContext& c) {
 // The range of used / designated sizes.
 std::pair<double, double> WaveSizeRatios(const std::vector<double>& used,
                                          const std::vector<double>& target) {
-  double lo = 1, hi = 1;
-  for (size_t v = 0; v < used.size(); ++v) {
+  if (used.empty()) return {1, 1};
+  double lo = used[0] / target[0], hi = lo;
+  for (size_t v = 1; v < used.size(); ++v) {
     lo = std::min(lo, used[v] / target[v]);
     hi = std::max(hi, used[v] / target[v]);
   }
