@@ -16,6 +16,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include <Eigen/QR>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <glog/logging.h>
@@ -527,20 +528,31 @@ void ConstrainedSubdivision::Step() {
 void ConstrainedSubdivision::ImposeTangency(std::vector<Eigen::Vector3d>& points) const {
   const CsTopology t(mesh_);
   const size_t n = points.size();
-  std::vector<Eigen::Vector3d> shift(n, Eigen::Vector3d::Zero());
-  std::vector<int> count(n, 0);
+  // Per interior vertex: the planes (normal, point) of the curve vertices it neighbours.
+  std::vector<std::vector<std::pair<Eigen::Vector3d, int>>> planes(n);
   Eigen::Vector3d normal;
   for (size_t b = 0; b < n; ++b) {
     if (on_[b].empty() || !options_.tangent(points[b], &normal)) continue;
     for (int e : t.vertex_edges[b]) {
       const int v = t.Other(e, static_cast<int>(b));
-      if (!on_[v].empty() || fixed_[v] || locked_[v]) continue;
-      shift[v] -= (points[v] - points[b]).dot(normal) * normal;
-      ++count[v];
+      if (on_[v].empty() && !fixed_[v] && !locked_[v]) planes[v].emplace_back(normal, static_cast<int>(b));
     }
   }
+  // The shortest move into all of a vertex's planes: δ = −Nᵀ(N Nᵀ)⁻¹ r
+  // (N the normals as rows, r the signed distances); with Loop a first-row
+  // vertex neighbours two curve vertices and lands on their planes' line.
   for (size_t v = 0; v < n; ++v) {
-    if (count[v] > 0) points[v] += shift[v] / count[v];
+    const size_t k = planes[v].size();
+    if (k == 0) continue;
+    Eigen::MatrixXd rows(static_cast<Eigen::Index>(k), 3);
+    Eigen::VectorXd r(static_cast<Eigen::Index>(k));
+    for (size_t i = 0; i < k; ++i) {
+      rows.row(static_cast<Eigen::Index>(i)) = planes[v][i].first.transpose();
+      r[static_cast<Eigen::Index>(i)] = planes[v][i].first.dot(points[v] - points[planes[v][i].second]);
+    }
+    const Eigen::MatrixXd gram = rows * rows.transpose();
+    const Eigen::VectorXd y = gram.completeOrthogonalDecomposition().solve(r);
+    points[v] -= rows.transpose() * y;
   }
 }
 

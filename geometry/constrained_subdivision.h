@@ -21,8 +21,8 @@
 //    the boundary condition at every level): a curve vertex b on a boundary
 //    surface with unit normal n there moves each interior edge neighbour v
 //    by −((v − b)·n) n, so the cross-boundary edges lie in the surface's
-//    tangent plane (a neighbour of several such vertices takes the mean of
-//    their corrections); limit positions get the same correction;
+//    tangent plane (a neighbour of several such vertices takes the shortest
+//    move into all their planes); limit positions get the same correction;
 //  - limit positions (§9.1.2): Catmull–Clark (n²v + 4Σe_j + Σf_j)/(n(n+5))
 //    [Sharp 2000], Loop v∞ = (1 − nχ)v + χΣv_j, χ = 1/(3/(8β) + n) (the left
 //    eigenvector of the 1-ring subdivision matrix, for any β); on curves the

@@ -483,36 +483,44 @@ struct Funnel {
 // rules meet it at the coarse mesh's flare angle.
 TEST(ConstrainedSubdivision, TangentSurfaceMakesTheJointSmooth) {
   const Funnel funnel;
-  SubdivisionOptions options;
-  options.scheme = SubdivisionScheme::kCatmullClark;
-  ConstrainedSubdivision standard(funnel.mesh, {funnel.top}, options);
-  options.tangent = &Funnel::Normal;
-  ConstrainedSubdivision tangent(funnel.mesh, {funnel.top}, options);
-  for (int level = 0; level < 4; ++level) {
-    standard.Step();
-    tangent.Step();
+  PolyMesh triangles = funnel.mesh;  // each quad split along its first diagonal, for Loop
+  triangles.faces.clear();
+  for (const auto& f : funnel.mesh.faces) {
+    triangles.faces.push_back({f[0], f[1], f[2]});
+    triangles.faces.push_back({f[0], f[2], f[3]});
   }
-  const double flare = Funnel::MaxTurn(standard.mesh(), standard.mesh().points);
-  EXPECT_GT(flare, 20.0);
-  const double turn = Funnel::MaxTurn(tangent.mesh(), tangent.mesh().points);
-  EXPECT_LE(turn, 0.5);
-  const TangencyMeasure measure = tangent.Tangency(tangent.mesh().points);
-  EXPECT_EQ(measure.vertices, 8 << 4);
-  EXPECT_NEAR(measure.max_degrees, turn, 1e-9);
-  EXPECT_LE(tangent.MaxCurveDistance() / tangent.diagonal(), kCurveTolerance);
-  const std::vector<Vector3d> limit = tangent.LimitPositions();
-  EXPECT_LE(Funnel::MaxTurn(tangent.mesh(), limit), 0.5);
-  EXPECT_LE(tangent.MaxCurveDistance(limit) / tangent.diagonal(), kCurveTolerance);
-  // Away from the joint the correction leaves the rules alone: the outer
-  // ring (the roof edge, standard boundary) is where it was.
-  const size_t n = tangent.mesh().points.size();
-  double far = 0;
-  for (size_t v = 0; v < n; ++v) {
-    if (tangent.mesh().points[v].z() > 0.99 * 2 * Funnel::r) {
-      far = std::max(far, (tangent.mesh().points[v] - standard.mesh().points[v]).norm());
+  for (const SubdivisionScheme scheme : {SubdivisionScheme::kCatmullClark, SubdivisionScheme::kLoop}) {
+    SCOPED_TRACE(scheme == SubdivisionScheme::kLoop ? "Loop" : "Catmull-Clark");
+    const PolyMesh& coarse = scheme == SubdivisionScheme::kLoop ? triangles : funnel.mesh;
+    SubdivisionOptions options;
+    options.scheme = scheme;
+    ConstrainedSubdivision standard(coarse, {funnel.top}, options);
+    options.tangent = &Funnel::Normal;
+    ConstrainedSubdivision tangent(coarse, {funnel.top}, options);
+    for (int level = 0; level < 4; ++level) {
+      standard.Step();
+      tangent.Step();
     }
+    EXPECT_GT(Funnel::MaxTurn(standard.mesh(), standard.mesh().points), 20.0);
+    const double turn = Funnel::MaxTurn(tangent.mesh(), tangent.mesh().points);
+    EXPECT_LE(turn, 0.5);
+    const TangencyMeasure measure = tangent.Tangency(tangent.mesh().points);
+    EXPECT_EQ(measure.vertices, 8 << 4);
+    EXPECT_NEAR(measure.max_degrees, turn, 1e-9);
+    EXPECT_LE(tangent.MaxCurveDistance() / tangent.diagonal(), kCurveTolerance);
+    const std::vector<Vector3d> limit = tangent.LimitPositions();
+    EXPECT_LE(Funnel::MaxTurn(tangent.mesh(), limit), 0.5);
+    EXPECT_LE(tangent.MaxCurveDistance(limit) / tangent.diagonal(), kCurveTolerance);
+    // Away from the joint the correction leaves the rules alone: the outer
+    // ring (the roof edge, standard boundary) is where it was.
+    double far = 0;
+    for (size_t v = 0; v < tangent.mesh().points.size(); ++v) {
+      if (tangent.mesh().points[v].z() > 0.99 * 2 * Funnel::r) {
+        far = std::max(far, (tangent.mesh().points[v] - standard.mesh().points[v]).norm());
+      }
+    }
+    EXPECT_LE(far, 0.05 * Funnel::r);
   }
-  EXPECT_LE(far, 0.05 * Funnel::r);
 }
 
 // §9.2.3 with curves: a mesh subdivided with the curve rules (the funnel's
