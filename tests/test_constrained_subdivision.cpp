@@ -451,6 +451,22 @@ struct Funnel {
     top.boundary = true;
     top.name = "column top";
   }
+  // The coarse mesh for `scheme`: for Loop the quads split along their first diagonals.
+  PolyMesh Coarse(SubdivisionScheme scheme) const {
+    if (scheme == SubdivisionScheme::kCatmullClark) return mesh;
+    PolyMesh t = mesh;
+    t.faces.clear();
+    for (const auto& f : mesh.faces) {
+      t.faces.push_back({f[0], f[1], f[2]});
+      t.faces.push_back({f[0], f[2], f[3]});
+    }
+    return t;
+  }
+  static SubdivisionOptions Options(SubdivisionScheme scheme) {
+    SubdivisionOptions options;
+    options.scheme = scheme;
+    return options;
+  }
   // The column's normal (radial) at a point of its top circle.
   static bool Normal(const Vector3d& p, Vector3d* n) {
     if (std::abs(p.z()) > 1e-9 || std::abs(std::hypot(p.x(), p.y()) - r) > 1e-4) return false;
@@ -483,17 +499,10 @@ struct Funnel {
 // rules meet it at the coarse mesh's flare angle.
 TEST(ConstrainedSubdivision, TangentSurfaceMakesTheJointSmooth) {
   const Funnel funnel;
-  PolyMesh triangles = funnel.mesh;  // each quad split along its first diagonal, for Loop
-  triangles.faces.clear();
-  for (const auto& f : funnel.mesh.faces) {
-    triangles.faces.push_back({f[0], f[1], f[2]});
-    triangles.faces.push_back({f[0], f[2], f[3]});
-  }
   for (const SubdivisionScheme scheme : {SubdivisionScheme::kCatmullClark, SubdivisionScheme::kLoop}) {
     SCOPED_TRACE(scheme == SubdivisionScheme::kLoop ? "Loop" : "Catmull-Clark");
-    const PolyMesh& coarse = scheme == SubdivisionScheme::kLoop ? triangles : funnel.mesh;
-    SubdivisionOptions options;
-    options.scheme = scheme;
+    const PolyMesh coarse = funnel.Coarse(scheme);
+    SubdivisionOptions options = Funnel::Options(scheme);
     ConstrainedSubdivision standard(coarse, {funnel.top}, options);
     options.tangent = &Funnel::Normal;
     ConstrainedSubdivision tangent(coarse, {funnel.top}, options);
@@ -529,17 +538,10 @@ TEST(ConstrainedSubdivision, TangentSurfaceMakesTheJointSmooth) {
 // level; the standard masks alone leave a residual.
 TEST(ConstrainedSubdivision, ReverseWithTheCurvesRecoversACurveSubdividedMesh) {
   const Funnel funnel;
-  PolyMesh triangles = funnel.mesh;  // each quad split along its first diagonal, for Loop
-  triangles.faces.clear();
-  for (const auto& f : funnel.mesh.faces) {
-    triangles.faces.push_back({f[0], f[1], f[2]});
-    triangles.faces.push_back({f[0], f[2], f[3]});
-  }
   for (const SubdivisionScheme scheme : {SubdivisionScheme::kCatmullClark, SubdivisionScheme::kLoop}) {
     SCOPED_TRACE(scheme == SubdivisionScheme::kLoop ? "Loop" : "Catmull-Clark");
-    const PolyMesh& coarse = scheme == SubdivisionScheme::kLoop ? triangles : funnel.mesh;
-    SubdivisionOptions options;
-    options.scheme = scheme;
+    const PolyMesh coarse = funnel.Coarse(scheme);
+    SubdivisionOptions options = Funnel::Options(scheme);
     ConstrainedSubdivision forward(coarse, {funnel.top}, options);
     forward.Step();
     forward.Step();
