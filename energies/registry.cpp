@@ -39,6 +39,8 @@
   X(on_curve)                  \
   X(pq_diagonal)               \
   X(pq_worst)                  \
+  X(principal_fit)             \
+  X(principal_smoothing)       \
   X(principal_strip)           \
   X(proximity)                 \
   X(saddle_sign)               \

@@ -9,6 +9,8 @@
 //  (c) values on analytic cases, and the zero sets the paper defines
 //      (a prescribed direction belongs to the conjugate pair iff r = 0, …);
 //  (d) degenerate inputs give finite residuals and Jacobians.
+// And the principal-field pre-processing (energies/principal_*.h): the same
+// checks for its angle field (a line field: θ and θ + π alike).
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -27,6 +29,8 @@
 #include "energies/level_set_conjugacy.h"
 #include "energies/level_set_jump.h"
 #include "energies/level_set_normalised.h"
+#include "energies/principal_fit.h"
+#include "energies/principal_smoothing.h"
 #include "energies/tcd_dirichlet.h"
 #include "energies/tcd_prescribed_direction.h"
 #include "energies/tcd_singularity_avoidance.h"
@@ -540,6 +544,73 @@ TEST(LevelSetBranchPoint, SourceVertexOfAHalfSingularityCut) {
   EXPECT_NEAR(Evaluate(*whole, {{1.0}, {0.25}})[0], -0.5, kTolerance);
   ExpectGradientsMatch(*half, {{0.3}, {1.7}});
   ExpectGradientsMatch(*whole, {{0.3}, {1.7}});
+}
+
+// ---------------------------------------------------------------- principal_fit, principal_smoothing
+
+TEST(PrincipalFit, GradientsMatchNumericDifferences) {
+  std::mt19937 rng(kSeed + 40);
+  std::uniform_real_distribution<double> angle(-M_PI, M_PI), weight(0.1, 3.0);
+  for (int s = 0; s < kNumSamples; ++s) {
+    std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(PrincipalFit(angle(rng), weight(rng))));
+    ExpectGradientsMatch(*cost, {{angle(rng)}});
+  }
+}
+
+TEST(PrincipalFit, VanishesOnTheMeasuredLineAndHasTheAnalyticValue) {
+  const double theta0 = 0.4, w = 2.0;
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(PrincipalFit(theta0, w)));
+  EXPECT_LT(Norm(Evaluate(*cost, {{theta0}})), kTolerance);
+  EXPECT_LT(Norm(Evaluate(*cost, {{theta0 + M_PI}})), kTolerance);  // a line: θ ≡ θ + π
+  // A line turned by 90°: the doubled angles are opposite, ‖r‖ = 2 sqrt(w).
+  EXPECT_NEAR(Norm(Evaluate(*cost, {{theta0 + M_PI / 2}})), 2 * std::sqrt(w), kTolerance);
+  // Turned by δ: ‖r‖ = 2 sqrt(w) |sin δ|.
+  EXPECT_NEAR(Norm(Evaluate(*cost, {{theta0 + 0.3}})), 2 * std::sqrt(w) * std::sin(0.3), kTolerance);
+}
+
+TEST(PrincipalFit, IndependentOfTheFaceFrame) {
+  std::mt19937 rng(kSeed + 41);
+  std::uniform_real_distribution<double> angle(-M_PI, M_PI);
+  for (int s = 0; s < kNumSamples; ++s) {
+    const double theta0 = angle(rng), theta = angle(rng), phi = angle(rng);
+    std::unique_ptr<ceres::CostFunction> a(MakeAutoDiff(PrincipalFit(theta0, 1.5)));
+    std::unique_ptr<ceres::CostFunction> b(MakeAutoDiff(PrincipalFit(theta0 - phi, 1.5)));
+    EXPECT_NEAR(Norm(Evaluate(*a, {{theta}})), Norm(Evaluate(*b, {{theta - phi}})), kTolerance);
+  }
+}
+
+TEST(PrincipalSmoothing, GradientsMatchNumericDifferences) {
+  std::mt19937 rng(kSeed + 42);
+  std::uniform_real_distribution<double> angle(-M_PI, M_PI), weight(0.1, 3.0);
+  for (int s = 0; s < kNumSamples; ++s) {
+    std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(PrincipalSmoothing(angle(rng), weight(rng))));
+    ExpectGradientsMatch(*cost, {{angle(rng)}, {angle(rng)}});
+  }
+}
+
+TEST(PrincipalSmoothing, VanishesForTheTransportedLineAndHasTheAnalyticValue) {
+  const double tau = 0.7, w = 2.5;
+  std::unique_ptr<ceres::CostFunction> cost(MakeAutoDiff(PrincipalSmoothing(tau, w)));
+  // The line at θ_g in g's frame is at θ_g + τ in f's.
+  EXPECT_LT(Norm(Evaluate(*cost, {{0.2 + tau}, {0.2}})), kTolerance);
+  EXPECT_LT(Norm(Evaluate(*cost, {{0.2 + tau - M_PI}, {0.2}})), kTolerance);
+  // Off by 90°: ‖r‖ = 2 sqrt(w).
+  EXPECT_NEAR(Norm(Evaluate(*cost, {{0.2 + tau + M_PI / 2}, {0.2}})), 2 * std::sqrt(w), kTolerance);
+}
+
+TEST(PrincipalSmoothing, IndependentOfTheFaceFrames) {
+  std::mt19937 rng(kSeed + 43);
+  std::uniform_real_distribution<double> angle(-M_PI, M_PI);
+  for (int s = 0; s < kNumSamples; ++s) {
+    const double tau = angle(rng), tf = angle(rng), tg = angle(rng), phi_f = angle(rng),
+                 phi_g = angle(rng);
+    std::unique_ptr<ceres::CostFunction> a(MakeAutoDiff(PrincipalSmoothing(tau, 1.2)));
+    std::unique_ptr<ceres::CostFunction> b(MakeAutoDiff(PrincipalSmoothing(tau + phi_g - phi_f, 1.2)));
+    const double before = Norm(Evaluate(*a, {{tf}, {tg}}));
+    EXPECT_NEAR(before, Norm(Evaluate(*b, {{tf - phi_f}, {tg - phi_g}})), kTolerance);
+    std::unique_ptr<ceres::CostFunction> c(MakeAutoDiff(PrincipalSmoothing(-tau, 1.2)));
+    EXPECT_NEAR(before, Norm(Evaluate(*c, {{tg}, {tf}})), kTolerance);
+  }
 }
 
 }  // namespace

@@ -22,6 +22,13 @@
 // terms, so the result is the principal field; constraints and avoidance move
 // it, and the Dirichlet energy spreads their effect smoothly.
 //
+// Pre-processing (field.preprocess, off by default; Gebreiter 2012, §8.1.4):
+// a first stage `principal` smooths the principal directions of unreliable
+// faces (near-umbilic, near-flat) with the terms principal_fit and
+// principal_smoothing over the block `principal`; before the field stage
+// every face's curvature takes the smoothed directions with its measured
+// κ1, κ2 and the TCD terms are built on it (fields/principal_field.h).
+//
 // Moving a singularity (field.moves, §4 "local correction"): after the
 // global solve, a last stage `move` subtracts the σ-blended correction of
 // eq. 4 around each move's `from` face so that z_N = z_M at its `to` face
@@ -51,6 +58,7 @@
 #include "energies/tcd_prescribed_direction.h"
 #include "fields/field_io.h"
 #include "fields/guide_curves.h"
+#include "fields/principal_field.h"
 #include "geometry/curves.h"
 #include "fields/singularities.h"
 #include "core/input_error.h"
@@ -433,9 +441,79 @@ void AddGuideCurves(const HookContext& c, const FieldGeometry& g, double prescri
 struct FieldState : ProblemState {
   FieldGeometry geometry;
   Constraints constraints;
+  // field.preprocess (fields/principal_field.h): the measured curvature, kept
+  // when the smoothed one replaces it, and the reliability of every face.
+  std::vector<FaceCurvature> measured;
+  PrincipalReliability reliability;
+  bool principal_applied = false;
   ElementSet prescribed;  // tcd_prescribed without the guide curves' faces
   StreamlineResult streamlines;  // output.streamlines (fields/streamlines.h)
 };
+
+void BuildFieldElements(HookContext& c);
+
+// The terms of the TCD field's stages (the principal stage has its own).
+const std::vector<std::string>& TcdTerms() {
+  static const std::vector<std::string> terms = {"tcd_dirichlet", "tcd_transversality",
+                                                 "tcd_singularity_avoidance",
+                                                 "tcd_singularity_placement", "tcd_prescribed_direction"};
+  return terms;
+}
+
+// field.preprocess (fields/principal_field.h, steps 1–3): the reliability of
+// every face, the start of the smoothing (the measured directions,
+// propagated into the unreliable faces) and the element sets of principal_fit
+// and principal_smoothing (empty when off).
+void InitPrincipal(HookContext& c) {
+  const Settings& s = *c.settings;
+  const Mesh& mesh = c.store->mesh();
+  FieldState& state = c.State<FieldState>();
+  const FieldGeometry& g = state.geometry;
+  state.principal_applied = false;
+  state.measured.clear();
+  ElementSet faces, edges;
+  faces.site = Site::kFace;
+  edges.site = Site::kEdge;
+  faces.data_width = edges.data_width = 2;
+  if (s.Bool("field.preprocess") && !AllFlat(g)) {
+    state.reliability = Reliability(g.curvature, s.Number("field.unreliable_anisotropy"),
+                                    s.Number("field.unreliable_flat"));
+    const std::vector<double> theta = PropagatedAngles(mesh, g.transports, g.curvature, state.reliability);
+    const double rho = s.Number("field.smoothing");
+    const double mean_area = g.total_area / std::max<double>(1, double(mesh.number_of_faces()));
+    const std::vector<bool> boundary = BoundaryVertices(mesh);
+    for (FaceIndex f : mesh.faces()) {
+      *c.store->At("principal", int(f.idx())) = theta[f.idx()];
+      faces.Add(FaceVertices(mesh, f), int(f.idx()), int(f.idx()), -1, FaceFlags(mesh, boundary, f),
+                {PrincipalAngle(g.curvature[f.idx()]),
+                 (1 - rho) * state.reliability.weight[f.idx()] * g.frames.area[f.idx()] / mean_area});
+    }
+    for (const EdgeTransport& t : g.transports) {
+      const HalfedgeIndex h = mesh.halfedge(t.edge);
+      edges.Add({int(mesh.source(h).idx()), int(mesh.target(h).idx())}, int(t.edge.idx()),
+                int(t.f.idx()), int(t.edge.idx()),
+                boundary[mesh.source(h).idx()] || boundary[mesh.target(h).idx()] ? kBoundary : 0,
+                {t.angle, rho * t.weight}, int(t.g.idx()));
+    }
+  }
+  c.SetElements("principal_faces", std::move(faces));
+  c.SetElements("principal_edges", std::move(edges));
+}
+
+// Before the field stage, with field.preprocess (step 4): every face's
+// curvature takes the smoothed directions, and the TCD terms are built on it.
+void ApplyPrincipal(HookContext& c) {
+  FieldState& state = c.State<FieldState>();
+  if (state.principal_applied) return;
+  state.principal_applied = true;
+  const double sign_tolerance = Jets(*c.settings).sign_tolerance;
+  state.measured = state.geometry.curvature;
+  for (FaceIndex f : c.store->mesh().faces()) {
+    const double theta = *c.store->At("principal", int(f.idx()));
+    state.geometry.curvature[f.idx()] = TurnedCurvature(state.measured[f.idx()], theta, sign_tolerance);
+  }
+  BuildFieldElements(c);
+}
 
 // Element sets, the start z_N = e1 and the validated constraints.
 void InitConjugateField(HookContext& c) {
@@ -611,6 +689,23 @@ void InitConjugateField(HookContext& c) {
     (p.key == "field.file" ? con.from_field_file : con.prescribed).push_back({p.face, d.normalized()});
   }
 
+  AddGuideCurves(c, g, s.Number("terms.tcd_prescribed_direction.weight"), con);
+  InitPrincipal(c);
+  BuildFieldElements(c);
+}
+
+// The TCD terms' element sets and the start z_N = e1, from the field geometry
+// (the measured curvature, or with field.preprocess the smoothed one) and
+// the validated constraints.
+void BuildFieldElements(HookContext& c) {
+  const Settings& s = *c.settings;
+  const Mesh& mesh = c.store->mesh();
+  FieldState& state = c.State<FieldState>();
+  const FieldGeometry& g = state.geometry;
+  const int faces = int(mesh.number_of_faces());
+  const std::vector<bool> boundary = BoundaryVertices(mesh);
+  Constraints& con = state.constraints;
+
   // Boundary alignment: the boundary tangent as a prescribed direction of
   // every boundary face, weighted by field.boundary_alignment (a factor on
   // the prescribed-direction term's weight in the element data).
@@ -634,7 +729,6 @@ void InitConjugateField(HookContext& c) {
     }
   }
   con.boundary_faces = int(along_boundary.size());
-  AddGuideCurves(c, g, prescribed_weight, con);
 
   // The faces the user constrains (placements, moves, prescribed
   // directions): singularity avoidance (tcd_free_faces) leaves them alone.
@@ -811,6 +905,34 @@ double LineDeg(const V2& a, const V2& b) {
   return std::abs(WrapLineAngle(LineAngle(a) - LineAngle(b))) * 180.0 / M_PI;
 }
 
+// details.preprocess: the faces found unreliable, how far the smoothing
+// turned the directions, and the field's conjugacy against the measured
+// curvature (the field is conjugate to the smoothed one by construction).
+nlohmann::json PreprocessDetails(const Mesh& mesh, const FieldState& state, const TcdField& field) {
+  double reliable_max = 0, reliable_sum = 0, unreliable_sum = 0;
+  int reliable = 0;
+  for (FaceIndex f : mesh.faces()) {
+    const double turned = LineAngleDeg(PrincipalAngle(state.measured[f.idx()]),
+                                       PrincipalAngle(state.geometry.curvature[f.idx()]));
+    if (state.reliability.reliable[f.idx()]) {
+      reliable_max = std::max(reliable_max, turned);
+      reliable_sum += turned;
+      ++reliable;
+    } else {
+      unreliable_sum += turned;
+    }
+  }
+  const int unreliable = int(mesh.number_of_faces()) - reliable;
+  const TcdFieldStats measured = FieldStats(state.measured, field.pairs);
+  return {{"reliable_faces", reliable},
+          {"unreliable_umbilic_faces", state.reliability.umbilic},
+          {"unreliable_flat_faces", state.reliability.flat},
+          {"turned_reliable_max_deg", reliable_max},
+          {"turned_reliable_mean_deg", reliable > 0 ? reliable_sum / reliable : 0.0},
+          {"turned_unreliable_mean_deg", unreliable > 0 ? unreliable_sum / unreliable : 0.0},
+          {"conjugacy_error_measured_max", measured.max_conjugacy_error}};
+}
+
 void FinishConjugateField(HookContext& c) {
   const Mesh& mesh = c.store->mesh();
   const FieldState& state = c.State<FieldState>();
@@ -893,6 +1015,7 @@ void FinishConjugateField(HookContext& c) {
   d["angle_min_deg"] = field.stats.min_angle_deg;
   d["angle_mean_deg"] = field.mean_angle_deg;
   d["principal_deviation_mean_deg"] = counted > 0 ? deviation / counted : 0.0;
+  if (!state.measured.empty()) d["preprocess"] = PreprocessDetails(mesh, state, field);
   d["placements"] = con.placements.size();
   if (!con.moves_done.empty()) d["moves"] = con.moves_done;
   d["boundary_aligned_faces"] = con.boundary_faces;
@@ -1037,7 +1160,10 @@ ProblemDecl conjugate_field() {
   d.keys = FieldKeys();
   for (const Key& k : StreamlineKeys()) d.keys.push_back(k);
   d.blocks = {{"z_n", Site::kFace, 2, FrameMap::kInvariant, false, Carry::kReinitialise, true,
-               false, "z_N of the face in its own frame (Prop. 2; e1 = (1, 0): principal)"}};
+               false, "z_N of the face in its own frame (Prop. 2; e1 = (1, 0): principal)"},
+              {"principal", Site::kFace, 1, FrameMap::kInvariant, false, Carry::kReinitialise, false,
+               false, "field.preprocess: the smoothed direction of largest curvature, its angle in "
+               "the face's frame (radians)"}};
   d.check = [](const Settings& s) {
     CheckNoMultiresolution(s, "conjugate_field");
     if (s.Given("field.sources") && !s.String("field.file").empty()) {
@@ -1051,10 +1177,18 @@ ProblemDecl conjugate_field() {
   };
   d.init = &InitConjugateField;
   d.stages = [](const Settings& settings) {
+    std::vector<Stage> stages;
     Stage s;
-    s.name = "field";
     s.rounds_key = "field.rounds";
-    std::vector<Stage> stages{s};
+    if (settings.Bool("field.preprocess")) {
+      s.name = "principal";
+      s.terms = {"principal_fit", "principal_smoothing"};
+      stages.push_back(s);
+      s.before_round = &ApplyPrincipal;
+    }
+    s.name = "field";
+    s.terms = TcdTerms();
+    stages.push_back(s);
     if (!settings.String("field.guide_curves").empty() || settings.Given("field.rotations")) {
       s.name = "guide";
       s.before_round = &ApplyGuides;

@@ -60,7 +60,9 @@ std::vector<TermUse> FieldTerms() {
           {"tcd_transversality", 0.1},
           {"tcd_singularity_avoidance", 0, {}, "tcd_free_faces"},
           {"tcd_singularity_placement", 100},
-          {"tcd_prescribed_direction", 100}};
+          {"tcd_prescribed_direction", 100},
+          {"principal_fit", 1},
+          {"principal_smoothing", 1}};
 }
 
 std::vector<Key> FieldKeys() {
@@ -131,6 +133,23 @@ std::vector<Key> FieldKeys() {
                     "terms.tcd_prescribed_direction's weight (field.directions: 100); 100 times "
                     "that, so the field near a curve follows it within 2° against the smoothing "
                     "that pulls it back to the free field held beyond the radius"),
+          BoolKey("field.preprocess", false,
+                  "pre-process the principal field before the TCD field is built on it [Gebreiter "
+                  "2012, §8.1.4]: the directions of unreliable faces (near-umbilic, near-flat) are "
+                  "propagated from the reliable ones, then the whole line field is smoothed "
+                  "(principal_fit, principal_smoothing; stage `principal`) and every face's "
+                  "curvature takes the smoothed directions with its measured principal curvatures "
+                  "(fields/principal_field.h)"),
+          NumberKey("field.unreliable_anisotropy", 0.2, 0, 1,
+                    "with field.preprocess, a face whose anisotropy (κ1 − κ2)/(|κ1| + |κ2|) is below "
+                    "this is unreliable (near-umbilic; 0 at an umbilic, 1 where K ≤ 0)"),
+          NumberKey("field.unreliable_flat", 0.1, 0, 1,
+                    "with field.preprocess, a face whose curvature (|κ1| + |κ2|)/2 is below this "
+                    "fraction of the median face's is unreliable (near-flat)"),
+          NumberKey("field.smoothing", 0.5, 0, 1,
+                    "with field.preprocess, ρ of the thesis' R = (1 − ρ) fit + ρ smoothing: 0 "
+                    "keeps the measured directions of the reliable faces (propagation only), 1 "
+                    "smooths without regard to them"),
           IntegerKey("field.rounds", 1, 1, 100,
                      "Ceres solves of the field (each at most solver.max_num_iterations)")};
 }
