@@ -39,6 +39,7 @@
 #include "analysis/validity.h"
 #include "geometry/reference.h"
 #include "problems/declarations/field_pipeline.h"
+#include "problems/declarations/registry.h"
 #include "problems/commands/run.h"
 #include "problems/runtime/mesh_inputs.h"
 #include "problems/runtime/solve.h"
@@ -619,6 +620,41 @@ TEST(ConjugateLayout, SmallClosedTorusIsLaidOutOnItsSplitDesign) {
   EXPECT_LE(design.at("distance_max").get<double>(), design.at("band").get<double>());
 }
 
+// conjugate_layout's terms as a spec's `terms:` section, singularity
+// avoidance off (listing terms turns the unlisted ones off): the small
+// cone's 100-face layout then has the bow-tied, reflex panel these tests
+// need (with avoidance, conjugate_layout's default, its layout is valid).
+std::string TermsWithoutAvoidance() {
+  std::string terms = "terms: {";
+  for (const TermUse& t : FindProblem("conjugate_layout")->terms) {
+    char weight[40];
+    std::snprintf(weight, sizeof weight, "%.17g", t.term == "tcd_singularity_avoidance" ? 0.0 : t.weight);
+    terms += t.term + ": " + weight + ", ";
+  }
+  return terms.substr(0, terms.size() - 2) + "}\n";
+}
+
+// Singularity avoidance is on in conjugate_layout where the field is free
+// (issue 42, item 1), with a fallback: a layout made with it that has a
+// panel no optimisation repairs is made again without it. On the small
+// cone at 100 faces the field with avoidance gives a buildable layout (exit
+// 0); without it, the layout has a bow-tied, reflex panel (exit 5, the
+// tests below).
+TEST(ConjugateLayout, SingularityAvoidanceMakesTheConeLayoutBuildable) {
+  const Mesh design = RevolutionTriangles(RevolutionProfile{}, 24, 8);
+  MeshInputs inputs;
+  inputs.mesh = &design;
+  const std::string spec = "problem: conjugate_layout\nlevel_sets: {target_faces: 100}\n";
+  const RunResult with = RunSpec(ParseSpec(spec, "cone.yaml"), {}, inputs);
+  const RunResult without = RunSpec(ParseSpec(spec + TermsWithoutAvoidance(), "cone.yaml"), {}, inputs);
+  const nlohmann::json& avoidance = with.report.at("details").at("net").at("singularity_avoidance");
+  EXPECT_EQ(avoidance.at("weight").get<double>(), 1.0);
+  EXPECT_TRUE(avoidance.at("kept").get<bool>()) << avoidance.dump();
+  EXPECT_EQ(with.exit_code, 0) << with.summary;
+  EXPECT_EQ(without.exit_code, 5) << without.summary;
+  EXPECT_FALSE(without.report.at("details").at("net").at("singularity_avoidance").at("kept").get<bool>());
+}
+
 // A layout is archgeo's own work, not the user's input (issue 42, item 6):
 // the final mesh is also checked alone and against the design surface, as
 // `archgeo measure FINAL --reference DESIGN` checks it. The small cone's
@@ -637,7 +673,8 @@ TEST(ConjugateLayout, LayoutDefectsAreNotAcceptedAsInputDefects) {
   inputs.output = &output;
   const RunResult run = RunSpec(
       ParseSpec("problem: conjugate_layout\nlevel_sets: {target_faces: 100}\n"
-                "validity: {allow_input_defects: true}\n", "cone.yaml"), {}, inputs);
+                "validity: {allow_input_defects: true}\n" + TermsWithoutAvoidance(), "cone.yaml"),
+      {}, inputs);
   const nlohmann::json& v = run.report.at("validity");
   const nlohmann::json& d = v.at("design_surface");
   EXPECT_EQ(run.exit_code, 5) << run.summary;
@@ -687,7 +724,8 @@ TEST_F(ConjugateLayoutTest, SolveJudgesALayoutAsMeasureDoes) {
       WriteFile("spec.yaml", "mesh: cone.obj\nproblem: conjugate_layout\n"
                              "level_sets: {target_faces: 100}\n"
                              "validity: {allow_input_defects: true}\n"
-                             "output: {mesh: out.ply, report: r.json}\n");
+                             "output: {mesh: out.ply, report: r.json}\n" +
+                             TermsWithoutAvoidance());
   const RunResult run = RunSpec(ReadSpec(spec), {});
   const RunResult measured = MeasureFiles(Path("out.ply"), Path("cone.obj"), false, false);
   const nlohmann::json& solved = run.report.at("validity").at("design_surface");

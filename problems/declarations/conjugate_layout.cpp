@@ -38,8 +38,18 @@
 // output.streamlines (the field's streamlines and separatrices as OBJ
 // polylines, fields/streamlines.h), output.report.
 #include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <string>
 #include <utility>
+#include <vector>
 
+#include <Eigen/Geometry>
+
+#include "analysis/validity.h"
 #include "core/problem.h"
 #include "fields/field_io.h"
 #include "core/input_error.h"
@@ -57,19 +67,107 @@ struct LayoutState : ProblemState {
   StreamlineResult streamlines;  // output.streamlines
 };
 
+constexpr const char* kAvoidance = "terms.tcd_singularity_avoidance.weight";
+
+// The smallest corner of any face of `mesh` (degrees, between its two sides
+// in space: a spike turned back on itself has a small one too) and its face.
+std::pair<double, int> SmallestCorner(const Mesh& mesh) {
+  std::pair<double, int> smallest{180.0, -1};
+  for (FaceIndex f : mesh.faces()) {
+    std::vector<Vec3> p;
+    for (VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) p.push_back(ToVec3(mesh.point(v)));
+    for (size_t i = 0; i < p.size(); ++i) {
+      const Vec3& a = p[(i + p.size() - 1) % p.size()];
+      const Vec3& b = p[i];
+      const Vec3& c = p[(i + 1) % p.size()];
+      const Eigen::Vector3d u(a[0] - b[0], a[1] - b[1], a[2] - b[2]), w(c[0] - b[0], c[1] - b[1], c[2] - b[2]);
+      const double angle = std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / M_PI;
+      if (angle < smallest.first) smallest = {angle, int(f.idx())};
+    }
+  }
+  return smallest;
+}
+
+// Why a layout cannot be the net of the PQ step ("" if it can): not
+// extracted, a panel no optimisation repairs once its corners are split as
+// the net's are (UseLayoutAsNet): a bow-tie, a corner bent inward, a short
+// edge, the surface crossing itself (analysis/validity.h, the limits of the
+// spec), or a face with a corner under validity.min_corner_degrees (a
+// sliver, or a spike turned back).
+std::string LayoutDefect(const Settings& s, const LevelSetResult& result) {
+  if (!result.layout.ok) return "no layout: " + result.layout.error;
+  Mesh net = result.layout.mesh;
+  SplitBentPanels(net, s.Number("terms.convexity.margin_degrees"));
+  const ValidityLimits limits = LimitsOf(s);
+  const Validity validity = CheckValidity(net, nullptr, limits, true);
+  if (!validity.valid()) return validity.Reason();
+  const auto [angle, face] = SmallestCorner(net);
+  if (angle >= limits.min_corner_degrees) return "";
+  char line[160];
+  std::snprintf(line, sizeof line, "face %d has a corner of %.2f degrees (limit %g)\n", face, angle,
+                limits.min_corner_degrees);
+  return line;
+}
+
+// The terminal line of a layout made again without singularity avoidance
+// ("" when its own layout was kept).
+std::string AvoidanceLine(const nlohmann::json& report) {
+  if (report.at("kept").get<bool>() || !report.contains("defect_with_it")) return "";
+  std::string defect = report.at("defect_with_it").get<std::string>();
+  defect = defect.substr(0, defect.find('\n'));
+  return "singularity avoidance: its layout (" +
+         std::to_string(report.at("singularities_with_it").get<int>()) +
+         " singularities) had a defect (" + defect + "); laid out again without it\n";
+}
+
+// The layout `solve` makes with the spec's singularity avoidance (on by
+// default here: fewer singularities where the field is free), and when that
+// layout has panels that cannot be built, the layout without it
+// (details.net.singularity_avoidance says which was kept and why, and the
+// wall time of the layout it did not keep: details.net.seconds are the kept
+// one's).
+template <typename Solve>
+std::shared_ptr<const LevelSetResult> WithAvoidance(const Settings& s,
+                                                    std::map<std::string, Value> overrides,
+                                                    const Solve& solve, nlohmann::json* report) {
+  const double weight = s.Number(kAvoidance);
+  overrides[kAvoidance] = weight;
+  const auto start = std::chrono::steady_clock::now();
+  std::shared_ptr<const LevelSetResult> result = solve(overrides);
+  *report = {{"weight", weight}, {"kept", weight > 0}};
+  if (!(weight > 0)) return result;
+  const std::string defect = LayoutDefect(s, *result);
+  if (defect.empty()) return result;
+  (*report)["kept"] = false;
+  (*report)["defect_with_it"] = defect;
+  (*report)["singularities_with_it"] = result->field->field.singularities.size();
+  (*report)["seconds_with_it"] =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  overrides[kAvoidance] = 0.0;
+  return solve(overrides);
+}
+
 // layout.method: streamlines — the field's streamlines, their crossings as
 // the layout (streamline_layout.h).
 void StreamlineNet(HookContext& c, const Mesh& design, int refinements) {
   const Settings& s = *c.settings;
   StreamlineResult lines;
-  const std::shared_ptr<const LevelSetResult> result = SolveStreamlineLayout(
-      s, design, c.progress, SplitDesignOverrides(s, refinements), &lines);
+  nlohmann::json avoidance;
+  const std::shared_ptr<const LevelSetResult> result = WithAvoidance(
+      s, SplitDesignOverrides(s, refinements),
+      [&](const std::map<std::string, Value>& overrides) {
+        lines = StreamlineResult{};
+        return SolveStreamlineLayout(s, design, c.progress, overrides, &lines);
+      },
+      &avoidance);
   UseLayoutAsNet(c, result, "conjugate layout (streamlines)");
   c.net.details["field"] = result->field->details;
+  c.net.details["singularity_avoidance"] = avoidance;
   c.net.details["design_surface"] = {{"triangles", design.number_of_faces()},
                                      {"midpoint_splits", refinements}};
   c.State<LayoutState>().streamlines = std::move(lines);
-  c.net.headline = result->headline + "solving the layout for planar faces (planar_quads)\n";
+  c.net.headline = AvoidanceLine(avoidance) + result->headline +
+                   "solving the layout for planar faces (planar_quads)\n";
 }
 
 void Net(HookContext& c) {
@@ -80,14 +178,20 @@ void Net(HookContext& c) {
     StreamlineNet(c, design, refinements);
     return;
   }
-  const std::shared_ptr<const LevelSetResult> result =
-      SolveLevelSets(s, design, c.progress, SplitDesignOverrides(s, refinements));
+  nlohmann::json avoidance;
+  const std::shared_ptr<const LevelSetResult> result = WithAvoidance(
+      s, SplitDesignOverrides(s, refinements),
+      [&](const std::map<std::string, Value>& overrides) {
+        return SolveLevelSets(s, design, c.progress, overrides);
+      },
+      &avoidance);
   if (!result->layout.ok) {
     throw s.Error("level_sets", "the layout could not be extracted from the level sets: " +
                                     result->layout.error);
   }
   UseLayoutAsNet(c, result, "conjugate layout");
   c.net.details["field"] = result->field->details;
+  c.net.details["singularity_avoidance"] = avoidance;
   c.net.details["design_surface"] = {{"triangles", design.number_of_faces()},
                                      {"midpoint_splits", refinements}};
   const std::string split =
@@ -100,8 +204,8 @@ void Net(HookContext& c) {
   std::string streamlines;
   c.State<LayoutState>().streamlines =
       FieldStreamlines(s, *result->field, &c.net.details, &streamlines);
-  c.net.headline = split + result->field->headline + streamlines + result->headline +
-                   "solving the layout for planar faces (planar_quads)\n";
+  c.net.headline = split + AvoidanceLine(avoidance) + result->field->headline + streamlines +
+                   result->headline + "solving the layout for planar faces (planar_quads)\n";
 }
 
 void WriteConjugateLayout(HookContext& c) {
@@ -160,7 +264,12 @@ ProblemDecl conjugate_layout() {
   d.summary = "design surface (triangles) → TCD field → level sets → layout → planar quads";
   d.paper = "[Zadravec 2010, Fig. 1, §2–6]";
   d.input = InputKind::kAny;  // a polygon mesh: its triangulation (DesignSurface)
-  for (const TermUse& t : FieldTerms()) d.terms.push_back(t);
+  for (TermUse t : FieldTerms()) {
+    // Singularity avoidance on where the field is free, with the fallback of
+    // WithAvoidance.
+    if (t.term == "tcd_singularity_avoidance") t.weight = 1;
+    d.terms.push_back(t);
+  }
   for (const TermUse& t : LevelSetTerms()) d.terms.push_back(t);
   for (const Key& k : FieldKeys()) d.keys.push_back(k);
   for (const Key& k : LevelSetKeys()) d.keys.push_back(k);
