@@ -448,6 +448,11 @@ TEST(ConjugateField, APlaneFallsBackToTheSmoothFieldWithAWarning) {
   EXPECT_EQ(r.field.stats.invalid_faces, 0);
   EXPECT_NEAR(r.field.mean_angle_deg, 90.0, 1e-9);
   EXPECT_TRUE(r.field.singularities.empty());
+  // Pre-processing has no principal directions to smooth there: the same
+  // fallback, no preprocess report.
+  const auto pre = SolveYaml("problem: conjugate_field\nfield: {preprocess: true}\n", mesh);
+  EXPECT_TRUE(FieldOf(*pre)->field.smooth_fallback);
+  EXPECT_FALSE(pre->details.contains("preprocess"));
 }
 
 // ------------------------------------------------- level_sets, conjugate_layout

@@ -471,6 +471,7 @@ void InitPrincipal(HookContext& c) {
   const FieldGeometry& g = state.geometry;
   state.principal_applied = false;
   state.measured.clear();
+  state.reliability = PrincipalReliability{};
   ElementSet faces, edges;
   faces.site = Site::kFace;
   edges.site = Site::kEdge;
@@ -506,6 +507,9 @@ void ApplyPrincipal(HookContext& c) {
   FieldState& state = c.State<FieldState>();
   if (state.principal_applied) return;
   state.principal_applied = true;
+  // A surface without curvature has no principal directions to smooth
+  // (InitPrincipal left no reliability): the smooth fallback field applies.
+  if (state.reliability.reliable.empty()) return;
   const double sign_tolerance = Jets(*c.settings).sign_tolerance;
   state.measured = state.geometry.curvature;
   for (FaceIndex f : c.store->mesh().faces()) {
