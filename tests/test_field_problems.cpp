@@ -277,6 +277,25 @@ TEST(ConjugateField, PrincipalSmoothingRemovesTheNoiseSingularitiesOfASphericalC
   EXPECT_LE(only_smoothed, 2 * before / 3);
 }
 
+// The thesis' Fig. 11: on a sphere every point is umbilic, so the principal
+// field is noise with singularities everywhere; propagated and smoothed, it
+// has the four +1/2 singularities a line field on a sphere needs at least
+// (index sum 2). They are not evenly spread (the closest two 29° apart
+// seen from the centre, where a regular tetrahedron's are 109.5°).
+TEST(ConjugateField, PreprocessingLeavesASphereFourHalfSingularities) {
+  const Mesh mesh = TriangulatedEllipsoid(1.0, 1.0, 1.0, 4);
+  const auto raw = SolveYaml("problem: conjugate_field\n", mesh);
+  const auto pre = SolveYaml("problem: conjugate_field\nfield: {preprocess: true}\n", mesh);
+  const TcdField& field = FieldOf(*pre)->field;
+  std::printf("sphere (%zu faces): %zu singularities, %zu pre-processed\n", size_t(mesh.number_of_faces()),
+              FieldOf(*raw)->field.singularities.size(), field.singularities.size());
+  EXPECT_GE(FieldOf(*raw)->field.singularities.size(), 20u);
+  ASSERT_EQ(field.singularities.size(), 4u);
+  for (const Singularity& s : field.singularities) EXPECT_EQ(s.index, 0.5);
+  EXPECT_EQ(field.index_sum, 2.0);
+  EXPECT_EQ(pre->details["preprocess"]["reliable_faces"].get<int>(), 0);
+}
+
 // On the top of an ellipsoid every face is reliable (anisotropic, K > 0):
 // the fit (principal_fit) keeps the smoothed directions on the measured
 // principal ones, so the pre-processed field is the principal field to

@@ -115,9 +115,12 @@ std::string AvoidanceLine(const nlohmann::json& report) {
   if (report.at("kept").get<bool>() || !report.contains("defect_with_it")) return "";
   std::string defect = report.at("defect_with_it").get<std::string>();
   defect = defect.substr(0, defect.find('\n'));
-  return "singularity avoidance: its layout (" +
-         std::to_string(report.at("singularities_with_it").get<int>()) +
-         " singularities) had a defect (" + defect + "); laid out again without it\n";
+  const std::string singularities =
+      report.contains("singularities_with_it")
+          ? " (" + std::to_string(report.at("singularities_with_it").get<int>()) + " singularities)"
+          : "";
+  return "singularity avoidance: its layout" + singularities + " had a defect (" + defect +
+         "); laid out again without it\n";
 }
 
 // The layout `solve` makes with the spec's singularity avoidance (on by
@@ -133,14 +136,22 @@ std::shared_ptr<const LevelSetResult> WithAvoidance(const Settings& s,
   const double weight = s.Number(kAvoidance);
   overrides[kAvoidance] = weight;
   const auto start = std::chrono::steady_clock::now();
-  std::shared_ptr<const LevelSetResult> result = solve(overrides);
   *report = {{"weight", weight}, {"kept", weight > 0}};
-  if (!(weight > 0)) return result;
-  const std::string defect = LayoutDefect(s, *result);
+  if (!(weight > 0)) return solve(overrides);
+  std::shared_ptr<const LevelSetResult> result;
+  std::string defect;
+  try {
+    result = solve(overrides);
+    defect = LayoutDefect(s, *result);
+  } catch (const InputError& e) {
+    // A stage without a usable solution with it; bad input fails without
+    // it too, and is reported from there.
+    defect = "no layout: " + e.message();
+  }
   if (defect.empty()) return result;
   (*report)["kept"] = false;
   (*report)["defect_with_it"] = defect;
-  (*report)["singularities_with_it"] = result->field->field.singularities.size();
+  if (result) (*report)["singularities_with_it"] = result->field->field.singularities.size();
   (*report)["seconds_with_it"] =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   overrides[kAvoidance] = 0.0;
