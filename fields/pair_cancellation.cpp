@@ -8,11 +8,10 @@
 #include <queue>
 #include <string>
 
-#include <Eigen/SparseCholesky>
-#include <Eigen/SparseCore>
 #include <glog/logging.h>
 
 #include "fields/singularities.h"
+#include "fields/spin2_extension.h"
 
 namespace archgeo {
 namespace {
@@ -72,55 +71,14 @@ std::vector<bool> PairRegion(const Mesh& mesh, const FieldGeometry& geo, int p, 
 // next to U. Returns false when U has no such face or the solve fails.
 bool PairHarmonicDifference(const Mesh& mesh, const FieldGeometry& g, const std::vector<bool>& in,
                         const std::vector<V2>& z_n, std::vector<V2>* d_out) {
-  const int faces = int(mesh.number_of_faces());
-  std::vector<int> slot(size_t(faces), -1);
-  int n = 0;
-  for (int f = 0; f < faces; ++f) {
-    if (in[size_t(f)]) slot[size_t(f)] = n++;
-  }
-  std::vector<Eigen::Triplet<double>> triplets;
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(2 * n);
-  bool anchored = false;
-  auto add_block = [&](int row, int col, const Eigen::Matrix2d& m) {
-    for (int i = 0; i < 2; ++i) {
-      for (int j = 0; j < 2; ++j) triplets.emplace_back(2 * row + i, 2 * col + j, m(i, j));
-    }
-  };
-  for (const EdgeTransport& t : g.transports) {
-    const int f = int(t.f.idx()), h = int(t.g.idx());
-    const int sf = slot[size_t(f)], sg = slot[size_t(h)];
-    if (sf < 0 && sg < 0) continue;
-    // w |d_f − R d_g|², R the rotation by 2τ_fg (g's frame to f's).
-    const double c = std::cos(2 * t.angle), s = std::sin(2 * t.angle);
-    Eigen::Matrix2d R;
-    R << c, -s, s, c;
-    const double w = t.weight;
-    const Eigen::Matrix2d I = Eigen::Matrix2d::Identity();
-    if (sf >= 0) add_block(sf, sf, w * I);
-    if (sg >= 0) add_block(sg, sg, w * I);
-    if (sf >= 0 && sg >= 0) {
-      add_block(sf, sg, -w * R);
-      add_block(sg, sf, -w * R.transpose());
-    } else if (sf >= 0) {
-      const V2 dg = z_n[size_t(h)] - g.curvature[size_t(h)].z_m;
-      rhs.segment<2>(2 * sf) += w * (R * dg);
-      anchored = true;
-    } else {
-      const V2 df = z_n[size_t(f)] - g.curvature[size_t(f)].z_m;
-      rhs.segment<2>(2 * sg) += w * (R.transpose() * df);
-      anchored = true;
-    }
-  }
-  if (!anchored) return false;
-  Eigen::SparseMatrix<double> A(2 * n, 2 * n);
-  A.setFromTriplets(triplets.begin(), triplets.end());
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
-  if (solver.info() != Eigen::Success) return false;
-  const Eigen::VectorXd x = solver.solve(rhs);
-  if (solver.info() != Eigen::Success || !x.allFinite()) return false;
-  d_out->assign(size_t(faces), V2::Zero());
-  for (int f = 0; f < faces; ++f) {
-    if (slot[size_t(f)] >= 0) (*d_out)[size_t(f)] = x.segment<2>(2 * slot[size_t(f)]);
+  const Spin2Extension extension(g.transports, in);
+  if (!extension.anchored()) return false;
+  std::vector<V2> d(mesh.number_of_faces());
+  for (size_t f = 0; f < d.size(); ++f) d[f] = z_n[f] - g.curvature[f].z_m;
+  if (!extension.Extend(&d)) return false;
+  d_out->assign(d.size(), V2::Zero());
+  for (size_t f = 0; f < d.size(); ++f) {
+    if (in[f]) (*d_out)[f] = d[f];
   }
   return true;
 }

@@ -5,8 +5,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include <Eigen/Sparse>
 #include <glog/logging.h>
+
+#include "fields/spin2_extension.h"
 
 namespace archgeo {
 
@@ -89,58 +90,30 @@ std::vector<double> PropagatedAngles(const Mesh& mesh, const std::vector<EdgeTra
   const size_t n = curvature.size();
   CHECK_EQ(n, mesh.number_of_faces());
   CHECK_EQ(reliability.reliable.size(), n);
-  std::vector<double> theta(n, 0.0);
+  std::vector<bool> free(n);
   std::vector<int> unknown(n, -1);
   int m = 0;
+  std::vector<Eigen::Vector2d> u(n, Eigen::Vector2d::Zero());
   for (size_t f = 0; f < n; ++f) {
-    if (reliability.reliable[f]) {
-      theta[f] = PrincipalAngle(curvature[f]);
-    } else {
+    free[f] = !reliability.reliable[f];
+    if (free[f]) {
       unknown[f] = m++;
+    } else {
+      const double theta = PrincipalAngle(curvature[f]);
+      u[f] = Eigen::Vector2d(std::cos(2 * theta), std::sin(2 * theta));
     }
   }
+  std::vector<double> theta(n, 0.0);
+  for (size_t f = 0; f < n; ++f) {
+    if (!free[f]) theta[f] = PrincipalAngle(curvature[f]);
+  }
   if (m == 0) return theta;
-  auto u = [&](size_t f) { return Eigen::Vector2d(std::cos(2 * theta[f]), std::sin(2 * theta[f])); };
-  // Σ_e w_e |u_f − R u_g|², R = R(2τ_fg), over the unknown u; a tiny
-  // |u|² keeps a component without reliable faces solvable (u = 0 there).
-  std::vector<Eigen::Triplet<double>> entries;
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(2 * m);
+  // A tiny |u|² keeps a free set without reliable faces solvable.
   double mean_weight = 0;
   for (const EdgeTransport& t : transports) mean_weight += t.weight;
   mean_weight /= std::max<size_t>(1, transports.size());
-  for (int k = 0; k < 2 * m; ++k) entries.emplace_back(k, k, 1e-9 * mean_weight);
-  for (const EdgeTransport& t : transports) {
-    const size_t f = t.f.idx(), g = t.g.idx();
-    const int a = unknown[f], b = unknown[g];
-    if (a < 0 && b < 0) continue;
-    const double c = std::cos(2 * t.angle), s = std::sin(2 * t.angle), w = t.weight;
-    Eigen::Matrix2d R;
-    R << c, -s, s, c;
-    // residual u_f − R u_g: blocks I (for f) and −R (for g).
-    if (a >= 0) {
-      for (int i = 0; i < 2; ++i) entries.emplace_back(2 * a + i, 2 * a + i, w);
-    }
-    if (b >= 0) {
-      for (int i = 0; i < 2; ++i) entries.emplace_back(2 * b + i, 2 * b + i, w);  // RᵀR = I
-    }
-    if (a >= 0 && b >= 0) {
-      for (int i = 0; i < 2; ++i) {
-        for (int j = 0; j < 2; ++j) {
-          entries.emplace_back(2 * a + i, 2 * b + j, -w * R(i, j));
-          entries.emplace_back(2 * b + j, 2 * a + i, -w * R(i, j));
-        }
-      }
-    } else if (a >= 0) {
-      rhs.segment<2>(2 * a) += w * (R * u(g));
-    } else {
-      rhs.segment<2>(2 * b) += w * (R.transpose() * u(f));
-    }
-  }
-  Eigen::SparseMatrix<double> A(2 * m, 2 * m);
-  A.setFromTriplets(entries.begin(), entries.end());
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
-  CHECK(solver.info() == Eigen::Success) << "PropagatedAngles: the extension's matrix is singular";
-  Eigen::VectorXd x = solver.solve(rhs);
+  const Spin2Extension extension(transports, free, 1e-9 * mean_weight);
+  CHECK(extension.Extend(&u)) << "PropagatedAngles: the extension's matrix is singular";
   // A connected set of unreliable faces no reliable face touches (a whole
   // sphere, a near-umbilic dome): the smoothest line field there, the
   // eigenvector of the smallest eigenvalue of the same (block-diagonal)
@@ -148,28 +121,26 @@ std::vector<double> PropagatedAngles(const Mesh& mesh, const std::vector<EdgeTra
   const std::vector<int> set = UnanchoredSets(mesh, transports, reliability, unknown);
   const int sets = set.empty() ? 0 : 1 + *std::max_element(set.begin(), set.end());
   if (sets > 0) {
-    Eigen::VectorXd y = Eigen::VectorXd::Zero(2 * m);
+    std::vector<Eigen::Vector2d> y(n, Eigen::Vector2d::Zero());
     for (size_t f = 0; f < n; ++f) {
-      if (unknown[f] >= 0 && set[f] >= 0) y(2 * unknown[f]) = 1.0;
+      if (set[f] >= 0) y[f] = Eigen::Vector2d(1, 0);
     }
     for (int it = 0; it < 50; ++it) {
-      y = solver.solve(y);
+      CHECK(extension.InverseStep(&y)) << "PropagatedAngles: the inverse iteration failed";
       std::vector<double> norm(size_t(sets), 0.0);
       for (size_t f = 0; f < n; ++f) {
-        if (unknown[f] >= 0 && set[f] >= 0) norm[size_t(set[f])] += y.segment<2>(2 * unknown[f]).squaredNorm();
+        if (set[f] >= 0) norm[size_t(set[f])] += y[f].squaredNorm();
       }
       for (size_t f = 0; f < n; ++f) {
-        if (unknown[f] >= 0 && set[f] >= 0) y.segment<2>(2 * unknown[f]) /= std::sqrt(norm[size_t(set[f])]);
+        if (set[f] >= 0) y[f] /= std::sqrt(norm[size_t(set[f])]);
       }
     }
     for (size_t f = 0; f < n; ++f) {
-      if (unknown[f] >= 0 && set[f] >= 0) x.segment<2>(2 * unknown[f]) = y.segment<2>(2 * unknown[f]);
+      if (set[f] >= 0) u[f] = y[f];
     }
   }
   for (size_t f = 0; f < n; ++f) {
-    if (unknown[f] < 0) continue;
-    const double x0 = x(2 * unknown[f]), x1 = x(2 * unknown[f] + 1);
-    theta[f] = (x0 == 0 && x1 == 0) ? 0.0 : 0.5 * std::atan2(x1, x0);
+    if (free[f]) theta[f] = (u[f].x() == 0 && u[f].y() == 0) ? 0.0 : 0.5 * std::atan2(u[f].y(), u[f].x());
   }
   return theta;
 }
@@ -179,12 +150,6 @@ FaceCurvature TurnedCurvature(const FaceCurvature& k, double theta, double sign_
   const Eigen::Matrix2d M = k.k1 * d1 * d1.transpose() + k.k2 * d2 * d2.transpose();
   // Same eigenvalues: flat exactly when the measured face is.
   return CurvatureOfMatrix(M, k.flat ? INFINITY : 0.0, sign_tolerance);
-}
-
-double LineAngleDeg(double a, double b) {
-  double d = std::fmod(std::abs(a - b), M_PI);
-  if (d > M_PI / 2) d = M_PI - d;
-  return d * 180.0 / M_PI;
 }
 
 }  // namespace archgeo

@@ -77,7 +77,4 @@ std::vector<double> PropagatedAngles(const Mesh& mesh, const std::vector<EdgeTra
 // (the same κ1, κ2, flatness and sign of K).
 FaceCurvature TurnedCurvature(const FaceCurvature& k, double theta, double sign_tolerance);
 
-// The angle (degrees, in [0, 90]) between the lines at angles a and b.
-double LineAngleDeg(double a, double b);
-
 }  // namespace archgeo

@@ -916,8 +916,9 @@ nlohmann::json PreprocessDetails(const Mesh& mesh, const FieldState& state, cons
   double reliable_max = 0, reliable_sum = 0, unreliable_sum = 0;
   int reliable = 0;
   for (FaceIndex f : mesh.faces()) {
-    const double turned = LineAngleDeg(PrincipalAngle(state.measured[f.idx()]),
-                                       PrincipalAngle(state.geometry.curvature[f.idx()]));
+    const double turned = std::abs(WrapLineAngle(PrincipalAngle(state.measured[f.idx()]) -
+                                                 PrincipalAngle(state.geometry.curvature[f.idx()]))) *
+                          180.0 / M_PI;
     if (state.reliability.reliable[f.idx()]) {
       reliable_max = std::max(reliable_max, turned);
       reliable_sum += turned;
