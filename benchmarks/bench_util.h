@@ -178,17 +178,20 @@ auto ExitOnInputError(const F& f) -> decltype(f()) {
   }
 }
 
-// One solve in this process: the spec with `overrides`, no output files.
+// One solve in this process: the spec with `overrides`, no output files but
+// `outputs` (KEY=PATH sets, e.g. output.layout=...).
 // Returns the run report plus "wall_seconds" (around RunSpec) and "exit_code".
 // `progress` is called once per Ceres iteration, on the solving thread.
 // Bad input (a --set naming an unknown key, say) ends the program as
 // `archgeo solve` would: the message, exit code 2 (SolveCommand too).
 inline Json Solve(const std::string& spec_path, const std::vector<std::string>& overrides,
-                  const archgeo::ProgressSink& progress = {}) {
+                  const archgeo::ProgressSink& progress = {},
+                  const std::vector<std::string>& outputs = {}) {
   std::vector<std::string> all = overrides;
   all.insert(all.end(), ExtraSets().begin(), ExtraSets().end());
   all.push_back("output.mesh=");  // no output files
   all.push_back("output.report=");
+  all.insert(all.end(), outputs.begin(), outputs.end());
   const auto start = Clock::now();
   const archgeo::RunResult run =
       ExitOnInputError([&] { return archgeo::RunSpec(archgeo::ReadSpec(spec_path, all), progress); });

@@ -11,8 +11,8 @@
 //   cmake --build <build> --target archgeo_benchmarks
 //   <build>/benchmarks/layouts [--set KEY=VALUE ...]
 //
-// Every figure is measured here, on the written meshes (layout and final
-// mesh in a scratch folder): irregular vertices (interior, valence ≠ 4),
+// Every figure is measured here: the shapes on the layouts (ours written to
+// a scratch folder), the rest from the runs' reports: irregular vertices (interior, valence ≠ 4),
 // non-quad faces, quads, the share of boundary faces (faces with a vertex on
 // the boundary) that are quads with a whole edge on it, face areas over the
 // median (5th and 95th percentile, and the share within 0.25–4×), δ_PQ,n
@@ -88,21 +88,6 @@ Shape Measure(const Mesh& m) {
   return s;
 }
 
-// One run of `spec` with `sets`, writing `mesh_key` (and the final mesh) into
-// the scratch folder; the report with exit_code and wall_seconds.
-bench::Json Run(const std::string& spec, std::vector<std::string> sets, const std::string& tag) {
-  sets.insert(sets.end(), bench::ExtraSets().begin(), bench::ExtraSets().end());
-  sets.push_back("output.mesh=" + (bench::Scratch() / (tag + "_final.obj")).string());
-  sets.push_back("output.report=");
-  const auto start = bench::Clock::now();
-  const archgeo::RunResult run =
-      bench::ExitOnInputError([&] { return archgeo::RunSpec(archgeo::ReadSpec(spec, sets), {}); });
-  bench::Json report = run.report;
-  report["wall_seconds"] = bench::Seconds(start);
-  report["exit_code"] = run.exit_code;
-  return report;
-}
-
 struct Row {
   const char* surface;  // the design surface (data file)
   const char* published;  // the published layout of it (data file)
@@ -135,15 +120,15 @@ int Main(int argc, char** argv) {
   for (const Row& row : rows) {
     const std::string tag = Fmt("layouts_%d", k++);
     const Mesh published = archgeo::ReadMesh(bench::Data(row.published));
-    const bench::Json pq = Run(bench::Source("examples/planar_quads.yaml"),
-                               {"mesh=" + bench::Data(row.published)}, tag + "_published");
+    const bench::Json pq =
+        bench::Solve(bench::Source("examples/planar_quads.yaml"), {"mesh=" + bench::Data(row.published)});
     Add(t, std::string(row.who) + ": " + row.published, Measure(published), "–", pq);
     const std::string layout = (bench::Scratch() / (tag + "_layout.obj")).string();
     const bench::Json ours =
-        Run(bench::Source("examples/conjugate_layout.yaml"),
-            {"mesh=" + bench::Data(row.surface), "output.layout=" + layout, "output.field=",
-             Fmt("level_sets.target_faces=%d", int(published.number_of_faces()))},
-            tag + "_ours");
+        bench::Solve(bench::Source("examples/conjugate_layout.yaml"),
+                     {"mesh=" + bench::Data(row.surface), "output.field=",
+                      Fmt("level_sets.target_faces=%d", int(published.number_of_faces()))},
+                     {}, {"output.layout=" + layout});
     const std::string singular =
         Fmt("%d", int(ours.at("details").at("net").at("field").at("singularities").size()));
     Add(t, std::string("ours: ") + row.surface, Measure(archgeo::ReadMesh(layout)), singular, ours);
