@@ -716,6 +716,36 @@ TEST(LeanSolve, TheFunctionToleranceEndsWhereTheNextChangeWouldMeetIt) {
   EXPECT_LT(further.change[k + 1], 1e-2 * further.cost[k]);
 }
 
+// The extrapolated next change ends a solve only in the tail, where a step
+// changes the cost by no more than the cost left. A far start whose first
+// step removes nearly all of its cost (a stiff term met at once, as a
+// random start's feature constraints in the wave) gives a rate that would
+// predict a next change of nothing after the second step (which still
+// removes most of the plane fit's cost) and end the fit there, short of
+// its optimum.
+TEST(LeanSolve, AFarStartsFirstDropDoesNotEndTheSolve) {
+  PlaneFit ceres_side, lean_side;
+  double far_ceres = 1000, far_lean = 1000;  // pulled to 0 with weight 1000
+  Add(ceres_side.residuals, new ceres::AutoDiffCostFunction<Data, 1, 1>(new Data{1000, 0}),
+      nullptr, {&far_ceres});
+  Add(lean_side.residuals, new ceres::AutoDiffCostFunction<Data, 1, 1>(new Data{1000, 0}),
+      nullptr, {&far_lean});
+  ceres::Solver::Options o = Tight();
+  o.function_tolerance = 1e-4;
+  o.initial_trust_region_radius = 1e16;  // the first step meets the stiff term
+  ceres::Solver::Summary reference;
+  ceres::Solve(o, ceres_side.residuals.MakeProblem().get(), &reference);
+  Costs costs;
+  o.callbacks.push_back(&costs);
+  const SolveSummary lean = LeanSolve(o, lean_side.residuals, nullptr, LeanStep::kCholesky);
+  ASSERT_TRUE(lean.usable) << lean.message;
+  ASSERT_GE(costs.change.size(), 3u);
+  EXPECT_LT(costs.change[2], 1e-6 * costs.change[1]);  // the first drop (step 1) ...
+  EXPECT_GT(lean.iterations, 2);                        // ... does not end it at step 2
+  EXPECT_NEAR(lean.final_cost, reference.final_cost, 1e-3 * reference.final_cost);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(lean_side.normal[k], ceres_side.normal[k], 1e-3) << k;
+}
+
 ceres::Solver::Options Threads(ceres::Solver::Options o, int threads) {
   o.num_threads = threads;
   return o;
