@@ -54,6 +54,8 @@ double TimeWave(const char* name, const archgeo::Mesh& mesh, const std::string& 
 int ValidStarts(const char* name, const archgeo::Mesh& mesh) {
   int valid = 0;
   double worst_sin = 0, seconds = 0;
+  double e_low = 1e300, e_high = 0;
+  int quads_low = 1 << 30, quads_high = 0, irregular_low = 1 << 30, irregular_high = 0;
   for (int seed = 1; seed <= kStarts; ++seed) {
     const auto start = std::chrono::steady_clock::now();
     const auto s = archgeo::Solve(
@@ -64,10 +66,18 @@ int ValidStarts(const char* name, const archgeo::Mesh& mesh) {
     const auto& w = s->details.at("wave");
     valid += w.at("valid").get<bool>() ? 1 : 0;
     worst_sin = std::max(worst_sin, w.at("feature_sin_max").get<double>());
+    const double e = w.at("energy").get<double>();
+    const int quads = w.at("quasi_dual").at("quads").get<int>();
+    const int irregular = w.at("quasi_dual").at("irregular_vertices").get<int>();
+    e_low = std::min(e_low, e), e_high = std::max(e_high, e);
+    quads_low = std::min(quads_low, quads), quads_high = std::max(quads_high, quads);
+    irregular_low = std::min(irregular_low, irregular);
+    irregular_high = std::max(irregular_high, irregular);
   }
-  std::printf("%-28s %d of %d starts give a valid complex, boundary |sin| max %.2g, %.1f s per "
-              "start\n",
-              name, valid, kStarts, worst_sin, seconds / kStarts);
+  std::printf("%-28s %d of %d starts give a valid complex, boundary |sin| max %.2g, E %.0f-%.0f, "
+              "quasi-dual %d-%d quads, %d-%d irregular vertices, %.1f s per start\n",
+              name, valid, kStarts, worst_sin, e_low, e_high, quads_low, quads_high,
+              irregular_low, irregular_high, seconds / kStarts);
   return valid;
 }
 

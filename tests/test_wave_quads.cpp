@@ -42,6 +42,32 @@ std::unique_ptr<Solution> WaveTorus(const std::string& start = "random", int res
 
 const double* WaveF(const Solution& s, int v) { return s.store->At("wave_f", v); }
 
+// Every start is solved by LeanSolve's Cholesky steps (wave_quads' default
+// solver.back_end), to the wave Ceres' steps reach from the same random
+// start: the same steps, but that LeanSolve does not take the last one
+// where the next change of E, extrapolated, is below the function
+// tolerance (1e-4 of E), so E agrees to about that.
+TEST(WaveQuads, StartsAreSolvedByLeanCholeskyStepsToCeresWave) {
+  const auto lean = WaveTorus("random", 1);
+  const std::string yaml =
+      "problem: wave_quads\n"
+      "solver: {back_end: ceres}\n"
+      "wave: {wavelength: 2.0943951023931953, wavelength_y: 1.0471975511965976,\n"
+      "       size_field_y: axis_distance, restarts: 1, start: random}\n";
+  const auto ceres = Solve(ParseSpec(yaml, "/in-memory/wave.yaml"),
+                           TorusPrincipalQuads(3, 1, 60, 30), nullptr, {});
+  ASSERT_TRUE(lean->loop.usable && ceres->loop.usable);
+  EXPECT_EQ(lean->loop.cholesky_rounds, lean->loop.rounds);
+  EXPECT_GT(lean->loop.cholesky_rounds, 0);
+  EXPECT_EQ(ceres->loop.cholesky_rounds, 0);
+  EXPECT_LE(std::abs(lean->loop.iterations - ceres->loop.iterations), 1);
+  const double e_lean = lean->details.at("wave").at("energy").get<double>();
+  const double e_ceres = ceres->details.at("wave").at("energy").get<double>();
+  std::printf("wave back ends: lean %d iterations E %.8g, ceres %d E %.8g\n",
+              lean->loop.iterations, e_lean, ceres->loop.iterations, e_ceres);
+  EXPECT_NEAR(e_lean, e_ceres, 1e-3 * e_ceres);
+}
+
 TEST(WaveQuads, WaveTransferGivesTheTorusARegularComplex) {
   const auto s = WaveTorus();
   ASSERT_TRUE(s->loop.usable) << s->loop.message;
