@@ -69,8 +69,10 @@ int ValidStarts(const char* name, const archgeo::Mesh& mesh) {
     const double e = w.at("energy").get<double>();
     const int quads = w.at("quasi_dual").at("quads").get<int>();
     const int irregular = w.at("quasi_dual").at("irregular_vertices").get<int>();
-    e_low = std::min(e_low, e), e_high = std::max(e_high, e);
-    quads_low = std::min(quads_low, quads), quads_high = std::max(quads_high, quads);
+    e_low = std::min(e_low, e);
+    e_high = std::max(e_high, e);
+    quads_low = std::min(quads_low, quads);
+    quads_high = std::max(quads_high, quads);
     irregular_low = std::min(irregular_low, irregular);
     irregular_high = std::max(irregular_high, irregular);
   }

@@ -432,10 +432,11 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
       // its change, or the next one extrapolated from the last two (Δ_k² /
       // Δ_(k−1): the changes falling geometrically), is below the function
       // tolerance: the iteration that would only confirm it is not taken.
-      // Only in the tail, where the step changed the cost by at most a tenth: a
-      // far start's first step removes nearly all of its cost (a stiff term
-      // met at once), and its rate would predict a next change of nothing
-      // after a second step that still removes much of the rest.
+      // Only in the tail, where the step changed the cost by at most a
+      // tenth of what is left: a far start's first step removes nearly all
+      // of its cost (a stiff term met at once), and its rate would predict a
+      // next change of nothing after a second step that still removes much
+      // of the rest.
       const double change = it.cost_change;
       const bool tail = last_change > 0 && change <= 0.1 * cost;
       const double next_change = tail ? change * change / last_change : change;

@@ -26,7 +26,8 @@
 //     time limits and iteration callbacks (so a per-iteration tolerance ends
 //     the solve); the function tolerance also ends it where the next cost
 //     change, extrapolated from the last two (Δ_k² / Δ_(k−1)), would be
-//     below it, once a step changes the cost by at most a tenth.
+//     below it, once a step changes the cost by at most a tenth of what is
+//     left.
 //   - Losses are applied with Ceres' corrector (Triggs et al.): the same cost.
 //   - It runs on options.num_threads = T threads (core/parallel_parts.h):
 //     the residuals are cut into T ranges of the mesh whose blocks no other
