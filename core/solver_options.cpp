@@ -183,7 +183,8 @@ std::vector<Key> SolverKeys() {
              "kept for every iteration and round of the same structure; core/lean_solve.h; it "
              "ignores the solver keys that do not change such a step, and a round whose keys "
              "ask for what it does not implement goes to Ceres, as each key says) "
-             "(planar_quads, conjugate_layout, wave_quads: lean)"),
+             "(planar_quads, conjugate_layout, wave_quads, principal_symmetric, hnet, "
+             "total_absolute_curvature: lean)"),
       integer("pcg_above", 0, 0, 1000000000,
               "a round with more than this many variables is solved by LeanSolve (whatever "
               "back_end says) with each step by "

@@ -194,6 +194,9 @@ ProblemDecl hnet() {
   d.name = "hnet";
   d.summary = "A-net, then a smooth skin of ruled rational bilinear patches (H-net)";
   d.paper = "[Shi, Wang, Pottmann 2014, §3.2, Fig. 4, Table 1]";
+  // Each step one CHOLMOD factorisation by LeanSolve (core/lean_solve.h): the
+  // same rounds and objective as Ceres' steps, without their per-solve set-up.
+  d.defaults = {{"solver.back_end", std::string("lean")}};
   d.input = InputKind::kQuads;
   d.terms = {{"anet_planarity", 10, {{"variant", std::string("normals")}}},
              {"boundary_proximity", 1},

@@ -77,6 +77,9 @@ ProblemDecl total_absolute_curvature() {
   d.name = "total_absolute_curvature";
   d.summary = "form finding: the surface of least ∫ |κ1| + |κ2| for given boundary conditions";
   d.paper = "[Pellis 2019, §4, §5.3, Fig. 13, 15, 19]";
+  // Each step one CHOLMOD factorisation by LeanSolve (core/lean_solve.h): the
+  // same rounds and objective as Ceres' steps, without their per-solve set-up.
+  d.defaults = {{"solver.back_end", std::string("lean")}};
   d.input = InputKind::kTriangles;
   d.terms = {{"total_absolute_curvature", 1},
              {"fairness", 0.05, {{"normal_part", std::string("free")}}, "umbrella_triples"},

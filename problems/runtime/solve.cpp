@@ -206,7 +206,8 @@ std::unique_ptr<Solution> Solve(const ProblemSpec& spec, const Mesh& mesh, const
   hooks.reference = sol->reference.get();
   const std::vector<const TermSpec*> terms = TermsOf(d);
   LoopResult& solved = sol->loop;
-  int rounds = 0, iterations = 0;
+  // Every level's rounds count in the totals, the back end's too.
+  LoopResult totals;
   std::map<std::string, double> seconds;
   for (int level = 0; level <= levels; ++level) {
     if (level > 0) {
@@ -254,8 +255,12 @@ std::unique_ptr<Solution> Solve(const ProblemSpec& spec, const Mesh& mesh, const
     solved = RunLoop(d, options, *sol->model);
     fixed = hooks.fixed;
     work = sol->store->mesh();
-    rounds += solved.rounds;
-    iterations += solved.iterations;
+    totals.rounds += solved.rounds;
+    totals.iterations += solved.iterations;
+    totals.pcg_rounds += solved.pcg_rounds;
+    totals.cg_iterations += solved.cg_iterations;
+    totals.cholesky_rounds += solved.cholesky_rounds;
+    totals.cholesky_analyses += solved.cholesky_analyses;
     for (const auto& [k, v] : solved.seconds) seconds[k] += v;
     for (const RoundLog& row : solved.log) {
       nlohmann::json j = RoundJson(row);
@@ -274,8 +279,12 @@ std::unique_ptr<Solution> Solve(const ProblemSpec& spec, const Mesh& mesh, const
                            {"seconds", SecondsSince(level_start)}});
     if (!solved.usable || solved.stopped) break;
   }
-  solved.rounds = rounds;
-  solved.iterations = iterations;
+  solved.rounds = totals.rounds;
+  solved.iterations = totals.iterations;
+  solved.pcg_rounds = totals.pcg_rounds;
+  solved.cg_iterations = totals.cg_iterations;
+  solved.cholesky_rounds = totals.cholesky_rounds;
+  solved.cholesky_analyses = totals.cholesky_analyses;
   solved.seconds = seconds;
   hooks.RecordChecks(true);
   sol->input_details = hooks.details;
