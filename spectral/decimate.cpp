@@ -748,49 +748,56 @@ FeatureProximity MeasureFeatureProximity(const std::vector<Eigen::Vector3d>& poi
       graph[size_t(b)].push_back({a, l});
     }
   }
-  // Vertices within `r` of s along the edges (Dijkstra, cut at r).
+  // Visits the vertices within `r` of s along the edges, nearest first
+  // (Dijkstra, cut at r), until `visit` returns false.
   std::vector<double> dist(n, INFINITY);
-  auto ball = [&](int s, double r) {
-    std::vector<int> reached;
+  std::vector<int> touched;
+  auto ball = [&](int s, double r, const auto& visit) {
     using Item = std::pair<double, int>;
     std::priority_queue<Item, std::vector<Item>, std::greater<Item>> q;
     dist[size_t(s)] = 0;
+    touched.assign(1, s);
     q.push({0, s});
     while (!q.empty()) {
       const auto [d, v] = q.top();
       q.pop();
       if (d > dist[size_t(v)]) continue;
-      reached.push_back(v);
+      if (!visit(v)) break;
       for (const auto& [w, l] : graph[size_t(v)]) {
         if (d + l <= r && d + l < dist[size_t(w)]) {
+          if (dist[size_t(w)] == INFINITY) touched.push_back(w);
           dist[size_t(w)] = d + l;
           q.push({d + l, w});
         }
       }
     }
-    for (int v : reached) dist[size_t(v)] = INFINITY;
-    std::sort(reached.begin(), reached.end());
-    reached.erase(std::unique(reached.begin(), reached.end()), reached.end());
-    return reached;
+    for (int v : touched) dist[size_t(v)] = INFINITY;
   };
   std::vector<double> smooth(n, -1);
+  std::vector<int> reached;
   for (size_t v = 0; v < n; ++v) {
     if (graph[v].empty()) continue;
+    reached.clear();
+    ball(int(v), radius / 2, [&](int w) {
+      reached.push_back(w);
+      return true;
+    });
+    std::sort(reached.begin(), reached.end());  // the sum in index order
     double s = 0;
-    for (int w : ball(int(v), radius / 2)) s += result.importance[size_t(w)];
+    for (int w : reached) s += result.importance[size_t(w)];
     smooth[v] = s;
   }
+  // A curvature extremum: no vertex within the radius is smoother-larger
+  // (ties to the lower index); the search stops at the first that is.
   std::vector<char> feature_node(nodes, 0);
   for (size_t v = 0; v < n; ++v) {
     if (graph[v].empty() || result.representative[v] < 0) continue;
     if (result.corner[v]) feature_node[size_t(result.representative[v])] = 1;
     bool extremum = true;
-    for (int w : ball(int(v), radius)) {
-      if (smooth[size_t(w)] > smooth[v] || (smooth[size_t(w)] == smooth[v] && size_t(w) < v)) {
-        extremum = false;
-        break;
-      }
-    }
+    ball(int(v), radius, [&](int w) {
+      extremum = !(smooth[size_t(w)] > smooth[v] || (smooth[size_t(w)] == smooth[v] && size_t(w) < v));
+      return extremum;
+    });
     if (extremum) {
       ++out.extrema;
       feature_node[size_t(result.representative[v])] = 1;
