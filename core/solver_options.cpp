@@ -348,6 +348,13 @@ FullTeams::FullTeams() : previous_(omp_get_dynamic()) {
 }
 FullTeams::~FullTeams() { omp_set_dynamic(previous_); }
 
+std::string BlasKernels() {
+  using CoreName = char* (*)();
+  const auto name = reinterpret_cast<CoreName>(dlsym(RTLD_DEFAULT, "openblas_get_corename"));
+  const char* core = name ? name() : nullptr;
+  return core ? core : "";
+}
+
 std::string BlasLibrary() {
   // Looked up at run time: the BLAS is a dependency of CHOLMOD, not of ours.
   void* symbol = dlsym(RTLD_DEFAULT, "dgemm_");

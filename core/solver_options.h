@@ -64,4 +64,8 @@ class FullTeams {
 // process (e.g. ".../openblas-pthread/libblas.so.3"), for reports and benchmarks.
 std::string BlasLibrary();
 
+// The kernels OpenBLAS runs (its core name, e.g. "SkylakeX", "Prescott" for
+// its generic ones), or "" when another BLAS serves dgemm_.
+std::string BlasKernels();
+
 }  // namespace archgeo

@@ -136,6 +136,21 @@ TEST_F(CliTest, OpenMpThreadsWaitPassivelyUnlessTheUserChose) {
   EXPECT_NE(last_spin_count(active.output), "0") << active.output;
 }
 
+// The report names the kernels OpenBLAS ran (blas_kernels): those of
+// OPENBLAS_CORETYPE when set, else a non-empty core name.
+TEST_F(CliTest, TheReportNamesTheBlasKernels) {
+  ASSERT_EQ(Archgeo("generate " + Path("grid.obj") + " --nu 4 --nv 3").code, 0);
+  const std::string spec = Spec(Path("grid.obj"), "problem: planar_quads\n");
+  const auto kernels = [&](const std::string& env) {
+    const Outcome o = Archgeo("solve " + spec + " --quiet", env);
+    EXPECT_EQ(o.code, 0) << o.output;
+    return nlohmann::json::parse(Slurp(Path("out.json")))["blas_kernels"].get<std::string>();
+  };
+  EXPECT_FALSE(kernels("env -u OPENBLAS_CORETYPE ").empty());
+  EXPECT_EQ(kernels("env OPENBLAS_CORETYPE=Sandybridge "), "Sandybridge");
+  EXPECT_EQ(kernels("env OPENBLAS_CORETYPE=Haswell "), "Haswell");
+}
+
 // tolerance.energy_not_above_input (planar_quads, on by default): without the
 // fairness terms, planarity alone raises E on a gently noisy roof (3.067 ->
 // 3.074); that run ends exit 4 with the tolerance named, exit 0 when the key

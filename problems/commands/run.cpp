@@ -405,6 +405,7 @@ class SpecRun {
     rep["units"] = UnitsJson(net.derived, scale_);
     rep["settings"] = s_.ToJson();
     rep["blas"] = BlasLibrary();
+    rep["blas_kernels"] = BlasKernels();
     rep["details"] = solution_->details;
     if (!net.details.empty()) rep["details"]["net"] = net.details;  // a net the problem made
     if (s_.Bool("output.blocks")) rep["blocks"] = BlocksJson(*solution_->store, solution_->frame);
