@@ -3,6 +3,7 @@
 // archgeo — metrics of the goal library (see goal_metrics.h).
 #include "analysis/goal_metrics.h"
 
+#include "core/dense_solve.h"
 #include "core/newell.h"
 #include "mesh/eigen_point.h"
 
@@ -11,7 +12,6 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
-#include <Eigen/SVD>
 #include <glog/logging.h>
 
 namespace archgeo {
@@ -79,9 +79,7 @@ double PlanesMiss(const std::vector<Vec3>& normals, const std::vector<double>& h
     n.row(f) << normals[f][0], normals[f][1], normals[f][2];
     h[f] = heights[f];
   }
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(n, Eigen::ComputeThinU | Eigen::ComputeThinV);
-  svd.setThreshold(kRankThreshold);
-  const Eigen::Vector3d q = svd.solve(h);
+  const Eigen::Vector3d q = SolveBySvd(n, h, kRankThreshold);
   return (n * q - h).cwiseAbs().maxCoeff();
 }
 

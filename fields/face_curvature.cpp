@@ -7,9 +7,9 @@
 #include <cmath>
 
 #include <CGAL/Default_diagonalize_traits.h>
-#include <Eigen/QR>
 #include <glog/logging.h>
 
+#include "core/dense_solve.h"
 #include "core/solver_options.h"
 #include "fields/conjugate.h"
 #include "mesh/eigen_point.h"
@@ -131,7 +131,7 @@ Eigen::Matrix3d JetTensor(const std::vector<Point>& points, int degree,
       }
     }
   }
-  Eigen::VectorXd A = Eigen::ColPivHouseholderQR<Eigen::MatrixXd>(M).solve(Z);
+  Eigen::VectorXd A = SolveByQr(M, Z);
   for (int k = 0; k <= degree; ++k) {
     for (int i = 0; i <= k; ++i) A[k * (k + 1) / 2 + i] /= scale[k];
   }

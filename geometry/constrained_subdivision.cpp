@@ -16,11 +16,11 @@
 #include <sstream>
 #include <unordered_map>
 
-#include <Eigen/QR>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <glog/logging.h>
 
+#include "core/dense_solve.h"
 #include "core/segments.h"
 
 namespace archgeo {
@@ -551,7 +551,7 @@ void ConstrainedSubdivision::ImposeTangency(std::vector<Eigen::Vector3d>& points
       r[static_cast<Eigen::Index>(i)] = planes[v][i].first.dot(points[v] - points[planes[v][i].second]);
     }
     const Eigen::MatrixXd gram = rows * rows.transpose();
-    const Eigen::VectorXd y = gram.completeOrthogonalDecomposition().solve(r);
+    const Eigen::VectorXd y = SolveMinimumNorm(gram, r);
     points[v] -= rows.transpose() * y;
   }
 }
