@@ -100,6 +100,18 @@ void CheckInput(const ProblemDecl& d, const Mesh& mesh, const std::string& path)
   }
 }
 
+// Adds the counts and times of the levels before (`earlier`) to a level's
+// result: the report's totals are those of every level.
+void AddEarlierLevels(const LoopResult& earlier, LoopResult* level) {
+  level->rounds += earlier.rounds;
+  level->iterations += earlier.iterations;
+  level->pcg_rounds += earlier.pcg_rounds;
+  level->cg_iterations += earlier.cg_iterations;
+  level->cholesky_rounds += earlier.cholesky_rounds;
+  level->cholesky_analyses += earlier.cholesky_analyses;
+  for (const auto& [k, v] : earlier.seconds) level->seconds[k] += v;
+}
+
 }  // namespace
 
 double ContinuationStart(const Settings& s) {
@@ -206,9 +218,6 @@ std::unique_ptr<Solution> Solve(const ProblemSpec& spec, const Mesh& mesh, const
   hooks.reference = sol->reference.get();
   const std::vector<const TermSpec*> terms = TermsOf(d);
   LoopResult& solved = sol->loop;
-  // Every level's rounds count in the totals, the back end's too.
-  LoopResult totals;
-  std::map<std::string, double> seconds;
   for (int level = 0; level <= levels; ++level) {
     if (level > 0) {
       const Mesh coarse = work;
@@ -252,16 +261,10 @@ std::unique_ptr<Solution> Solve(const ProblemSpec& spec, const Mesh& mesh, const
     options.stop = stop;
     if (level == levels) options.pattern = pattern;
     options.weight_scale = ContinuationStart(s);
+    const LoopResult earlier = solved;
     solved = RunLoop(d, options, *sol->model);
     fixed = hooks.fixed;
     work = sol->store->mesh();
-    totals.rounds += solved.rounds;
-    totals.iterations += solved.iterations;
-    totals.pcg_rounds += solved.pcg_rounds;
-    totals.cg_iterations += solved.cg_iterations;
-    totals.cholesky_rounds += solved.cholesky_rounds;
-    totals.cholesky_analyses += solved.cholesky_analyses;
-    for (const auto& [k, v] : solved.seconds) seconds[k] += v;
     for (const RoundLog& row : solved.log) {
       nlohmann::json j = RoundJson(row);
       j["level"] = level;
@@ -277,15 +280,9 @@ std::unique_ptr<Solution> Solve(const ProblemSpec& spec, const Mesh& mesh, const
                            {"objective", solved.objective},
                            {"stop", solved.stop},
                            {"seconds", SecondsSince(level_start)}});
+    AddEarlierLevels(earlier, &solved);
     if (!solved.usable || solved.stopped) break;
   }
-  solved.rounds = totals.rounds;
-  solved.iterations = totals.iterations;
-  solved.pcg_rounds = totals.pcg_rounds;
-  solved.cg_iterations = totals.cg_iterations;
-  solved.cholesky_rounds = totals.cholesky_rounds;
-  solved.cholesky_analyses = totals.cholesky_analyses;
-  solved.seconds = seconds;
   hooks.RecordChecks(true);
   sol->input_details = hooks.details;
   sol->input_headline = hooks.headline;
