@@ -787,8 +787,9 @@ FeatureProximity MeasureFeatureProximity(const std::vector<Eigen::Vector3d>& poi
     for (int w : reached) s += result.importance[size_t(w)];
     smooth[v] = s;
   }
-  // A curvature extremum: no vertex within the radius is smoother-larger
-  // (ties to the lower index); the search stops at the first that is.
+  // A curvature extremum: no vertex within the radius has a larger smoothed
+  // importance (ties go to the lower index); the search stops at the first
+  // that has.
   std::vector<char> feature_node(nodes, 0);
   for (size_t v = 0; v < n; ++v) {
     if (graph[v].empty() || result.representative[v] < 0) continue;
