@@ -209,6 +209,11 @@ std::vector<Key> LevelSetKeys() {
                     "no value moves by more than this many spacings from the level sets solved "
                     "without it (else the level sets do not follow the boundary there and "
                     "holding it would bend the rows beside it; the run is left free and counted)"),
+          NumberKey("level_sets.size_reach", 0, 0, 1e6,
+                    "curl correction of the level sets' sizes (thesis §8.1.4): log sizes per "
+                    "face that make the field scaled by them curl-free, held to the spacing over "
+                    "about this many spacings, scale eq. 5's target (even panels that vary "
+                    "smoothly where the field has curl); 0 = off"),
           IntegerKey("level_sets.rounds", 1, 1, 100,
                      "Ceres solves per stage (eq. 5; eq. 6; with the jumps fixed)"),
           NumberKey("extraction.merge_fraction", 0.05, 0, 0.5,

@@ -61,6 +61,7 @@
 #include "fields/boundary_rows.h"
 #include "fields/cut_jumps.h"
 #include "fields/field_io.h"
+#include "fields/level_set_sizes.h"
 #include "fields/pair_cancellation.h"
 #include "io/io.h"
 #include "analysis/metrics.h"
@@ -88,6 +89,7 @@ struct LevelSetState : ProblemState {
   bool rounded = false;
   bool rounding_ok = true;
   BoundaryRows boundary_rows;  // level_sets.boundary_rows (Round)
+  LevelSetSizes sizes;         // level_sets.size_reach (fields/level_set_sizes.h)
   std::string rounding_message;
   double field_seconds = 0;         // the field's nested solve and its pair cancellation
   Clock::time_point solve_start;    // the level sets' own rounds start (end of InitLevelSets)
@@ -213,6 +215,16 @@ void InitLevelSets(HookContext& c) {
     st.w[f] = double(st.ow.face_sign[f]) * w[f];
   }
   st.spacing = LevelSetSpacing(s, c, *st.field);
+  // The alignment's targets R v e^{−s̃}: the curl-corrected sizes.
+  std::vector<V2> v_sized = st.v, w_sized = st.w;
+  if (const double reach = s.Number("level_sets.size_reach"); reach > 0) {
+    st.sizes = CorrectLevelSetSizes(mesh, geo.frames, st.cut, st.v, st.w, st.ov.chain_sign,
+                                    st.ow.chain_sign, st.spacing, reach);
+    for (size_t f = 0; f < faces; ++f) {
+      v_sized[f] *= std::exp(-st.sizes.g.log_size[f]);
+      w_sized[f] *= std::exp(-st.sizes.h.log_size[f]);
+    }
+  }
 
   const int wedges = st.cut.num_wedges;
   const int chains = std::max<int>(1, int(st.cut.chains.size()));
@@ -254,8 +266,8 @@ void InitLevelSets(HookContext& c) {
     const std::array<V2, 3> corners = FaceCorners2D(mesh, geo.frames, f);
     const HalfedgeIndex h0 = mesh.halfedge(f), h1 = mesh.next(h0), h2 = mesh.next(h1);
     const Eigen::Matrix2d& M = geo.curvature[f.idx()].M;
-    const V2& vf = st.v[f.idx()];
-    const V2& wf = st.w[f.idx()];
+    const V2& vf = v_sized[f.idx()];
+    const V2& wf = w_sized[f.idx()];
     std::vector<double> data = {corners[0].x(), corners[0].y(), corners[1].x(), corners[1].y(),
                                 corners[2].x(), corners[2].y(), vf.x(), vf.y(), wf.x(), wf.y(),
                                 double(st.cut.corner_wedge[h0.idx()]),
@@ -508,6 +520,15 @@ void FinishLevelSets(HookContext& c) {
                         {"max_shift_spacings", rows.max_shift},
                         {"field_angle_mean_deg", rows.angle_mean_deg},
                         {"field_angle_max_deg", rows.angle_max_deg}};
+  const auto size_json = [](const LevelSetSizeFamily& x) {
+    return nlohmann::json{{"vertices", x.vertices}, {"curl_before", x.curl_before},
+                          {"curl_after", x.curl_after}, {"size_p5", x.size_p5},
+                          {"size_p95", x.size_p95}, {"size_min", x.size_min},
+                          {"size_max", x.size_max}};
+  };
+  d["size_correction"] = {{"reach_spacings", c.settings->Number("level_sets.size_reach")},
+                          {"g", size_json(st.sizes.g)},
+                          {"h", size_json(st.sizes.h)}};
   char line[768];
   std::snprintf(line, sizeof line,
                 "level sets: spacing %.4g (file units), %zu cut chains; mean angle ∇g vs Rv "
