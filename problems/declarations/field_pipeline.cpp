@@ -211,7 +211,7 @@ std::vector<Key> LevelSetKeys() {
                     "holding it would bend the rows beside it; the run is left free and counted)"),
           NumberKey("level_sets.size_reach", 0, 0, 1e6,
                     "curl correction of the level sets' sizes (thesis §8.1.4): log sizes per "
-                    "face that make the field scaled by them curl-free, held to the spacing over "
+                    "vertex that make the field scaled by them curl-free, held to the spacing over "
                     "about this many spacings, scale eq. 5's target (even panels that vary "
                     "smoothly where the field has curl); 0 = off"),
           IntegerKey("level_sets.rounds", 1, 1, 100,
