@@ -36,6 +36,7 @@ void AddMinEdgeLength(TermContext& c, size_t i) {
   const int* vs = c.elements->Vertices(i);
   const int k = c.elements->Count(i);
   const double fraction = c.Number("fraction");
+  const double floor = std::min(fraction, c.Number("floor"));
   for (int j = 0; j < k; ++j) {
     const int a = vs[j], b = vs[(j + 1) % k];
     const double* p = c.Original(a);
@@ -44,7 +45,7 @@ void AddMinEdgeLength(TermContext& c, size_t i) {
                                     (p[2] - q[2]) * (p[2] - q[2]));
     if (!(length > 0)) continue;  // an edge the input already collapsed
     // The canonical frame's unit is the input's mean edge length.
-    const double min_length = std::min(fraction, 0.5 * length);
+    const double min_length = std::min(fraction, std::max(floor, 0.5 * length));
     AddAutoDiff(c, CheckedMinEdgeLength(min_length), {c.Position(a), c.Position(b)});
   }
 }
@@ -61,7 +62,11 @@ const TermSpec& min_edge_length() {
     t.element_choices = {"quads", "non_triangles", "polygons", "triangles"};
     t.options = {NumberKey("fraction", 0.2, 1e-3, 1.0,
                            "each edge is kept at least this fraction of the input's mean edge "
-                           "length (or half its own input length, if that is shorter)")};
+                           "length (or half its own input length, if that is shorter)"),
+                 NumberKey("floor", 0, 0, 1.0,
+                           "and at least this fraction, however short it starts (a net the "
+                           "problem made has no edge of its own to inherit: the validity "
+                           "check against the design surface flags every edge under 0.1)")};
     t.barrier = true;
     t.add = &AddMinEdgeLength;
     return t;

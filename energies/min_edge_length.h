@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Edges that do not collapse: a one-sided (hinge) barrier per edge (a, b):
 //
-//   r = max(0, ℓ_min − ‖b − a‖) / ℓ_min,    ℓ_min = min(f · L̄, ½ ‖b₀ − a₀‖)
+//   r = max(0, ℓ_min − ‖b − a‖) / ℓ_min,
+//   ℓ_min = min(f · L̄, max(φ · L̄, ½ ‖b₀ − a₀‖))
 //
 //   [validity of a built mesh: an edge shrunk to nothing is a degenerate panel
 //    (Shi 2014 and Zadravec 2010 objectives can be met by collapsing edges;
@@ -10,7 +11,9 @@
 //
 // ‖b₀ − a₀‖ is the edge's length at the start of the solve, L̄ the input's
 // mean edge length (1 in the canonical frame the terms see) and f a fraction
-// (terms.min_edge_length.fraction). The validity check flags an edge shorter
+// (terms.min_edge_length.fraction), φ ≤ f a floor (terms.min_edge_length.floor,
+// 0 by default; conjugate_layout's 0.12: the net it made has no edges of
+// its own to inherit). The validity check flags an edge shorter
 // than a tenth of L̄ and than half its input length; with the default
 // f = 0.2 every edge the barrier keeps is valid (an edge of the input shorter
 // than 0.4 L̄ keeps half its length, a longer one at least 0.2 L̄) while

@@ -355,6 +355,31 @@ TEST(Terms, MinEdgeLengthStopsCollapsingSpringsAtAFifthOfTheEdgeLength) {
   EXPECT_LE(lengths.max, 0.5);
 }
 
+// The floor (a net the problem made: conjugate_layout's 0.12) holds an edge
+// that starts short at the floor, where half its own length would let it
+// fall under the validity check's 0.1 of the mean edge. One 0.05 × 1 quad
+// (short sides 0.095 of the mean edge): collapsing springs take the short
+// sides to half their length without the floor and stop them at the floor
+// with it (less 1%).
+TEST(Terms, MinEdgeLengthFloorHoldsEdgesThatStartShort) {
+  const Mesh quad = QuadGrid(1, 1, [](double u, double v) { return Vec3{0.05 * u, v, 0.0}; });
+  const double mean = MeanEdgeLength(quad);
+  const auto shortest = [&](const std::string& floor) {
+    const auto s = SolveYaml("problem: custom\nterms: {spring: {rest: zero}, min_edge_length: "
+                             "{weight: 1000, floor: " + floor + "}}\n"
+                             "schedule: {outer_iterations: 4}\n", quad);
+    if (floor != "0") EXPECT_TRUE(s->loop.log.back().valid) << s->loop.log.back().invalid;
+    return EdgeLengthSpread(s->output).min / mean;
+  };
+  // Without the floor the barrier lets them reach half their length, just
+  // where the validity check starts to flag them.
+  const double without = shortest("0"), with = shortest("0.15");
+  std::printf("min_edge_length floor: shortest edge / mean %.4f without, %.4f with 0.15\n",
+              without, with);
+  EXPECT_LT(without, 0.06);
+  EXPECT_GE(with, 0.15 * 0.99);
+}
+
 // ---------------------------------------------------------------------------
 // Visual smoothness [Pellis 2019, §3]: a flat triangulated 8 × 8 square whose
 // interior vertices are lifted by up to ±0.2 edge lengths, its (planar)

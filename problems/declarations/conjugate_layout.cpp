@@ -266,6 +266,10 @@ ProblemDecl conjugate_layout() {
     if (t.term == "pq_diagonal" || t.term == "face_planarity") t.weight = 1;
     if (t.term == "fairness") t.weight = 0.1;
     if (t.term == "dihedral_energy") t.weight = 0.05;
+    // The layout's edges are the problem's own: validity against the design
+    // surface flags every edge under 0.1 of the mean, so none may shrink
+    // below that, however short it was made (the margin: the mean edge moves).
+    if (t.term == "min_edge_length") t.options["floor"] = 0.12;
   }
   // The layout is the way out relayout offers: not a key here.
   d.keys.erase(std::remove_if(d.keys.begin(), d.keys.end(),
