@@ -17,7 +17,7 @@ namespace level_set_sizes_impl {  // named: the fields unity build
 using V2 = Eigen::Vector2d;
 using V3 = Eigen::Vector3d;
 
-constexpr int kGaussNewtonSteps = 4;
+constexpr int kGaussNewtonSteps = 6;
 
 V3 At(const Mesh& mesh, VertexIndex v) {
   const Point& p = mesh.point(v);
@@ -96,7 +96,7 @@ double Percentile(std::vector<std::pair<double, double>> size_area, double q) {
 
 LevelSetSizeFamily Correct(const Mesh& mesh, const FaceFrames& frames, const CutGraph& cut,
                            const std::vector<V2>& dir, const std::vector<int>& chain_sign,
-                           double spacing, double reach) {
+                           double spacing, double reach, double bound) {
   const int n = int(mesh.number_of_vertices());
   std::vector<Ring> rings;
   for (VertexIndex p : mesh.vertices()) {
@@ -129,11 +129,27 @@ LevelSetSizeFamily Correct(const Mesh& mesh, const FaceFrames& frames, const Cut
     J.setFromTriplets(jt.begin(), jt.end());
     Eigen::SparseMatrix<double> A = J.transpose() * J;
     for (int v = 0; v < n; ++v) A.coeffRef(v, v) += hold[v];
-    const Eigen::VectorXd g = J.transpose() * r + hold.cwiseProduct(s);
+    Eigen::VectorXd g = J.transpose() * r + hold.cwiseProduct(s);
+    // The bound |s̃| ≤ bound by an active set: a vertex at the bound whose
+    // gradient pushes it outward keeps its value this step (its row and
+    // column replaced by the identity's, so the step there is 0).
+    std::vector<char> active(n, 0);
+    for (int v = 0; v < n; ++v) {
+      active[v] = std::abs(s[v]) >= bound * (1 - 1e-12) && g[v] * s[v] < 0;
+    }
+    for (int k = 0; k < A.outerSize(); ++k) {
+      for (Eigen::SparseMatrix<double>::InnerIterator it(A, k); it; ++it) {
+        if (active[it.row()] || active[it.col()]) it.valueRef() = it.row() == it.col() ? 1 : 0;
+      }
+    }
+    for (int v = 0; v < n; ++v) {
+      if (active[v]) g[v] = 0;
+    }
     if (step == 0) solver.analyzePattern(A);
     solver.factorize(A);
     CHECK(solver.info() == Eigen::Success) << "the size correction's matrix is not positive definite";
     s -= solver.solve(g);
+    s = s.cwiseMax(-bound).cwiseMin(bound);
   }
 
   LevelSetSizeFamily out;
@@ -163,14 +179,15 @@ LevelSetSizes CorrectLevelSetSizes(const Mesh& mesh, const FaceFrames& frames, c
                                    const std::vector<Eigen::Vector2d>& w,
                                    const std::vector<int>& chain_sign_v,
                                    const std::vector<int>& chain_sign_w, double spacing,
-                                   double reach) {
+                                   double reach, double max_ratio) {
   namespace impl = level_set_sizes_impl;
   CHECK_EQ(v.size(), mesh.number_of_faces());
   CHECK_EQ(w.size(), mesh.number_of_faces());
   CHECK_EQ(frames.area.size(), mesh.number_of_faces());
-  CHECK(spacing > 0 && reach > 0);
-  return {impl::Correct(mesh, frames, cut, v, chain_sign_v, spacing, reach),
-          impl::Correct(mesh, frames, cut, w, chain_sign_w, spacing, reach)};
+  CHECK(spacing > 0 && reach > 0 && max_ratio > 1);
+  const double bound = std::log(max_ratio);
+  return {impl::Correct(mesh, frames, cut, v, chain_sign_v, spacing, reach, bound),
+          impl::Correct(mesh, frames, cut, w, chain_sign_w, spacing, reach, bound)};
 }
 
 }  // namespace archgeo

@@ -23,7 +23,9 @@
 //
 // (A_p a third of the ring's area: the first sum is ∫ curl² dA of the scaled
 // field) by Gauss–Newton steps on the sparse normal equations
-// (SimplicialLDLT). The first sum removes the curl, the second holds the
+// (SimplicialLDLT), with every s̃_v held within ±log(max_ratio) (an active
+// set: spacings between Δw/max_ratio and Δw·max_ratio, so that a cell's
+// area stays within max_ratio^{±2} of Δw²). The first sum removes the curl, the second holds the
 // size to the spacing asked for, so a change of size relaxes back over about
 // `reach` spacings. Vertices on the boundary, singular vertices (the ring's
 // matchings do not compose to +1) and vertices beside a face without a field
@@ -61,12 +63,13 @@ struct LevelSetSizes {
 // v, w: per face, the oriented field directions in the face frame (zero
 // where undefined); `chain_sign_v`, `chain_sign_w`: s_C per cut chain of each
 // family (fields/cut_jumps.h); spacing Δw and reach > 0 in the frames' units
-// and spacings. Preconditions (CHECKed): triangle mesh, sizes match.
+// and spacings; max_ratio > 1. Preconditions (CHECKed): triangle mesh, sizes
+// match.
 LevelSetSizes CorrectLevelSetSizes(const Mesh& mesh, const FaceFrames& frames, const CutGraph& cut,
                                    const std::vector<Eigen::Vector2d>& v,
                                    const std::vector<Eigen::Vector2d>& w,
                                    const std::vector<int>& chain_sign_v,
                                    const std::vector<int>& chain_sign_w, double spacing,
-                                   double reach);
+                                   double reach, double max_ratio);
 
 }  // namespace archgeo

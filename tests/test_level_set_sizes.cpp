@@ -8,7 +8,9 @@
 //    whose spacing grows with r): with a long reach the fitted slope of s̃
 //    against log r is 1 within 5% and the curl drops tenfold;
 //  - h's target R w = −r̂ = −∇r is curl-free: its sizes stay 1;
-//  - a short reach holds g's sizes near the target.
+//  - a short reach holds g's sizes near the target;
+//  - a size ratio bound holds them within it, where they would spread
+//    past it, and the curl still drops.
 #include <cmath>
 #include <vector>
 
@@ -81,7 +83,7 @@ TEST(LevelSetSizes, RadialLinesGetSizesGrowingWithTheRadius) {
   const RadialPatch p = MakeRadialPatch();
   const std::vector<int> signs(p.cut.chains.size(), 1);
   const LevelSetSizes sizes =
-      CorrectLevelSetSizes(p.mesh, p.frames, p.cut, p.v, p.w, signs, signs, 0.05, 1000);
+      CorrectLevelSetSizes(p.mesh, p.frames, p.cut, p.v, p.w, signs, signs, 0.05, 1000, 100);
   const double slope_g = SlopeAgainstLogRadius(p, sizes.g.log_size);
   const double slope_h = SlopeAgainstLogRadius(p, sizes.h.log_size);
   std::printf("slope of log size vs log r: g %.4f, h %.4f; g curl %.3e -> %.3e; g sizes "
@@ -100,10 +102,26 @@ TEST(LevelSetSizes, AShortReachHoldsTheSizesToTheSpacing) {
   const RadialPatch p = MakeRadialPatch();
   const std::vector<int> signs(p.cut.chains.size(), 1);
   const LevelSetSizes sizes =
-      CorrectLevelSetSizes(p.mesh, p.frames, p.cut, p.v, p.w, signs, signs, 0.05, 0.2);
+      CorrectLevelSetSizes(p.mesh, p.frames, p.cut, p.v, p.w, signs, signs, 0.05, 0.2, 100);
   EXPECT_GT(sizes.g.size_p5, 0.97);
   EXPECT_LT(sizes.g.size_p95, 1.03);
   EXPECT_GT(sizes.g.curl_after, 0.5 * sizes.g.curl_before);
+}
+
+TEST(LevelSetSizes, TheRatioBoundHoldsTheSizesWithinIt) {
+  const RadialPatch p = MakeRadialPatch();
+  const std::vector<int> signs(p.cut.chains.size(), 1);
+  const LevelSetSizes sizes =
+      CorrectLevelSetSizes(p.mesh, p.frames, p.cut, p.v, p.w, signs, signs, 0.05, 1000, 1.2);
+  std::printf("bounded at 1.2: g sizes %.4f-%.4f, curl %.3e -> %.3e\n", sizes.g.size_min,
+              sizes.g.size_max, sizes.g.curl_before, sizes.g.curl_after);
+  // Unbounded they span 0.7-1.44 (the test above); bounded, the band's ends
+  // are reached (face values are means of bounded corners).
+  EXPECT_GE(sizes.g.size_min, 1 / 1.2 - 1e-9);
+  EXPECT_LE(sizes.g.size_max, 1.2 + 1e-9);
+  EXPECT_LT(sizes.g.size_min, 0.85);
+  EXPECT_GT(sizes.g.size_max, 1.18);
+  EXPECT_LT(sizes.g.curl_after, 0.7 * sizes.g.curl_before);
 }
 
 }  // namespace ARCHGEO_UNITY_ID

@@ -214,6 +214,9 @@ std::vector<Key> LevelSetKeys() {
                     "vertex that make the field scaled by them curl-free, held to the spacing over "
                     "about this many spacings, scale eq. 5's target (even panels that vary "
                     "smoothly where the field has curl); 0 = off"),
+          NumberKey("level_sets.size_ratio_max", 2, 1.01, 100,
+                    "with size_reach: each family's spacing held between 1/ratio and ratio "
+                    "times the spacing asked for (cell areas within ratio^±2)"),
           IntegerKey("level_sets.rounds", 1, 1, 100,
                      "Ceres solves per stage (eq. 5; eq. 6; with the jumps fixed)"),
           NumberKey("extraction.merge_fraction", 0.05, 0, 0.5,

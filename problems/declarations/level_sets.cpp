@@ -219,7 +219,8 @@ void InitLevelSets(HookContext& c) {
   std::vector<V2> v_sized = st.v, w_sized = st.w;
   if (const double reach = s.Number("level_sets.size_reach"); reach > 0) {
     st.sizes = CorrectLevelSetSizes(mesh, geo.frames, st.cut, st.v, st.w, st.ov.chain_sign,
-                                    st.ow.chain_sign, st.spacing, reach);
+                                    st.ow.chain_sign, st.spacing, reach,
+                                    s.Number("level_sets.size_ratio_max"));
     for (size_t f = 0; f < faces; ++f) {
       v_sized[f] *= std::exp(-st.sizes.g.log_size[f]);
       w_sized[f] *= std::exp(-st.sizes.h.log_size[f]);
@@ -527,6 +528,7 @@ void FinishLevelSets(HookContext& c) {
                           {"size_max", x.size_max}};
   };
   d["size_correction"] = {{"reach_spacings", c.settings->Number("level_sets.size_reach")},
+                          {"ratio_max", c.settings->Number("level_sets.size_ratio_max")},
                           {"g", size_json(st.sizes.g)},
                           {"h", size_json(st.sizes.h)}};
   char line[768];
