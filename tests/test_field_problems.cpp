@@ -644,39 +644,54 @@ TEST(ConjugateLayout, SmallClosedTorusIsLaidOutOnItsSplitDesign) {
   EXPECT_LE(design.at("distance_max").get<double>(), design.at("band").get<double>());
 }
 
-// conjugate_layout's terms as a spec's `terms:` section, singularity
-// avoidance off (listing terms turns the unlisted ones off): the small
-// cone's 100-face layout then has the bow-tied, reflex panel these tests
-// need (with avoidance, conjugate_layout's default, its layout is valid).
-std::string TermsWithoutAvoidance() {
-  std::string terms = "terms: {";
+// conjugate_layout's settings for the small cone at 100 faces: its terms as
+// a spec's `terms:` section (listing terms turns the unlisted ones off) with
+// singularity avoidance at `avoidance`; not `corrected`: level sets without
+// the curl-corrected sizes (size_reach 0, eq. 5 at 0.1 instead of 1) and
+// the PQ step without the edge floor (min_edge_length.floor 0). Uncorrected
+// and without avoidance, the layout has the bow-tied, reflex panel these
+// tests need, which the PQ step leaves; with avoidance, with the corrected
+// sizes, or with the floor (which lets the PQ step repair the panel:
+// exit 4) the result is valid.
+std::string LayoutSettings(double avoidance, bool corrected) {
+  std::string terms = std::string("level_sets: {target_faces: 100") +
+                      (corrected ? "" : ", size_reach: 0") + "}\nterms: {";
   for (const TermUse& t : FindProblem("conjugate_layout")->terms) {
     char weight[40];
-    std::snprintf(weight, sizeof weight, "%.17g", t.term == "tcd_singularity_avoidance" ? 0.0 : t.weight);
-    terms += t.term + ": " + weight + ", ";
+    std::snprintf(weight, sizeof weight, "%.17g",
+                  t.term == "tcd_singularity_avoidance"         ? avoidance
+                  : t.term == "level_set_alignment" && !corrected ? 0.1
+                                                                  : t.weight);
+    const bool floorless = t.term == "min_edge_length" && !corrected;
+    terms += t.term + ": " + (floorless ? "{weight: " + std::string(weight) + ", floor: 0}" : weight) + ", ";
   }
   return terms.substr(0, terms.size() - 2) + "}\n";
 }
+std::string UncorrectedLayout(double avoidance = 0) { return LayoutSettings(avoidance, false); }
 
 // Singularity avoidance is on in conjugate_layout where the field is free
 // (issue 42, item 1), with a fallback: a layout made with it that has a
 // panel no optimisation repairs is made again without it. On the small
-// cone at 100 faces the field with avoidance gives a buildable layout (exit
-// 0); without it, the layout has a bow-tied, reflex panel (exit 5, the
-// tests below).
+// cone at 100 faces, with the level sets uncorrected, the field with
+// avoidance gives a buildable layout (exit 0); without it, the layout has
+// a bow-tied, reflex panel (exit 5, the tests below). The curl-corrected
+// sizes (level_sets.size_reach, on by default) make it buildable without
+// avoidance too.
 TEST(ConjugateLayout, SingularityAvoidanceMakesTheConeLayoutBuildable) {
   const Mesh design = RevolutionTriangles(RevolutionProfile{}, 24, 8);
   MeshInputs inputs;
   inputs.mesh = &design;
-  const std::string spec = "problem: conjugate_layout\nlevel_sets: {target_faces: 100}\n";
-  const RunResult with = RunSpec(ParseSpec(spec, "cone.yaml"), {}, inputs);
-  const RunResult without = RunSpec(ParseSpec(spec + TermsWithoutAvoidance(), "cone.yaml"), {}, inputs);
+  const std::string spec = "problem: conjugate_layout\n";
+  const RunResult with = RunSpec(ParseSpec(spec + UncorrectedLayout(1), "cone.yaml"), {}, inputs);
+  const RunResult without = RunSpec(ParseSpec(spec + UncorrectedLayout(), "cone.yaml"), {}, inputs);
+  const RunResult sized = RunSpec(ParseSpec(spec + LayoutSettings(0, true), "cone.yaml"), {}, inputs);
   const nlohmann::json& avoidance = with.report.at("details").at("net").at("singularity_avoidance");
   EXPECT_EQ(avoidance.at("weight").get<double>(), 1.0);
   EXPECT_TRUE(avoidance.at("kept").get<bool>()) << avoidance.dump();
   EXPECT_EQ(with.exit_code, 0) << with.summary;
   EXPECT_EQ(without.exit_code, 5) << without.summary;
   EXPECT_FALSE(without.report.at("details").at("net").at("singularity_avoidance").at("kept").get<bool>());
+  EXPECT_EQ(sized.exit_code, 0) << sized.summary;
 }
 
 // A layout is archgeo's own work, not the user's input (issue 42, item 6):
@@ -696,8 +711,9 @@ TEST(ConjugateLayout, LayoutDefectsAreNotAcceptedAsInputDefects) {
   inputs.mesh = &design;
   inputs.output = &output;
   const RunResult run = RunSpec(
-      ParseSpec("problem: conjugate_layout\nlevel_sets: {target_faces: 100}\n"
-                "validity: {allow_input_defects: true}\n" + TermsWithoutAvoidance(), "cone.yaml"),
+      ParseSpec("problem: conjugate_layout\nvalidity: {allow_input_defects: true}\n" +
+                    UncorrectedLayout(),
+                "cone.yaml"),
       {}, inputs);
   const nlohmann::json& v = run.report.at("validity");
   const nlohmann::json& d = v.at("design_surface");
@@ -746,10 +762,9 @@ TEST_F(ConjugateLayoutTest, SolveJudgesALayoutAsMeasureDoes) {
   WriteMesh(Path("cone.obj"), RevolutionTriangles(RevolutionProfile{}, 24, 8));
   const std::string spec =
       WriteFile("spec.yaml", "mesh: cone.obj\nproblem: conjugate_layout\n"
-                             "level_sets: {target_faces: 100}\n"
                              "validity: {allow_input_defects: true}\n"
                              "output: {mesh: out.ply, report: r.json}\n" +
-                             TermsWithoutAvoidance());
+                             UncorrectedLayout());
   const RunResult run = RunSpec(ReadSpec(spec), {});
   const RunResult measured = MeasureFiles(Path("out.ply"), Path("cone.obj"), false, false);
   const nlohmann::json& solved = run.report.at("validity").at("design_surface");

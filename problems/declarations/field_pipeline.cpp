@@ -155,7 +155,7 @@ std::vector<Key> FieldKeys() {
 }
 
 std::vector<TermUse> LevelSetTerms() {
-  return {{"level_set_alignment", 0.1},
+  return {{"level_set_alignment", 1},
           {"level_set_normalised", 1},
           {"level_set_conjugacy", 1},
           {"level_set_jump", 100},
@@ -209,7 +209,7 @@ std::vector<Key> LevelSetKeys() {
                     "no value moves by more than this many spacings from the level sets solved "
                     "without it (else the level sets do not follow the boundary there and "
                     "holding it would bend the rows beside it; the run is left free and counted)"),
-          NumberKey("level_sets.size_reach", 0, 0, 1e6,
+          NumberKey("level_sets.size_reach", 3, 0, 1e6,
                     "curl correction of the level sets' sizes (thesis §8.1.4): log sizes per "
                     "vertex that make the field scaled by them curl-free, held to the spacing over "
                     "about this many spacings, scale eq. 5's target (even panels that vary "

@@ -24,8 +24,8 @@
 //  eq5      level_set_alignment (eq. 5, unit v: even spacing Δw between the
 //           levels) with the jumps (level_set_jump, level_set_branch_point);
 //  eq6      from there, level_set_normalised (eq. 6: only the direction of
-//           ∇g) with level_set_alignment at its (smaller) weight keeping the
-//           spacing, level_set_conjugacy (eq. 7: conjugacy of the level sets
+//           ∇g) with level_set_alignment keeping the spacing (the
+//           curl-corrected one, level_sets.size_reach), level_set_conjugacy (eq. 7: conjugacy of the level sets
 //           through M_f, weight 1) and the jumps;
 //  rounded  the jump constants rounded (fields/cut_jumps.h RoundJumps): chains
 //           from ±1/2 singularities to even (level_sets.rounding: even; quads
@@ -77,7 +77,7 @@ namespace ld = level_set_data;
 using V2 = Eigen::Vector2d;
 using V3 = Eigen::Vector3d;
 
-constexpr double kSingularityReach = 1.5;  // spacings
+constexpr double kSingularityReach = 1.5;  // local spacings
 
 struct LevelSetState : ProblemState {
   std::shared_ptr<const FieldResult> field;
@@ -553,13 +553,29 @@ void FinishLevelSets(HookContext& c) {
     for (FaceIndex f : x.mesh.faces()) {
       if (x.mesh.degree(f) != 4) irregular.push_back(Centroid(x.mesh, f));
     }
+    // In the local spacing: the larger family's curl-corrected size at the
+    // singular vertex (mean over its faces), Δw itself without sizes.
+    const auto local_spacing = [&](VertexIndex v) {
+      const std::vector<double>& g = st.sizes.g.log_size;
+      const std::vector<double>& h = st.sizes.h.log_size;
+      if (g.size() != mesh.number_of_faces() || h.size() != g.size()) return st.spacing;
+      double sum = 0;
+      int n = 0;
+      for (FaceIndex f : mesh.faces_around_target(mesh.halfedge(v))) {
+        if (f == Mesh::null_face()) continue;
+        sum += std::exp(std::max(g[f.idx()], h[f.idx()]));
+        ++n;
+      }
+      return n > 0 ? st.spacing * sum / n : st.spacing;
+    };
     int matched = 0;
     double farthest = 0;
     for (const Singularity& s : st.field->field.singularities) {
       double best = std::numeric_limits<double>::infinity();
       for (const V3& p : irregular) best = std::min(best, (p - s.position).norm());
-      farthest = std::max(farthest, best / st.spacing);
-      if (best <= kSingularityReach * st.spacing) ++matched;
+      const double local = local_spacing(s.vertex);
+      farthest = std::max(farthest, best / local);
+      if (best <= kSingularityReach * local) ++matched;
     }
     MetricsOptions metrics_options;
     const Metrics m = ComputeMetrics(x.mesh, c.reference, nullptr, metrics_options);
