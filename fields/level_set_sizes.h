@@ -25,9 +25,9 @@
 // field) by Gauss–Newton steps on the sparse normal equations
 // (SimplicialLDLT), with every s̃_v held within ±log(max_ratio) (an active
 // set: spacings between Δw/max_ratio and Δw·max_ratio, so that a cell's
-// area stays within max_ratio^{±2} of Δw²). The first sum removes the curl, the second holds the
-// size to the spacing asked for, so a change of size relaxes back over about
-// `reach` spacings. Vertices on the boundary, singular vertices (the ring's
+// area stays within max_ratio^{±2} of Δw²). The first sum removes the curl,
+// the second holds the size to the spacing asked for, so a change of size
+// relaxes back over about `reach` spacings. Vertices on the boundary, singular vertices (the ring's
 // matchings do not compose to +1) and vertices beside a face without a field
 // carry no condition. The result scales v and w of the alignment term
 // (level_set_alignment): its target R v e^{−s̃} is then nearly integrable, so
