@@ -368,7 +368,9 @@ TEST(Terms, MinEdgeLengthFloorHoldsEdgesThatStartShort) {
     const auto s = SolveYaml("problem: custom\nterms: {spring: {rest: zero}, min_edge_length: "
                              "{weight: 1000, floor: " + floor + "}}\n"
                              "schedule: {outer_iterations: 4}\n", quad);
-    if (floor != "0") EXPECT_TRUE(s->loop.log.back().valid) << s->loop.log.back().invalid;
+    if (floor != "0") {
+      EXPECT_TRUE(s->loop.log.back().valid) << s->loop.log.back().invalid;
+    }
     return EdgeLengthSpread(s->output).min / mean;
   };
   // Without the floor the barrier lets them reach half their length, just
