@@ -569,12 +569,13 @@ void FinishLevelSets(HookContext& c) {
       return n > 0 ? st.spacing * sum / n : st.spacing;
     };
     int matched = 0;
-    double farthest = 0;
+    double farthest = 0, farthest_nominal = 0;
     for (const Singularity& s : st.field->field.singularities) {
       double best = std::numeric_limits<double>::infinity();
       for (const V3& p : irregular) best = std::min(best, (p - s.position).norm());
       const double local = local_spacing(s.vertex);
       farthest = std::max(farthest, best / local);
+      farthest_nominal = std::max(farthest_nominal, best / st.spacing);
       if (best <= kSingularityReach * local) ++matched;
     }
     MetricsOptions metrics_options;
@@ -604,6 +605,7 @@ void FinishLevelSets(HookContext& c) {
         {"singularities", st.field->field.singularities.size()},
         {"singularities_matched", matched},
         {"singularity_distance_max_spacings", farthest},
+        {"singularity_distance_max_nominal_spacings", farthest_nominal},
         {"surface_distance_max_relative", m.surface_distance_max / diagonal},
         {"hausdorff_relative", m.hausdorff / diagonal},
         {"pq_normalized_max", m.pq_normalized_max},
