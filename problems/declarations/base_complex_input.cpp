@@ -15,6 +15,7 @@
 #include "io/io.h"
 #include "mesh/similarity.h"
 #include "spectral/quad_relax.h"
+#include "spectral/quad_untangle.h"
 
 namespace archgeo {
 namespace {
@@ -199,7 +200,8 @@ void CheckQuadComplexChartKeys(const Settings& s) {
 
 ChartStep RunChartStep(const Settings& s, const Mesh& design,
                        const std::vector<Eigen::Vector3d>& points,
-                       const std::vector<std::array<int, 3>>& triangles, const BaseComplex& base) {
+                       const std::vector<std::array<int, 3>>& triangles, const BaseComplex& base,
+                       bool move_nodes) {
   const std::string weights = s.String("charts.weights");
   const std::string& strips = s.String("charts.boundary_triangles");
   bool quad_face = false;
@@ -216,12 +218,19 @@ ChartStep RunChartStep(const Settings& s, const Mesh& design,
   const double diagonal = PrincipalBoxDiagonal(design);
   const ReferenceSurface surface(design);
   const GridLineKinks mapped = MeasureGridLineKinks(r.quads.points, r.quads.quads);
-  RelaxQuads(r.quads.quads, int(s.Integer("charts.smoothing")),
-             [&surface](const Eigen::Vector3d& p) {
-               const Vec3 c = surface.Closest(Vec3{p.x(), p.y(), p.z()}).point;
-               return Eigen::Vector3d(c[0], c[1], c[2]);
-             },
-             &r.quads.points, r.quads.centre_vertex);
+  const auto onto = [&surface](const Eigen::Vector3d& p) {
+    const Vec3 c = surface.Closest(Vec3{p.x(), p.y(), p.z()}).point;
+    return Eigen::Vector3d(c[0], c[1], c[2]);
+  };
+  RelaxQuads(r.quads.quads, int(s.Integer("charts.smoothing")), onto, &r.quads.points,
+             r.quads.centre_vertex);
+  const UntangleResult untangled = UntangleQuads(
+      r.quads.quads,
+      [&surface](const Eigen::Vector3d& p) {
+        const ReferenceSurface::SurfacePoint c = surface.Closest(Vec3{p.x(), p.y(), p.z()});
+        return SurfaceSample{{c.point[0], c.point[1], c.point[2]}, {c.normal[0], c.normal[1], c.normal[2]}};
+      },
+      &r.quads.points, r.quads.centre_vertex, move_nodes);
   const GridLineKinks relaxed = MeasureGridLineKinks(r.quads.points, r.quads.quads);
   double distance = 0;
   for (const Eigen::Vector3d& p : r.quads.points) {
@@ -234,6 +243,9 @@ ChartStep RunChartStep(const Settings& s, const Mesh& design,
                                                 {"output", relaxed.max_degrees}};
   out.details["grid_line_kink_mean_degrees"] = {{"mapped", mapped.mean_degrees},
                                                  {"output", relaxed.mean_degrees}};
+  out.details["bent_quads"] = {{"relaxed", untangled.bent_before},
+                               {"untangled", untangled.bent_after},
+                               {"vertex_moves", untangled.moves}};
   out.invalid = BcInvalid(r, distance / diagonal);
   char line[768];
   std::snprintf(line, sizeof line,
@@ -251,6 +263,13 @@ ChartStep RunChartStep(const Settings& s, const Mesh& design,
                   "(%.2f°) as mapped\n",
                   relaxed.max_degrees, relaxed.mean_degrees, int(s.Integer("charts.smoothing")),
                   mapped.max_degrees, mapped.mean_degrees);
+    out.headline += line;
+  }
+  if (untangled.bent_before > 0) {
+    std::snprintf(line, sizeof line,
+                  "quads with a corner bent inward: %d after smoothing, %d after unfolding (%d vertex "
+                  "moves)\n",
+                  untangled.bent_before, untangled.bent_after, untangled.moves);
     out.headline += line;
   }
   return out;

@@ -65,9 +65,13 @@ struct ChartStep {
 // refinement of it: the output is judged against `design`) → charts →
 // parameterisation → the all-quad mesh, by the chart keys of `s`. Throws
 // BaseComplexError for a complex the surface cannot carry and
-// std::invalid_argument for an odd charts.n with a triangle face.
+// std::invalid_argument for an odd charts.n with a triangle face. Folded
+// quads are unfolded (spectral/quad_untangle.h); `move_nodes`: the base
+// complex's nodes may move on the surface for it (nodes a function's
+// critical points placed, not the designer).
 ChartStep RunChartStep(const Settings& s, const Mesh& design,
                        const std::vector<Eigen::Vector3d>& points,
-                       const std::vector<std::array<int, 3>>& triangles, const BaseComplex& base);
+                       const std::vector<std::array<int, 3>>& triangles, const BaseComplex& base,
+                       bool move_nodes);
 
 }  // namespace archgeo

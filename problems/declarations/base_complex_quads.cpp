@@ -143,7 +143,7 @@ void BcNet(HookContext& c) {
   }
   ChartStep step;
   try {
-    step = RunChartStep(s, design, points, triangles, user.complex);
+    step = RunChartStep(s, design, points, triangles, user.complex, false);
   } catch (const BaseComplexError& e) {
     if (decimate > 0) {
       throw s.Error("base_complex.decimate",

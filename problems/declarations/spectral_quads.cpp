@@ -183,7 +183,7 @@ void SqNet(HookContext& c) {
     if (fault.empty()) {
       const BaseComplex base = QuasiDualBaseComplex(st.base);
       try {
-        step = RunChartStep(s, design, m.points, m.triangles, base);
+        step = RunChartStep(s, design, m.points, m.triangles, base, true);
         st.quads = true;
       } catch (const std::exception& e) {  // BaseComplexError, a failed factorisation
         fault = std::string("its charts fail: ") + e.what();

@@ -391,7 +391,7 @@ void WaveQuads(HookContext& c) {
   const BaseComplex base = QuasiDualBaseComplex(q);
   ChartStep step;
   try {
-    step = RunChartStep(*c.settings, *c.input, w.points, w.triangles, base);
+    step = RunChartStep(*c.settings, *c.input, w.points, w.triangles, base, true);
   } catch (const std::exception& e) {  // BaseComplexError, a failed factorisation
     c.missed = std::string("output.quads: the charts of the quasi-dual fail: ") + e.what();
     return;
