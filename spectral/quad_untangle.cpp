@@ -170,11 +170,11 @@ bool UntangleVertex(const UntangleMesh& m, const QuadList& quads,
   const Eigen::Vector3d e1 = normal.cross(any).normalized(), e2 = normal.cross(e1);
   double best = WorstAround(m, quads, p, *normals, v);
   bool moved = false;
-  for (double h = 0.25 * mean_edge; h > mean_edge / 256;) {
+  for (double h = 0.5 * mean_edge; h > mean_edge / 256;) {
     const Eigen::Vector3d start = p[v], start_normal = (*normals)[v];
     bool improved = false;
-    for (int d = 0; d < 8 && !improved; ++d) {
-      const double a = kUntanglePi * d / 4;
+    for (int d = 0; d < 16 && !improved; ++d) {
+      const double a = kUntanglePi * d / 8;
       const SurfaceSample sample = onto(start + h * (std::cos(a) * e1 + std::sin(a) * e2));
       p[v] = sample.point;
       (*normals)[v] = sample.normal;

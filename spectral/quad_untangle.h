@@ -15,7 +15,8 @@
 // the quads round it — a corner's quality min(θ, 180° − θ), θ its interior
 // angle in the plane of the quad's normal (as validity measures it), −180°
 // for a quad facing away from the surface's normals at its corners — by a
-// compass search from a quarter of its mean edge down to 1/256 of it. A
+// compass search (16 directions) from half its mean edge down to 1/256 of
+// it. A
 // move is kept only when that worst corner improves, no edge at the vertex
 // falls below half its length as given or a quarter of the mean edge
 // (an edge shorter than that as given: below its length), and the quads round the vertex and
