@@ -260,7 +260,8 @@ int main(int argc, char** argv) {
   spectral->add_option("--edge-length", spectral_request.edge_length,
                        "Mark the one whose charts are nearest this size (file units)");
   spectral->add_option("--complex", spectral_request.complex_out,
-                       "Write the Morse-Smale complex of --eigenfunction as OBJ polylines");
+                       "Write the Morse-Smale complex of --eigenfunction as OBJ polylines (an open "
+                       "mesh: of its double across the boundary)");
   spectral->add_option("--quasi-dual", spectral_request.quasi_dual_out,
                        "Write its quasi-dual quad base complex as an OBJ mesh");
   spectral->add_option("--eigenfunction", spectral_request.eigenfunction,

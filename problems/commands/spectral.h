@@ -95,10 +95,11 @@ struct SpectralComplexResult {
   std::string why;     // when not valid: one line (invalid cells, arcs not placed)
 };
 
-// Builds the complex of `request.eigenfunction` on a closed mesh, writes
-// the OBJ files asked for (also when the complex is not valid, for
+// Builds the complex of `request.eigenfunction` (on a mesh with boundary:
+// of its double across the boundary, problems/declarations/surface_complex.h),
+// writes the OBJ files asked for (also when the complex is not valid, for
 // inspection) and returns the counts. Throws InputError for a bad option
-// (named) or a mesh with boundary.
+// (named) or a mesh whose double is not a closed manifold.
 SpectralComplexResult SpectralComplex(const SpectralRequest& request);
 
 }  // namespace archgeo

@@ -1,7 +1,9 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `archgeo spectral MESH --complex OUT.obj --eigenfunction K`: the
-// Morse–Smale complex of eigenfunction K (spectral/morse_smale.h).
+// Morse–Smale complex of eigenfunction K (spectral/morse_smale.h), of the
+// mesh doubled across its boundary when it has one
+// (problems/declarations/surface_complex.h).
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -12,6 +14,7 @@
 #include "io/io.h"
 #include "io/output_files.h"
 #include "problems/commands/spectral.h"
+#include "problems/declarations/surface_complex.h"
 #include "spectral/eigenpairs.h"
 #include "spectral/morse_smale.h"
 
@@ -71,9 +74,6 @@ SpectralComplexResult SpectralComplex(const SpectralRequest& q) {
   const Mesh mesh = TriangulatedCopy(ReadMesh(q.mesh));
   const SpectralMesh m = SpectralArrays(mesh);
   ComplexCheckRequest(q, int(m.points.size()));
-  if (m.has_boundary) {
-    throw InputError(q.mesh, 0, "--complex", "needs a closed mesh (this one has a boundary)");
-  }
   Eigenpairs pairs;
   try {
     const Laplacian l = BuildLaplacian(m.points, m.triangles,
@@ -90,17 +90,20 @@ SpectralComplexResult SpectralComplex(const SpectralRequest& q) {
   MorseSmaleOptions options;
   options.persistence = q.persistence;
   options.target_extrema = q.cancel_to;
-  const MorseSmaleComplex c = BuildMorseSmale(m.points, m.triangles, m.rings, f, options);
-  const QuadBaseComplex dual = QuasiDual(c, m.points);
+  const SurfaceComplex s = BuildSurfaceComplex(mesh, f, options);
+  if (!s.built) throw InputError(q.mesh, 0, "--complex", s.error);
+  const MorseSmaleComplex& c = s.complex;
+  const QuadBaseComplex& dual = s.quasi_dual;
+  const std::string function = "eigenfunction " + std::to_string(q.eigenfunction);
   StagedOutputs staged({q.mesh});
   if (!q.complex_out.empty()) {
     staged.Write(q.complex_out, "--complex", [&](const std::string& path) {
-      WriteTextFile(path, MorseSmaleArcsObj(c), "--complex");
+      WriteTextFile(path, SurfaceComplexArcsObj(s, function), "--complex");
     });
   }
   if (!q.quasi_dual_out.empty()) {
     staged.Write(q.quasi_dual_out, "--quasi-dual", [&](const std::string& path) {
-      WriteTextFile(path, QuasiDualObj(dual), "--quasi-dual");
+      WriteTextFile(path, SurfaceQuasiDualObj(s), "--quasi-dual");
     });
   }
   staged.Commit();
@@ -119,6 +122,15 @@ SpectralComplexResult SpectralComplex(const SpectralRequest& q) {
                 dual.degenerate_quads, dual.irregular_vertices, dual.euler);
   SpectralComplexResult out;
   out.text = text;
+  if (s.doubled) {
+    out.text += "the counts are those of the mesh doubled across its boundary (V - E + F = " +
+                std::to_string(2 * m.euler) +
+                "): nodes, arcs and quads on the boundary once, the others twice\n";
+  }
+  if (s.refinements > 0) {
+    out.text += "the arcs lie on the mesh refined " + std::to_string(s.refinements) +
+                " times (the same critical points)\n";
+  }
   out.valid = c.valid;
   if (!c.valid) {
     out.why = "the complex of eigenfunction " + std::to_string(q.eigenfunction) +

@@ -5,7 +5,9 @@
 //   cotangent (or normalised) Laplacian eigenpairs (spectral/laplacian.h,
 //   spectral/eigenpairs.h) → eigenfunction K (spectral.eigenfunction) or the
 //   automatic choice → its Morse–Smale complex with saddle–extremum pairs
-//   of persistence ≤ spectral.persistence cancelled (spectral/morse_smale.h)
+//   of persistence ≤ spectral.persistence cancelled (spectral/morse_smale.h;
+//   on the mesh refined where its arcs cannot all be placed apart,
+//   problems/declarations/surface_complex.h)
 //   → the quasi-dual as a base complex (nodes: the extrema's vertices) →
 //   charts → parameterisation → extraction (the step base_complex_quads
 //   uses, problems/declarations/base_complex_input.h) → the all-quad mesh,
@@ -34,6 +36,7 @@
 #include "io/output_files.h"
 #include "problems/commands/spectral.h"
 #include "problems/declarations/base_complex_input.h"
+#include "problems/declarations/surface_complex.h"
 #include "problems/runtime/model.h"
 #include "spectral/eigenpairs.h"
 
@@ -46,6 +49,7 @@ struct SqState : ProblemState {
   Mesh design;              // the input, for output.function
   std::vector<double> phi;  // the chosen (or last tried) eigenfunction, max |φ| = 1
   MorseSmaleComplex complex;
+  int refinements = 0;      // the mesh the complex lies on: the input refined so often
   QuadBaseComplex dual;
   QuadBaseComplex base;     // the base complex charted: the quasi-dual, or the complex itself
   bool primal = false;      // base is the complex itself (its quasi-dual repeats a corner)
@@ -163,8 +167,10 @@ void SqNet(HookContext& c) {
     Eigen::VectorXd f = pairs.vectors.col(cand.k);
     f /= std::max(f.cwiseAbs().maxCoeff(), 1e-300);
     st.phi.assign(f.data(), f.data() + f.size());
-    st.complex = BuildMorseSmale(m.points, m.triangles, m.rings, f, options);
-    st.dual = QuasiDual(st.complex, m.points);
+    const SurfaceComplex sc = BuildSurfaceComplex(design, f, options);
+    st.complex = sc.complex;
+    st.refinements = sc.refinements;
+    st.dual = sc.quasi_dual;
     st.base = st.dual;
     st.primal = false;
     chosen = &cand;
@@ -173,7 +179,7 @@ void SqNet(HookContext& c) {
       // The quasi-dual repeats a corner (a saddle with two arcs to one
       // extremum, a wave round the tube); the complex's own cells are
       // quads with four distinct corners (§7.1.2): chart those.
-      QuadBaseComplex primal = PrimalQuads(st.complex, m.points);
+      QuadBaseComplex primal = PrimalQuads(st.complex, sc.points);
       if (primal.degenerate_quads == 0) {
         st.base = std::move(primal);
         st.primal = true;
@@ -183,7 +189,7 @@ void SqNet(HookContext& c) {
     if (fault.empty()) {
       const BaseComplex base = QuasiDualBaseComplex(st.base);
       try {
-        step = RunChartStep(s, design, m.points, m.triangles, base, true);
+        step = RunChartStep(s, design, sc.points, sc.triangles, base, true);
         st.quads = true;
       } catch (const std::exception& e) {  // BaseComplexError, a failed factorisation
         fault = std::string("its charts fail: ") + e.what();
@@ -215,6 +221,7 @@ void SqNet(HookContext& c) {
         {"multi_saddles", cp.multi_saddles},
         {"euler_sum", cp.EulerSum()}}},
       {"complex", SqComplexDetails(st.complex, st.dual)},
+      {"refinements", st.refinements},
       {"base", st.primal ? "complex" : "quasi_dual"},
       {"base_quads", st.base.quads.size()},
       {"base_irregular_vertices", st.base.irregular_vertices},

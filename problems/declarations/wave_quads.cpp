@@ -29,7 +29,7 @@
 // tree from a random vertex with random angles there (wave.start
 // integrated, problems/declarations/wave_start.h) or random angles at every
 // vertex. After each round the Morse–Smale complex of cos θ cos φ
-// (problems/declarations/wave_complex.h), pairs of persistence ≤
+// (problems/declarations/surface_complex.h), pairs of persistence ≤
 // wave.persistence cancelled, and its quasi-dual; the round kept is the one
 // whose complex is a valid quad complex with the lowest E (none valid: the
 // lowest E, measure wave_energy, and exit 4). The report counts the valid
@@ -59,7 +59,7 @@
 #include "mesh/eigen_point.h"
 #include "io/io.h"
 #include "problems/declarations/base_complex_input.h"
-#include "problems/declarations/wave_complex.h"
+#include "problems/declarations/surface_complex.h"
 #include "problems/declarations/wave_field.h"
 #include "problems/declarations/wave_size_curl.h"
 #include "problems/declarations/wave_start.h"
@@ -74,14 +74,14 @@ namespace sd = size_data;
 struct WaveState : ProblemState {
   ElementSet edges, vertices, features;
   int restart = 0;
-  std::shared_ptr<const WaveComplex> complex;
+  std::shared_ptr<const SurfaceComplex> complex;
   // Per start (round): whether its complex was valid; the valid start of
   // lowest E, its wave and its complex.
   std::vector<bool> valid_starts;
   std::vector<double> start_energies;
   int best_valid = 0;  // 1-based start, 0 = none
   std::vector<double> best_valid_f;
-  std::shared_ptr<const WaveComplex> best_valid_complex;
+  std::shared_ptr<const SurfaceComplex> best_valid_complex;
   double seconds_field = 0, seconds_start = 0, seconds_complex = 0;
   // The size fields: the guidance field, the designated sizes (canonical),
   // the sizes the wave uses (corrected with wave.curl_correction) and the
@@ -322,13 +322,14 @@ double WaveFeatureMax(HookContext& c) {
 }
 
 // The Morse–Smale complex of the current wave's first component.
-std::shared_ptr<const WaveComplex> WaveBuild(HookContext& c) {
+std::shared_ptr<const SurfaceComplex> WaveBuild(HookContext& c) {
   const auto t0 = std::chrono::steady_clock::now();
   const Mesh& mesh = *c.input;
   Eigen::VectorXd wave(Eigen::Index(mesh.number_of_vertices()));
   for (Eigen::Index v = 0; v < wave.size(); ++v) wave[v] = c.store->At("wave_f", int(v))[0];
-  auto complex = std::make_shared<WaveComplex>(
-      BuildWaveComplex(mesh, wave, c.settings->Number("wave.persistence")));
+  MorseSmaleOptions options;
+  options.persistence = c.settings->Number("wave.persistence");
+  auto complex = std::make_shared<SurfaceComplex>(BuildSurfaceComplex(mesh, wave, options));
   WaveSt(c).seconds_complex += WaveSecondsSince(t0);
   return complex;
 }
@@ -337,7 +338,7 @@ std::shared_ptr<const WaveComplex> WaveBuild(HookContext& c) {
 // (KeptWaveStart).
 void WaveAfterStart(HookContext& c) {
   WaveState& st = WaveSt(c);
-  const std::shared_ptr<const WaveComplex> complex = WaveBuild(c);
+  const std::shared_ptr<const SurfaceComplex> complex = WaveBuild(c);
   st.valid_starts.push_back(complex->built && complex->complex.valid);
   st.start_energies.push_back(WaveEnergy(c));
   const int kept = KeptWaveStart(st.valid_starts, st.start_energies);
@@ -380,7 +381,7 @@ void WaveKeepResult(HookContext& c) {
 // gives an invalid mesh is a missed goal.
 void WaveQuads(HookContext& c) {
   WaveState& st = WaveSt(c);
-  const WaveComplex& w = *st.complex;
+  const SurfaceComplex& w = *st.complex;
   const QuadBaseComplex& q = w.quasi_dual;
   if (q.degenerate_quads > 0 || q.missing_saddles > 0) {
     c.missed = "output.quads: the quasi-dual has " + std::to_string(q.degenerate_quads) +
@@ -405,7 +406,7 @@ void WaveQuads(HookContext& c) {
 void FinishWave(HookContext& c) {
   WaveState& st = WaveSt(c);
   WaveKeepResult(c);
-  const std::shared_ptr<const WaveComplex> complex = st.complex;
+  const std::shared_ptr<const SurfaceComplex> complex = st.complex;
   const MorseSmaleComplex& m = complex->complex;
   const QuadBaseComplex& q = complex->quasi_dual;
   int irregular_nodes = 0;  // extrema of the complex whose valence (arcs) is not 4
@@ -484,8 +485,9 @@ void WriteWave(HookContext& c) {
                               "no complex to write: " + (st.complex ? st.complex->error : ""));
     }
     WriteTextFile(it->second,
-                  std::string(key) == "complex" ? WaveComplexArcsObj(*st.complex)
-                                                : WaveQuasiDualObj(*st.complex),
+                  std::string(key) == "complex"
+                      ? SurfaceComplexArcsObj(*st.complex, "the standing wave cos(theta) cos(phi)")
+                      : SurfaceQuasiDualObj(*st.complex),
                   std::string("output.") + key);
   }
 }

@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "problems/declarations/wave_complex.h"
+#include "problems/declarations/surface_complex.h"
 
 #include <cstdio>
 #include <stdexcept>
@@ -17,12 +17,12 @@ namespace {
 
 // Refinements at most while arcs cannot all be placed: the faces split at
 // their centroids, then every edge at its midpoint.
-constexpr int kWaveRefinements = 2;
+constexpr int kComplexRefinements = 2;
 
 // Splits every interior edge between two boundary vertices (a chord, e.g.
 // the inner edge of a corner triangle) at its midpoint, where f is the mean
 // of its ends: otherwise the double would hold that edge twice.
-void WaveSplitChords(Mesh* m, std::vector<double>* f) {
+void ComplexSplitChords(Mesh* m, std::vector<double>* f) {
   std::vector<HalfedgeIndex> chords;
   for (EdgeIndex e : m->edges()) {
     const HalfedgeIndex h = m->halfedge(e);
@@ -43,7 +43,7 @@ void WaveSplitChords(Mesh* m, std::vector<double>* f) {
 
 // `mesh` (triangles) glued to its mirror copy along the boundary; `original`
 // gets each vertex's source. False when the double is not a closed manifold.
-bool WaveDouble(const Mesh& mesh, Mesh* out, std::vector<int>* original) {
+bool ComplexDouble(const Mesh& mesh, Mesh* out, std::vector<int>* original) {
   const size_t n = mesh.number_of_vertices();
   std::vector<int> mirror(n, -1);
   for (VertexIndex v : mesh.vertices()) {
@@ -89,7 +89,7 @@ bool WaveDouble(const Mesh& mesh, Mesh* out, std::vector<int>* original) {
 // above v exactly when u is) and no midpoint is critical: the same critical
 // points, with twice as many vertices between them for the arcs
 // (Gebreiter 2012, §7.1.3: refinement where separatrices still merge).
-Mesh WaveRefined(const Mesh& m, std::vector<double>* f) {
+Mesh ComplexRefined(const Mesh& m, std::vector<double>* f) {
   Mesh out;
   for (VertexIndex v : m.vertices()) out.add_vertex(m.point(v));
   std::vector<int> midpoint(m.number_of_edges(), -1);
@@ -115,9 +115,9 @@ Mesh WaveRefined(const Mesh& m, std::vector<double>* f) {
 }
 
 // `m` with a vertex at every triangle's centroid (1 to 3), `f` linearly: as
-// WaveRefined, the same critical points; every old vertex's valence doubles,
+// ComplexRefined, the same critical points; every old vertex's valence doubles,
 // so more arcs can reach an extremum apart.
-Mesh WaveCentroidSplit(const Mesh& m, std::vector<double>* f) {
+Mesh ComplexCentroidSplit(const Mesh& m, std::vector<double>* f) {
   Mesh out;
   for (VertexIndex v : m.vertices()) out.add_vertex(m.point(v));
   for (FaceIndex t : m.faces()) {
@@ -131,7 +131,7 @@ Mesh WaveCentroidSplit(const Mesh& m, std::vector<double>* f) {
   return out;
 }
 
-std::string WaveObjPoint(const Eigen::Vector3d& p) {
+std::string ComplexObjPoint(const Eigen::Vector3d& p) {
   char line[96];
   std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", p.x(), p.y(), p.z());
   return line;
@@ -139,8 +139,9 @@ std::string WaveObjPoint(const Eigen::Vector3d& p) {
 
 }  // namespace
 
-WaveComplex BuildWaveComplex(const Mesh& mesh, const Eigen::VectorXd& f, double persistence) {
-  WaveComplex out;
+SurfaceComplex BuildSurfaceComplex(const Mesh& mesh, const Eigen::VectorXd& f,
+                                   const MorseSmaleOptions& options) {
+  SurfaceComplex out;
   Mesh triangles = TriangulatedCopy(mesh);
   std::vector<double> values(f.data(), f.data() + f.size());
   Mesh closed;
@@ -148,8 +149,8 @@ WaveComplex BuildWaveComplex(const Mesh& mesh, const Eigen::VectorXd& f, double 
   for (VertexIndex v : triangles.vertices()) has_boundary = has_boundary || triangles.is_border(v);
   if (has_boundary) {
     out.doubled = true;
-    WaveSplitChords(&triangles, &values);
-    if (!WaveDouble(triangles, &closed, &out.original)) {
+    ComplexSplitChords(&triangles, &values);
+    if (!ComplexDouble(triangles, &closed, &out.original)) {
       out.error = "the mesh doubled across its boundary is not a closed manifold";
       return out;
     }
@@ -159,8 +160,6 @@ WaveComplex BuildWaveComplex(const Mesh& mesh, const Eigen::VectorXd& f, double 
   }
   std::vector<double> g;
   for (int v : out.original) g.push_back(values[size_t(v)]);
-  MorseSmaleOptions options;
-  options.persistence = persistence;
   SpectralMesh m;
   for (int level = 0;; ++level) {
     m = SpectralArrays(closed);
@@ -172,8 +171,8 @@ WaveComplex BuildWaveComplex(const Mesh& mesh, const Eigen::VectorXd& f, double 
       out.error = e.what();
       return out;
     }
-    if (out.complex.valid || level == kWaveRefinements) break;
-    closed = level % 2 == 0 ? WaveCentroidSplit(closed, &g) : WaveRefined(closed, &g);
+    if (out.complex.valid || level == kComplexRefinements) break;
+    closed = level % 2 == 0 ? ComplexCentroidSplit(closed, &g) : ComplexRefined(closed, &g);
     out.refinements = level + 1;
   }
   out.points = m.points;
@@ -183,29 +182,28 @@ WaveComplex BuildWaveComplex(const Mesh& mesh, const Eigen::VectorXd& f, double 
   return out;
 }
 
-std::string WaveComplexArcsObj(const WaveComplex& c) {
+std::string SurfaceComplexArcsObj(const SurfaceComplex& c, const std::string& function) {
   std::string vertices, lines;
   std::unordered_map<int, int> index;
   for (const MorseSmaleArc& a : c.complex.arcs) {
     lines += "l";
     for (int v : a.path) {
       auto [it, fresh] = index.try_emplace(v, int(index.size()) + 1);
-      if (fresh) vertices += WaveObjPoint(c.complex.points[size_t(v)]);
+      if (fresh) vertices += ComplexObjPoint(c.complex.points[size_t(v)]);
       lines += " " + std::to_string(it->second);
     }
     lines += "\n";
   }
-  return "# Morse-Smale complex of the standing wave cos(theta) cos(phi): one polyline per arc, "
-         "saddle to extremum" +
+  return "# Morse-Smale complex of " + function + ": one polyline per arc, saddle to extremum" +
          std::string(c.doubled ? " (of the surface doubled across its boundary)" : "") + "\n" +
          vertices + lines;
 }
 
-std::string WaveQuasiDualObj(const WaveComplex& c) {
+std::string SurfaceQuasiDualObj(const SurfaceComplex& c) {
   std::string text = "# quasi-dual of the Morse-Smale complex: extrema, one quad per saddle" +
                      std::string(c.doubled ? " (of the surface doubled across its boundary)" : "") +
                      "\n";
-  for (const Eigen::Vector3d& p : c.quasi_dual.points) text += WaveObjPoint(p);
+  for (const Eigen::Vector3d& p : c.quasi_dual.points) text += ComplexObjPoint(p);
   for (const std::array<int, 4>& q : c.quasi_dual.quads) {
     text += "f " + std::to_string(q[0] + 1) + " " + std::to_string(q[1] + 1) + " " +
             std::to_string(q[2] + 1) + " " + std::to_string(q[3] + 1) + "\n";
