@@ -13,12 +13,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kCosMaxTurn = 0.70710678118654752;  // 45°: a quad's largest turn
 
-// Twice the vector area of a quad (Newell): its normal, as long as the quad
-// is large.
-Eigen::Vector3d QuadNormal(const std::vector<Eigen::Vector3d>& p, const std::array<int, 4>& q) {
-  return (p[size_t(q[2])] - p[size_t(q[0])]).cross(p[size_t(q[3])] - p[size_t(q[1])]);
-}
-
 // The shortest side of quad q.
 double ShortestSide(const std::vector<Eigen::Vector3d>& p, const std::array<int, 4>& q) {
   double shortest = (p[size_t(q[1])] - p[size_t(q[0])]).norm();
@@ -166,6 +160,10 @@ void BalanceSpokes(const Spokes& s, const std::vector<Eigen::Vector3d>& points, 
 }
 
 }  // namespace
+
+Eigen::Vector3d QuadNormal(const std::vector<Eigen::Vector3d>& p, const std::array<int, 4>& q) {
+  return (p[size_t(q[2])] - p[size_t(q[0])]).cross(p[size_t(q[3])] - p[size_t(q[1])]);
+}
 
 GridLineKinks MeasureGridLineKinks(const std::vector<Eigen::Vector3d>& points,
                                    const std::vector<std::array<int, 4>>& quads) {

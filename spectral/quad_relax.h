@@ -34,6 +34,10 @@
 
 namespace archgeo {
 
+// Twice the vector area of quad q (Newell: the cross product of its
+// diagonals): its normal, as long as the quad is large.
+Eigen::Vector3d QuadNormal(const std::vector<Eigen::Vector3d>& points, const std::array<int, 4>& q);
+
 // The largest and the mean turn (degrees) of the grid lines at the vertices
 // of valence 4: at such a vertex v with opposite neighbours a, b, the angle
 // between v − a and b − v in the tangent plane at v (normal: the cross

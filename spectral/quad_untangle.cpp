@@ -8,6 +8,8 @@
 
 #include <Eigen/Geometry>
 
+#include "spectral/quad_relax.h"
+
 namespace archgeo {
 namespace {
 
@@ -19,10 +21,6 @@ constexpr int kUntangleRings = 2;  // quads this many vertex rings round a poor 
 constexpr double kUntangleMargin = 10;
 
 using QuadList = std::vector<std::array<int, 4>>;
-
-Eigen::Vector3d UntangleNormal(const std::vector<Eigen::Vector3d>& p, const std::array<int, 4>& q) {
-  return (p[size_t(q[2])] - p[size_t(q[0])]).cross(p[size_t(q[3])] - p[size_t(q[1])]);
-}
 
 // The interior angle (degrees) of quad q at its corner k in the plane with
 // unit normal n, turning about n.
@@ -52,7 +50,7 @@ double WorstInPlane(const std::vector<Eigen::Vector3d>& p, const std::array<int,
 // faces away.
 double WorstCorner(const std::vector<Eigen::Vector3d>& p, const std::array<int, 4>& q,
                    const Eigen::Vector3d& facing) {
-  const Eigen::Vector3d n = UntangleNormal(p, q);
+  const Eigen::Vector3d n = QuadNormal(p, q);
   if (n.norm() == 0 || n.dot(facing) <= 0) return -180;
   return WorstInPlane(p, q, n.normalized());
 }
@@ -122,7 +120,7 @@ bool Wraps(const UntangleMesh& m, const QuadList& quads, const std::vector<Eigen
   double sum = 0;
   for (int q : m.quads_at[v]) {
     const auto& quad = quads[size_t(q)];
-    const Eigen::Vector3d n = UntangleNormal(p, quad);
+    const Eigen::Vector3d n = QuadNormal(p, quad);
     if (n.norm() == 0 || n.dot(Facing(normals, quad)) <= 0) continue;
     for (int k = 0; k < 4; ++k) {
       if (size_t(quad[size_t(k)]) == v) sum += InteriorAngle(p, quad, k, n.normalized());

@@ -218,25 +218,18 @@ ChartStep RunChartStep(const Settings& s, const Mesh& design,
   const double diagonal = PrincipalBoxDiagonal(design);
   const ReferenceSurface surface(design);
   const GridLineKinks mapped = MeasureGridLineKinks(r.quads.points, r.quads.quads);
-  const auto onto = [&surface](const Eigen::Vector3d& p) {
-    const Vec3 c = surface.Closest(Vec3{p.x(), p.y(), p.z()}).point;
-    return Eigen::Vector3d(c[0], c[1], c[2]);
+  const auto sample = [&surface](const Eigen::Vector3d& p) {
+    const ReferenceSurface::SurfacePoint c = surface.Closest(Vec3{p.x(), p.y(), p.z()});
+    return SurfaceSample{{c.point[0], c.point[1], c.point[2]}, {c.normal[0], c.normal[1], c.normal[2]}};
   };
+  const auto onto = [&sample](const Eigen::Vector3d& p) { return sample(p).point; };
   RelaxQuads(r.quads.quads, int(s.Integer("charts.smoothing")), onto, &r.quads.points,
              r.quads.centre_vertex);
-  const UntangleResult untangled = UntangleQuads(
-      r.quads.quads,
-      [&surface](const Eigen::Vector3d& p) {
-        const ReferenceSurface::SurfacePoint c = surface.Closest(Vec3{p.x(), p.y(), p.z()});
-        return SurfaceSample{{c.point[0], c.point[1], c.point[2]}, {c.normal[0], c.normal[1], c.normal[2]}};
-      },
-      &r.quads.points, r.quads.centre_vertex, move_nodes);
+  const UntangleResult untangled =
+      UntangleQuads(r.quads.quads, sample, &r.quads.points, r.quads.centre_vertex, move_nodes);
   const GridLineKinks relaxed = MeasureGridLineKinks(r.quads.points, r.quads.quads);
   double distance = 0;
-  for (const Eigen::Vector3d& p : r.quads.points) {
-    const Vec3 closest = surface.Closest(Vec3{p.x(), p.y(), p.z()}).point;
-    distance = std::max(distance, (Eigen::Vector3d(closest[0], closest[1], closest[2]) - p).norm());
-  }
+  for (const Eigen::Vector3d& p : r.quads.points) distance = std::max(distance, (onto(p) - p).norm());
   out.mesh = BcQuadMesh(r.quads);
   out.details = BcDetails(r, distance, diagonal, weights);
   out.details["grid_line_kink_max_degrees"] = {{"mapped", mapped.max_degrees},
