@@ -11,6 +11,7 @@
 #include "core/input_error.h"
 #include "fields/triangle_surfaces.h"
 #include "generators/smoothness_surfaces.h"
+#include "io/io.h"
 #include "problems/commands/run.h"
 #include "problems/runtime/mesh_inputs.h"
 #include "problems/spec/spec.h"
@@ -61,6 +62,34 @@ TEST(SpectralQuads, SphereEigenfunctionGivesAnAllQuadMesh) {
   EXPECT_EQ(dual.at("euler").get<int>(), 2);
   EXPECT_GT(dual.at("irregular_vertices").get<int>(), 0);
   SqExpectQuads(run, dual.at("irregular_vertices").get<int>());
+}
+
+// An open surface (the shared libigl inspired mesh, a disc): the complex of
+// its double across the boundary, the half of its quasi-dual on the input
+// as base complex (boundary saddles' quads cut into triangles along the
+// boundary), charted on the input: a conforming quad mesh whose boundary
+// edges are the base complex's boundary sampled, irregular vertices as the
+// base complex predicts.
+TEST(SpectralQuads, AnOpenSurfaceIsChartedFromTheComplexOfItsDouble) {
+  const RunResult run = SqRun("problem: spectral_quads\nspectral: {charts: 24}\n",
+                              ReadMesh(ARCHGEO_DATA_DIR "/libigl_inspired_mesh.obj"));
+  ASSERT_EQ(run.exit_code, 0) << run.summary;
+  const auto& sp = run.report.at("details").at("spectral");
+  EXPECT_TRUE(sp.at("doubled").get<bool>());
+  EXPECT_EQ(sp.at("complex").at("euler_sum").get<int>(), 2);  // the double: a sphere
+  const auto& c = run.report.at("details").at("charts");
+  std::printf("inspired mesh: eigenfunction %d, %d charts, %d quads, %d triangles, %d irregular\n",
+              sp.at("eigenfunction").get<int>(), c.at("charts").get<int>(),
+              c.at("output_quads").get<int>(), c.at("output_triangles").get<int>(),
+              c.at("irregular_vertices").get<int>());
+  EXPECT_GT(c.at("output_quads").get<int>(), 500);
+  EXPECT_TRUE(c.at("irregular_as_predicted").get<bool>());
+  EXPECT_EQ(c.at("flipped_parameter_triangles").get<int>(), 0);
+  EXPECT_EQ(c.at("t_junctions").get<int>(), 0);
+  EXPECT_EQ(c.at("non_manifold_edges").get<int>(), 0);
+  EXPECT_GT(c.at("boundary_edges").get<int>(), 0);
+  EXPECT_EQ(c.at("boundary_edges").get<int>(), c.at("expected_boundary_edges").get<int>());
+  EXPECT_LE(c.at("surface_distance_max_relative").get<double>(), 1e-9);
 }
 
 // The torus (48 × 24 quads, triangulated by the problem): the automatic choice's complex has only

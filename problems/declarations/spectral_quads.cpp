@@ -1,7 +1,9 @@
 // SPDX-FileCopyrightText: The archgeo authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// archgeo — `spectral_quads`: spectral quadrangulation of a closed surface
-// mesh (polygons triangulated) [Gebreiter 2012, §6, §7, §4.1; Dong et al. 2006]:
+// archgeo — `spectral_quads`: spectral quadrangulation of a surface mesh
+// (polygons triangulated; with boundary, through the surface doubled across
+// it, problems/declarations/surface_complex.h: HalfBaseComplex is the base
+// complex) [Gebreiter 2012, §6, §7, §4.1; Dong et al. 2006]:
 //   cotangent (or normalised) Laplacian eigenpairs (spectral/laplacian.h,
 //   spectral/eigenpairs.h) → eigenfunction K (spectral.eigenfunction) or the
 //   automatic choice → its Morse–Smale complex with saddle–extremum pairs
@@ -50,6 +52,7 @@ struct SqState : ProblemState {
   std::vector<double> phi;  // the chosen (or last tried) eigenfunction, max |φ| = 1
   MorseSmaleComplex complex;
   int refinements = 0;      // the mesh the complex lies on: the input refined so often
+  bool doubled = false;     // the input has a boundary: the complex is its double's
   QuadBaseComplex dual;
   QuadBaseComplex base;     // the base complex charted: the quasi-dual, or the complex itself
   bool primal = false;      // base is the complex itself (its quasi-dual repeats a corner)
@@ -101,16 +104,6 @@ nlohmann::json SqComplexDetails(const MorseSmaleComplex& c, const QuadBaseComple
             {"euler", q.euler}}}};
 }
 
-void SqRefuseBoundary(const Settings& s, const Mesh& design) {
-  for (HalfedgeIndex h : design.halfedges()) {
-    if (design.is_border(h)) {
-      throw s.Error("mesh", s.String("mesh") +
-                                " has a boundary: spectral_quads needs a closed surface (the "
-                                "Morse–Smale complex and the charts of open surfaces are not done)");
-    }
-  }
-}
-
 // The eigenpairs asked for; bad counts and solver failures name their key.
 Eigenpairs SqEigenpairs(const Settings& s, const SpectralMesh& m, int eigenfunction) {
   const int vertices = int(m.points.size());
@@ -143,7 +136,6 @@ void SqNet(HookContext& c) {
   const auto t0 = std::chrono::steady_clock::now();
   const Settings& s = *c.settings;
   const Mesh design = TriangulatedCopy(*c.input);  // polygons triangulated
-  SqRefuseBoundary(s, design);
   const SpectralMesh m = SpectralArrays(design);
   const int given = int(s.Integer("spectral.eigenfunction"));
   const Eigenpairs pairs = SqEigenpairs(s, m, given);
@@ -170,6 +162,7 @@ void SqNet(HookContext& c) {
     const SurfaceComplex sc = BuildSurfaceComplex(design, f, options);
     st.complex = sc.complex;
     st.refinements = sc.refinements;
+    st.doubled = sc.doubled;
     st.dual = sc.quasi_dual;
     st.base = st.dual;
     st.primal = false;
@@ -186,10 +179,18 @@ void SqNet(HookContext& c) {
         fault.clear();
       }
     }
+    if (fault.empty() && sc.doubled && st.primal) {
+      fault = "its quasi-dual repeats a corner (the cells of the complex of a surface with "
+              "boundary are not charted)";
+    }
     if (fault.empty()) {
-      const BaseComplex base = QuasiDualBaseComplex(st.base);
       try {
-        step = RunChartStep(s, design, sc.points, sc.triangles, base, true);
+        // A surface with boundary: the half of the double's quasi-dual on
+        // the input, charted on the input.
+        step = sc.doubled ? RunChartStep(s, design, sc.half_points, sc.half_triangles,
+                                         HalfBaseComplex(sc), true)
+                          : RunChartStep(s, design, sc.points, sc.triangles,
+                                         QuasiDualBaseComplex(st.base), true);
         st.quads = true;
       } catch (const std::exception& e) {  // BaseComplexError, a failed factorisation
         fault = std::string("its charts fail: ") + e.what();
@@ -222,6 +223,7 @@ void SqNet(HookContext& c) {
         {"euler_sum", cp.EulerSum()}}},
       {"complex", SqComplexDetails(st.complex, st.dual)},
       {"refinements", st.refinements},
+      {"doubled", st.doubled},
       {"base", st.primal ? "complex" : "quasi_dual"},
       {"base_quads", st.base.quads.size()},
       {"base_irregular_vertices", st.base.irregular_vertices},
@@ -243,7 +245,7 @@ void SqNet(HookContext& c) {
     return;
   }
   st.invalid = step.invalid;
-  if (int(step.result.irregular.size()) != st.base.irregular_vertices) {
+  if (!st.doubled && int(step.result.irregular.size()) != st.base.irregular_vertices) {
     st.invalid += "the output has " + std::to_string(step.result.irregular.size()) +
                   " irregular vertices, the base complex " +
                   std::to_string(st.base.irregular_vertices) + "\n";

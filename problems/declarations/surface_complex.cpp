@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "problems/declarations/surface_complex.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 #include <unordered_map>
@@ -150,6 +151,10 @@ SurfaceComplex BuildSurfaceComplex(const Mesh& mesh, const Eigen::VectorXd& f,
   if (has_boundary) {
     out.doubled = true;
     ComplexSplitChords(&triangles, &values);
+    const SpectralMesh half = SpectralArrays(triangles);
+    out.half_points = half.points;
+    out.half_triangles = half.triangles;
+    for (bool inside : half.closed) out.half_boundary.push_back(!inside);
     if (!ComplexDouble(triangles, &closed, &out.original)) {
       out.error = "the mesh doubled across its boundary is not a closed manifold";
       return out;
@@ -179,6 +184,61 @@ SurfaceComplex BuildSurfaceComplex(const Mesh& mesh, const Eigen::VectorXd& f,
   out.triangles = m.triangles;
   out.quasi_dual = QuasiDual(out.complex, m.points);
   out.built = true;
+  return out;
+}
+
+BaseComplex HalfBaseComplex(const SurfaceComplex& c) {
+  static const char* const kSide[] = {"inside", "on the boundary", "mirrored"};
+  const QuadBaseComplex& q = c.quasi_dual;
+  const int half = int(c.half_points.size());
+  // Per quasi-dual vertex: 0 inside the input, 1 on its boundary, 2 a mirror image.
+  std::vector<int> side(q.nodes.size());
+  for (size_t v = 0; v < q.nodes.size(); ++v) {
+    side[v] = q.nodes[v] >= half ? 2 : c.half_boundary[size_t(q.nodes[v])] ? 1 : 0;
+  }
+  BaseComplex out;
+  std::vector<int> base_vertex(q.nodes.size(), -1);
+  auto vertex = [&](int v) {
+    if (base_vertex[size_t(v)] < 0) {
+      base_vertex[size_t(v)] = int(out.nodes.size());
+      out.nodes.push_back(q.nodes[size_t(v)]);
+    }
+    return base_vertex[size_t(v)];
+  };
+  long next_id = 0;  // edge ids beyond the quasi-dual's, for the triangles' boundary sides
+  for (const auto& e : q.quad_edges) next_id = std::max({next_id, e[0] + 1, e[1] + 1, e[2] + 1, e[3] + 1});
+  for (size_t f = 0; f < q.quads.size(); ++f) {
+    const std::array<int, 4>& quad = q.quads[f];
+    const std::string name = "quasi-dual quad " + std::to_string(f);
+    int mirrored = 0, inside = 0;
+    for (int v : quad) {
+      mirrored += side[size_t(v)] == 2;
+      inside += side[size_t(v)] == 0;
+    }
+    if (mirrored == 0 && inside == 0) {
+      throw BaseComplexError(name, "has all its corners on the boundary (the boundary cuts it into "
+                                   "halves without corners)");
+    }
+    if (mirrored == 0) {
+      out.faces.push_back({vertex(quad[0]), vertex(quad[1]), vertex(quad[2]), vertex(quad[3])});
+      out.edges.push_back({q.quad_edges[f][0], q.quad_edges[f][1], q.quad_edges[f][2], q.quad_edges[f][3]});
+      continue;
+    }
+    if (inside == 0) continue;  // the mirror image's
+    // Corners boundary, inside, boundary, mirrored in cyclic order: the
+    // triangle of the first three.
+    size_t k = 0;
+    while (k < 4 && side[size_t(quad[(k + 1) % 4])] != 0) ++k;
+    if (mirrored != 1 || inside != 1 || side[size_t(quad[k])] != 1 || side[size_t(quad[(k + 2) % 4])] != 1) {
+      std::string corners;
+      for (int v : quad) corners += std::string(corners.empty() ? "" : ", ") + kSide[side[size_t(v)]];
+      throw BaseComplexError(name, "crosses the boundary but is not a boundary saddle's quad (corners " +
+                                       corners + "; expected two on the boundary with one on either "
+                                       "side between them)");
+    }
+    out.faces.push_back({vertex(quad[k]), vertex(quad[(k + 1) % 4]), vertex(quad[(k + 2) % 4])});
+    out.edges.push_back({q.quad_edges[f][k], q.quad_edges[f][(k + 1) % 4], next_id++});
+  }
   return out;
 }
 

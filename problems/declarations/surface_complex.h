@@ -22,6 +22,7 @@
 #include <Eigen/Core>
 
 #include "mesh/surface_mesh.h"
+#include "spectral/base_complex_charts.h"
 #include "spectral/morse_smale.h"
 
 namespace archgeo {
@@ -41,12 +42,26 @@ struct SurfaceComplex {
   int refinements = 0;
   MorseSmaleComplex complex;
   QuadBaseComplex quasi_dual;
+  // A mesh with boundary: the input the double was made of (triangulated,
+  // its chords split), whose vertices are the double's first ones, and
+  // which of them lie on the boundary.
+  std::vector<Eigen::Vector3d> half_points;
+  std::vector<std::array<int, 3>> half_triangles;
+  std::vector<bool> half_boundary;
 };
 
 // `mesh` any polygon mesh (triangulated here), `f` one value per vertex;
 // `options` the cancellation (persistence or a target count of extrema).
 SurfaceComplex BuildSurfaceComplex(const Mesh& mesh, const Eigen::VectorXd& f,
                                    const MorseSmaleOptions& options);
+
+// A doubled complex's base complex on the input itself (half_points,
+// half_triangles): the quasi-dual's quads on the input's side, and of each
+// quad the boundary cuts (a boundary saddle's: two corners on the boundary,
+// the other two mirror images) the triangle on the input's side, its third
+// side along the boundary (Gebreiter 2012, §4.1.4: charts of open-boundary
+// triangles). Throws BaseComplexError naming a quad that is neither.
+BaseComplex HalfBaseComplex(const SurfaceComplex& c);
 
 // The arcs as OBJ polylines (the header names `function`), the quasi-dual
 // as an OBJ quad mesh.

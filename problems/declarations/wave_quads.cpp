@@ -230,9 +230,10 @@ void InitWave(HookContext& c) {
     for (HalfedgeIndex h : c.input->halfedges()) {
       if (c.input->is_border(h)) {
         throw s.Error("output.quads",
-                      "needs a closed surface: the charts of open surfaces (Gebreiter 2012, "
-                      "§4.1.4) are not done; output.complex and output.quasi_dual give the "
-                      "complex of the surface doubled across its boundary");
+                      "needs a closed surface: the wave's complex on the surface doubled "
+                      "across its boundary is not cut back into charts of the surface (its arcs "
+                      "cross the boundary); output.complex and output.quasi_dual give that "
+                      "complex");
       }
     }
   }
