@@ -92,6 +92,20 @@ TEST(SpectralQuads, AnOpenSurfaceIsChartedFromTheComplexOfItsDouble) {
   EXPECT_LE(c.at("surface_distance_max_relative").get<double>(), 1e-9);
 }
 
+// The shared Concerthall roof (open): the eight candidates nearest 24 charts
+// each have a quasi-dual quad the boundary does not cut cleanly; the
+// automatic choice goes on (16 candidates at most) to the ninth, k = 36.
+TEST(SpectralQuads, TheAutomaticChoiceGoesOnPastCandidatesThatFail) {
+  const RunResult run = SqRun("problem: spectral_quads\nspectral: {charts: 24}\n",
+                              ReadMesh(ARCHGEO_DATA_DIR "/directional_Concerthall.off"));
+  ASSERT_EQ(run.exit_code, 0) << run.summary;
+  const auto& tried = run.report.at("details").at("spectral").at("tried");
+  ASSERT_GT(tried.size(), 8u);
+  for (size_t i = 0; i + 1 < tried.size(); ++i) EXPECT_FALSE(tried[i].at("fault").get<std::string>().empty());
+  EXPECT_TRUE(tried.back().at("fault").get<std::string>().empty());
+  EXPECT_TRUE(run.report.at("details").at("charts").at("irregular_as_predicted").get<bool>());
+}
+
 // The torus (48 × 24 quads, triangulated by the problem): the automatic choice's complex has only
 // valence-4 extrema, so the quad mesh has no irregular vertex (χ = 0).
 TEST(SpectralQuads, TorusGivesNoIrregularVertex) {

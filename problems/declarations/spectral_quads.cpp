@@ -45,7 +45,7 @@
 namespace archgeo::problems {
 namespace {
 
-constexpr int kSqTries = 8;  // candidates tried by the automatic choice at most
+constexpr int kSqTries = 16;  // candidates tried by the automatic choice at most
 
 struct SqState : ProblemState {
   Mesh design;              // the input, for output.function
@@ -159,7 +159,9 @@ void SqNet(HookContext& c) {
     Eigen::VectorXd f = pairs.vectors.col(cand.k);
     f /= std::max(f.cwiseAbs().maxCoeff(), 1e-300);
     st.phi.assign(f.data(), f.data() + f.size());
-    const SurfaceComplex sc = BuildSurfaceComplex(design, f, options);
+    // The whole mesh refined for a given eigenfunction only: the automatic
+    // choice moves on to the next candidate instead.
+    const SurfaceComplex sc = BuildSurfaceComplex(design, f, options, given > 0 ? 2 : 0);
     st.complex = sc.complex;
     st.refinements = sc.refinements;
     st.doubled = sc.doubled;

@@ -16,10 +16,6 @@
 namespace archgeo {
 namespace {
 
-// Refinements at most while arcs cannot all be placed: the faces split at
-// their centroids, then every edge at its midpoint.
-constexpr int kComplexRefinements = 2;
-
 // Splits every interior edge between two boundary vertices (a chord, e.g.
 // the inner edge of a corner triangle) at its midpoint, where f is the mean
 // of its ends: otherwise the double would hold that edge twice.
@@ -141,7 +137,7 @@ std::string ComplexObjPoint(const Eigen::Vector3d& p) {
 }  // namespace
 
 SurfaceComplex BuildSurfaceComplex(const Mesh& mesh, const Eigen::VectorXd& f,
-                                   const MorseSmaleOptions& options) {
+                                   const MorseSmaleOptions& options, int max_refinements) {
   SurfaceComplex out;
   Mesh triangles = TriangulatedCopy(mesh);
   std::vector<double> values(f.data(), f.data() + f.size());
@@ -176,7 +172,7 @@ SurfaceComplex BuildSurfaceComplex(const Mesh& mesh, const Eigen::VectorXd& f,
       out.error = e.what();
       return out;
     }
-    if (out.complex.valid || level == kComplexRefinements) break;
+    if (out.complex.valid || level >= max_refinements) break;
     closed = level % 2 == 0 ? ComplexCentroidSplit(closed, &g) : ComplexRefined(closed, &g);
     out.refinements = level + 1;
   }

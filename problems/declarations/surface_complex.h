@@ -51,9 +51,11 @@ struct SurfaceComplex {
 };
 
 // `mesh` any polygon mesh (triangulated here), `f` one value per vertex;
-// `options` the cancellation (persistence or a target count of extrema).
+// `options` the cancellation (persistence or a target count of extrema);
+// `max_refinements` the whole-mesh refinements allowed (0–2: the faces split
+// at their centroids, then every edge at its midpoint).
 SurfaceComplex BuildSurfaceComplex(const Mesh& mesh, const Eigen::VectorXd& f,
-                                   const MorseSmaleOptions& options);
+                                   const MorseSmaleOptions& options, int max_refinements = 2);
 
 // A doubled complex's base complex on the input itself (half_points,
 // half_triangles): the quasi-dual's quads on the input's side, and of each
