@@ -169,7 +169,8 @@ void SqNet(HookContext& c) {
     st.base = st.dual;
     st.primal = false;
     chosen = &cand;
-    std::string fault = SqComplexFault(st.complex, st.dual);
+    std::string fault = sc.built ? SqComplexFault(st.complex, st.dual)
+                                 : "its complex cannot be built: " + sc.error;
     if (!fault.empty() && st.complex.valid) {
       // The quasi-dual repeats a corner (a saddle with two arcs to one
       // extremum, a wave round the tube); the complex's own cells are
