@@ -228,8 +228,10 @@ class EmbedComponents {
   }
 
   // The interior vertices of `path`, used now, leave their components.
-  void Remove(const std::vector<std::vector<int>>& rings, const EmbedSpace& space,
+  // Returns whether a component fell apart (pieces relabelled).
+  bool Remove(const std::vector<std::vector<int>>& rings, const EmbedSpace& space,
               const std::vector<int>& path) {
+    const size_t labels = parent_.size();
     std::vector<int> seeds;
     for (size_t k = 1; k + 1 < path.size(); ++k) label_[size_t(path[k])] = -1;
     for (size_t k = 1; k + 1 < path.size(); ++k) {
@@ -249,6 +251,7 @@ class EmbedComponents {
       Split(rings, space, std::vector<int>(seeds.begin() + long(a), seeds.begin() + long(b)));
       a = b;
     }
+    return parent_.size() != labels;
   }
 
   // Whether d's wedge reaches its extremum through free vertices (as
@@ -379,9 +382,22 @@ std::vector<size_t> EmbedPass(const std::vector<Eigen::Vector3d>& points,
   std::vector<bool> pending(drafts.size(), false), reaches(drafts.size(), false);
   for (size_t i : order) pending[i] = true;
   EmbedComponents components(points.size());
+  // Per vertex: the drafts whose reach depends on it (their wedge, its
+  // ring, their extremum's ring). A placement that splits no component
+  // changes the reach of those drafts only whose vertices it uses.
+  std::vector<std::vector<size_t>> watchers(look_ahead ? points.size() : 0);
+  std::vector<size_t> rank(drafts.size(), 0);  // position in `order`
+  for (size_t r = 0; r < order.size(); ++r) rank[order[r]] = r;
   if (look_ahead) {
     components.Label(rings, space);
-    for (size_t i : order) reaches[i] = components.Reaches(rings, space, drafts[i]);
+    for (size_t i : order) {
+      reaches[i] = components.Reaches(rings, space, drafts[i]);
+      for (int w : drafts[i].wedge) {
+        watchers[size_t(w)].push_back(i);
+        for (int u : rings[size_t(w)]) watchers[size_t(u)].push_back(i);
+      }
+      for (int u : rings[size_t(drafts[i].guide.back())]) watchers[size_t(u)].push_back(i);
+    }
   }
   for (size_t i : order) {
     pending[i] = false;
@@ -389,11 +405,22 @@ std::vector<size_t> EmbedPass(const std::vector<Eigen::Vector3d>& points,
     if (paths[i].empty()) failed.push_back(i);
     place(i, true);
     if (paths[i].empty() || !look_ahead) continue;
-    components.Remove(rings, space, paths[i]);
+    const bool split = components.Remove(rings, space, paths[i]);
     std::vector<int> kept_free;  // vertices marked used while arc i is placed again
     for (int attempt = 0;; ++attempt) {
       std::vector<size_t> cut;
-      for (size_t z : order) {
+      std::vector<size_t> check;  // the drafts whose reach may have changed
+      if (attempt == 0 && !split) {
+        for (size_t k = 1; k + 1 < paths[i].size(); ++k) {
+          for (size_t z : watchers[size_t(paths[i][k])]) check.push_back(z);
+        }
+        // Once each, in `order`'s order (as the full scan).
+        std::sort(check.begin(), check.end(), [&](size_t a, size_t b) { return rank[a] < rank[b]; });
+        check.erase(std::unique(check.begin(), check.end()), check.end());
+      } else {
+        check = order;
+      }
+      for (size_t z : check) {
         if (!pending[z]) continue;
         const bool now = components.Reaches(rings, space, drafts[z]);
         if (reaches[z] && !now) cut.push_back(z);
