@@ -86,8 +86,13 @@ std::string SpectralList(const SpectralRequest& request);
 // The arcs of a Morse–Smale complex as OBJ polylines over its vertices
 // (saddle to extremum), and its quasi-dual as an OBJ quad mesh
 // (spectral_complex.cpp).
-std::string MorseSmaleArcsObj(const MorseSmaleComplex& c);
-std::string QuasiDualObj(const QuadBaseComplex& q);
+// `header`: the comment line on top (without "# ").
+std::string MorseSmaleArcsObj(
+    const MorseSmaleComplex& c,
+    const std::string& header = "Morse-Smale complex: one polyline per arc, saddle to extremum");
+std::string QuasiDualObj(
+    const QuadBaseComplex& q,
+    const std::string& header = "quasi-dual of the Morse-Smale complex: extrema, one quad per saddle");
 
 struct SpectralComplexResult {
   std::string text;    // the counts to print

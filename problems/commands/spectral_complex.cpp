@@ -42,7 +42,7 @@ void ComplexCheckRequest(const SpectralRequest& q, int vertices) {
 }  // namespace
 
 // The arcs as polylines over the vertices they use.
-std::string MorseSmaleArcsObj(const MorseSmaleComplex& c) {
+std::string MorseSmaleArcsObj(const MorseSmaleComplex& c, const std::string& header) {
   std::string vertices, lines;
   std::unordered_map<int, int> index;
   for (const MorseSmaleArc& a : c.arcs) {
@@ -54,11 +54,11 @@ std::string MorseSmaleArcsObj(const MorseSmaleComplex& c) {
     }
     lines += "\n";
   }
-  return "# Morse-Smale complex: one polyline per arc, saddle to extremum\n" + vertices + lines;
+  return "# " + header + "\n" + vertices + lines;
 }
 
-std::string QuasiDualObj(const QuadBaseComplex& q) {
-  std::string text = "# quasi-dual of the Morse-Smale complex: extrema, one quad per saddle\n";
+std::string QuasiDualObj(const QuadBaseComplex& q, const std::string& header) {
+  std::string text = "# " + header + "\n";
   for (const Eigen::Vector3d& p : q.points) text += ComplexPoint(p);
   for (const std::array<int, 4>& f : q.quads) {
     text += "f " + std::to_string(f[0] + 1) + " " + std::to_string(f[1] + 1) + " " +

@@ -3,9 +3,7 @@
 #include "problems/declarations/surface_complex.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <stdexcept>
-#include <unordered_map>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 
@@ -128,12 +126,6 @@ Mesh ComplexCentroidSplit(const Mesh& m, std::vector<double>* f) {
   return out;
 }
 
-std::string ComplexObjPoint(const Eigen::Vector3d& p) {
-  char line[96];
-  std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", p.x(), p.y(), p.z());
-  return line;
-}
-
 }  // namespace
 
 SurfaceComplex BuildSurfaceComplex(const Mesh& mesh, const Eigen::VectorXd& f,
@@ -239,32 +231,15 @@ BaseComplex HalfBaseComplex(const SurfaceComplex& c) {
 }
 
 std::string SurfaceComplexArcsObj(const SurfaceComplex& c, const std::string& function) {
-  std::string vertices, lines;
-  std::unordered_map<int, int> index;
-  for (const MorseSmaleArc& a : c.complex.arcs) {
-    lines += "l";
-    for (int v : a.path) {
-      auto [it, fresh] = index.try_emplace(v, int(index.size()) + 1);
-      if (fresh) vertices += ComplexObjPoint(c.complex.points[size_t(v)]);
-      lines += " " + std::to_string(it->second);
-    }
-    lines += "\n";
-  }
-  return "# Morse-Smale complex of " + function + ": one polyline per arc, saddle to extremum" +
-         std::string(c.doubled ? " (of the surface doubled across its boundary)" : "") + "\n" +
-         vertices + lines;
+  return MorseSmaleArcsObj(c.complex, "Morse-Smale complex of " + function +
+                                          ": one polyline per arc, saddle to extremum" +
+                                          (c.doubled ? " (of the surface doubled across its boundary)" : ""));
 }
 
 std::string SurfaceQuasiDualObj(const SurfaceComplex& c) {
-  std::string text = "# quasi-dual of the Morse-Smale complex: extrema, one quad per saddle" +
-                     std::string(c.doubled ? " (of the surface doubled across its boundary)" : "") +
-                     "\n";
-  for (const Eigen::Vector3d& p : c.quasi_dual.points) text += ComplexObjPoint(p);
-  for (const std::array<int, 4>& q : c.quasi_dual.quads) {
-    text += "f " + std::to_string(q[0] + 1) + " " + std::to_string(q[1] + 1) + " " +
-            std::to_string(q[2] + 1) + " " + std::to_string(q[3] + 1) + "\n";
-  }
-  return text;
+  return QuasiDualObj(c.quasi_dual,
+                      "quasi-dual of the Morse-Smale complex: extrema, one quad per saddle" +
+                          std::string(c.doubled ? " (of the surface doubled across its boundary)" : ""));
 }
 
 }  // namespace archgeo
