@@ -411,7 +411,9 @@ std::vector<int> PathOrder(const std::vector<Eigen::Vector3d>& points, const Bas
 // PathOrder; an inner edge whose way is barred by the paths placed before it
 // is moved to the front of the inner edges and every path placed again (at
 // most once per edge). The base faces taken as oriented like the surface,
-// else as turned. Returns whether they were turned.
+// else as turned. Returns whether they were turned. When both fail, the
+// orientation whose boundary edges all fit the surface boundary names the
+// inner edge without room (ChartRoomError: a finer mesh may have it).
 bool PlacePaths(const std::vector<Eigen::Vector3d>& points,
                 const std::vector<std::array<int, 3>>& triangles, const ChartGraph& g,
                 const BaseComplex& base, ChartLayout& out) {
@@ -426,7 +428,7 @@ bool PlacePaths(const std::vector<Eigen::Vector3d>& points,
     for (;;) {
       const int e = ChartPlaceInOrder(points, g, base, order, boundary_side, st, turned, out);
       if (e < 0) return turned;
-      if (failed < 0) failed = e;
+      if (failed < 0 || (out.edges[failed].boundary && !out.edges[e].boundary)) failed = e;
       if (out.edges[e].boundary || moved[e]) break;
       moved[e] = 1;
       order.erase(std::find(order.begin(), order.end(), e));

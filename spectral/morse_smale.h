@@ -50,6 +50,7 @@ struct MorseSmaleArc {
   bool ascending = true;
   std::vector<int> path;         // vertices, the saddle's first, the extremum's last
   std::array<int, 2> side_cells{{-1, -1}};  // the cells on either side of its first edge
+  int side = 0;  // on a double: 0 on the surface, 1 along its boundary, 2 on the images
 };
 
 struct MorseSmaleCell {
@@ -67,6 +68,7 @@ struct MorseSmaleComplex {
   std::vector<Eigen::Vector3d> points;
   std::vector<double> values;
   std::vector<std::array<int, 3>> triangles;
+  std::vector<int> mirror_image;  // on a double: per point its mirror image (MorseSmaleMirror)
   int refinements = 0;  // rounds of local refinement
   std::vector<MorseSmaleNode> nodes;  // the remaining nodes (cancelled ones dropped)
   std::vector<MorseSmaleArc> arcs;    // per saddle, in the cyclic order of its wedges
@@ -86,12 +88,30 @@ struct MorseSmaleOptions {
   int target_extrema = 0;  // or cancel until max + min ≤ this (0: no target)
 };
 
+// A closed mesh that is a surface with boundary doubled across it (a mirror
+// copy glued along the boundary), f the same on a vertex and its image.
+// Such a function's complex is mirror-symmetric, its arcs on the boundary
+// run along it and none crosses it (the gradient is tangent to a mirror
+// line); BuildMorseSmale builds it so: the nodes of the mirror images are
+// the images of the surface's, the arcs from the surface's saddles are
+// traced and placed on the surface alone (through its inner vertices), the
+// arcs of the boundary saddles' wedges that hold a boundary vertex along the
+// boundary alone, the mirror images' arcs are the images of the surface's,
+// pairs are cancelled with their images and the local refinement is
+// mirrored.
+struct MorseSmaleMirror {
+  std::vector<int> image;   // per vertex its mirror image (itself on the boundary)
+  std::vector<char> side;   // per vertex 0 on the surface, 1 on its boundary, 2 an image
+};
+
 // `rings[v]`: v's neighbours in cyclic order, `triangles` the same mesh,
-// which must be closed (throws std::invalid_argument otherwise).
+// which must be closed (throws std::invalid_argument otherwise); `mirror`
+// when the mesh is a double (above).
 MorseSmaleComplex BuildMorseSmale(const std::vector<Eigen::Vector3d>& points,
                                   const std::vector<std::array<int, 3>>& triangles,
                                   const std::vector<std::vector<int>>& rings,
-                                  const Eigen::VectorXd& f, const MorseSmaleOptions& options);
+                                  const Eigen::VectorXd& f, const MorseSmaleOptions& options,
+                                  const MorseSmaleMirror* mirror = nullptr);
 
 // The quasi-dual (§7.1.4): the extrema as vertices, one quad per simple
 // saddle (its max, min, max, min in cyclic order), a multi-saddle's polygon
@@ -113,6 +133,19 @@ struct QuadBaseComplex {
 
 QuadBaseComplex QuasiDual(const MorseSmaleComplex& complex,
                           const std::vector<Eigen::Vector3d>& points);
+
+// The arcs round each saddle in the cyclic order of its wedges, a maximum's
+// first: the quasi-dual's polygon. Saddles joined by a connection along a
+// double's boundary (arcs from saddle to saddle, both ways) make one
+// polygon, their other arcs round the two (a multi-saddle of the summed
+// multiplicity). `cells[k]` the cell between arcs k and k + 1 (−1: none);
+// `complete` when the polygon has the 2 (multiplicity + 1) arcs it should.
+struct MorseSmalePolygon {
+  std::vector<int> arcs;
+  std::vector<long> cells;
+  bool complete = false;
+};
+std::vector<MorseSmalePolygon> SaddlePolygons(const MorseSmaleComplex& complex);
 
 // The complex itself as a quad base complex (§7.1.2: every cell a quad max,
 // saddle, min, saddle): all its nodes as vertices, one quad per cell,

@@ -29,6 +29,8 @@ int CellSharedVertices(const MorseSmaleComplex& c, int vertex_count) {
   for (const MorseSmaleNode& n : c.nodes) node[size_t(n.vertex)] = true;
   int shared = 0;
   for (const MorseSmaleArc& a : c.arcs) {
+    // A connection of two saddles is traced from both ends: counted once.
+    if (c.nodes[size_t(a.extremum)].kind == 0 && a.extremum < a.saddle) continue;
     for (size_t i = 1; i + 1 < a.path.size(); ++i) {
       shared += node[size_t(a.path[i])] || uses[size_t(a.path[i])]++ > 0;
     }
@@ -91,15 +93,27 @@ void BuildCells(int vertex_count, const std::vector<std::array<int, 3>>& triangl
   for (size_t t = 0; t < triangles.size(); ++t) {
     for (int v : triangles[t]) cells_at[size_t(v)].push_back(c.cell_of_triangle[t]);
   }
+  // Saddles joined by a connection along a double's boundary count as one
+  // corner (the multi-saddle they make, SaddlePolygons).
+  std::vector<int> group(c.nodes.size());
+  std::iota(group.begin(), group.end(), 0);
+  for (const MorseSmaleArc& a : c.arcs) {
+    if (c.nodes[size_t(a.extremum)].kind == 0) {
+      group[size_t(CellFind(group, a.saddle))] = CellFind(group, a.extremum);
+    }
+  }
   std::vector<int> node_of(static_cast<size_t>(vertex_count), -1);
-  for (size_t n = 0; n < c.nodes.size(); ++n) node_of[size_t(c.nodes[n].vertex)] = int(n);
+  for (size_t n = 0; n < c.nodes.size(); ++n) node_of[size_t(c.nodes[n].vertex)] = CellFind(group, int(n));
   for (size_t v = 0; v < cells_at.size(); ++v) {
     std::vector<int>& around = cells_at[v];
     std::sort(around.begin(), around.end());
     around.erase(std::unique(around.begin(), around.end()), around.end());
     for (int cell : around) {
       ++c.cells[size_t(cell)].euler;  // V
-      if (node_of[v] >= 0) c.cells[size_t(cell)].corners.push_back(node_of[v]);
+      std::vector<int>& corners = c.cells[size_t(cell)].corners;
+      if (node_of[v] >= 0 && std::find(corners.begin(), corners.end(), node_of[v]) == corners.end()) {
+        corners.push_back(node_of[v]);
+      }
     }
   }
   for (MorseSmaleArc& a : c.arcs) {
@@ -116,6 +130,76 @@ void BuildCells(int vertex_count, const std::vector<std::array<int, 3>>& triangl
 
 }  // namespace morse_smale
 
+std::vector<MorseSmalePolygon> SaddlePolygons(const MorseSmaleComplex& c) {
+  // Each saddle's arcs: consecutive in `arcs`, in the cyclic order of its wedges.
+  std::vector<size_t> first(c.nodes.size(), 0), count(c.nodes.size(), 0);
+  for (size_t a = 0; a < c.arcs.size(); ++a) {
+    const size_t s = size_t(c.arcs[a].saddle);
+    if (count[s]++ == 0) first[s] = a;
+  }
+  auto connection = [&](size_t a) { return c.nodes[size_t(c.arcs[a].extremum)].kind == 0; };
+  auto next = [&](size_t a) {  // the saddle's next arc round it
+    const size_t s = size_t(c.arcs[a].saddle);
+    return a + 1 < first[s] + count[s] ? a + 1 : first[s];
+  };
+  // The arc back along connection a, from its other end.
+  auto back = [&](size_t a) -> long {
+    const MorseSmaleArc& arc = c.arcs[a];
+    const size_t t = size_t(arc.extremum);
+    for (size_t b = first[t]; b < first[t] + count[t]; ++b) {
+      const std::vector<int>& p = c.arcs[b].path;
+      if (c.arcs[b].extremum == arc.saddle && p.size() == arc.path.size() && p[1] == arc.path[arc.path.size() - 2]) {
+        return long(b);
+      }
+    }
+    return -1;
+  };
+  std::vector<bool> seen(c.arcs.size(), false);
+  std::vector<MorseSmalePolygon> out;
+  for (size_t start = 0; start < c.arcs.size(); ++start) {
+    if (seen[start] || connection(start)) continue;
+    MorseSmalePolygon p;
+    int multiplicity = 0;
+    std::vector<bool> member(c.nodes.size(), false);
+    // Round the saddle, and past each connection round the saddle at its
+    // other end, from the arc after the connection back.
+    size_t a = start;
+    for (size_t steps = 0; steps <= c.arcs.size(); ++steps) {
+      seen[a] = true;
+      p.arcs.push_back(int(a));
+      const int s = c.arcs[a].saddle;
+      if (!member[size_t(s)]) multiplicity += c.nodes[size_t(s)].multiplicity;
+      member[size_t(s)] = true;
+      a = next(a);
+      while (connection(a)) {
+        seen[a] = true;
+        const long b = back(a);
+        if (b < 0) break;
+        seen[size_t(b)] = true;
+        if (!member[size_t(c.arcs[a].extremum)]) multiplicity += c.nodes[size_t(c.arcs[a].extremum)].multiplicity;
+        member[size_t(c.arcs[a].extremum)] = true;
+        a = next(size_t(b));
+      }
+      if (a == start || connection(a)) break;
+    }
+    p.complete = int(p.arcs.size()) == 2 * (multiplicity + 1) && !connection(a);
+    // A maximum first.
+    const auto up = std::find_if(p.arcs.begin(), p.arcs.end(), [&](int x) { return c.arcs[size_t(x)].ascending; });
+    if (up != p.arcs.end()) std::rotate(p.arcs.begin(), up, p.arcs.end());
+    for (size_t k = 0; k < p.arcs.size(); ++k) {
+      const MorseSmaleArc& x = c.arcs[size_t(p.arcs[k])];
+      const MorseSmaleArc& y = c.arcs[size_t(p.arcs[(k + 1) % p.arcs.size()])];
+      long shared = -1;
+      for (int cell : x.side_cells) {
+        if (cell >= 0 && (cell == y.side_cells[0] || cell == y.side_cells[1])) shared = cell;
+      }
+      p.cells.push_back(shared);
+    }
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
 QuadBaseComplex QuasiDual(const MorseSmaleComplex& c, const std::vector<Eigen::Vector3d>& points) {
   QuadBaseComplex out;
   std::vector<int> vertex_of(c.nodes.size(), -1);
@@ -125,32 +209,21 @@ QuadBaseComplex QuasiDual(const MorseSmaleComplex& c, const std::vector<Eigen::V
     out.points.push_back(points[size_t(c.nodes[n].vertex)]);
     out.nodes.push_back(c.nodes[n].vertex);
   }
-  // A saddle's arcs, consecutive in `arcs` and in the cyclic order of its
-  // wedges, alternate between maxima and minima; the dual edge between two
-  // consecutive arcs crosses the cell they share.
+  // The dual edge between two consecutive arcs of a saddle's polygon
+  // crosses the cell they share.
   std::unordered_map<long, std::array<int, 2>> edges;  // key: the cell, or a diagonal
   long diagonals = long(c.cells.size());
-  for (size_t i = 0; i < c.arcs.size();) {
-    size_t j = i;
-    while (j < c.arcs.size() && c.arcs[j].saddle == c.arcs[i].saddle) ++j;
-    const size_t n = j - i;
-    if (int(n) != 2 * (c.nodes[size_t(c.arcs[i].saddle)].multiplicity + 1)) {
+  for (const MorseSmalePolygon& p : SaddlePolygons(c)) {
+    const size_t n = p.arcs.size();
+    if (!p.complete) {
       ++out.missing_saddles;
-      i = j;
       continue;
     }
-    const size_t first = c.arcs[i].ascending ? i : i + 1;  // a maximum first
     std::vector<int> polygon;
     std::vector<long> side;  // side k: between corners k and k + 1
     for (size_t k = 0; k < n; ++k) {
-      const MorseSmaleArc& a = c.arcs[i + (first - i + k) % n];
-      const MorseSmaleArc& b = c.arcs[i + (first - i + k + 1) % n];
-      polygon.push_back(vertex_of[size_t(a.extremum)]);
-      long shared = -1;
-      for (int x : a.side_cells) {
-        if (x == b.side_cells[0] || x == b.side_cells[1]) shared = x;
-      }
-      side.push_back(shared >= 0 ? shared : diagonals++);
+      polygon.push_back(vertex_of[size_t(c.arcs[size_t(p.arcs[k])].extremum)]);
+      side.push_back(p.cells[k] >= 0 ? p.cells[k] : diagonals++);
     }
     long previous = side[0];  // quads (0, k, k+1, k+2), split by diagonals from corner 0
     for (size_t k = 1; k + 2 < n; k += 2) {
@@ -165,7 +238,6 @@ QuadBaseComplex QuasiDual(const MorseSmaleComplex& c, const std::vector<Eigen::V
       out.quad_edges.push_back(e);
       previous = closing;
     }
-    i = j;
   }
   std::vector<int> valence(out.points.size(), 0);
   for (const auto& [key, e] : edges) {

@@ -23,6 +23,12 @@ struct Draft {
   std::vector<int> guide;  // vertices, the saddle's first
   int target = 0;          // node index
   bool alive = true;
+  // On a double (MorseSmaleMirror): the side the arc runs on, 0 the
+  // surface's inner vertices, 1 its boundary, 2 the mirror images' (the
+  // arc placed as the image of draft `twin`'s).
+  char lane = 0;
+  int twin = -1;
+  bool connection = false;  // lane 1 from a saddle to a saddle (MsTwins)
 };
 
 // f(u) > f(v), ties broken by index (as spectral/critical_points.h).
@@ -36,21 +42,29 @@ struct ArcMesh {
   std::vector<Eigen::Vector3d> points;
   std::vector<std::vector<int>> rings;  // cyclic, in the input's orientation
   std::vector<double> f;
+  MorseSmaleMirror mirror;  // empty unless the mesh is a double
 };
+
+// The vertex of the surface (side 0 or 1) among v and its mirror image.
+inline int OnSurface(const MorseSmaleMirror& m, int v) {
+  return m.side.empty() || m.side[size_t(v)] != 2 ? v : m.image[size_t(v)];
+}
 
 // Replaces the drafts' guides by paths that share no vertex with another
 // arc or a node (shortest paths where the guide does not); appends the arcs
 // to `complex` and counts rerouted and unresolved ones; `unplaced` gets the
 // drafts left without a path.
-void EmbedArcs(const std::vector<Eigen::Vector3d>& points,
-               const std::vector<std::vector<int>>& rings, const std::vector<bool>& node_vertex,
+// On a double, the drafts of lanes 0 and 1 are placed on their lanes and
+// those of lane 2 as their twins' images.
+void EmbedArcs(const ArcMesh& mesh, const std::vector<bool>& node_vertex,
                const std::vector<Draft>& drafts, const std::vector<int>& node_renumber,
                MorseSmaleComplex& complex, std::vector<size_t>& unplaced);
 
 // Splits every edge between two vertices within `width` rings of `seeds`
 // at its midpoint, f linear; the guides through a split edge go through
 // its midpoint. The region's resolution doubles; no vertex's class changes
-// and no midpoint is critical (see morse_smale_refine.cpp).
+// and no midpoint is critical (see morse_smale_refine.cpp). On a double,
+// the region and every split are mirrored.
 void SplitAround(ArcMesh& mesh, const std::vector<int>& seeds, int width,
                  std::vector<Draft>& drafts);
 

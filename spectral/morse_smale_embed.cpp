@@ -22,11 +22,18 @@ constexpr int kEmbedLookahead = 3;
 // Whether an arc may run through v: `used` marks the nodes and the arcs
 // placed, `reserved` the one-rings of the saddles (kept for their own arcs).
 // `corridor`, when not empty, the only vertices a rerouted tail may take.
+// On a double, `side` the mirror's sides and `lane` the one side the arc
+// being placed may run through; `entry` the one vertex of a saddle's ring a
+// connection to that saddle may use (its last step).
 struct EmbedSpace {
   std::vector<bool> used, reserved;
   std::vector<bool> corridor;
+  const std::vector<char>* side = nullptr;
+  char lane = 0;
+  int entry = -1;
+  bool OnLane(int v) const { return side == nullptr || (*side)[size_t(v)] == lane; }
   bool Free(int v, int target) const {
-    return v == target || (!used[size_t(v)] && !reserved[size_t(v)] &&
+    return v == target || (!used[size_t(v)] && (!reserved[size_t(v)] || v == entry) && OnLane(v) &&
                            (corridor.empty() || corridor[size_t(v)]));
   }
 };
@@ -70,7 +77,7 @@ bool EmbedReachable(const std::vector<std::vector<int>>& rings, const EmbedSpace
   bool met = false;
   for (int u : sources) {
     if (u == target) met = true;
-    if (!space.used[size_t(u)] && side[size_t(u)] == 0) mark(u, 1);
+    if (!space.used[size_t(u)] && space.OnLane(u) && side[size_t(u)] == 0) mark(u, 1);
   }
   mark(target, 2);
   while (!met && !front[0].empty() && !front[1].empty()) {
@@ -107,7 +114,7 @@ std::vector<int> EmbedShortest(const std::vector<Eigen::Vector3d>& points,
   using Item = std::pair<double, int>;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
   for (int u : sources) {
-    if (space.used[size_t(u)] && u != target) continue;
+    if ((space.used[size_t(u)] || !space.OnLane(u)) && u != target) continue;
     dist[size_t(u)] = (points[size_t(u)] - points[size_t(from)]).norm();
     previous[size_t(u)] = from;
     queue.push({dist[size_t(u)], u});
@@ -141,8 +148,10 @@ std::vector<int> EmbedOne(const std::vector<Eigen::Vector3d>& points,
                           const std::vector<std::vector<int>>& rings, EmbedSpace& space,
                           const Draft& d) {
   const int target = d.guide.back();
+  space.lane = d.lane;
+  space.entry = d.connection ? d.guide[d.guide.size() - 2] : -1;
   std::vector<int> path{d.guide.front()};
-  if (!space.used[size_t(d.guide[1])]) {
+  if (!space.used[size_t(d.guide[1])] && space.OnLane(d.guide[1])) {
     path.push_back(d.guide[1]);
     for (size_t i = 2; i < d.guide.size() && space.Free(d.guide[i], target); ++i) {
       path.push_back(d.guide[i]);
@@ -357,12 +366,14 @@ class EmbedComponents {
 
 // One pass placing the drafts in `order`; the drafts left without a path
 // are returned.
-std::vector<size_t> EmbedPass(const std::vector<Eigen::Vector3d>& points,
-                              const std::vector<std::vector<int>>& rings,
-                              const std::vector<bool>& node_vertex, const std::vector<Draft>& drafts,
-                              const std::vector<size_t>& order, bool look_ahead,
-                              std::vector<std::vector<int>>& paths) {
-  EmbedSpace space{node_vertex, std::vector<bool>(points.size(), false), {}};
+std::vector<size_t> EmbedPass(const ArcMesh& mesh, const std::vector<bool>& node_vertex,
+                              const std::vector<Draft>& drafts, const std::vector<size_t>& order,
+                              bool look_ahead, std::vector<std::vector<int>>& paths) {
+  const std::vector<Eigen::Vector3d>& points = mesh.points;
+  const std::vector<std::vector<int>>& rings = mesh.rings;
+  const bool mirrored = !mesh.mirror.side.empty();
+  EmbedSpace space{node_vertex, std::vector<bool>(points.size(), false), {},
+                   mirrored ? &mesh.mirror.side : nullptr, 0};
   for (size_t i : order) {
     for (int u : rings[size_t(drafts[i].guide.front())]) space.reserved[size_t(u)] = true;
   }
@@ -430,6 +441,8 @@ std::vector<size_t> EmbedPass(const std::vector<Eigen::Vector3d>& points,
       place(i, false);
       for (size_t z : cut) {
         const Draft& d = drafts[z];
+        space.lane = d.lane;
+        space.entry = d.connection ? d.guide[d.guide.size() - 2] : -1;
         for (int v : EmbedShortest(points, rings, space, d.guide.front(), d.wedge, d.guide.back())) {
           if (!space.used[size_t(v)]) {
             space.used[size_t(v)] = true;
@@ -458,7 +471,8 @@ std::vector<size_t> EmbedPass(const std::vector<Eigen::Vector3d>& points,
   // only is placed before that arc, which is then placed again.
   std::vector<size_t> still;
   for (size_t i : failed) {
-    EmbedSpace open{node_vertex, space.reserved, {}};
+    EmbedSpace open{node_vertex, space.reserved, {}, space.side, drafts[i].lane,
+                    drafts[i].connection ? drafts[i].guide[drafts[i].guide.size() - 2] : -1};
     const std::vector<int> way =
         EmbedShortest(points, rings, open, drafts[i].guide.front(), drafts[i].wedge, drafts[i].guide.back());
     int barrier = -1;
@@ -496,19 +510,18 @@ std::vector<size_t> EmbedPass(const std::vector<Eigen::Vector3d>& points,
 // Passes in which the arcs left without a path, with their saddles' other
 // arcs, go first, until every arc has one or kEmbedPasses have run; the
 // pass with the fewest left out is kept.
-void EmbedArcs(const std::vector<Eigen::Vector3d>& points,
-               const std::vector<std::vector<int>>& rings, const std::vector<bool>& node_vertex,
+void EmbedArcs(const ArcMesh& mesh, const std::vector<bool>& node_vertex,
                const std::vector<Draft>& drafts, const std::vector<int>& node_renumber,
                MorseSmaleComplex& complex, std::vector<size_t>& unplaced) {
   constexpr int kEmbedPasses = 32;
   std::vector<size_t> order;
   for (size_t i = 0; i < drafts.size(); ++i) {
-    if (drafts[i].alive) order.push_back(i);
+    if (drafts[i].alive && drafts[i].twin < 0) order.push_back(i);
   }
   std::vector<std::vector<int>> paths(drafts.size()), best;
   size_t best_failed = order.size() + 1;
   for (int pass = 0; pass < kEmbedPasses; ++pass) {
-    const std::vector<size_t> failed = EmbedPass(points, rings, node_vertex, drafts, order, pass > 0, paths);
+    const std::vector<size_t> failed = EmbedPass(mesh, node_vertex, drafts, order, pass > 0, paths);
     if (failed.size() < best_failed) {
       best_failed = failed.size();
       best = paths;
@@ -523,11 +536,22 @@ void EmbedArcs(const std::vector<Eigen::Vector3d>& points,
     std::stable_partition(order.begin(), order.end(), [&](size_t i) { return first[i]; });
   }
   for (size_t i = 0; i < drafts.size(); ++i) {
+    if (!drafts[i].alive || drafts[i].twin < 0) continue;
+    // The image of its twin's arc, or (a connection) that arc reversed.
+    const std::vector<int>& twin = best[size_t(drafts[i].twin)];
+    if (drafts[i].lane == 2) {
+      for (int v : twin) best[i].push_back(mesh.mirror.image[size_t(v)]);
+    } else {
+      best[i].assign(twin.rbegin(), twin.rend());
+    }
+    if (best[i].empty()) ++complex.unresolved;
+  }
+  for (size_t i = 0; i < drafts.size(); ++i) {
     if (best[i].empty()) continue;
     complex.rerouted += best[i] != drafts[i].guide;
     complex.arcs.push_back({node_renumber[size_t(drafts[i].saddle)],
                             node_renumber[size_t(drafts[i].target)], drafts[i].ascending,
-                            std::move(best[i])});
+                            std::move(best[i]), {{-1, -1}}, drafts[i].lane});
   }
 }
 

@@ -40,6 +40,35 @@ void RefineInsertBetween(std::vector<int>& ring, int a, int b, int m) {
 
 // Splits edge ab; false (nothing changed) when the midpoint's value equals
 // one of its four neighbours'.
+bool RefineSplitEdge(ArcMesh& mesh, int a, int b, std::vector<Draft>& drafts);
+
+// Splits ab and, on a double, its mirror image (a and b taken on the
+// surface's side first); the midpoints are each other's images.
+void RefineSplitPair(ArcMesh& mesh, int a, int b, std::vector<Draft>& drafts) {
+  MorseSmaleMirror& m = mesh.mirror;
+  if (m.side.empty()) {
+    RefineSplitEdge(mesh, a, b, drafts);
+    return;
+  }
+  if (m.side[size_t(a)] == 2 || m.side[size_t(b)] == 2) {
+    a = m.image[size_t(a)];
+    b = m.image[size_t(b)];
+  }
+  const int first = int(mesh.points.size());
+  if (!RefineSplitEdge(mesh, a, b, drafts)) return;
+  const bool boundary = m.side[size_t(a)] == 1 && m.side[size_t(b)] == 1;
+  m.image.push_back(first);
+  m.side.push_back(boundary ? 1 : 0);
+  if (boundary) return;
+  // The image's neighbours carry the same values: it splits too.
+  if (!RefineSplitEdge(mesh, m.image[size_t(a)], m.image[size_t(b)], drafts)) {
+    throw std::logic_error("morse_smale: an edge and its mirror image split differently");
+  }
+  m.image[size_t(first)] = first + 1;
+  m.image.push_back(first);
+  m.side.push_back(2);
+}
+
 bool RefineSplitEdge(ArcMesh& mesh, int a, int b, std::vector<Draft>& drafts) {
   std::vector<int>& ra = mesh.rings[size_t(a)];
   const size_t n = ra.size(), ib = RefineFind(ra, b);
@@ -73,9 +102,15 @@ bool RefineSplitEdge(ArcMesh& mesh, int a, int b, std::vector<Draft>& drafts) {
 }  // namespace
 
 void SplitLink(ArcMesh& mesh, int v, std::vector<Draft>& drafts) {
+  const MorseSmaleMirror& m = mesh.mirror;
+  v = OnSurface(m, v);
   const std::vector<int> ring = mesh.rings[size_t(v)];
   for (size_t i = 0; i < ring.size(); ++i) {
-    RefineSplitEdge(mesh, ring[i], ring[(i + 1) % ring.size()], drafts);
+    const int a = ring[i], b = ring[(i + 1) % ring.size()];
+    // A boundary vertex's link edges among the images: split as the images
+    // of the surface's.
+    if (!m.side.empty() && (m.side[size_t(a)] == 2 || m.side[size_t(b)] == 2)) continue;
+    RefineSplitPair(mesh, a, b, drafts);
   }
 }
 
@@ -84,6 +119,7 @@ void SplitAround(ArcMesh& mesh, const std::vector<int>& seeds, int width,
   std::vector<char> in(mesh.points.size(), 0);
   std::vector<int> region, front;
   for (int v : seeds) {
+    v = OnSurface(mesh.mirror, v);  // a double's region is mirrored (below)
     if (!in[size_t(v)]) {
       in[size_t(v)] = 1;
       front.push_back(v);
@@ -104,12 +140,15 @@ void SplitAround(ArcMesh& mesh, const std::vector<int>& seeds, int width,
     front = std::move(next);
   }
   std::vector<std::pair<int, int>> edges;
+  const std::vector<char>& side = mesh.mirror.side;
   for (int v : region) {
     for (int u : mesh.rings[size_t(v)]) {
-      if (v < u && in[size_t(u)]) edges.emplace_back(v, u);
+      if (!in[size_t(u)]) continue;
+      if (!side.empty() && (side[size_t(v)] == 2 || side[size_t(u)] == 2)) continue;
+      if (v < u) edges.emplace_back(v, u);
     }
   }
-  for (const auto& [a, b] : edges) RefineSplitEdge(mesh, a, b, drafts);
+  for (const auto& [a, b] : edges) RefineSplitPair(mesh, a, b, drafts);
 }
 
 void Rewedge(const ArcMesh& mesh, std::vector<Draft>& drafts) {

@@ -13,6 +13,8 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
+#include <set>
 #include <sstream>
 
 #include "core/input_error.h"
@@ -159,22 +161,26 @@ TEST(MorseSmale, TorusEigenfunctions10To100) {
 // The shared Concerthall roof (open, a disc): every eigenfunction 1 … 60
 // whose complex has 8 charts or more (a chart per saddle, half a chart per
 // boundary saddle) gives a valid quad complex on the roof doubled across its
-// boundary (a sphere: max + min − saddles = 2 there, interior points twice).
-TEST(MorseSmale, EigenfunctionsOfTheOpenHallRoofGiveValidComplexesOnItsDouble) {
+// boundary (a sphere: max + min − saddles = 2 there, interior points twice)
+// without refining it, mirror-symmetric (every arc's mirror image an arc:
+// none crosses the boundary), and its half a base complex of the roof whose
+// faces have distinct corners and whose every edge two faces share but the
+// sides along the boundary.
+TEST(MorseSmale, EigenfunctionsOfTheOpenHallRoofGiveSymmetricComplexesOnItsDouble) {
   const Mesh hall = TriangulatedCopy(ReadMesh(ARCHGEO_DATA_DIR "/directional_Concerthall.off"));
   const SpectralMesh m = SpectralArrays(hall);
   const Eigenpairs pairs = LowestOf(m, 61);
   const std::vector<SpectralCandidate> candidates = SpectralCandidatesOf(m, pairs);
   MorseSmaleOptions options;
   options.persistence = 0.02;
-  int tried = 0;
+  int tried = 0, along = 0;
   std::string invalid;
   for (const SpectralCandidate& cand : candidates) {
     if (SpectralCharts(cand.critical) < 8) continue;
     ++tried;
     Eigen::VectorXd f = pairs.vectors.col(cand.k);
     f /= f.cwiseAbs().maxCoeff();
-    const SurfaceComplex s = BuildSurfaceComplex(hall, f, options);
+    const SurfaceComplex s = BuildSurfaceComplex(hall, f, options, 0);
     ASSERT_TRUE(s.built) << s.error;
     EXPECT_TRUE(s.doubled);
     const MorseSmaleComplex& c = s.complex;
@@ -188,9 +194,30 @@ TEST(MorseSmale, EigenfunctionsOfTheOpenHallRoofGiveValidComplexesOnItsDouble) {
       EXPECT_EQ(cell.corners.size(), 4u) << "k " << cand.k;
     }
     EXPECT_EQ(s.quasi_dual.euler, 2) << "k " << cand.k;
-    EXPECT_EQ(int(s.quasi_dual.quads.size()), c.saddles) << "k " << cand.k;
+    const std::vector<int>& image = c.mirror_image;
+    ASSERT_EQ(image.size(), c.points.size());
+    for (int v = 0; v < int(s.half_points.size()); ++v) {  // the roof's boundary: fixed
+      EXPECT_EQ(image[size_t(v)] == v, bool(s.half_boundary[size_t(v)]));
+    }
+    std::set<std::vector<int>> paths;
+    for (const MorseSmaleArc& a : c.arcs) paths.insert(a.path);
+    for (const MorseSmaleArc& a : c.arcs) {
+      along += a.side == 1;
+      std::vector<int> mirrored;
+      for (int v : a.path) mirrored.push_back(image[size_t(v)]);
+      EXPECT_EQ(paths.count(mirrored), 1u) << "k " << cand.k << ": an arc without its image";
+    }
+    const BaseComplex half_base = HalfBaseComplex(s);
+    std::map<long, int> uses;
+    for (size_t f = 0; f < half_base.faces.size(); ++f) {
+      std::set<int> corners(half_base.faces[f].begin(), half_base.faces[f].end());
+      EXPECT_EQ(corners.size(), half_base.faces[f].size()) << "k " << cand.k;
+      for (long e : half_base.edges[f]) ++uses[e];
+    }
+    for (const auto& [e, n] : uses) EXPECT_LE(n, 2) << "k " << cand.k;
   }
   EXPECT_GE(tried, 45);
+  EXPECT_GT(along, 0);  // arcs along the boundary
   EXPECT_TRUE(invalid.empty()) << "invalid:" << invalid;
 }
 

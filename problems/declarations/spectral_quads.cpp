@@ -20,7 +20,9 @@
 // chart count (one per saddle, `archgeo spectral --list`) is from the target
 // (spectral.charts, or the surface's area / spectral.chart_edge_length²),
 // ties to the lower k; the first of the kSqTries nearest whose complex is a
-// valid quad complex and whose charts are discs is taken. None: exit 4
+// valid quad complex, whose charts are discs and whose quad mesh passes the
+// validity checks (validity.*, without the design surface) is taken; when
+// only the last fail, the first such quad mesh is the result. None: exit 4
 // naming each one's reason (HookContext::missed), the input written as
 // output.mesh. Outputs besides: output.function (PLY, φ_K per vertex),
 // output.complex (OBJ polylines), output.quasi_dual (OBJ quads).
@@ -37,6 +39,7 @@
 #include "io/io.h"
 #include "io/output_files.h"
 #include "problems/commands/spectral.h"
+#include "analysis/validity.h"
 #include "problems/declarations/base_complex_input.h"
 #include "problems/declarations/surface_complex.h"
 #include "problems/runtime/model.h"
@@ -154,7 +157,10 @@ void SqNet(HookContext& c) {
   std::string reasons;
   const SpectralCandidate* chosen = nullptr;
   ChartStep step;
-  for (int i : order) {
+  const ValidityLimits limits = LimitsOf(s);
+  // One candidate; `judge`: its quad mesh must also be buildable (no panel
+  // the validity checks fail), or the automatic choice goes on.
+  auto attempt = [&](int i, bool judge) {
     const SpectralCandidate& cand = candidates[size_t(i)];
     Eigen::VectorXd f = pairs.vectors.col(cand.k);
     f /= std::max(f.cwiseAbs().maxCoeff(), 1e-300);
@@ -168,10 +174,14 @@ void SqNet(HookContext& c) {
     st.dual = sc.quasi_dual;
     st.base = st.dual;
     st.primal = false;
+    st.quads = false;
     chosen = &cand;
-    std::string fault = sc.built ? SqComplexFault(st.complex, st.dual)
-                                 : "its complex cannot be built: " + sc.error;
-    if (!fault.empty() && st.complex.valid) {
+    // A surface with boundary: its own base complex (HalfBaseComplex)
+    // judges the quasi-dual's corners, not the double's.
+    std::string fault = !sc.built ? "its complex cannot be built: " + sc.error
+                        : sc.doubled && st.complex.valid ? ""
+                                                         : SqComplexFault(st.complex, st.dual);
+    if (!fault.empty() && st.complex.valid && !sc.doubled) {
       // The quasi-dual repeats a corner (a saddle with two arcs to one
       // extremum, a wave round the tube); the complex's own cells are
       // quads with four distinct corners (§7.1.2): chart those.
@@ -181,10 +191,6 @@ void SqNet(HookContext& c) {
         st.primal = true;
         fault.clear();
       }
-    }
-    if (fault.empty() && sc.doubled && st.primal) {
-      fault = "its quasi-dual repeats a corner (the cells of the complex of a surface with "
-              "boundary are not charted)";
     }
     if (fault.empty()) {
       try {
@@ -199,14 +205,31 @@ void SqNet(HookContext& c) {
         fault = std::string("its charts fail: ") + e.what();
       }
     }
+    if (st.quads && judge) {
+      const Validity v = CheckValidity(step.mesh, nullptr, limits, true);
+      if (!v.valid()) {
+        st.quads = false;
+        const std::string reason = v.Reason();
+        fault = "its quad mesh has panels that cannot be built: " + reason.substr(0, reason.find('\n'));
+      }
+    }
     tried.push_back({{"k", cand.k},
                      {"charts", SpectralCharts(cand.critical)},
                      {"base", st.primal ? "complex" : "quasi_dual"},
                      {"fault", fault}});
+    if (!st.quads) {
+      reasons += (reasons.empty() ? "" : "; ") + std::string("eigenfunction ") +
+                 std::to_string(cand.k) + ": " + fault;
+    }
+    return fault;
+  };
+  int unbuildable = -1;  // the first candidate whose quad mesh failed the validity checks
+  for (int i : order) {
+    if (attempt(i, given == 0).rfind("its quad mesh", 0) == 0 && unbuildable < 0) unbuildable = i;
     if (st.quads) break;
-    reasons += (reasons.empty() ? "" : "; ") + std::string("eigenfunction ") +
-               std::to_string(cand.k) + ": " + fault;
   }
+  // None buildable: the first quad mesh, for the run to judge and report.
+  if (!st.quads && unbuildable >= 0) attempt(unbuildable, false);
   const CriticalPoints& cp = chosen->critical;
   c.details["spectral"] = {
       {"laplacian", s.String("spectral.laplacian")},

@@ -3,6 +3,7 @@
 #include "problems/declarations/surface_complex.h"
 
 #include <algorithm>
+#include <initializer_list>
 #include <stdexcept>
 
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -37,8 +38,9 @@ void ComplexSplitChords(Mesh* m, std::vector<double>* f) {
 }
 
 // `mesh` (triangles) glued to its mirror copy along the boundary; `original`
-// gets each vertex's source. False when the double is not a closed manifold.
-bool ComplexDouble(const Mesh& mesh, Mesh* out, std::vector<int>* original) {
+// gets each vertex's source, `sides` the mirror. False when the double is
+// not a closed manifold.
+bool ComplexDouble(const Mesh& mesh, Mesh* out, std::vector<int>* original, MorseSmaleMirror* sides) {
   const size_t n = mesh.number_of_vertices();
   std::vector<int> mirror(n, -1);
   for (VertexIndex v : mesh.vertices()) {
@@ -75,7 +77,24 @@ bool ComplexDouble(const Mesh& mesh, Mesh* out, std::vector<int>* original) {
   for (VertexIndex v : out->vertices()) {
     if (out->is_border(v) || out->is_isolated(v)) return false;
   }
+  sides->image.assign(out->number_of_vertices(), -1);
+  sides->side.assign(out->number_of_vertices(), 2);
+  for (size_t v = 0; v < n; ++v) {
+    sides->image[v] = mirror[v];
+    sides->image[size_t(mirror[v])] = int(v);
+    sides->side[v] = mirror[v] == int(v) ? 1 : 0;
+  }
   return true;
+}
+
+// The side of a new vertex between (or inside) vertices of these sides:
+// the boundary only between boundary vertices.
+char ComplexSide(std::initializer_list<char> sides) {
+  char out = 1;
+  for (char c : sides) {
+    if (c != 1) out = c;
+  }
+  return out;
 }
 
 // The closed triangle mesh `m` split 1 to 4 (a vertex at every edge's
@@ -84,7 +103,7 @@ bool ComplexDouble(const Mesh& mesh, Mesh* out, std::vector<int>* original) {
 // above v exactly when u is) and no midpoint is critical: the same critical
 // points, with twice as many vertices between them for the arcs
 // (Gebreiter 2012, §7.1.3: refinement where separatrices still merge).
-Mesh ComplexRefined(const Mesh& m, std::vector<double>* f) {
+Mesh ComplexRefined(const Mesh& m, std::vector<double>* f, MorseSmaleMirror* sides) {
   Mesh out;
   for (VertexIndex v : m.vertices()) out.add_vertex(m.point(v));
   std::vector<int> midpoint(m.number_of_edges(), -1);
@@ -93,6 +112,18 @@ Mesh ComplexRefined(const Mesh& m, std::vector<double>* f) {
     const VertexIndex a = m.source(h), b = m.target(h);
     midpoint[e.idx()] = int(out.add_vertex(CGAL::midpoint(m.point(a), m.point(b))).idx());
     f->push_back(0.5 * ((*f)[a.idx()] + (*f)[b.idx()]));
+  }
+  if (!sides->side.empty()) {
+    MorseSmaleMirror next{sides->image, sides->side};
+    for (EdgeIndex e : m.edges()) {
+      const HalfedgeIndex h = m.halfedge(e);
+      const size_t a = m.source(h).idx(), b = m.target(h).idx();
+      const HalfedgeIndex g = m.halfedge(VertexIndex(VertexIndex::size_type(sides->image[a])),
+                                         VertexIndex(VertexIndex::size_type(sides->image[b])));
+      next.image.push_back(midpoint[m.edge(g).idx()]);
+      next.side.push_back(ComplexSide({sides->side[a], sides->side[b]}));
+    }
+    *sides = std::move(next);
   }
   for (FaceIndex t : m.faces()) {
     std::array<VertexIndex, 3> corner, mid;  // mid[k]: on the edge from corner k to k + 1
@@ -112,16 +143,30 @@ Mesh ComplexRefined(const Mesh& m, std::vector<double>* f) {
 // `m` with a vertex at every triangle's centroid (1 to 3), `f` linearly: as
 // ComplexRefined, the same critical points; every old vertex's valence doubles,
 // so more arcs can reach an extremum apart.
-Mesh ComplexCentroidSplit(const Mesh& m, std::vector<double>* f) {
+Mesh ComplexCentroidSplit(const Mesh& m, std::vector<double>* f, MorseSmaleMirror* sides) {
   Mesh out;
   for (VertexIndex v : m.vertices()) out.add_vertex(m.point(v));
+  std::vector<int> centroid(m.number_of_faces(), -1);
   for (FaceIndex t : m.faces()) {
     std::array<VertexIndex, 3> c;
     size_t k = 0;
     for (VertexIndex v : m.vertices_around_face(m.halfedge(t))) c[k++] = v;
     const VertexIndex mid = out.add_vertex(CGAL::centroid(m.point(c[0]), m.point(c[1]), m.point(c[2])));
+    centroid[t.idx()] = int(mid.idx());
     f->push_back(((*f)[c[0].idx()] + (*f)[c[1].idx()] + (*f)[c[2].idx()]) / 3);
     for (size_t i = 0; i < 3; ++i) out.add_face(c[i], c[(i + 1) % 3], mid);
+  }
+  if (!sides->side.empty()) {
+    MorseSmaleMirror next{sides->image, sides->side};
+    for (FaceIndex t : m.faces()) {  // its image holds the image of each halfedge, reversed
+      const HalfedgeIndex h = m.halfedge(t);
+      const size_t a = m.source(h).idx(), b = m.target(h).idx(), c = m.target(m.next(h)).idx();
+      const HalfedgeIndex g = m.halfedge(VertexIndex(VertexIndex::size_type(sides->image[b])),
+                                         VertexIndex(VertexIndex::size_type(sides->image[a])));
+      next.image.push_back(centroid[m.face(g).idx()]);
+      next.side.push_back(ComplexSide({sides->side[a], sides->side[b], sides->side[c]}));
+    }
+    *sides = std::move(next);
   }
   return out;
 }
@@ -134,6 +179,7 @@ SurfaceComplex BuildSurfaceComplex(const Mesh& mesh, const Eigen::VectorXd& f,
   Mesh triangles = TriangulatedCopy(mesh);
   std::vector<double> values(f.data(), f.data() + f.size());
   Mesh closed;
+  MorseSmaleMirror sides;  // the double's mirror
   bool has_boundary = false;
   for (VertexIndex v : triangles.vertices()) has_boundary = has_boundary || triangles.is_border(v);
   if (has_boundary) {
@@ -143,7 +189,7 @@ SurfaceComplex BuildSurfaceComplex(const Mesh& mesh, const Eigen::VectorXd& f,
     out.half_points = half.points;
     out.half_triangles = half.triangles;
     for (bool inside : half.closed) out.half_boundary.push_back(!inside);
-    if (!ComplexDouble(triangles, &closed, &out.original)) {
+    if (!ComplexDouble(triangles, &closed, &out.original, &sides)) {
       out.error = "the mesh doubled across its boundary is not a closed manifold";
       return out;
     }
@@ -159,13 +205,13 @@ SurfaceComplex BuildSurfaceComplex(const Mesh& mesh, const Eigen::VectorXd& f,
     try {
       out.complex = BuildMorseSmale(m.points, m.triangles, m.rings,
                                     Eigen::Map<const Eigen::VectorXd>(g.data(), Eigen::Index(g.size())),
-                                    options);
+                                    options, out.doubled ? &sides : nullptr);
     } catch (const std::invalid_argument& e) {
       out.error = e.what();
       return out;
     }
     if (out.complex.valid || level >= max_refinements) break;
-    closed = level % 2 == 0 ? ComplexCentroidSplit(closed, &g) : ComplexRefined(closed, &g);
+    closed = level % 2 == 0 ? ComplexCentroidSplit(closed, &g, &sides) : ComplexRefined(closed, &g, &sides);
     out.refinements = level + 1;
   }
   out.points = m.points;
@@ -176,56 +222,78 @@ SurfaceComplex BuildSurfaceComplex(const Mesh& mesh, const Eigen::VectorXd& f,
 }
 
 BaseComplex HalfBaseComplex(const SurfaceComplex& c) {
-  static const char* const kSide[] = {"inside", "on the boundary", "mirrored"};
-  const QuadBaseComplex& q = c.quasi_dual;
-  const int half = int(c.half_points.size());
-  // Per quasi-dual vertex: 0 inside the input, 1 on its boundary, 2 a mirror image.
-  std::vector<int> side(q.nodes.size());
-  for (size_t v = 0; v < q.nodes.size(); ++v) {
-    side[v] = q.nodes[v] >= half ? 2 : c.half_boundary[size_t(q.nodes[v])] ? 1 : 0;
-  }
+  const MorseSmaleComplex& mc = c.complex;
   BaseComplex out;
-  std::vector<int> base_vertex(q.nodes.size(), -1);
-  auto vertex = [&](int v) {
-    if (base_vertex[size_t(v)] < 0) {
-      base_vertex[size_t(v)] = int(out.nodes.size());
-      out.nodes.push_back(q.nodes[size_t(v)]);
+  std::vector<int> base_vertex(mc.nodes.size(), -1);
+  auto vertex = [&](int arc) {
+    const int n = mc.arcs[size_t(arc)].extremum;
+    if (base_vertex[size_t(n)] < 0) {
+      base_vertex[size_t(n)] = int(out.nodes.size());
+      out.nodes.push_back(mc.nodes[size_t(n)].vertex);
     }
-    return base_vertex[size_t(v)];
+    return base_vertex[size_t(n)];
   };
-  long next_id = 0;  // edge ids beyond the quasi-dual's, for the triangles' boundary sides
-  for (const auto& e : q.quad_edges) next_id = std::max({next_id, e[0] + 1, e[1] + 1, e[2] + 1, e[3] + 1});
-  for (size_t f = 0; f < q.quads.size(); ++f) {
-    const std::array<int, 4>& quad = q.quads[f];
-    const std::string name = "quasi-dual quad " + std::to_string(f);
-    int mirrored = 0, inside = 0;
-    for (int v : quad) {
-      mirrored += side[size_t(v)] == 2;
-      inside += side[size_t(v)] == 0;
+  long next_id = long(mc.cells.size());  // edge ids past the cells': diagonals, boundary sides
+  const std::vector<MorseSmalePolygon> polygons = SaddlePolygons(mc);
+  for (size_t f = 0; f < polygons.size(); ++f) {
+    const MorseSmalePolygon& p = polygons[f];
+    const size_t n = p.arcs.size();
+    const std::string name = "the quasi-dual polygon of saddle " +
+                             std::to_string(mc.nodes[size_t(mc.arcs[size_t(p.arcs[0])].saddle)].vertex);
+    if (!p.complete) throw BaseComplexError(name, "lacks arcs");
+    std::vector<size_t> along;  // its arcs along the boundary
+    int images = 0;
+    for (size_t k = 0; k < n; ++k) {
+      const int side = mc.arcs[size_t(p.arcs[k])].side;
+      if (side == 1) along.push_back(k);
+      images += side == 2;
     }
-    if (mirrored == 0 && inside == 0) {
-      throw BaseComplexError(name, "has all its corners on the boundary (the boundary cuts it into "
-                                   "halves without corners)");
+    if (along.empty() && images > 0) continue;  // a mirror image's
+    // The corners on the surface: all of them, or (a boundary saddle, or
+    // saddles joined along the boundary) from one arc along the boundary
+    // through the arcs into the surface to the other, the polygon closed by
+    // a side along the boundary.
+    std::vector<int> corner;
+    std::vector<long> side;  // side k: from corner k to k + 1
+    if (along.empty()) {
+      for (size_t k = 0; k < n; ++k) {
+        corner.push_back(vertex(p.arcs[k]));
+        side.push_back(p.cells[k] >= 0 ? p.cells[k] : next_id++);
+      }
+    } else {
+      if (along.size() != 2) throw BaseComplexError(name, "has " + std::to_string(along.size()) + " arcs along the boundary (2 expected)");
+      size_t k = along[0];
+      if (mc.arcs[size_t(p.arcs[(k + 1) % n])].side != 0) k = along[1];
+      for (;; k = (k + 1) % n) {
+        corner.push_back(vertex(p.arcs[k]));
+        if (corner.size() > 1 && mc.arcs[size_t(p.arcs[k])].side == 1) break;
+        if (mc.arcs[size_t(p.arcs[(k + 1) % n])].side == 2) {
+          throw BaseComplexError(name, "has arcs into the mirror image between its arcs into the surface");
+        }
+        side.push_back(p.cells[k] >= 0 ? p.cells[k] : next_id++);
+      }
+      side.push_back(next_id++);  // along the boundary
     }
-    if (mirrored == 0) {
-      out.faces.push_back({vertex(quad[0]), vertex(quad[1]), vertex(quad[2]), vertex(quad[3])});
-      out.edges.push_back({q.quad_edges[f][0], q.quad_edges[f][1], q.quad_edges[f][2], q.quad_edges[f][3]});
-      continue;
+    std::vector<int> sorted = corner;
+    std::sort(sorted.begin(), sorted.end());
+    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
+      throw BaseComplexError(name, "repeats a corner (a saddle with two arcs to one extremum)");
     }
-    if (inside == 0) continue;  // the mirror image's
-    // Corners boundary, inside, boundary, mirrored in cyclic order: the
-    // triangle of the first three.
-    size_t k = 0;
-    while (k < 4 && side[size_t(quad[(k + 1) % 4])] != 0) ++k;
-    if (mirrored != 1 || inside != 1 || side[size_t(quad[k])] != 1 || side[size_t(quad[(k + 2) % 4])] != 1) {
-      std::string corners;
-      for (int v : quad) corners += std::string(corners.empty() ? "" : ", ") + kSide[side[size_t(v)]];
-      throw BaseComplexError(name, "crosses the boundary but is not a boundary saddle's quad (corners " +
-                                       corners + "; expected two on the boundary with one on either "
-                                       "side between them)");
+    // Quads (0, k, k + 1, k + 2) split off by diagonals from corner 0; a
+    // triangle last where the corners are odd (a boundary polygon).
+    const size_t m = corner.size();
+    long previous = side[0];
+    size_t k = 1;
+    for (; k + 2 < m; k += 2) {
+      const long closing = k + 3 == m ? side[m - 1] : next_id++;
+      out.faces.push_back({corner[0], corner[k], corner[k + 1], corner[k + 2]});
+      out.edges.push_back({previous, side[k], side[k + 1], closing});
+      previous = closing;
     }
-    out.faces.push_back({vertex(quad[k]), vertex(quad[(k + 1) % 4]), vertex(quad[(k + 2) % 4])});
-    out.edges.push_back({q.quad_edges[f][k], q.quad_edges[f][(k + 1) % 4], next_id++});
+    if (k + 2 == m) {
+      out.faces.push_back({corner[0], corner[k], corner[k + 1]});
+      out.edges.push_back({previous, side[k], side[m - 1]});
+    }
   }
   return out;
 }

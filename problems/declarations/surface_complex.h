@@ -58,11 +58,12 @@ SurfaceComplex BuildSurfaceComplex(const Mesh& mesh, const Eigen::VectorXd& f,
                                    const MorseSmaleOptions& options, int max_refinements = 2);
 
 // A doubled complex's base complex on the input itself (half_points,
-// half_triangles): the quasi-dual's quads on the input's side, and of each
-// quad the boundary cuts (a boundary saddle's: two corners on the boundary,
-// the other two mirror images) the triangle on the input's side, its third
-// side along the boundary (Gebreiter 2012, §4.1.4: charts of open-boundary
-// triangles). Throws BaseComplexError naming a quad that is neither.
+// half_triangles): the quads of the input's saddles, and of each boundary
+// saddle's quad (its arcs along the boundary, into the input, along the
+// boundary, into the mirror image) the triangle on the input's side, its
+// third side along the boundary (Gebreiter 2012, §4.1.4: charts of
+// open-boundary triangles). Throws BaseComplexError naming a boundary
+// saddle's quad that is not so (a boundary multi-saddle).
 BaseComplex HalfBaseComplex(const SurfaceComplex& c);
 
 // The arcs as OBJ polylines (the header names `function`), the quasi-dual
