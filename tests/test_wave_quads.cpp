@@ -238,20 +238,34 @@ TEST(WaveQuads, OutputQuadsIsTheQuadMeshThroughTheCharts) {
   EXPECT_LE(c.at("surface_distance_max_relative").get<double>(), 1e-9);
 }
 
-// An open surface: output.quads is refused naming the key (the charts need a
-// closed surface).
-TEST(WaveQuads, OutputQuadsOnAnOpenSurfaceIsAnErrorNamingTheKey) {
-  const Mesh patch = TriangulatedGrid(8, 8, [](double u, double v) -> Vec3 {
-    return {u, v, 0.1 * u * v};
-  });
-  try {
-    Solve(ParseSpec("problem: wave_quads\noutput: {quads: /in-memory/quads.obj}\n",
-                    "/in-memory/wave.yaml"),
-          patch, nullptr, {});
-    ADD_FAILURE() << "no error";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("output.quads"), std::string::npos) << e.what();
-  }
+// An open surface, the shared inspired mesh (start 1): output.quads is the
+// half of the double's quasi-dual on the surface through its charts (triangle
+// charts along the boundary as strips); the boundary constraint holds and
+// the quad mesh covers the surface without a hole (the chart step checks
+// that every surface triangle lies in a chart) and its boundary edges are
+// the base complex's boundary sides' samples, no more.
+TEST(WaveQuads, OutputQuadsOnAnOpenSurfaceCoversIt) {
+  const Mesh mesh = ReadMesh(std::string(ARCHGEO_DATA_DIR) + "/libigl_inspired_mesh.obj");
+  const auto s = Solve(ParseSpec("problem: wave_quads\nwave: {seed: 1, restarts: 1}\ncharts: {n: 4}\n"
+                                 "output: {quads: /in-memory/quads.obj}\n",
+                                 "/in-memory/wave.yaml"),
+                       mesh, nullptr, {});
+  ASSERT_TRUE(s->hooks.missed.empty()) << s->hooks.missed;
+  const auto& w = s->details.at("wave");
+  EXPECT_TRUE(w.at("doubled").get<bool>());
+  EXPECT_LE(w.at("feature_sin_max").get<double>(), 1e-6);
+  const auto& c = s->details.at("charts");
+  std::printf("inspired mesh, output.quads: %d charts, %d quads, %d triangles, %d boundary edges\n",
+              c.at("charts").get<int>(), c.at("output_quads").get<int>(),
+              c.at("output_triangles").get<int>(), c.at("boundary_edges").get<int>());
+  EXPECT_GT(c.at("output_quads").get<int>(), 500);
+  EXPECT_GT(c.at("boundary_edges").get<int>(), 0);
+  EXPECT_EQ(c.at("boundary_edges").get<int>(), c.at("expected_boundary_edges").get<int>());
+  EXPECT_TRUE(c.at("irregular_as_predicted").get<bool>());
+  EXPECT_EQ(c.at("flipped_parameter_triangles").get<int>(), 0);
+  EXPECT_EQ(c.at("t_junctions").get<int>(), 0);
+  EXPECT_EQ(c.at("non_manifold_edges").get<int>(), 0);
+  EXPECT_LE(c.at("surface_distance_max_relative").get<double>(), 1e-9);
 }
 
 TEST(WaveQuads, SizeFieldOnTheAxisIsAnErrorNamingTheKey) {

@@ -11,8 +11,10 @@
 // an eigenfunction of the Laplacian with a free (Neumann) boundary or the
 // wave under its feature constraint (sin φ = 0 or sin θ = 0 there), and
 // its critical points on the boundary are those critical_points.h counts
-// half. Where the arcs cannot all be placed apart on that mesh it is
-// refined (below).
+// half; the complex is built mirror-symmetric (MorseSmaleMirror), so none
+// of its arcs crosses the boundary and the half on the surface is a base
+// complex of it (HalfBaseComplex). Where the arcs cannot all be placed
+// apart on that mesh it is refined (below, mirrored too).
 #pragma once
 
 #include <array>

@@ -35,11 +35,12 @@
 // lowest E, measure wave_energy, and exit 4). The report counts the valid
 // starts, critical points, cells and irregular vertices. Outputs:
 // output.complex (OBJ lines), output.quasi_dual (OBJ), wave_f in the
-// output PLY, and output.quads: on a closed surface the quasi-dual as a
-// base complex → charts → the all-quad mesh (the step of
-// base_complex_quads, problems/declarations/base_complex_input.h; its
-// figures in details.charts; a step that fails or gives an invalid mesh is
-// a missed goal, exit 4); on an open surface output.quads is refused.
+// output PLY, and output.quads: the quasi-dual as a base complex (of a
+// surface with boundary, its half on the surface, HalfBaseComplex) →
+// charts → the all-quad mesh (the step of base_complex_quads,
+// problems/declarations/base_complex_input.h; its figures in
+// details.charts; a step that fails or gives an invalid mesh is a missed
+// goal, exit 4).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -226,17 +227,6 @@ void InitWave(HookContext& c) {
   const auto t0 = std::chrono::steady_clock::now();
   const Settings& s = *c.settings;
   const Mesh& mesh = c.store->mesh();
-  if (!s.String("output.quads").empty()) {
-    for (HalfedgeIndex h : c.input->halfedges()) {
-      if (c.input->is_border(h)) {
-        throw s.Error("output.quads",
-                      "needs a closed surface: the wave's complex on the surface doubled "
-                      "across its boundary is not cut back into charts of the surface (its arcs "
-                      "cross the boundary); output.complex and output.quasi_dual give that "
-                      "complex");
-      }
-    }
-  }
   double wavelength = s.Number("wave.wavelength");
   if (wavelength == 0) wavelength = 12 * c.frame.scale;  // 12 mean edge lengths
   double wavelength_y = s.Number("wave.wavelength_y");
@@ -384,16 +374,20 @@ void WaveQuads(HookContext& c) {
   WaveState& st = WaveSt(c);
   const SurfaceComplex& w = *st.complex;
   const QuadBaseComplex& q = w.quasi_dual;
-  if (q.degenerate_quads > 0 || q.missing_saddles > 0) {
+  // A surface with boundary: its own base complex (HalfBaseComplex, which
+  // judges its corners), charted on the surface.
+  if (!w.doubled && (q.degenerate_quads > 0 || q.missing_saddles > 0)) {
     c.missed = "output.quads: the quasi-dual has " + std::to_string(q.degenerate_quads) +
                " quads with a repeated corner and " + std::to_string(q.missing_saddles) +
                " saddles without all their arcs";
     return;
   }
-  const BaseComplex base = QuasiDualBaseComplex(q);
   ChartStep step;
   try {
-    step = RunChartStep(*c.settings, *c.input, w.points, w.triangles, base, true);
+    step = w.doubled ? RunChartStep(*c.settings, *c.input, w.half_points, w.half_triangles,
+                                    HalfBaseComplex(w), true)
+                     : RunChartStep(*c.settings, *c.input, w.points, w.triangles,
+                                    QuasiDualBaseComplex(q), true);
   } catch (const std::exception& e) {  // BaseComplexError, a failed factorisation
     c.missed = std::string("output.quads: the charts of the quasi-dual fail: ") + e.what();
     return;
