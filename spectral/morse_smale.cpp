@@ -442,7 +442,7 @@ MorseSmaleComplex BuildMorseSmale(const std::vector<Eigen::Vector3d>& points,
     std::vector<size_t> unplaced;
     morse_smale::EmbedArcs(mesh, node_vertex, s.drafts, renumber, trial, unplaced);
     trial.triangles = round == 0 ? triangles : morse_smale::TrianglesOfRings(mesh.rings, forward);
-    morse_smale::BuildCells(int(mesh.points.size()), trial.triangles, trial);
+    morse_smale::BuildCells(int(mesh.points.size()), trial.triangles, mesh.mirror, trial);
     trial.refinements = round;
     const bool last = trial.valid || round == kMsRefinements;
     if (round == 0 || trial.valid || trial.unresolved < out.unresolved) {

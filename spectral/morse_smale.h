@@ -57,7 +57,7 @@ struct MorseSmaleCell {
   std::vector<int> corners;  // node indices on the cell's closure
   int euler = 0;             // V − E + F of the closure: 1 for a disc
   bool slit = false;         // an arc with this cell on both sides
-  bool valid = false;        // a disc with corners max, min and two saddles
+  bool valid = false;        // a disc with corners max, min and two saddles (on a double: BuildCells)
 };
 
 struct MorseSmaleComplex {

@@ -38,12 +38,82 @@ int CellSharedVertices(const MorseSmaleComplex& c, int vertex_count) {
   return shared;
 }
 
-// Each cell a disc with corners max, min, saddle, saddle (four distinct).
-bool CellValid(const MorseSmaleCell& cell, const std::vector<MorseSmaleNode>& nodes) {
-  if (cell.euler != 1 || cell.slit || cell.corners.size() != 4) return false;
+// Each cell a disc with corners max, min, saddle, saddle (four distinct);
+// `boundary`: a half cell of a double that meets the boundary off the arcs,
+// corners max, min and one saddle (HalfCellsValid).
+bool CellValid(const MorseSmaleCell& cell, const std::vector<MorseSmaleNode>& nodes, bool boundary = false) {
+  if (cell.euler != 1 || cell.slit) return false;
   int kinds[3] = {0, 0, 0};
   for (int n : cell.corners) ++kinds[nodes[size_t(n)].kind + 1];
-  return kinds[0] == 1 && kinds[1] == 2 && kinds[2] == 1;
+  if (kinds[0] != 1 || kinds[2] != 1) return false;
+  return boundary ? cell.corners.size() == 3 && kinds[1] == 1 : cell.corners.size() == 4 && kinds[1] == 2;
+}
+
+// On a double: the cells of the surface's side (its triangles, cut along
+// the arcs and the boundary), each checked as CellValid checks, with one
+// saddle where it meets the boundary off the arcs (the half of a cell that
+// is its own mirror image). Per cell of `c`: whether its parts on the
+// surface's side are valid (cells of the images only: true, their images
+// judge them). `node_of`: per vertex its (grouped) node or −1.
+std::vector<bool> HalfCellsValid(const std::vector<std::array<int, 3>>& triangles,
+                                 const std::vector<char>& side, const std::unordered_set<uint64_t>& cut,
+                                 const std::unordered_map<uint64_t, std::array<int, 2>>& sides,
+                                 const std::vector<int>& node_of, const MorseSmaleComplex& c) {
+  const size_t t_count = triangles.size();
+  std::vector<bool> surface(t_count, false);
+  for (size_t t = 0; t < t_count; ++t) {
+    surface[t] = side[size_t(triangles[t][0])] != 2 && side[size_t(triangles[t][1])] != 2 &&
+                 side[size_t(triangles[t][2])] != 2;
+  }
+  auto boundary_edge = [&](uint64_t key) {
+    return side[size_t(key >> 32)] == 1 && side[size_t(key & 0xffffffffu)] == 1;
+  };
+  std::vector<int> parent(t_count);
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const auto& [key, s] : sides) {
+    if (surface[size_t(s[0])] && surface[size_t(s[1])] && !cut.count(key) && !boundary_edge(key)) {
+      parent[size_t(CellFind(parent, s[0]))] = CellFind(parent, s[1]);
+    }
+  }
+  std::unordered_map<int, MorseSmaleCell> half;  // by root triangle
+  std::unordered_map<int, bool> meets;           // a boundary edge off the arcs
+  for (size_t t = 0; t < t_count; ++t) {
+    if (surface[t]) ++half[CellFind(parent, int(t))].euler;  // F
+  }
+  for (const auto& [key, s] : sides) {
+    const bool a = surface[size_t(s[0])], b = surface[size_t(s[1])];
+    if (!a && !b) continue;
+    const int ra = a ? CellFind(parent, s[0]) : -1, rb = b ? CellFind(parent, s[1]) : -1;
+    for (int r : {ra, rb}) {
+      if (r >= 0) --half[r].euler;  // E
+      if (ra == rb) break;
+    }
+    if (ra == rb && cut.count(key)) half[ra].slit = true;
+    if (boundary_edge(key) && !cut.count(key)) meets[a ? ra : rb] = true;
+  }
+  std::vector<std::vector<int>> around(node_of.size());
+  for (size_t t = 0; t < t_count; ++t) {
+    if (!surface[t]) continue;
+    for (int v : triangles[t]) around[size_t(v)].push_back(CellFind(parent, int(t)));
+  }
+  for (size_t v = 0; v < around.size(); ++v) {
+    std::sort(around[v].begin(), around[v].end());
+    around[v].erase(std::unique(around[v].begin(), around[v].end()), around[v].end());
+    for (int r : around[v]) {
+      ++half[r].euler;  // V
+      std::vector<int>& corners = half[r].corners;
+      if (node_of[v] >= 0 && std::find(corners.begin(), corners.end(), node_of[v]) == corners.end()) {
+        corners.push_back(node_of[v]);
+      }
+    }
+  }
+  std::vector<bool> valid(c.cells.size(), true);
+  for (size_t t = 0; t < t_count; ++t) {
+    if (!surface[t]) continue;
+    const int r = CellFind(parent, int(t));
+    if (!CellValid(half[r], c.nodes, meets.count(r) > 0)) valid[size_t(c.cell_of_triangle[t])] = false;
+  }
+  return valid;
 }
 
 }  // namespace
@@ -51,7 +121,7 @@ bool CellValid(const MorseSmaleCell& cell, const std::vector<MorseSmaleNode>& no
 namespace morse_smale {
 
 void BuildCells(int vertex_count, const std::vector<std::array<int, 3>>& triangles,
-                MorseSmaleComplex& c) {
+                const MorseSmaleMirror& mirror, MorseSmaleComplex& c) {
   std::unordered_set<uint64_t> cut;
   for (const MorseSmaleArc& a : c.arcs) {
     for (size_t i = 0; i + 1 < a.path.size(); ++i) cut.insert(CellEdgeKey(a.path[i], a.path[i + 1]));
@@ -120,10 +190,13 @@ void BuildCells(int vertex_count, const std::vector<std::array<int, 3>>& triangl
     const std::array<int, 2>& s = sides.at(CellEdgeKey(a.path[0], a.path[1]));
     a.side_cells = {c.cell_of_triangle[size_t(s[0])], c.cell_of_triangle[size_t(s[1])]};
   }
-  for (MorseSmaleCell& cell : c.cells) {
-    cell.valid = CellValid(cell, c.nodes);
-    c.invalid_cells += !cell.valid;
+  if (mirror.side.empty()) {
+    for (MorseSmaleCell& cell : c.cells) cell.valid = CellValid(cell, c.nodes);
+  } else {
+    const std::vector<bool> valid = HalfCellsValid(triangles, mirror.side, cut, sides, node_of, c);
+    for (size_t k = 0; k < c.cells.size(); ++k) c.cells[k].valid = valid[k];
   }
+  for (const MorseSmaleCell& cell : c.cells) c.invalid_cells += !cell.valid;
   c.shared_vertices = CellSharedVertices(c, vertex_count);
   c.valid = c.unresolved == 0 && c.shared_vertices == 0 && c.invalid_cells == 0 && !c.cells.empty();
 }

@@ -88,9 +88,14 @@ std::vector<std::array<int, 3>> TrianglesOfRings(const std::vector<std::vector<i
                                                  bool forward);
 
 // The cells between the arcs and their check; sets shared_vertices,
-// invalid_cells and valid.
+// invalid_cells and valid. On a double (`mirror` not empty) the check is
+// of the cells' halves on the surface's side, cut along the boundary: a
+// half that meets the boundary off the arcs has one saddle (the half of a
+// cell that is its own mirror image), and a connection along the boundary
+// may have one cell of the double on both sides (its halves meet elsewhere
+// on the boundary, as round a hole whose critical points are all saddles).
 void BuildCells(int vertex_count, const std::vector<std::array<int, 3>>& triangles,
-                MorseSmaleComplex& complex);
+                const MorseSmaleMirror& mirror, MorseSmaleComplex& complex);
 
 }  // namespace morse_smale
 }  // namespace archgeo

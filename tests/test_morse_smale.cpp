@@ -22,9 +22,11 @@
 #include "generators/smoothness_surfaces.h"
 #include "geometry/reference.h"
 #include "io/io.h"
+#include "make_mesh.h"
 #include "problems/commands/spectral.h"
 #include "problems/declarations/surface_complex.h"
 #include "scratch_dir.h"
+#include "spectral/base_complex_charts.h"
 #include "spectral/critical_points.h"
 #include "spectral/eigenpairs.h"
 #include "spectral/morse_smale.h"
@@ -219,6 +221,41 @@ TEST(MorseSmale, EigenfunctionsOfTheOpenHallRoofGiveSymmetricComplexesOnItsDoubl
   EXPECT_GE(tried, 45);
   EXPECT_GT(along, 0);  // arcs along the boundary
   EXPECT_TRUE(invalid.empty()) << "invalid:" << invalid;
+}
+
+// An open cylinder (an annulus) with f = cos 2a · (z + ½): along the bottom
+// loop f has two maxima and two minima, and f rises away from the first and
+// falls away from the second, so every critical point of that loop is a
+// saddle of the double; the top loop holds two maxima and two minima. The
+// half of the quasi-dual has no corner on the bottom loop: its base complex
+// takes the four saddles as corners there, one quad between each two arcs
+// into the surface (from the top's extrema down to two saddles), and the
+// charts of those four quads cover the cylinder.
+TEST(MorseSmale, ABoundaryLoopOfSaddlesOnlyTakesTheSaddlesAsCorners) {
+  const Mesh cylinder = TriangulatedCopy(QuadCylinder(1, 2, 50, 24));
+  Eigen::VectorXd f(long(cylinder.number_of_vertices()));
+  for (VertexIndex v : cylinder.vertices()) {
+    const Point& p = cylinder.point(v);
+    f[long(v.idx())] = std::cos(2 * std::atan2(p.y(), p.x())) * (p.z() + 0.5);
+  }
+  const SurfaceComplex s = BuildSurfaceComplex(cylinder, f, {}, 0);
+  ASSERT_TRUE(s.built) << s.error;
+  const MorseSmaleComplex& c = s.complex;
+  EXPECT_EQ(c.maxima, 2);
+  EXPECT_EQ(c.minima, 2);
+  EXPECT_EQ(c.saddles, 4);  // max + min − saddles = 0: the double is a torus
+  ASSERT_TRUE(c.valid) << c.invalid_cells << " invalid cells";
+  const BaseComplex base = HalfBaseComplex(s);
+  ASSERT_EQ(base.faces.size(), 4u);
+  int bottom = 0;
+  for (int node : base.nodes) bottom += cylinder.point(VertexIndex(VertexIndex::size_type(node))).z() < 1e-9;
+  EXPECT_EQ(base.nodes.size(), 8u);
+  EXPECT_EQ(bottom, 4);
+  for (const auto& face : base.faces) EXPECT_EQ(face.size(), 4u);
+  const ChartQuadsResult q = ChartQuads(s.half_points, s.half_triangles, base, 4, 0, ChartWeights::kCotangent);
+  EXPECT_EQ(q.quads.quads.size(), 4u * 16u);
+  EXPECT_EQ(q.flipped, 0);
+  EXPECT_EQ(q.boundary_edges, q.expected_boundary_edges);
 }
 
 // φ_17 of the sphere plus a ±0.03 ripple: the raw complex has over twice
