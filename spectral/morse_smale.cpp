@@ -184,7 +184,9 @@ void MsTwins(MsState& s) {
     if (d.lane != 2) continue;
     const int saddle = m.image[size_t(s.nodes[size_t(d.saddle)].vertex)];
     const auto it = by_wedge.find(key(saddle, m.image[size_t(d.wedge[0])]));
-    if (it == by_wedge.end()) throw std::logic_error("morse_smale: a mirror image's wedge has no twin");
+    if (it == by_wedge.end()) {  // ties broken by index moved a wedge's edge
+      throw std::invalid_argument("the function is not mirror-symmetric across the boundary");
+    }
     const Draft& t = s.drafts[size_t(it->second)];
     d.twin = it->second;
     d.alive = t.alive && s.node_alive[size_t(d.saddle)];

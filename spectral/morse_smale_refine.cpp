@@ -62,7 +62,7 @@ void RefineSplitPair(ArcMesh& mesh, int a, int b, std::vector<Draft>& drafts) {
   if (boundary) return;
   // The image's neighbours carry the same values: it splits too.
   if (!RefineSplitEdge(mesh, m.image[size_t(a)], m.image[size_t(b)], drafts)) {
-    throw std::logic_error("morse_smale: an edge and its mirror image split differently");
+    throw std::invalid_argument("the function is not mirror-symmetric across the boundary");
   }
   m.image[size_t(first)] = first + 1;
   m.image.push_back(first);
