@@ -436,16 +436,21 @@ TEST_F(CliTest, WaveTorusExampleGivesTheRegularComplex) {
 
 // examples/wave_quads.yaml end to end on the inspired mesh with two of its
 // ten starts (the ten: benchmarks/wave): both give a valid complex, the one
-// of lower E is kept, the boundary holds.
+// of lower E is kept, the boundary holds, and the quad mesh is written.
 TEST_F(CliTest, WaveQuadsExampleKeepsTheBestValidStart) {
   const Outcome o = Archgeo("solve " + std::string(ARCHGEO_SOURCE_DIR) +
                             "/examples/wave_quads.yaml --quiet --set wave.restarts=2"
                             " --set output.mesh=" + Path("w.ply") + " --set output.complex=" +
                             Path("c.obj") + " --set output.quasi_dual=" + Path("q.obj") +
+                            " --set output.quads=" + Path("m.obj") +
                             " --set output.report=" + Path("w.json"));
   ASSERT_EQ(o.code, 0) << o.output;
   const auto report = nlohmann::json::parse(Slurp(Path("w.json")));
   const auto& w = report.at("details").at("wave");
+  const auto& charts = report.at("details").at("charts");
+  EXPECT_GT(charts.at("output_quads").get<int>(), 0);
+  EXPECT_EQ(ReadMesh(Path("m.obj")).number_of_faces(),
+            size_t(charts.at("output_quads").get<int>() + charts.at("output_triangles").get<int>()));
   EXPECT_TRUE(w.at("valid").get<bool>());
   EXPECT_EQ(w.at("restarts").get<int>(), 2);
   EXPECT_EQ(w.at("valid_starts").get<int>(), 2);
