@@ -352,6 +352,8 @@ TEST_F(SpectralComplex_, AnOpenMeshGivesTheComplexOfItsDouble) {
   EXPECT_TRUE(result.valid) << result.text;
   EXPECT_NE(result.text.find("(max + min - saddles = 2)"), std::string::npos) << result.text;
   EXPECT_NE(result.text.find("doubled across its boundary"), std::string::npos) << result.text;
+  EXPECT_NE(result.text.find("on the surface: "), std::string::npos) << result.text;
+  EXPECT_NE(result.text.find(" quads, "), std::string::npos) << result.text;
   std::ifstream arcs(Path("complex.obj"));
   std::stringstream a;
   a << arcs.rdbuf();

@@ -126,6 +126,19 @@ SpectralComplexResult SpectralComplex(const SpectralRequest& q) {
     out.text += "the counts are those of the mesh doubled across its boundary (V - E + F = " +
                 std::to_string(2 * m.euler) +
                 "): nodes, arcs and quads on the boundary once, the others twice\n";
+    if (c.valid) {
+      // The base complex spectral_quads charts on the surface itself.
+      try {
+        const BaseComplex half = HalfBaseComplex(s);
+        size_t quads = 0;
+        for (const auto& face : half.faces) quads += face.size() == 4;
+        out.text += "on the surface: " + std::to_string(half.nodes.size()) + " nodes, " +
+                    std::to_string(quads) + " quads, " + std::to_string(half.faces.size() - quads) +
+                    " triangles along the boundary (the half of the quasi-dual)\n";
+      } catch (const BaseComplexError& e) {
+        out.text += std::string("on the surface: no base complex: ") + e.what() + "\n";
+      }
+    }
   }
   if (s.refinements > 0) {
     out.text += "the arcs lie on the mesh refined " + std::to_string(s.refinements) +
