@@ -159,8 +159,10 @@ void SqNet(HookContext& c) {
   ChartStep step;
   const ValidityLimits limits = LimitsOf(s);
   // One candidate; `judge`: its quad mesh must also be buildable (no panel
-  // the validity checks fail), or the automatic choice goes on.
+  // the validity checks fail), or the automatic choice goes on. Returns
+  // whether it gave a quad mesh that the checks failed.
   auto attempt = [&](int i, bool judge) {
+    bool unbuildable = false;
     const SpectralCandidate& cand = candidates[size_t(i)];
     Eigen::VectorXd f = pairs.vectors.col(cand.k);
     f /= std::max(f.cwiseAbs().maxCoeff(), 1e-300);
@@ -209,6 +211,7 @@ void SqNet(HookContext& c) {
       const Validity v = CheckValidity(step.mesh, nullptr, limits, true);
       if (!v.valid()) {
         st.quads = false;
+        unbuildable = true;
         const std::string reason = v.Reason();
         fault = "its quad mesh has panels that cannot be built: " + reason.substr(0, reason.find('\n'));
       }
@@ -221,11 +224,11 @@ void SqNet(HookContext& c) {
       reasons += (reasons.empty() ? "" : "; ") + std::string("eigenfunction ") +
                  std::to_string(cand.k) + ": " + fault;
     }
-    return fault;
+    return unbuildable;
   };
   int unbuildable = -1;  // the first candidate whose quad mesh failed the validity checks
   for (int i : order) {
-    if (attempt(i, given == 0).rfind("its quad mesh", 0) == 0 && unbuildable < 0) unbuildable = i;
+    if (attempt(i, given == 0) && unbuildable < 0) unbuildable = i;
     if (st.quads) break;
   }
   // None buildable: the first quad mesh, for the run to judge and report.
