@@ -237,10 +237,12 @@ class EmbedComponents {
   }
 
   // The interior vertices of `path`, used now, leave their components.
-  // Returns whether a component fell apart (pieces relabelled).
+  // Returns whether a component fell apart (pieces relabelled; their
+  // vertices in Relabelled()).
   bool Remove(const std::vector<std::vector<int>>& rings, const EmbedSpace& space,
               const std::vector<int>& path) {
     const size_t labels = parent_.size();
+    relabelled_.clear();
     std::vector<int> seeds;
     for (size_t k = 1; k + 1 < path.size(); ++k) label_[size_t(path[k])] = -1;
     for (size_t k = 1; k + 1 < path.size(); ++k) {
@@ -262,6 +264,9 @@ class EmbedComponents {
     }
     return parent_.size() != labels;
   }
+
+  // The vertices the last Remove gave new labels (the pieces cut off).
+  const std::vector<int>& Relabelled() const { return relabelled_; }
 
   // Whether d's wedge reaches its extremum through free vertices (as
   // EmbedReachable, from the labels kept).
@@ -350,6 +355,7 @@ class EmbedComponents {
         for (size_t t = 0; t < m; ++t) {
           if (find(int(t)) != g) continue;
           for (int v : queue[t]) label_[size_t(v)] = l;
+          relabelled_.insert(relabelled_.end(), queue[t].begin(), queue[t].end());
         }
         done[size_t(g)] = true;
         --searching;
@@ -361,7 +367,7 @@ class EmbedComponents {
   }
 
   std::vector<int> label_, parent_, seen_;
-  std::vector<int> labels_;
+  std::vector<int> labels_, relabelled_;
 };
 
 // One pass placing the drafts in `order`; the drafts left without a path
@@ -394,8 +400,8 @@ std::vector<size_t> EmbedPass(const ArcMesh& mesh, const std::vector<bool>& node
   for (size_t i : order) pending[i] = true;
   EmbedComponents components(points.size());
   // Per vertex: the drafts whose reach depends on it (their wedge, its
-  // ring, their extremum's ring). A placement that splits no component
-  // changes the reach of those drafts only whose vertices it uses.
+  // ring, their extremum's ring). A placement changes the reach of those
+  // drafts only whose vertices it uses or cuts off (relabels).
   std::vector<std::vector<size_t>> watchers(look_ahead ? points.size() : 0);
   std::vector<size_t> rank(drafts.size(), 0);  // position in `order`
   for (size_t r = 0; r < order.size(); ++r) rank[order[r]] = r;
@@ -421,9 +427,16 @@ std::vector<size_t> EmbedPass(const ArcMesh& mesh, const std::vector<bool>& node
     for (int attempt = 0;; ++attempt) {
       std::vector<size_t> cut;
       std::vector<size_t> check;  // the drafts whose reach may have changed
-      if (attempt == 0 && !split) {
+      if (attempt == 0) {
+        // Vertices neither on the arc nor in a piece cut off keep their
+        // labels, so only the drafts watching those may change.
         for (size_t k = 1; k + 1 < paths[i].size(); ++k) {
           for (size_t z : watchers[size_t(paths[i][k])]) check.push_back(z);
+        }
+        if (split) {
+          for (int v : components.Relabelled()) {
+            for (size_t z : watchers[size_t(v)]) check.push_back(z);
+          }
         }
         // Once each, in `order`'s order (as the full scan).
         std::sort(check.begin(), check.end(), [&](size_t a, size_t b) { return rank[a] < rank[b]; });

@@ -42,14 +42,64 @@ WaveV3 WaveTangent(const WaveV3& n) {
   return (a - a.dot(n) * n).normalized();
 }
 
-// The one of ±d, ±(n × d) nearest `to` (largest dot product).
-WaveV3 WaveNearestOfCross(const WaveV3& d, const WaveV3& n, const WaveV3& to) {
-  const WaveV3 e = n.cross(d);
-  WaveV3 best = d;
-  for (const WaveV3& c : {d, WaveV3(-d), e, WaveV3(-e)}) {
-    if (c.dot(to) > best.dot(to)) best = c;
+// z⁴ / |z|⁴ of the direction z = (x, y): its angle times four, as a unit vector.
+Eigen::Vector2d WaveFourth(const Eigen::Vector2d& z) {
+  const Eigen::Vector2d z2(z.x() * z.x() - z.y() * z.y(), 2 * z.x() * z.y());
+  const Eigen::Vector2d z4(z2.x() * z2.x() - z2.y() * z2.y(), 2 * z2.x() * z2.y());
+  const double norm = z4.norm();
+  return norm > 0 ? Eigen::Vector2d(z4 / norm) : Eigen::Vector2d::Zero();
+}
+
+// `sweeps` sweeps of the 4-RoSy average of frames.x (each vertex: its
+// own principal direction weighted by 4 × its anisotropy, plus its
+// neighbours' current directions projected into its tangent plane; angles
+// times four summed as unit vectors), keeping at each vertex the one of
+// the four directions nearest its own. Directions are kept as coordinates
+// in each vertex's tangent basis, a neighbour's mapped by the fixed 2 × 2
+// projection between the bases.
+void SmoothCross(const Mesh& mesh, WaveFrames& frames, int sweeps) {
+  if (sweeps <= 0) return;
+  const size_t n = frames.x.size();
+  std::vector<WaveV3> t1(n), t2(n);
+  std::vector<Eigen::Vector2d> own(n), x(n);
+  std::vector<int> start(n + 1, 0), ring;
+  std::vector<Eigen::Matrix2d> to_v;  // per ring entry: u's coordinates into v's basis
+  for (size_t v = 0; v < n; ++v) {
+    t1[v] = WaveTangent(frames.normal[v]);
+    t2[v] = frames.normal[v].cross(t1[v]);
+    own[v] = Eigen::Vector2d(frames.x[v].dot(t1[v]), frames.x[v].dot(t2[v]));
   }
-  return best;
+  for (VertexIndex vi : mesh.vertices()) {
+    const size_t v = vi.idx();
+    for (VertexIndex ui : mesh.vertices_around_target(mesh.halfedge(vi))) {
+      const size_t u = ui.idx();
+      Eigen::Matrix2d m;
+      m << t1[v].dot(t1[u]), t1[v].dot(t2[u]), t2[v].dot(t1[u]), t2[v].dot(t2[u]);
+      ring.push_back(int(u));
+      to_v.push_back(m);
+    }
+    start[v + 1] = int(ring.size());
+  }
+  x = own;
+  std::vector<Eigen::Vector2d> next(n);
+  for (int sweep = 0; sweep < sweeps; ++sweep) {
+    for (size_t v = 0; v < n; ++v) {
+      Eigen::Vector2d sum = 4 * frames.anisotropy[v] * WaveFourth(own[v]);
+      for (int k = start[v]; k < start[v + 1]; ++k) sum += WaveFourth(to_v[size_t(k)] * x[size_t(ring[size_t(k)])]);
+      next[v] = x[v];
+      if (sum.norm() < 1e-12) continue;
+      const double a = std::atan2(sum.y(), sum.x()) / 4;
+      const Eigen::Vector2d best(std::cos(a), std::sin(a));
+      Eigen::Vector2d pick = best;
+      for (const Eigen::Vector2d& c : {best, Eigen::Vector2d(-best.y(), best.x()), Eigen::Vector2d(-best),
+                                       Eigen::Vector2d(best.y(), -best.x())}) {
+        if (c.dot(own[v]) > pick.dot(own[v])) pick = c;
+      }
+      next[v] = pick;
+    }
+    std::swap(x, next);
+  }
+  for (size_t v = 0; v < n; ++v) frames.x[v] = (x[v].x() * t1[v] + x[v].y() * t2[v]).normalized();
 }
 
 }  // namespace
@@ -77,30 +127,7 @@ WaveFrames PrincipalWaveFrames(const Mesh& mesh, int smoothing) {
     largest = std::max(largest, out.anisotropy[v]);
   }
   for (double& a : out.anisotropy) a = largest > 0 ? a / largest : 0.0;
-  const std::vector<WaveV3> own = out.x;
-  for (int sweep = 0; sweep < smoothing; ++sweep) {
-    std::vector<WaveV3> next(n);
-    for (VertexIndex vi : mesh.vertices()) {
-      const size_t v = vi.idx();
-      const WaveV3& nv = out.normal[v];
-      const WaveV3 t1 = WaveTangent(nv), t2 = nv.cross(t1);
-      // Sum of the 4th powers (angle × 4) in v's tangent basis.
-      Eigen::Vector2d sum = Eigen::Vector2d::Zero();
-      auto add = [&](const WaveV3& d, double w) {
-        const double a = 4 * std::atan2(d.dot(t2), d.dot(t1));
-        sum += w * Eigen::Vector2d(std::cos(a), std::sin(a));
-      };
-      add(own[v], 4 * out.anisotropy[v]);
-      for (VertexIndex u : mesh.vertices_around_target(mesh.halfedge(vi))) add(out.x[u.idx()], 1);
-      if (sum.norm() < 1e-12) {
-        next[v] = out.x[v];
-        continue;
-      }
-      const double a = std::atan2(sum.y(), sum.x()) / 4;
-      next[v] = WaveNearestOfCross(std::cos(a) * t1 + std::sin(a) * t2, nv, own[v]);
-    }
-    out.x = next;
-  }
+  SmoothCross(mesh, out, smoothing);
   out.y.resize(n);
   for (size_t v = 0; v < n; ++v) out.y[v] = out.normal[v].cross(out.x[v]);
   return out;
