@@ -311,7 +311,7 @@ class Lean {
 }  // namespace
 
 SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& residuals,
-                       NormalPattern* pattern, LeanStep step) {
+                       NormalPattern* pattern, LeanStep step, CholeskyOrdering ordering) {
   const FullTeams teams;  // no CHOLMOD here
   const auto start = Clock::now();
   SolveSummary out;
@@ -394,8 +394,8 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
     if (direct) {
       // Not positive definite: no step; it is rejected and the damping
       // grows, as after Ceres' linear solver failure.
-      if (!kept.cholesky) {
-        kept.cholesky = std::make_shared<NormalCholesky>(kept);
+      if (!kept.cholesky || kept.cholesky->ordering() != ordering) {
+        kept.cholesky = std::make_shared<NormalCholesky>(kept, ordering);
         ++out.analyses;
       }
       solved = kept.cholesky->Solve(kept, damping, gradient, &delta);
@@ -525,7 +525,7 @@ SolveSummary SolveRound(const ceres::Solver::Options& options, const RoundSolver
     return LeanSolve(lean, residuals, pattern);
   }
   if (how.lean && LeanCholeskyTakes(options)) {
-    return LeanSolve(options, residuals, pattern, LeanStep::kCholesky);
+    return LeanSolve(options, residuals, pattern, LeanStep::kCholesky, how.ordering);
   }
   SolveSummary out;
   std::vector<ceres::ResidualBlockId> ids;

@@ -106,6 +106,7 @@
 
 #include <ceres/solver.h>
 
+#include "core/normal_cholesky.h"
 #include "core/residuals.h"
 
 namespace archgeo {
@@ -148,7 +149,8 @@ std::string LeanSolveRefuses(const ceres::Solver::Options& options, std::string*
 // structure stays (core/normal_equations.h).
 enum class LeanStep { kPcg, kCholesky };
 SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& residuals,
-                       NormalPattern* pattern = nullptr, LeanStep step = LeanStep::kPcg);
+                       NormalPattern* pattern = nullptr, LeanStep step = LeanStep::kPcg,
+                       CholeskyOrdering ordering = CholeskyOrdering::kAmd);
 
 // Whether LeanSolve's Cholesky steps are the steps `options` ask for: no
 // option LeanSolve refuses, and a sparse normal Cholesky of CHOLMOD in double
@@ -160,6 +162,7 @@ bool LeanCholeskyTakes(const ceres::Solver::Options& options);
 struct RoundSolver {
   int pcg_above = 0;                  // LeanSolve above this many free variables; 0: never
   bool lean = false;  // the other rounds by LeanSolve's Cholesky steps where LeanCholeskyTakes
+  CholeskyOrdering ordering = CholeskyOrdering::kAmd;  // of those steps (solver.ordering)
   double pcg_function_tolerance = 0;  // LeanSolve's function tolerance at least this
   // With preconditioner_type subset (Ceres): the objective parts whose
   // residual blocks form Ceres' SUBSET preconditioner.

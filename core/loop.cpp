@@ -182,6 +182,8 @@ class Loop {
         stages_(declaration.stages(s_)), time_limit_(s_.Number("schedule.max_seconds")) {
     how_.pcg_above = int(s_.Integer("solver.pcg_above"));
     how_.lean = s_.String("solver.back_end") == "lean";
+    how_.ordering = s_.String("solver.ordering") == "metis" ? CholeskyOrdering::kMetis
+                                                            : CholeskyOrdering::kAmd;
     how_.pcg_function_tolerance = s_.Number("solver.pcg_function_tolerance");
     how_.subset_parts = SubsetParts(s_);
     for (const Stage& stage : stages_) {

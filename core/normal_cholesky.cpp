@@ -37,7 +37,8 @@ class DynamicTeams {
 
 }  // namespace
 
-NormalCholesky::NormalCholesky(const NormalPattern& p) : impl_(std::make_unique<Impl>()) {
+NormalCholesky::NormalCholesky(const NormalPattern& p, CholeskyOrdering ordering)
+    : impl_(std::make_unique<Impl>()), ordering_(ordering), used_(ordering) {
   Impl& m = *impl_;
   const int blocks = int(p.blocks.size());
   // The off-diagonal slots by block column: (row block, slot) with row < column.
@@ -72,6 +73,10 @@ NormalCholesky::NormalCholesky(const NormalPattern& p) : impl_(std::make_unique<
   m.common.supernodal = CHOLMOD_SUPERNODAL;
   m.common.quick_return_if_not_posdef = 1;
   m.common.print = 0;  // a matrix that is not positive definite is the caller's to handle
+  if (ordering == CholeskyOrdering::kMetis) {
+    m.common.nmethods = 1;
+    m.common.method[0].ordering = CHOLMOD_METIS;
+  }
   const size_t n = size_t(p.tangent);
   m.matrix = cholmod_allocate_sparse(n, n, rows.size(), /*sorted=*/1, /*packed=*/1,
                                      /*stype=*/1, CHOLMOD_REAL, &m.common);
@@ -80,7 +85,14 @@ NormalCholesky::NormalCholesky(const NormalPattern& p) : impl_(std::make_unique<
   m.rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, &m.common);
   const DynamicTeams teams;
   m.factor = cholmod_analyze(m.matrix, &m.common);
+  if (!m.factor && ordering == CholeskyOrdering::kMetis) {
+    m.common.nmethods = 0;  // CHOLMOD's default: AMD
+    used_ = CholeskyOrdering::kAmd;
+    m.factor = cholmod_analyze(m.matrix, &m.common);
+  }
 }
+
+double NormalCholesky::FactorFlops() const { return impl_->common.fl; }
 
 NormalCholesky::~NormalCholesky() {
   Impl& m = *impl_;

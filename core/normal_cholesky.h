@@ -22,10 +22,22 @@ namespace archgeo {
 
 struct NormalPattern;
 
+// The fill-reducing ordering of the factorisation (solver.ordering): CHOLMOD's
+// approximate minimum degree, or METIS' nested dissection (fewer flops on
+// large surface meshes, a costlier analysis).
+enum class CholeskyOrdering { kAmd, kMetis };
+
 class NormalCholesky {
  public:
   // Orders and analyses the upper triangle of `pattern`'s H.
-  explicit NormalCholesky(const NormalPattern& pattern);
+  NormalCholesky(const NormalPattern& pattern, CholeskyOrdering ordering);
+  // The ordering asked for, and the one the analysis used (AMD where this
+  // CHOLMOD has no METIS).
+  CholeskyOrdering ordering() const { return ordering_; }
+  CholeskyOrdering used() const { return used_; }
+  // Floating-point operations of one numeric factorisation (the analysis'
+  // count, by the ordering it used).
+  double FactorFlops() const;
   ~NormalCholesky();
   NormalCholesky(const NormalCholesky&) = delete;
   NormalCholesky& operator=(const NormalCholesky&) = delete;
@@ -38,6 +50,7 @@ class NormalCholesky {
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
+  CholeskyOrdering ordering_, used_;
 };
 
 }  // namespace archgeo

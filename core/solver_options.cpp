@@ -185,6 +185,12 @@ std::vector<Key> SolverKeys() {
              "ask for what it does not implement goes to Ceres, as each key says) "
              "(planar_quads, conjugate_layout, wave_quads, principal_symmetric, hnet, "
              "total_absolute_curvature: lean)"),
+      choice("ordering", "amd", {"amd", "metis"},
+             "fill-reducing ordering of LeanSolve's sparse Cholesky steps (back_end lean): amd "
+             "(CHOLMOD's approximate minimum degree) or metis (METIS' nested dissection: fewer "
+             "flops per factorisation on large surface meshes, a costlier analysis, made once per "
+             "structure); back_end ceres: ignored (Debian's Ceres 2.1 orders by AMD) "
+             "(wave_quads: metis)"),
       integer("pcg_above", 0, 0, 1000000000,
               "a round with more than this many variables is solved by LeanSolve (whatever "
               "back_end says) with each step by "

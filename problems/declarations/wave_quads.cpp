@@ -547,7 +547,8 @@ ProblemDecl wave_quads() {
   // step, to the same E, without its per-solve set-up.
   d.defaults = {{"solver.max_num_iterations", 100LL},
                 {"solver.function_tolerance", 1e-4},
-                {"solver.back_end", std::string("lean")}};
+                {"solver.back_end", std::string("lean")},
+                {"solver.ordering", std::string("metis")}};
   d.keys = WaveKeys();
   for (Key& k : ChartKeys()) d.keys.push_back(std::move(k));
   d.check = &CheckQuadComplexChartKeys;
