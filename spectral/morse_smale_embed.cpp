@@ -521,27 +521,30 @@ std::vector<size_t> EmbedPass(const ArcMesh& mesh, const std::vector<bool>& node
 }  // namespace
 
 // Passes in which the arcs left without a path, with their saddles' other
-// arcs, go first, until every arc has one or kEmbedPasses have run; the
-// pass with the fewest left out is kept.
+// arcs, go first, until every arc has one, kEmbedPasses have run or
+// kEmbedStall passes in a row have not left fewer out; the pass with the
+// fewest left out is kept.
 void EmbedArcs(const ArcMesh& mesh, const std::vector<bool>& node_vertex,
                const std::vector<Draft>& drafts, const std::vector<int>& node_renumber,
                MorseSmaleComplex& complex, std::vector<size_t>& unplaced) {
-  constexpr int kEmbedPasses = 32;
+  constexpr int kEmbedPasses = 32, kEmbedStall = 8;
   std::vector<size_t> order;
   for (size_t i = 0; i < drafts.size(); ++i) {
     if (drafts[i].alive && drafts[i].twin < 0) order.push_back(i);
   }
   std::vector<std::vector<int>> paths(drafts.size()), best;
   size_t best_failed = order.size() + 1;
+  int last_improved = 0;
   for (int pass = 0; pass < kEmbedPasses; ++pass) {
     const std::vector<size_t> failed = EmbedPass(mesh, node_vertex, drafts, order, pass > 0, paths);
     if (failed.size() < best_failed) {
+      last_improved = pass;
       best_failed = failed.size();
       best = paths;
       complex.unresolved = int(failed.size());
       unplaced = failed;
     }
-    if (failed.empty()) break;
+    if (failed.empty() || pass - last_improved >= kEmbedStall) break;
     std::vector<bool> first(drafts.size(), false);
     for (size_t i : failed) {
       for (size_t j : order) first[j] = first[j] || drafts[j].saddle == drafts[i].saddle;
