@@ -454,12 +454,12 @@ TEST_F(CliTest, WaveQuadsExampleKeepsTheBestValidStart) {
   EXPECT_TRUE(w.at("valid").get<bool>());
   EXPECT_EQ(w.at("restarts").get<int>(), 2);
   EXPECT_EQ(w.at("valid_starts").get<int>(), 2);
-  const auto& rounds = report.at("rounds");  // the input, then one per start
-  ASSERT_EQ(rounds.size(), 3u);
-  const int lower = rounds[1].at("measures").at("wave_energy").get<double>() <=
-                            rounds[2].at("measures").at("wave_energy").get<double>()
-                        ? 1
-                        : 2;
+  std::vector<double> energies;  // of the starts' rounds (after the input and the curl correction)
+  for (const auto& round : report.at("rounds")) {
+    if (round.at("stage") == "restart") energies.push_back(round.at("measures").at("wave_energy").get<double>());
+  }
+  ASSERT_EQ(energies.size(), 2u);
+  const int lower = energies[0] <= energies[1] ? 1 : 2;
   EXPECT_EQ(w.at("kept_start").get<int>(), lower);
   EXPECT_LE(w.at("feature_sin_max").get<double>(), 1e-6);
   EXPECT_GT(w.at("quasi_dual").at("quads").get<int>(), 0);

@@ -34,7 +34,8 @@ std::unique_ptr<Solution> WaveTorus(const std::string& start = "random", int res
   const std::string yaml =
       "problem: wave_quads\n"
       "wave: {wavelength: 2.0943951023931953, wavelength_y: 1.0471975511965976,\n"
-      "       size_field_y: axis_distance, restarts: " + std::to_string(restarts) +
+      "       size_field_y: axis_distance, curl_correction: off, restarts: " +
+      std::to_string(restarts) +
       ", start: " + start + "}\n";
   return Solve(ParseSpec(yaml, "/in-memory/wave.yaml"), TorusPrincipalQuads(3, 1, 60, 30),
                nullptr, {});
@@ -53,7 +54,7 @@ TEST(WaveQuads, StartsAreSolvedByLeanCholeskyStepsToCeresWave) {
       "problem: wave_quads\n"
       "solver: {back_end: ceres}\n"
       "wave: {wavelength: 2.0943951023931953, wavelength_y: 1.0471975511965976,\n"
-      "       size_field_y: axis_distance, restarts: 1, start: random}\n";
+      "       size_field_y: axis_distance, curl_correction: off, restarts: 1, start: random}\n";
   const auto ceres = Solve(ParseSpec(yaml, "/in-memory/wave.yaml"),
                            TorusPrincipalQuads(3, 1, 60, 30), nullptr, {});
   ASSERT_TRUE(lean->loop.usable && ceres->loop.usable);
@@ -167,7 +168,7 @@ TEST(WaveQuads, AnInvalidComplexIsAMissedGoal) {
   const std::string own =
       "problem: wave_quads\n"
       "wave: {wavelength: 2.0943951023931953, wavelength_y: 1.0471975511965976,\n"
-      "       size_field_y: axis_distance, restarts: 3}\n";
+      "       size_field_y: axis_distance, curl_correction: off, restarts: 3}\n";
   const std::string off = "problem: wave_quads\nwave: {restarts: 2, persistence: 2}\n";
   for (const std::string& yaml : {off, own}) {
     MeshInputs inputs;
@@ -223,7 +224,7 @@ TEST(WaveQuads, OutputQuadsIsTheQuadMeshThroughTheCharts) {
   const std::string yaml =
       "problem: wave_quads\n"
       "wave: {wavelength: 2.0943951023931953, wavelength_y: 1.0471975511965976,\n"
-      "       size_field_y: axis_distance, restarts: 1}\n"
+      "       size_field_y: axis_distance, curl_correction: off, restarts: 1}\n"
       "charts: {n: 4}\n"
       "output: {quads: /in-memory/quads.obj}\n";
   const auto s = Solve(ParseSpec(yaml, "/in-memory/wave.yaml"), TorusPrincipalQuads(3, 1, 60, 30),

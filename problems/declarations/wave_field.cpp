@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 
 #include <Eigen/Geometry>
 
@@ -42,64 +43,59 @@ WaveV3 WaveTangent(const WaveV3& n) {
   return (a - a.dot(n) * n).normalized();
 }
 
-// z⁴ / |z|⁴ of the direction z = (x, y): its angle times four, as a unit vector.
-Eigen::Vector2d WaveFourth(const Eigen::Vector2d& z) {
-  const Eigen::Vector2d z2(z.x() * z.x() - z.y() * z.y(), 2 * z.x() * z.y());
-  const Eigen::Vector2d z4(z2.x() * z2.x() - z2.y() * z2.y(), 2 * z2.x() * z2.y());
-  const double norm = z4.norm();
-  return norm > 0 ? Eigen::Vector2d(z4 / norm) : Eigen::Vector2d::Zero();
-}
-
-// `sweeps` sweeps of the 4-RoSy average of frames.x (each vertex: its
-// own principal direction weighted by 4 × its anisotropy, plus its
-// neighbours' current directions projected into its tangent plane; angles
-// times four summed as unit vectors), keeping at each vertex the one of
-// the four directions nearest its own. Directions are kept as coordinates
-// in each vertex's tangent basis, a neighbour's mapped by the fixed 2 × 2
-// projection between the bases.
+// `sweeps` sweeps of the 4-RoSy average of frames.x: each vertex takes the
+// mean of its own principal direction, weighted by 4 × its anisotropy, and
+// its neighbours' current directions transported into its tangent plane,
+// angles times four summed as unit complex numbers (z⁴); at the end each
+// vertex keeps the one of the four directions of its z⁴ nearest its own.
+// A neighbour u's angle in v's tangent basis is its angle in u's basis plus
+// the rotation that carries u's basis into v's (the rotation part of the
+// projection of one basis on the other).
 void SmoothCross(const Mesh& mesh, WaveFrames& frames, int sweeps) {
   if (sweeps <= 0) return;
+  using Complex = std::complex<double>;
   const size_t n = frames.x.size();
   std::vector<WaveV3> t1(n), t2(n);
-  std::vector<Eigen::Vector2d> own(n), x(n);
+  std::vector<Complex> own(n), z4(n), next(n);  // z⁴ per vertex, in its basis
   std::vector<int> start(n + 1, 0), ring;
-  std::vector<Eigen::Matrix2d> to_v;  // per ring entry: u's coordinates into v's basis
+  std::vector<Complex> turn;  // per ring entry: e^{4iρ}, u's basis into v's
   for (size_t v = 0; v < n; ++v) {
     t1[v] = WaveTangent(frames.normal[v]);
     t2[v] = frames.normal[v].cross(t1[v]);
-    own[v] = Eigen::Vector2d(frames.x[v].dot(t1[v]), frames.x[v].dot(t2[v]));
+    own[v] = std::pow(Complex(frames.x[v].dot(t1[v]), frames.x[v].dot(t2[v])), 4);
+    own[v] /= std::max(std::abs(own[v]), 1e-300);
   }
   for (VertexIndex vi : mesh.vertices()) {
     const size_t v = vi.idx();
     for (VertexIndex ui : mesh.vertices_around_target(mesh.halfedge(vi))) {
       const size_t u = ui.idx();
-      Eigen::Matrix2d m;
-      m << t1[v].dot(t1[u]), t1[v].dot(t2[u]), t2[v].dot(t1[u]), t2[v].dot(t2[u]);
+      const double rho = std::atan2(t2[v].dot(t1[u]) - t1[v].dot(t2[u]), t1[v].dot(t1[u]) + t2[v].dot(t2[u]));
       ring.push_back(int(u));
-      to_v.push_back(m);
+      turn.push_back(std::polar(1.0, 4 * rho));
     }
     start[v + 1] = int(ring.size());
   }
-  x = own;
-  std::vector<Eigen::Vector2d> next(n);
+  z4 = own;
   for (int sweep = 0; sweep < sweeps; ++sweep) {
     for (size_t v = 0; v < n; ++v) {
-      Eigen::Vector2d sum = 4 * frames.anisotropy[v] * WaveFourth(own[v]);
-      for (int k = start[v]; k < start[v + 1]; ++k) sum += WaveFourth(to_v[size_t(k)] * x[size_t(ring[size_t(k)])]);
-      next[v] = x[v];
-      if (sum.norm() < 1e-12) continue;
-      const double a = std::atan2(sum.y(), sum.x()) / 4;
-      const Eigen::Vector2d best(std::cos(a), std::sin(a));
-      Eigen::Vector2d pick = best;
-      for (const Eigen::Vector2d& c : {best, Eigen::Vector2d(-best.y(), best.x()), Eigen::Vector2d(-best),
-                                       Eigen::Vector2d(best.y(), -best.x())}) {
-        if (c.dot(own[v]) > pick.dot(own[v])) pick = c;
-      }
-      next[v] = pick;
+      Complex sum = 4 * frames.anisotropy[v] * own[v];
+      for (int k = start[v]; k < start[v + 1]; ++k) sum += turn[size_t(k)] * z4[size_t(ring[size_t(k)])];
+      const double norm = std::abs(sum);
+      next[v] = norm < 1e-12 ? z4[v] : sum / norm;
     }
-    std::swap(x, next);
+    std::swap(z4, next);
   }
-  for (size_t v = 0; v < n; ++v) frames.x[v] = (x[v].x() * t1[v] + x[v].y() * t2[v]).normalized();
+  for (size_t v = 0; v < n; ++v) {
+    const double a = std::arg(z4[v]) / 4;
+    const Eigen::Vector2d best(std::cos(a), std::sin(a));
+    const Eigen::Vector2d mine(frames.x[v].dot(t1[v]), frames.x[v].dot(t2[v]));
+    Eigen::Vector2d pick = best;
+    for (const Eigen::Vector2d& c : {Eigen::Vector2d(-best.y(), best.x()), Eigen::Vector2d(-best),
+                                     Eigen::Vector2d(best.y(), -best.x())}) {
+      if (c.dot(mine) > pick.dot(mine)) pick = c;
+    }
+    frames.x[v] = (pick.x() * t1[v] + pick.y() * t2[v]).normalized();
+  }
 }
 
 }  // namespace

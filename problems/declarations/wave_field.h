@@ -27,8 +27,8 @@ struct WaveFrames {
 // triangulation): X along the principal direction of the larger |k| (independent
 // of the orientation), then `smoothing` sweeps of the 4-RoSy average
 // (each vertex: its own direction weighted by its anisotropy, plus its
-// neighbours' directions turned into its tangent plane), keeping at each
-// vertex the one of the four directions nearest its own X.
+// neighbours' directions transported into its tangent plane), keeping at
+// each vertex the one of the four directions nearest its own X.
 WaveFrames PrincipalWaveFrames(const Mesh& mesh, int smoothing);
 
 // The element set `wave_edges` (energies/wave_elements.h) from the frames and

@@ -500,16 +500,19 @@ std::vector<Key> WaveKeys() {
                 "file's z axis (a torus about z: wave.wavelength = 2π/N gives N waves around)"),
       ChoiceKey("wave.size_field_y", "constant", {"constant", "axis_distance"},
                 "η per vertex, as wave.size_field"),
-      ChoiceKey("wave.curl_correction", "off", {"off", "on"},
+      ChoiceKey("wave.curl_correction", "on", {"off", "on"},
                 "curl correction of the size fields (Gebreiter 2012, §8.1.4): before the "
                 "wave, log μ and log η per vertex minimise the curl of X/μ and Y/η "
                 "(size_curl) held to the designated sizes (size_target) and smooth "
-                "(size_smoothing); the corrected sizes scale the transfer"),
+                "(size_smoothing); the corrected sizes scale the transfer. off: the "
+                "designated sizes as they are (a known curl-free size field)"),
       IntegerKey("wave.curl_rounds", 1, 1, 100,
                  "solves of the curl correction (a linear least squares: one solves it)"),
-      IntegerKey("wave.field_smoothing", 10, 0, 10000,
-                 "sweeps of 4-RoSy smoothing of the principal field (weighted by the "
-                 "anisotropy |k1 − k2|): propagates it into umbilic regions"),
+      IntegerKey("wave.field_smoothing", 200, 0, 10000,
+                 "sweeps of 4-RoSy smoothing of the principal field (each vertex's own "
+                 "direction weighted by its anisotropy |k1 − k2|, its neighbours' transported "
+                 "into its tangent plane): propagates the field into umbilic regions and "
+                 "simplifies it"),
       ChoiceKey("wave.features", "boundary", {"boundary", "none"},
                 "feature constraints: boundary vertices sin φ = 0 or sin θ = 0 (by the field "
                 "direction closer to the boundary), corners both"),
