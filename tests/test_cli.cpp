@@ -456,7 +456,8 @@ TEST_F(CliTest, WaveQuadsExampleKeepsTheBestValidStart) {
   EXPECT_EQ(w.at("valid_starts").get<int>(), 2);
   std::vector<double> energies;  // of the starts' rounds (after the input and the curl correction)
   for (const auto& round : report.at("rounds")) {
-    if (round.at("stage") == "restart") energies.push_back(round.at("measures").at("wave_energy").get<double>());
+    if (round.at("stage") != "restart") continue;
+    energies.push_back(round.at("measures").at("wave_energy").get<double>());
   }
   ASSERT_EQ(energies.size(), 2u);
   const int lower = energies[0] <= energies[1] ? 1 : 2;

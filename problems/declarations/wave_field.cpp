@@ -69,7 +69,8 @@ void SmoothCross(const Mesh& mesh, WaveFrames& frames, int sweeps) {
     const size_t v = vi.idx();
     for (VertexIndex ui : mesh.vertices_around_target(mesh.halfedge(vi))) {
       const size_t u = ui.idx();
-      const double rho = std::atan2(t2[v].dot(t1[u]) - t1[v].dot(t2[u]), t1[v].dot(t1[u]) + t2[v].dot(t2[u]));
+      const double rho = std::atan2(t2[v].dot(t1[u]) - t1[v].dot(t2[u]),
+                                    t1[v].dot(t1[u]) + t2[v].dot(t2[u]));
       ring.push_back(int(u));
       turn.push_back(std::polar(1.0, 4 * rho));
     }
@@ -79,7 +80,9 @@ void SmoothCross(const Mesh& mesh, WaveFrames& frames, int sweeps) {
   for (int sweep = 0; sweep < sweeps; ++sweep) {
     for (size_t v = 0; v < n; ++v) {
       Complex sum = 4 * frames.anisotropy[v] * own[v];
-      for (int k = start[v]; k < start[v + 1]; ++k) sum += turn[size_t(k)] * z4[size_t(ring[size_t(k)])];
+      for (int k = start[v]; k < start[v + 1]; ++k) {
+        sum += turn[size_t(k)] * z4[size_t(ring[size_t(k)])];
+      }
       const double norm = std::abs(sum);
       next[v] = norm < 1e-12 ? z4[v] : sum / norm;
     }
