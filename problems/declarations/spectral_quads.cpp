@@ -30,6 +30,7 @@
 #include <chrono>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <stdexcept>
 
 #include "core/input_error.h"
@@ -158,11 +159,21 @@ void SqNet(HookContext& c) {
   const SpectralCandidate* chosen = nullptr;
   ChartStep step;
   const ValidityLimits limits = LimitsOf(s);
-  // One candidate; `judge`: its quad mesh must also be buildable (no panel
-  // the validity checks fail), or the automatic choice goes on. Returns
-  // whether it gave a quad mesh that the checks failed.
-  auto attempt = [&](int i, bool judge) {
-    bool unbuildable = false;
+  // The first candidate whose quad mesh the validity checks failed, kept
+  // as it was: the result when no candidate's quad mesh passes.
+  struct Unbuildable {
+    std::vector<double> phi;
+    MorseSmaleComplex complex;
+    int refinements = 0;
+    bool doubled = false, primal = false;
+    QuadBaseComplex dual, base;
+    ChartStep step;
+    const SpectralCandidate* candidate = nullptr;
+  };
+  std::optional<Unbuildable> unbuildable;
+  // One candidate; with the automatic choice its quad mesh must also be
+  // buildable (no panel the validity checks fail), or the choice goes on.
+  auto attempt = [&](int i) {
     const SpectralCandidate& cand = candidates[size_t(i)];
     Eigen::VectorXd f = pairs.vectors.col(cand.k);
     f /= std::max(f.cwiseAbs().maxCoeff(), 1e-300);
@@ -207,11 +218,14 @@ void SqNet(HookContext& c) {
         fault = std::string("its charts fail: ") + e.what();
       }
     }
-    if (st.quads && judge) {
+    if (st.quads && given == 0) {
       const Validity v = CheckValidity(step.mesh, nullptr, limits, true);
       if (!v.valid()) {
         st.quads = false;
-        unbuildable = true;
+        if (!unbuildable) {
+          unbuildable = Unbuildable{st.phi,    st.complex, st.refinements, st.doubled, st.primal,
+                                    st.dual,   st.base,    step,           &cand};
+        }
         const std::string reason = v.Reason();
         fault = "its quad mesh has panels that cannot be built: " + reason.substr(0, reason.find('\n'));
       }
@@ -224,15 +238,25 @@ void SqNet(HookContext& c) {
       reasons += (reasons.empty() ? "" : "; ") + std::string("eigenfunction ") +
                  std::to_string(cand.k) + ": " + fault;
     }
-    return unbuildable;
   };
-  int unbuildable = -1;  // the first candidate whose quad mesh failed the validity checks
   for (int i : order) {
-    if (attempt(i, given == 0) && unbuildable < 0) unbuildable = i;
+    attempt(i);
     if (st.quads) break;
   }
-  // None buildable: the first quad mesh, for the run to judge and report.
-  if (!st.quads && unbuildable >= 0) attempt(unbuildable, false);
+  if (!st.quads && unbuildable) {
+    // None buildable: the first quad mesh, for the run to judge and report.
+    Unbuildable& u = *unbuildable;
+    st.phi = std::move(u.phi);
+    st.complex = std::move(u.complex);
+    st.refinements = u.refinements;
+    st.doubled = u.doubled;
+    st.primal = u.primal;
+    st.dual = std::move(u.dual);
+    st.base = std::move(u.base);
+    step = std::move(u.step);
+    chosen = u.candidate;
+    st.quads = true;
+  }
   const CriticalPoints& cp = chosen->critical;
   c.details["spectral"] = {
       {"laplacian", s.String("spectral.laplacian")},
