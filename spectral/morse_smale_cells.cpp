@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The cells of the Morse–Smale complex, their check, and its quasi-dual.
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <numeric>
 #include <stdexcept>
@@ -20,6 +21,66 @@ uint64_t CellEdgeKey(int a, int b) {
 int CellFind(std::vector<int>& parent, int i) {
   while (parent[size_t(i)] != i) i = parent[size_t(i)] = parent[size_t(parent[size_t(i)])];
   return i;
+}
+
+using CellSides = std::unordered_map<uint64_t, std::array<int, 2>>;
+
+// The cells the triangles with `keep` fall into when joined across every
+// edge with `join` (both sides kept): per kept triangle its cell in
+// `cell_of_triangle` (−1 for the others), per cell V − E + F of its
+// closure, whether an edge in `cut` has the cell on both sides (a slit),
+// and its corners (`node_of`: per vertex its node or −1), cells numbered in
+// the order of their first triangle.
+template <typename Keep, typename Join>
+std::vector<MorseSmaleCell> CutCells(const std::vector<std::array<int, 3>>& triangles,
+                                     const CellSides& sides, const std::unordered_set<uint64_t>& cut,
+                                     const std::vector<int>& node_of, Keep keep, Join join,
+                                     std::vector<int>& cell_of_triangle) {
+  const size_t t_count = triangles.size();
+  std::vector<int> parent(t_count);
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const auto& [key, s] : sides) {
+    if (s[1] >= 0 && keep(size_t(s[0])) && keep(size_t(s[1])) && join(key)) {
+      parent[size_t(CellFind(parent, s[0]))] = CellFind(parent, s[1]);
+    }
+  }
+  std::vector<MorseSmaleCell> cells;
+  std::vector<int> cell_of_root(t_count, -1);
+  cell_of_triangle.assign(t_count, -1);
+  for (size_t t = 0; t < t_count; ++t) {
+    if (!keep(t)) continue;
+    int& cell = cell_of_root[size_t(CellFind(parent, int(t)))];
+    if (cell < 0) {
+      cell = int(cells.size());
+      cells.emplace_back();
+    }
+    cell_of_triangle[t] = cell;
+    ++cells[size_t(cell)].euler;  // F
+  }
+  for (const auto& [key, s] : sides) {
+    const int a = cell_of_triangle[size_t(s[0])], b = s[1] < 0 ? -1 : cell_of_triangle[size_t(s[1])];
+    if (a >= 0) --cells[size_t(a)].euler;  // E
+    if (b >= 0 && b != a) --cells[size_t(b)].euler;
+    if (a >= 0 && a == b && cut.count(key)) cells[size_t(a)].slit = true;
+  }
+  std::vector<std::vector<int>> cells_at(node_of.size());
+  for (size_t t = 0; t < t_count; ++t) {
+    if (cell_of_triangle[t] < 0) continue;
+    for (int v : triangles[t]) cells_at[size_t(v)].push_back(cell_of_triangle[t]);
+  }
+  for (size_t v = 0; v < cells_at.size(); ++v) {
+    std::vector<int>& around = cells_at[v];
+    std::sort(around.begin(), around.end());
+    around.erase(std::unique(around.begin(), around.end()), around.end());
+    for (int cell : around) {
+      ++cells[size_t(cell)].euler;  // V
+      std::vector<int>& corners = cells[size_t(cell)].corners;
+      if (node_of[v] >= 0 && std::find(corners.begin(), corners.end(), node_of[v]) == corners.end()) {
+        corners.push_back(node_of[v]);
+      }
+    }
+  }
+  return cells;
 }
 
 // Vertices on two arcs (or twice on one), and arcs through a node.
@@ -57,61 +118,31 @@ bool CellValid(const MorseSmaleCell& cell, const std::vector<MorseSmaleNode>& no
 // judge them). `node_of`: per vertex its (grouped) node or −1.
 std::vector<bool> HalfCellsValid(const std::vector<std::array<int, 3>>& triangles,
                                  const std::vector<char>& side, const std::unordered_set<uint64_t>& cut,
-                                 const std::unordered_map<uint64_t, std::array<int, 2>>& sides,
-                                 const std::vector<int>& node_of, const MorseSmaleComplex& c) {
-  const size_t t_count = triangles.size();
-  std::vector<bool> surface(t_count, false);
-  for (size_t t = 0; t < t_count; ++t) {
-    surface[t] = side[size_t(triangles[t][0])] != 2 && side[size_t(triangles[t][1])] != 2 &&
-                 side[size_t(triangles[t][2])] != 2;
-  }
+                                 const CellSides& sides, const std::vector<int>& node_of,
+                                 const MorseSmaleComplex& c) {
+  auto surface = [&](size_t t) {
+    return side[size_t(triangles[t][0])] != 2 && side[size_t(triangles[t][1])] != 2 &&
+           side[size_t(triangles[t][2])] != 2;
+  };
   auto boundary_edge = [&](uint64_t key) {
     return side[size_t(key >> 32)] == 1 && side[size_t(key & 0xffffffffu)] == 1;
   };
-  std::vector<int> parent(t_count);
-  std::iota(parent.begin(), parent.end(), 0);
+  std::vector<int> half_of_triangle;
+  const std::vector<MorseSmaleCell> half = CutCells(
+      triangles, sides, cut, node_of, surface,
+      [&](uint64_t key) { return !cut.count(key) && !boundary_edge(key); }, half_of_triangle);
+  std::vector<bool> meets(half.size(), false);  // a boundary edge off the arcs
   for (const auto& [key, s] : sides) {
-    if (surface[size_t(s[0])] && surface[size_t(s[1])] && !cut.count(key) && !boundary_edge(key)) {
-      parent[size_t(CellFind(parent, s[0]))] = CellFind(parent, s[1]);
-    }
-  }
-  std::unordered_map<int, MorseSmaleCell> half;  // by root triangle
-  std::unordered_map<int, bool> meets;           // a boundary edge off the arcs
-  for (size_t t = 0; t < t_count; ++t) {
-    if (surface[t]) ++half[CellFind(parent, int(t))].euler;  // F
-  }
-  for (const auto& [key, s] : sides) {
-    const bool a = surface[size_t(s[0])], b = surface[size_t(s[1])];
-    if (!a && !b) continue;
-    const int ra = a ? CellFind(parent, s[0]) : -1, rb = b ? CellFind(parent, s[1]) : -1;
-    for (int r : {ra, rb}) {
-      if (r >= 0) --half[r].euler;  // E
-      if (ra == rb) break;
-    }
-    if (ra == rb && cut.count(key)) half[ra].slit = true;
-    if (boundary_edge(key) && !cut.count(key)) meets[a ? ra : rb] = true;
-  }
-  std::vector<std::vector<int>> around(node_of.size());
-  for (size_t t = 0; t < t_count; ++t) {
-    if (!surface[t]) continue;
-    for (int v : triangles[t]) around[size_t(v)].push_back(CellFind(parent, int(t)));
-  }
-  for (size_t v = 0; v < around.size(); ++v) {
-    std::sort(around[v].begin(), around[v].end());
-    around[v].erase(std::unique(around[v].begin(), around[v].end()), around[v].end());
-    for (int r : around[v]) {
-      ++half[r].euler;  // V
-      std::vector<int>& corners = half[r].corners;
-      if (node_of[v] >= 0 && std::find(corners.begin(), corners.end(), node_of[v]) == corners.end()) {
-        corners.push_back(node_of[v]);
-      }
-    }
+    if (!boundary_edge(key) || cut.count(key)) continue;
+    const int a = half_of_triangle[size_t(s[0])], b = s[1] < 0 ? -1 : half_of_triangle[size_t(s[1])];
+    if (a >= 0 || b >= 0) meets[size_t(a >= 0 ? a : b)] = true;
   }
   std::vector<bool> valid(c.cells.size(), true);
-  for (size_t t = 0; t < t_count; ++t) {
-    if (!surface[t]) continue;
-    const int r = CellFind(parent, int(t));
-    if (!CellValid(half[r], c.nodes, meets.count(r) > 0)) valid[size_t(c.cell_of_triangle[t])] = false;
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    const int h = half_of_triangle[t];
+    if (h >= 0 && !CellValid(half[size_t(h)], c.nodes, meets[size_t(h)])) {
+      valid[size_t(c.cell_of_triangle[t])] = false;
+    }
   }
   return valid;
 }
@@ -126,7 +157,7 @@ void BuildCells(int vertex_count, const std::vector<std::array<int, 3>>& triangl
   for (const MorseSmaleArc& a : c.arcs) {
     for (size_t i = 0; i + 1 < a.path.size(); ++i) cut.insert(CellEdgeKey(a.path[i], a.path[i + 1]));
   }
-  std::unordered_map<uint64_t, std::array<int, 2>> sides;
+  CellSides sides;
   sides.reserve(triangles.size() * 2);
   for (size_t t = 0; t < triangles.size(); ++t) {
     for (int k = 0; k < 3; ++k) {
@@ -136,32 +167,8 @@ void BuildCells(int vertex_count, const std::vector<std::array<int, 3>>& triangl
       if (!fresh) it->second[1] = int(t);
     }
   }
-  std::vector<int> parent(triangles.size());
-  std::iota(parent.begin(), parent.end(), 0);
   for (const auto& [key, s] : sides) {
     if (s[1] < 0) throw std::invalid_argument("the Morse-Smale complex needs a closed mesh");
-    if (!cut.count(key)) parent[size_t(CellFind(parent, s[0]))] = CellFind(parent, s[1]);
-  }
-  std::vector<int> cell_of_root(triangles.size(), -1);
-  c.cell_of_triangle.assign(triangles.size(), -1);
-  for (size_t t = 0; t < triangles.size(); ++t) {
-    int& cell = cell_of_root[size_t(CellFind(parent, int(t)))];
-    if (cell < 0) {
-      cell = int(c.cells.size());
-      c.cells.emplace_back();
-    }
-    c.cell_of_triangle[t] = cell;
-    ++c.cells[size_t(cell)].euler;  // F
-  }
-  for (const auto& [key, s] : sides) {
-    const int a = c.cell_of_triangle[size_t(s[0])], b = c.cell_of_triangle[size_t(s[1])];
-    --c.cells[size_t(a)].euler;  // E
-    if (a != b) --c.cells[size_t(b)].euler;
-    if (a == b && cut.count(key)) c.cells[size_t(a)].slit = true;
-  }
-  std::vector<std::vector<int>> cells_at(static_cast<size_t>(vertex_count));
-  for (size_t t = 0; t < triangles.size(); ++t) {
-    for (int v : triangles[t]) cells_at[size_t(v)].push_back(c.cell_of_triangle[t]);
   }
   // Saddles joined by a connection along a double's boundary count as one
   // corner (the multi-saddle they make, SaddlePolygons).
@@ -174,18 +181,9 @@ void BuildCells(int vertex_count, const std::vector<std::array<int, 3>>& triangl
   }
   std::vector<int> node_of(static_cast<size_t>(vertex_count), -1);
   for (size_t n = 0; n < c.nodes.size(); ++n) node_of[size_t(c.nodes[n].vertex)] = CellFind(group, int(n));
-  for (size_t v = 0; v < cells_at.size(); ++v) {
-    std::vector<int>& around = cells_at[v];
-    std::sort(around.begin(), around.end());
-    around.erase(std::unique(around.begin(), around.end()), around.end());
-    for (int cell : around) {
-      ++c.cells[size_t(cell)].euler;  // V
-      std::vector<int>& corners = c.cells[size_t(cell)].corners;
-      if (node_of[v] >= 0 && std::find(corners.begin(), corners.end(), node_of[v]) == corners.end()) {
-        corners.push_back(node_of[v]);
-      }
-    }
-  }
+  c.cells = CutCells(
+      triangles, sides, cut, node_of, [](size_t) { return true; },
+      [&](uint64_t key) { return !cut.count(key); }, c.cell_of_triangle);
   for (MorseSmaleArc& a : c.arcs) {
     const std::array<int, 2>& s = sides.at(CellEdgeKey(a.path[0], a.path[1]));
     a.side_cells = {c.cell_of_triangle[size_t(s[0])], c.cell_of_triangle[size_t(s[1])]};
