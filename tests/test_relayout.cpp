@@ -20,6 +20,7 @@
 #include "generators/generators.h"
 #include "io/io.h"
 #include "problems/commands/run.h"
+#include "problems/declarations/relayout.h"
 #include "problems/spec/spec.h"
 #include "scratch_dir.h"
 
@@ -168,6 +169,48 @@ TEST_F(WorstQuads, PqWorstLowersThePillowsWorstQuadBelowShapeUpsWithConvexPanels
   const RunResult sum = Run({"terms.pq_worst.power=2"});
   EXPECT_EQ(sum.exit_code, 4);
   EXPECT_NEAR(sum.report.at("after").at("pq_normalized_max").get<double>(), kInput, 5e-5);
+}
+
+
+// Two quads side by side; the left one's bottom side passes through x, a
+// boundary vertex only it uses. On a straight boundary x is no corner: the
+// quad is a triangle in shape and becomes that triangle (not two
+// triangles), and x leaves the mesh. Where the boundary turns at x by more
+// than the margin, x stays a corner and the quad a quad.
+Mesh PanelsWithABoundaryPoint(double bend_degrees) {
+  const double drop = 0.5 * std::tan(bend_degrees * M_PI / 180.0);
+  Mesh m;
+  const VertexIndex a = m.add_vertex(Point(0, 0, 0)), x = m.add_vertex(Point(0.5, -drop, 0)),
+                    b = m.add_vertex(Point(1, 0, 0)), c = m.add_vertex(Point(1, 1, 0)),
+                    d = m.add_vertex(Point(0, 1, 0)), e = m.add_vertex(Point(2, 0, 0)),
+                    f = m.add_vertex(Point(2, 1, 0));
+  m.add_face(a, x, b, c);
+  m.add_face(a, c, d);
+  m.add_face(b, e, f, c);
+  return m;
+}
+
+TEST(SplitBentPanels, AStraightBoundaryPointOfOnePanelLeavesIt) {
+  Mesh straight = PanelsWithABoundaryPoint(0.0);
+  int dissolved = -1;
+  EXPECT_EQ(SplitBentPanels(straight, 1.0, &dissolved), 0);
+  EXPECT_EQ(dissolved, 1);
+  EXPECT_EQ(straight.number_of_vertices(), 6u);
+  EXPECT_EQ(straight.number_of_faces(), 3u);
+  int triangles = 0;
+  for (FaceIndex f : straight.faces()) triangles += straight.degree(f) == 3;
+  EXPECT_EQ(triangles, 2);
+  // The boundary turning by 0.5° at x each way (the corner 179°, within
+  // the 1° margin): still straight.
+  Mesh slight = PanelsWithABoundaryPoint(0.5);
+  EXPECT_EQ(SplitBentPanels(slight, 1.0, &dissolved), 0);
+  EXPECT_EQ(dissolved, 1);
+  // Turning by 3° each way (the corner at x 174°): a corner of the panel,
+  // kept, and not split (convex beyond the margin).
+  Mesh bent = PanelsWithABoundaryPoint(3.0);
+  EXPECT_EQ(SplitBentPanels(bent, 1.0, &dissolved), 0);
+  EXPECT_EQ(dissolved, 0);
+  EXPECT_EQ(bent.number_of_vertices(), 7u);
 }
 
 }  // namespace ARCHGEO_UNITY_ID

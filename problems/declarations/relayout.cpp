@@ -6,6 +6,7 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <glog/logging.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "fields/layout_cleanup.h"
 #include "mesh/similarity.h"
@@ -133,17 +135,53 @@ int UseLayoutAsNet(HookContext& c, std::shared_ptr<const LevelSetResult> layout,
                    const std::string& what) {
   c.net.derived = true;
   c.net.mesh = InFileUnits(layout->layout.mesh, layout->frame);
-  const int split =
-      SplitBentPanels(c.net.mesh, c.settings->Number("terms.convexity.margin_degrees"));
+  int dissolved = 0;
+  const int split = SplitBentPanels(
+      c.net.mesh, c.settings->Number("terms.convexity.margin_degrees"), &dissolved);
   c.net.source.clear();  // layout vertices are not input vertices
   c.net.details = layout->details;
   c.net.details["net"] = what;
   c.net.details["split_bent_panels"] = split;
+  c.net.details["dissolved_straight_boundary_vertices"] = dissolved;
   c.level_sets = std::move(layout);
   return split;
 }
 
-int SplitBentPanels(Mesh& mesh, double margin_degrees) {
+namespace {
+
+// A boundary vertex that only one panel uses, where the boundary runs
+// straight (its two sides within margin_degrees of a line, in space), is not
+// a corner of that panel but a point on one of its sides: it leaves the
+// panel if at least three corners stay. A quad through such a vertex is a
+// triangle in shape; split at that corner it would be two triangles, one of
+// them a sliver. Returns how many left.
+int DissolveStraightBoundaryVertices(const std::vector<Eigen::Vector3d>& points,
+                                     double margin_degrees, std::vector<std::vector<int>>* faces) {
+  std::vector<int> uses(points.size(), 0);
+  for (const std::vector<int>& face : *faces)
+    for (int v : face) ++uses[size_t(v)];
+  const double straight = M_PI * (1.0 - margin_degrees / 180.0);
+  int dissolved = 0;
+  for (std::vector<int>& face : *faces) {
+    for (size_t i = 0; i < face.size() && face.size() > 3;) {
+      const size_t n = face.size();
+      const Eigen::Vector3d& x = points[size_t(face[i])];
+      const Eigen::Vector3d a = points[size_t(face[(i + n - 1) % n])] - x,
+                            b = points[size_t(face[(i + 1) % n])] - x;
+      if (uses[size_t(face[i])] == 1 && std::atan2(a.cross(b).norm(), a.dot(b)) >= straight) {
+        face.erase(face.begin() + long(i));
+        ++dissolved;
+      } else {
+        ++i;
+      }
+    }
+  }
+  return dissolved;
+}
+
+}  // namespace
+
+int SplitBentPanels(Mesh& mesh, double margin_degrees, int* dissolved) {
   // Corners judged in the mesh's local frame (mesh/similarity.h): the same
   // for a layout far from the origin or at any scale (cross products of
   // file units scaled by 1e100 overflow).
@@ -159,17 +197,24 @@ int SplitBentPanels(Mesh& mesh, double margin_degrees) {
     for (VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) face.push_back(int(v.idx()));
     faces.push_back(face);
   }
+  const int gone = DissolveStraightBoundaryVertices(points, margin_degrees, &faces);
+  if (dissolved) *dissolved = gone;
   int split = 0;
   // A split that leaves a corner under 5° (validity.min_corner_degrees'
   // default) would trade the bent corner for a sliver: the corner stays.
   SplitReflexCorners(points, std::vector<bool>(points.size(), false), -margin_degrees, &faces, &split,
                      5.0);
-  if (split == 0) return 0;
+  if (split == 0 && gone == 0) return 0;
+  // The vertices a panel still uses, in their order.
+  std::vector<int> index(points.size(), -1);
+  for (const std::vector<int>& face : faces)
+    for (int v : face) index[size_t(v)] = 0;
   Mesh out;
-  for (VertexIndex v : mesh.vertices()) out.add_vertex(mesh.point(v));
+  for (VertexIndex v : mesh.vertices())
+    if (index[v.idx()] == 0) index[v.idx()] = int(out.add_vertex(mesh.point(v)).idx());
   for (const std::vector<int>& face : faces) {
     std::vector<VertexIndex> vs;
-    for (int v : face) vs.push_back(VertexIndex(v));
+    for (int v : face) vs.push_back(VertexIndex(index[size_t(v)]));
     CHECK(out.add_face(vs) != Mesh::null_face()) << "a split panel is not manifold";
   }
   mesh = std::move(out);

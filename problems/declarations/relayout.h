@@ -36,8 +36,11 @@ namespace archgeo {
 // The barrier holds every corner the net has inside the margin but lets a
 // corner already outside it get worse by the margin: a layout corner at 180°
 // on a straight or concave stretch of the boundary would end reflex. Returns
-// how many were split.
-int SplitBentPanels(Mesh& mesh, double margin_degrees);
+// how many were split. First, a boundary vertex only one panel uses, on a
+// stretch of the boundary straight to within the margin (in space), leaves
+// that panel (a quad through it is a triangle in shape: one triangle then,
+// not two); `dissolved` gets how many, and the mesh loses them.
+int SplitBentPanels(Mesh& mesh, double margin_degrees, int* dissolved = nullptr);
 
 // Makes `layout` (a level-set layout, problems/declarations/field_pipeline.h)
 // the net the solve starts from, in file units, its bent panels split
