@@ -200,13 +200,19 @@ TEST(SplitBentPanels, AStraightBoundaryPointOfOnePanelLeavesIt) {
   int triangles = 0;
   for (FaceIndex f : straight.faces()) triangles += straight.degree(f) == 3;
   EXPECT_EQ(triangles, 2);
-  // The boundary turning by 0.5° at x each way (the corner 179°, within
-  // the 1° margin): still straight.
+  // The boundary turning by 1° at x (the corner 179°, within the 1°
+  // margin) and by 1.8° (the corner 178.2°, within 2°): straight.
   Mesh slight = PanelsWithABoundaryPoint(0.5);
   EXPECT_EQ(SplitBentPanels(slight, 1.0, &dissolved), 0);
   EXPECT_EQ(dissolved, 1);
-  // Turning by 3° each way (the corner at x 174°): a corner of the panel,
-  // kept, and not split (convex beyond the margin).
+  Mesh turned = PanelsWithABoundaryPoint(0.9);
+  EXPECT_EQ(SplitBentPanels(turned, 1.0, &dissolved), 0);
+  EXPECT_EQ(dissolved, 1);
+  // Turning by 2.4° (the corner 177.6°) or 6° (174°): a corner of the
+  // panel, kept, and not split (convex beyond the margin).
+  Mesh kinked = PanelsWithABoundaryPoint(1.2);
+  EXPECT_EQ(SplitBentPanels(kinked, 1.0, &dissolved), 0);
+  EXPECT_EQ(dissolved, 0);
   Mesh bent = PanelsWithABoundaryPoint(3.0);
   EXPECT_EQ(SplitBentPanels(bent, 1.0, &dissolved), 0);
   EXPECT_EQ(dissolved, 0);

@@ -6,6 +6,7 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <glog/logging.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -149,18 +150,25 @@ int UseLayoutAsNet(HookContext& c, std::shared_ptr<const LevelSetResult> layout,
 
 namespace {
 
+// The largest turn (degrees, in space) of a boundary that counts as
+// straight at a vertex: the vertex then lies within 0.9% of the chord's
+// length from the chord between its neighbours.
+constexpr double kStraightBoundaryDegrees = 2.0;
+
 // A boundary vertex that only one panel uses, where the boundary runs
-// straight (its two sides within margin_degrees of a line, in space), is not
-// a corner of that panel but a point on one of its sides: it leaves the
-// panel if at least three corners stay. A quad through such a vertex is a
-// triangle in shape; split at that corner it would be two triangles, one of
-// them a sliver. Returns how many left.
+// straight (its two sides within kStraightBoundaryDegrees, or the margin if
+// larger, of a line, in space), is not a corner of that panel but a point on
+// one of its sides: it leaves the panel if at least three corners stay. A
+// quad through such a vertex is a triangle in shape; split at that corner it
+// would be two triangles, one of them a sliver, and the split's diagonal
+// would end at an interior vertex of valence 5. Returns how many left.
 int DissolveStraightBoundaryVertices(const std::vector<Eigen::Vector3d>& points,
                                      double margin_degrees, std::vector<std::vector<int>>* faces) {
   std::vector<int> uses(points.size(), 0);
   for (const std::vector<int>& face : *faces)
     for (int v : face) ++uses[size_t(v)];
-  const double straight = M_PI * (1.0 - margin_degrees / 180.0);
+  const double straight =
+      M_PI * (1.0 - std::max(margin_degrees, kStraightBoundaryDegrees) / 180.0);
   int dissolved = 0;
   for (std::vector<int>& face : *faces) {
     for (size_t i = 0; i < face.size() && face.size() > 3;) {

@@ -37,7 +37,7 @@ namespace archgeo {
 // corner already outside it get worse by the margin: a layout corner at 180°
 // on a straight or concave stretch of the boundary would end reflex. Returns
 // how many were split. First, a boundary vertex only one panel uses, on a
-// stretch of the boundary straight to within the margin (in space), leaves
+// stretch of the boundary straight to within 2° or the margin (in space), leaves
 // that panel (a quad through it is a triangle in shape: one triangle then,
 // not two); `dissolved` gets how many, and the mesh loses them.
 int SplitBentPanels(Mesh& mesh, double margin_degrees, int* dissolved = nullptr);
