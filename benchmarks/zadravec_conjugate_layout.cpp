@@ -102,12 +102,12 @@ int Main(int argc, char** argv) {
          "", ""});
   t.Add({"libigl Smooth (issue 11)", "", "100%", "", "", "3.98e-03", "1.26e-02", "", "", "", ""});
   t.Print();
-  std::cout << "\nfaces, quads: of the net the PQ step starts from (the layout, bent panels split)\n"
-               "and ends with. sing.: field singularities found as an irregular vertex or face of the layout\n"
-               "within 1.5 spacings / all singularities. layout dist: Hausdorff distance of the\n"
-               "layout to the input surface. disp max: largest vertex move of the PQ step (from\n"
-               "the layout). exit 0: valid and every tolerance met; 3: no valid result; 4:\n"
-               "valid, a tolerance missed (the output is the last valid round).\n"
+  std::cout << "\nfaces, quads: of the net the PQ step starts from and ends with (the layout, its\n"
+               "bent panels split). sing.: field singularities found as an irregular vertex or\n"
+               "face of the layout within 1.5 spacings / all singularities. layout dist: Hausdorff\n"
+               "distance of the layout to the input surface. disp max: largest vertex move of the\n"
+               "PQ step (from the layout). exit 0: valid and every tolerance met; 3: no valid\n"
+               "result; 4: valid, a tolerance missed (the output is the last valid round).\n"
                "The paper ([Zadravec 2010, §6-7]): meshes from the level sets are 'already close\n"
                "to exact planarity'; the PQ step 'reduces δ_PQ,n only by a factor five or so'\n"
                "and ends at δ_PQ,n max .010-.029 on its (non-public) buildings (Fig. 10; Fig. 1:\n"

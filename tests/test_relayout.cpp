@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "analysis/validity.h"
 #include "core/input_error.h"
@@ -200,23 +201,15 @@ TEST(SplitBentPanels, AStraightBoundaryPointOfOnePanelLeavesIt) {
   int triangles = 0;
   for (FaceIndex f : straight.faces()) triangles += straight.degree(f) == 3;
   EXPECT_EQ(triangles, 2);
-  // The boundary turning by 1° at x (the corner 179°, within the 1°
-  // margin) and by 1.8° (the corner 178.2°, within 2°): straight.
-  Mesh slight = PanelsWithABoundaryPoint(0.5);
-  EXPECT_EQ(SplitBentPanels(slight, 1.0, &dissolved), 0);
-  EXPECT_EQ(dissolved, 1);
-  Mesh turned = PanelsWithABoundaryPoint(0.9);
-  EXPECT_EQ(SplitBentPanels(turned, 1.0, &dissolved), 0);
-  EXPECT_EQ(dissolved, 1);
-  // Turning by 2.4° (the corner 177.6°) or 6° (174°): a corner of the
-  // panel, kept, and not split (convex beyond the margin).
-  Mesh kinked = PanelsWithABoundaryPoint(1.2);
-  EXPECT_EQ(SplitBentPanels(kinked, 1.0, &dissolved), 0);
-  EXPECT_EQ(dissolved, 0);
-  Mesh bent = PanelsWithABoundaryPoint(3.0);
-  EXPECT_EQ(SplitBentPanels(bent, 1.0, &dissolved), 0);
-  EXPECT_EQ(dissolved, 0);
-  EXPECT_EQ(bent.number_of_vertices(), 7u);
+  // The boundary turning at x by 1° (the corner 179°, within the 1° margin)
+  // or 1.8° (178.2°, within 2°): straight. By 2.4° (177.6°) or 6° (174°): a
+  // corner of the panel, kept, and not split (convex beyond the margin).
+  for (const auto& [bend, leaves] : {std::pair{0.5, 1}, {0.9, 1}, {1.2, 0}, {3.0, 0}}) {
+    Mesh m = PanelsWithABoundaryPoint(bend);
+    EXPECT_EQ(SplitBentPanels(m, 1.0, &dissolved), 0) << "bend " << bend;
+    EXPECT_EQ(dissolved, leaves) << "bend " << bend;
+    EXPECT_EQ(m.number_of_vertices(), 7u - unsigned(leaves)) << "bend " << bend;
+  }
 }
 
 }  // namespace ARCHGEO_UNITY_ID
