@@ -72,6 +72,20 @@ NormalCholesky::NormalCholesky(const NormalPattern& p, CholeskyOrdering ordering
   cholmod_start(&m.common);
   m.common.supernodal = CHOLMOD_SUPERNODAL;
   m.common.quick_return_if_not_posdef = 1;
+  // Supernodes amalgamated more than CHOLMOD's defaults (nrelax 4/16/48,
+  // zrelax 0.8/0.1/0.05): fewer and larger dense blocks, at the price of
+  // some explicit zeros in the factor. Each supernode costs CHOLMOD's
+  // numeric factorisation a few OpenMP regions, and each region a team
+  // barrier with a system call, more than the arithmetic of a small
+  // supernode; larger ones also give the BLAS larger products. The
+  // figures that chose these values: docs/performance.md, "The factor's
+  // supernodes".
+  m.common.nrelax[0] = 24;
+  m.common.nrelax[1] = 96;
+  m.common.nrelax[2] = 192;
+  m.common.zrelax[0] = 0.9;
+  m.common.zrelax[1] = 0.3;
+  m.common.zrelax[2] = 0.15;
   m.common.print = 0;  // a matrix that is not positive definite is the caller's to handle
   if (ordering == CholeskyOrdering::kMetis) {
     m.common.nmethods = 1;
