@@ -1164,6 +1164,10 @@ ProblemDecl conjugate_field() {
   d.terms = FieldTerms();
   d.keys = FieldKeys();
   for (const Key& k : StreamlineKeys()) d.keys.push_back(k);
+  // Every round by LeanSolve's Cholesky steps (core/lean_solve.h), as
+  // planar_quads: the same steps as Ceres' sparse_normal_cholesky without its
+  // per-solve set-up (docs/performance.md, The layout path).
+  d.defaults = {{"solver.back_end", std::string("lean")}};
   d.blocks = {{"z_n", Site::kFace, 2, FrameMap::kInvariant, false, Carry::kReinitialise, true,
                false, "z_N of the face in its own frame (Prop. 2; e1 = (1, 0): principal)"},
               {"principal", Site::kFace, 1, FrameMap::kInvariant, false, Carry::kReinitialise, false,

@@ -680,6 +680,10 @@ ProblemDecl level_sets() {
   for (const TermUse& t : LevelSetTerms()) d.terms.push_back(t);
   d.keys = FieldKeys();
   for (const Key& k : LevelSetKeys()) d.keys.push_back(k);
+  // Every round by LeanSolve's Cholesky steps (core/lean_solve.h), as
+  // planar_quads: the same steps as Ceres' sparse_normal_cholesky without its
+  // per-solve set-up (docs/performance.md, The layout path).
+  d.defaults = {{"solver.back_end", std::string("lean")}};
   d.check = [](const Settings& s) {
     CheckNoMultiresolution(s, "level_sets");
     CheckLevelSetKeys(s);
