@@ -5,7 +5,8 @@
 // Cholesky steps and reach what Ceres reaches with the same spec: hnet and
 // total_absolute_curvature the same rounds, iterations and objective; the
 // rounds of every multiresolution level of principal_symmetric are counted
-// in the report's cholesky_rounds (the totals of all levels).
+// in the report's cholesky_rounds (the totals of all levels); conjugate_field
+// and level_sets the same rounds and objective.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -52,6 +53,29 @@ TEST_F(BackEndDefaults, HnetAndTotalAbsoluteCurvatureReachCeresObjectiveByLeanSo
     const double a = lean["objective"]["total"].get<double>();
     const double b = ceres["objective"]["total"].get<double>();
     EXPECT_NEAR(a, b, 1e-6 * b) << example;
+  }
+}
+
+// The field and level-set problems (and so every stage of conjugate_layout,
+// which solves them nested) take LeanSolve's Cholesky steps by default: every
+// round counted in cholesky_rounds, none with Ceres; the same rounds and the
+// same objective to 1e-9 (their last bits differ).
+TEST_F(BackEndDefaults, FieldAndLevelSetsReachCeresObjectiveByLeanSolve) {
+  const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+      {"conjugate_field", {"output.field="}}, {"level_sets", {"output.field=", "output.layout="}}};
+  for (const auto& [example, keys] : cases) {
+    const nlohmann::json lean = Run(example, keys);
+    std::vector<std::string> with_ceres = keys;
+    with_ceres.push_back("solver.back_end=ceres");
+    const nlohmann::json ceres = Run(example, with_ceres);
+    const int rounds = lean["iterations"]["outer"].get<int>();
+    ASSERT_GT(rounds, 0) << example;
+    EXPECT_EQ(lean["cholesky_rounds"].get<int>(), rounds) << example << ": every round by LeanSolve";
+    EXPECT_EQ(ceres["cholesky_rounds"].get<int>(), 0) << example;
+    EXPECT_EQ(ceres["iterations"]["outer"].get<int>(), rounds) << example;
+    const double a = lean["objective"]["total"].get<double>();
+    const double b = ceres["objective"]["total"].get<double>();
+    EXPECT_NEAR(a, b, 1e-9 * b) << example;
   }
 }
 
