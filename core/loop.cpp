@@ -237,6 +237,7 @@ class Loop {
       met_at_start = met_at_start && model_.Measure(t.measure) <= Bound(s_, t);
     }
     plan.rounds = met_at_start ? 0 : int(s_.Integer(stage.rounds_key));
+    if (plan.rounds > 0 && stage.runs && !stage.runs(model_.hooks())) plan.rounds = 0;
     if (met_at_start) {
       result_.stop = "tolerances met before " + (stage.name.empty() ? std::string("the first round")
                                                                     : stage.name + " round 1");
@@ -279,6 +280,8 @@ class Loop {
       patience_best_ = std::numeric_limits<double>::infinity();  // no valid value yet
     }
     last_gain_ = 0;
+    valid_rounds_ = 0;
+    if (stage.start_scale > 0 && plan.rounds > 0) scale_ = stage.start_scale;
     for (int k = 1; k <= plan.rounds; ++k) {
       if (time_limit_ > 0 && SecondsSince(start_) >= time_limit_) {
         result_.stop = "schedule.max_seconds reached";
@@ -534,6 +537,13 @@ class Loop {
         best_round_ = round_number_;
       }
     }
+    if (stage.ends) {
+      const std::string reason = stage.ends(model_.hooks());
+      if (!reason.empty()) {
+        result_.stop = reason;
+        return false;
+      }
+    }
     if (!stage.patience_measure.empty() && Stalled(stage, k, row)) return false;
     bool met = !plan.active.empty();
     for (const Tolerance& t : plan.active) met = met && model_.Measure(t.measure) <= Bound(s_, t);
@@ -545,7 +555,15 @@ class Loop {
       result_.stop = step.stop;
       return false;
     }
-    if (!plan.active.empty() && !met) scale_ *= plan.factor;  // continuation
+    if (stage.restart_on_goals) {
+      if (!GoalsMet(plan.active)) {
+        scale_ *= plan.factor;
+      } else if (stage.start_scale > 0) {
+        scale_ = stage.start_scale;
+      }
+    } else if (!plan.active.empty() && !met) {
+      scale_ *= plan.factor;  // continuation
+    }
     if (plan.stopping) return true;
     if (plan.rest_move > 0 && row.max_move < plan.rest_move) {
       result_.stop = "at rest (max move below " + FormatNumber("%g", plan.rest_move) + ")";
@@ -569,15 +587,17 @@ class Loop {
     const int rounds = stage.patience_rounds_key.empty()
                            ? stage.patience_rounds
                            : int(s_.Integer(stage.patience_rounds_key));
+    if (row.valid) ++valid_rounds_;
+    const int position = stage.patience_counts_valid ? valid_rounds_ : k;
     if (!stage.patience_valid || row.valid) {
       const double value = model_.Measure(stage.patience_measure);
       if (value < patience_best_ - fraction * std::abs(patience_best_) ||
           (std::isinf(patience_best_) && std::isfinite(value))) {
-        last_gain_ = k;
+        last_gain_ = position;
       }
       patience_best_ = std::min(patience_best_, value);
     }
-    if (!(fraction > 0) || rounds <= 0 || k - last_gain_ < rounds) return false;
+    if (!(fraction > 0) || rounds <= 0 || position - last_gain_ < rounds) return false;
     result_.stalled = true;
     result_.stop = "stalled: no gain in " + std::string(stage.patience_valid ? "the best valid " : "") +
                    stage.patience_measure + " (" + FormatNumber("%.4g", patience_best_) + ") by more than " +
@@ -674,6 +694,7 @@ class Loop {
   int best_round_ = 0;
   double patience_best_ = 0;
   int last_gain_ = 0;
+  int valid_rounds_ = 0;  // of the current stage
 };
 
 }  // namespace

@@ -74,6 +74,14 @@ struct Stage {
   // the bound of the first tolerance. The scale carries over to later stages.
   std::vector<std::string> continued;
   std::string factor_key, band_key;
+  // > 0: the continued weights start the stage at this scale instead of the
+  // one the stage before ended with.
+  double start_scale = 0;
+  // For a stage whose hooks move the target after each round that meets the
+  // goals (band tightening): the weights grow only after a round that misses
+  // a goal (a tolerance that is not a bound), and start again at
+  // start_scale after one that meets them, whatever bound it breaks.
+  bool restart_on_goals = false;
   // Without an active tolerance: the stage ends when a round moves no vertex
   // by more than `rest_move` (canonical frame, mean edge length 1; or the
   // value of `rest_move_key`), or changes `rest_change_measure` by less than
@@ -89,6 +97,10 @@ struct Stage {
   std::string patience_measure, patience_key, patience_rounds_key;
   int patience_rounds = 0;
   bool patience_valid = false;
+  // Only rounds that could be the output (valid, every bound held) count
+  // towards the patience rounds (a stage whose first rounds are beyond a
+  // bound by design).
+  bool patience_counts_valid = false;
   // The output is the state after the round with the lowest value of this
   // measure (the input counts as round 0).
   std::string keep_best;
@@ -107,6 +119,12 @@ struct Stage {
   int max_iterations = 0;
   std::vector<std::string> logged;  // measures in the round log and progress lines
   Hook before_round, after_round;
+  // If set: asked before the stage's first round; false: the stage runs no
+  // round (the stop of the stage before stands).
+  std::function<bool(HookContext&)> runs;
+  // If set: asked after each round (after keep-best); a reason ends the
+  // stage with it as the stop.
+  std::function<std::string(HookContext&)> ends;
   // If set, a round runs this instead of building and solving a Ceres problem
   // from the terms.
   std::function<StepResult(HookContext&)> step;

@@ -283,6 +283,15 @@ void MeshModel::Restart() {
   Start();
 }
 
+void MeshModel::Rebase() {
+  for (VertexIndex v : store_.mesh().vertices()) {
+    const Point& p = store_.mesh().point(v);
+    original_[3 * v.idx()] = p.x();
+    original_[3 * v.idx() + 1] = p.y();
+    original_[3 * v.idx() + 2] = p.z();
+  }
+}
+
 void MeshModel::Start() {
   const Mesh& mesh = store_.mesh();
   const size_t n = mesh.number_of_vertices();

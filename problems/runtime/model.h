@@ -145,6 +145,10 @@ class MeshModel : public Model {
   // for a new model. The element sets, the blocks' declarations and the
   // fixed vertices stay.
   void Restart();
+  // The current positions become the original ones (anchor, fairness
+  // relative to the original) for the rounds that follow; the validity
+  // checks keep the start they were made against.
+  void Rebase();
 
   void BeginRound(bool project) override;
   void Build(const std::vector<ActiveTerm>& terms, int round, Residuals& residuals) override;
