@@ -11,7 +11,8 @@
 #          kernels (tests/test_engine_baselines.cpp): not a property of the
 #          code, so opt-in: OPENBLAS_CORETYPE=SkylakeX ctest -L golden.
 set(archgeo_label_long
-  "SolverKeys.EveryEnumeratedValueWorksOrIsRefused")
+  "SolverKeys.EveryEnumeratedValueWorksOrIsRefused"
+  "BandTightening.BubbleMeetsPlanarityInsideThreeTenthsPercent")
 set(archgeo_label_golden "Examples/EngineBaselines.")
 
 set(archgeo_all_tests)

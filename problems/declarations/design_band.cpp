@@ -50,13 +50,12 @@ std::string Percent(double fraction) {
   return text;
 }
 
-// After a round: a vertex the tangent-plane model let past the band (the
+// After a round: a vertex the tangent-plane model let past `band` (the
 // surface curves away under it) is put back on the band's edge, towards its
 // closest reference point; returns how many. The overshoot is a fraction of
 // the band (the manifold holds 0.95 b in the model), so the panels it
 // touches stay as planar as the next round needs.
-int ClampToBand(HookContext& c) {
-  const double band = CanonicalBand(c);
+int ClampToBand(HookContext& c, double band) {
   if (!(band > 0)) return 0;
   Mesh& mesh = c.store->mesh();
   int clamped = 0;
@@ -71,6 +70,117 @@ int ClampToBand(HookContext& c) {
     ++clamped;
   }
   return clamped;
+}
+
+// Band tightening (planar_quads): when the rounds at the band pressed
+// against it (a round at kAtBand of it or more) and ended short of the
+// goals, on a net the problem's BandTighteningIf accepts, a stage that
+// first solves with the band open, until the goals hold, and then closes it
+// towards the band: after each round that meets the goals, the next
+// round's band is kTightenStep of the smaller of the current band and the
+// deviation reached, down to the band asked for. A round that misses the
+// goals keeps its band (and grows the weights); after kStepRounds such
+// rounds in a row at a band wider than the one asked for (the band open
+// included), the stage ends. The rounds before the last band are beyond
+// it, so never the output; the stage's output is its flattest round within
+// the band, or the rounds before it when none is flatter. The goals and the
+// band, reached from a planar state, hold in places a solve pressing a
+// non-planar net against the band stalls (docs/methods/design_band.md has
+// the figures).
+// Its state, in details.band_tightening: whether a round pressed against
+// the band, the band of the last and the next round (canonical lengths,
+// 0 = open), the rounds in a row that missed the goals, one entry per round.
+constexpr double kTightenStep = 0.8;
+constexpr int kStepRounds = 4;
+// The continued weights restart at this scale: where the first rounds of
+// the shared nets are nearly planar (the rounds before end far stiffer).
+constexpr double kTightenScale = 1e3;
+
+double CanonicalDiagonal(const HookContext& c) {
+  return PrincipalBoxDiagonal(*c.input) / c.frame.scale;
+}
+
+// After a round of the stages at the band: whether it pressed against it.
+void RecordPressed(HookContext& c) {
+  const double band = CanonicalBand(c);
+  if (c.Measure("surface_distance_relative") * CanonicalDiagonal(c) >= kAtBand * band) {
+    c.details["band_tightening"]["pressed"] = true;
+  }
+}
+
+// Whether `goals` hold on the current state.
+bool GoalsMet(HookContext& c, const std::vector<Tolerance>& goals) {
+  bool met = true;
+  for (const Tolerance& g : goals) {
+    const double bound = c.settings->Number(g.key);
+    met = met && (!(bound > 0) || c.Measure(g.measure) <= bound);
+  }
+  return met;
+}
+
+Stage TighteningStage(const Stage& base, const BandTighteningIf& tighten_if) {
+  Stage t = base;  // its terms, tolerances (the band's included), logged measures, keep_best
+  t.name = "band";
+  t.rounds_key = "stall.band_tightening";
+  t.skip_if_met = false;  // runs decides, leaving the stop of the rounds before
+  t.start_scale = kTightenScale;
+  t.restart_on_goals = true;
+  // The stall rule of the rounds before, counting only rounds within the
+  // band (the rounds that close it are beyond it by design).
+  t.patience_counts_valid = true;
+  std::vector<Tolerance> goals;
+  for (const Tolerance& tol : base.tolerances) {
+    if (!tol.bound) goals.push_back(tol);
+  }
+  t.runs = [goals, tighten_if](HookContext& c) {
+    return c.details.contains("band_tightening") &&
+           c.details["band_tightening"].value("pressed", false) && !GoalsMet(c, goals) &&
+           tighten_if(c);
+  };
+  t.ends = [](HookContext& c) {
+    const nlohmann::json& state = c.details["band_tightening"];
+    const double last = state["last_band"].get<double>();
+    if (state["misses"].get<int>() < kStepRounds || last == CanonicalBand(c)) return std::string();
+    return "band tightening: the goals missed in " + std::to_string(kStepRounds) + " rounds " +
+           (last > 0 ? "at a band of " + Percent(last / CanonicalDiagonal(c)) + " of the diagonal"
+                     : std::string("with the band open"));
+  };
+  const Hook before = base.before_round, after = base.after_round;
+  t.before_round = [before](HookContext& c) {
+    if (before) before(c);
+    nlohmann::json& state = c.details["band_tightening"];
+    if (!state.contains("rounds")) {
+      state["band"] = 0.0;
+      state["misses"] = 0;
+      state["rounds"] = nlohmann::json::array();
+    }
+    const double band = state["band"].get<double>();  // 0: no band at the vertex
+    for (VertexIndex v : c.store->mesh().vertices()) {
+      c.store->At("surface_band", int(v.idx()))[0] = band;
+    }
+  };
+  t.after_round = [after, goals](HookContext& c) {
+    if (after) after(c);
+    nlohmann::json& state = c.details["band_tightening"];
+    const double band = state["band"].get<double>(), target = CanonicalBand(c);
+    ClampToBand(c, band);
+    const bool met = GoalsMet(c, goals);
+    const double diagonal = CanonicalDiagonal(c);
+    const double deviation = c.Measure("surface_distance_relative") * diagonal;
+    state["rounds"].push_back({{"band_relative", band / diagonal},
+                               {"goals_met", met},
+                               {"deviation_relative", deviation / diagonal}});
+    state["last_band"] = band;
+    state["misses"] = met ? 0 : state["misses"].get<int>() + 1;
+    if (met) {
+      const double reached = band > 0 ? std::min(band, deviation) : deviation;
+      state["band"] = std::max(target, kTightenStep * reached);
+      // The next band starts from this planar state: anchor and fairness
+      // keep it rather than the net before the band opened.
+      c.model->Rebase();
+    }
+  };
+  return t;
 }
 
 // What the goals need when the band binds and no round met them: the same
@@ -118,7 +228,7 @@ BandNeed UnboundedNeed(HookContext& c, const std::string& problem) {
 void Report(HookContext& c, const std::string& problem) {
   const double band = CanonicalBand(c);
   if (!(band > 0) || c.loop == nullptr) return;
-  const double diagonal = PrincipalBoxDiagonal(*c.input) / c.frame.scale;
+  const double diagonal = CanonicalDiagonal(c);
   const Mesh& mesh = c.store->mesh();
   int at_band = 0;
   for (VertexIndex v : mesh.vertices()) {
@@ -137,6 +247,7 @@ void Report(HookContext& c, const std::string& problem) {
   };
   double reached = deviation;
   for (const RoundLog& row : c.loop->log) {
+    if (row.stage == "band") continue;  // band tightening: its own bands (below)
     const auto it = row.measures.find(t.measure);
     if (it != row.measures.end()) reached = std::max(reached, relative(it->second));
   }
@@ -148,6 +259,12 @@ void Report(HookContext& c, const std::string& problem) {
                       {"deviation_reached_relative", reached},
                       {"vertices_at_band", at_band},
                       {"binds", binds}};
+  if (c.details.contains("band_tightening")) {
+    if (c.details["band_tightening"].contains("rounds")) {
+      j["tightening"] = c.details["band_tightening"]["rounds"];
+    }
+    c.details.erase("band_tightening");
+  }
   const auto need = c.loop->bound_needs.find(t.key);
   if (need != c.loop->bound_needs.end()) {
     j["goals_needed_relative"] = relative(need->second);
@@ -176,7 +293,8 @@ void Report(HookContext& c, const std::string& problem) {
 
 }  // namespace
 
-ProblemDecl WithDesignBand(ProblemDecl d, double relative, bool measure_need) {
+ProblemDecl WithDesignBand(ProblemDecl d, double relative, bool measure_need,
+                           BandTighteningIf tighten) {
   // Beside the problem's other tolerance keys (a template writes each
   // section once).
   auto at = d.keys.begin();
@@ -194,6 +312,21 @@ ProblemDecl WithDesignBand(ProblemDecl d, double relative, bool measure_need) {
                            "the deviation band in file units; > 0 replaces "
                            "tolerance.surface_distance_max"));
   d.keys.insert(at, band.begin(), band.end());
+  if (tighten) {
+    // Beside the stall keys: what follows a run that stalls at the band.
+    auto stall = d.keys.end();
+    for (auto k = d.keys.begin(); k != d.keys.end(); ++k) {
+      if (k->name.rfind("stall.", 0) == 0) stall = k + 1;
+    }
+    d.keys.insert(stall, IntegerKey(
+        "stall.band_tightening", 16, 0, 100000,
+        "rounds at most of band tightening after rounds that pressed against the deviation "
+        "band (a round at 80% of it or more) and missed the goals, on a net near conjugate "
+        "(the suitability check does not warn): the band opened until they "
+        "hold, then closed towards it, to 0.8 of the deviation reached after each round that "
+        "meets them; it ends after 4 rounds in a row short of them at a wider band "
+        "(docs/methods/design_band.md); 0 = off"));
+  }
   d.blocks.push_back({"surface_band", Site::kVertex, 1, FrameMap::kLength, false,
                       Carry::kReinitialise, false, true,
                       "the deviation band at the vertex (surface_band term)"});
@@ -203,11 +336,13 @@ ProblemDecl WithDesignBand(ProblemDecl d, double relative, bool measure_need) {
   Hook init = d.init;
   d.init = [init](HookContext& c) {
     const double band = CanonicalBand(c);
-    for (VertexIndex v : c.store->mesh().vertices()) c.store->At("surface_band", int(v.idx()))[0] = band;
+    for (VertexIndex v : c.store->mesh().vertices()) {
+      c.store->At("surface_band", int(v.idx()))[0] = band;
+    }
     if (init) init(c);
   };
   auto stages = d.stages;
-  d.stages = [stages](const Settings& s) {
+  d.stages = [stages, tighten](const Settings& s) {
     std::vector<Stage> all = stages(s);
     const Tolerance t = BandTolerance(s);
     if (!(s.Number(t.key) > 0)) return all;
@@ -215,12 +350,19 @@ ProblemDecl WithDesignBand(ProblemDecl d, double relative, bool measure_need) {
       stage.tolerances.push_back(t);
       if (!stage.terms.empty()) stage.terms.push_back("surface_band");
       stage.logged.push_back(t.measure);
+    }
+    const bool tightening =
+        bool(tighten) && !all.empty() && s.Integer("stall.band_tightening") > 0;
+    const Stage first = tightening ? all.front() : Stage();
+    for (Stage& stage : all) {
       Hook after = stage.after_round;
-      stage.after_round = [after](HookContext& c) {
+      stage.after_round = [after, tightening](HookContext& c) {
         if (after) after(c);
-        ClampToBand(c);
+        ClampToBand(c, CanonicalBand(c));
+        if (tightening) RecordPressed(c);
       };
     }
+    if (tightening) all.push_back(TighteningStage(first, tighten));
     return all;
   };
   Hook finish = d.finish;

@@ -31,14 +31,26 @@
 //     that met the goals needed, if one did; with `measure_need`, when it
 //     binds and no round met the goals, the problem is solved once more
 //     without the band and the report gives the deviation that run reached
-//     and whether it met the goals (details.surface_band.unbounded).
+//     and whether it met the goals (details.surface_band.unbounded);
+//   - with `tighten` (planar_quads), when the rounds at the band pressed
+//     against it and missed the goals and `tighten` says yes, a stage that
+//     opens the band until they hold and then closes it towards the band
+//     round by round (stall.band_tightening; details.surface_band.tightening).
 #pragma once
+
+#include <functional>
 
 #include "core/problem.h"
 
 namespace archgeo {
 
-// `d` with the band (default `relative` of the diagonal; 0 = off unless set).
-ProblemDecl WithDesignBand(ProblemDecl d, double relative, bool measure_need = false);
+// Asked before the band tightening's first round: whether it may run (the
+// net is one the goals can hold on with the band open).
+using BandTighteningIf = std::function<bool(HookContext&)>;
+
+// `d` with the band (default `relative` of the diagonal; 0 = off unless set);
+// with `tighten`, the band tightening stage after the problem's stages.
+ProblemDecl WithDesignBand(ProblemDecl d, double relative, bool measure_need = false,
+                           BandTighteningIf tighten = {});
 
 }  // namespace archgeo

@@ -161,6 +161,18 @@ ProblemDecl PlanarQuadsGoals() {
   return d;
 }
 
+// The band tightening runs on a net near conjugate: the suitability check
+// (problems/declarations/suitability.h) finds it so, or the net is a layout
+// along a conjugate field (relayout: auto). On a net far from conjugate the
+// goals do not hold with the band open either: the stall is the net's.
+namespace {
+bool NearConjugate(HookContext& c) {
+  if (c.net.derived) return true;
+  c.RecordChecks(true);
+  return !c.details.contains("suitability") || c.details["suitability"].value("suitable", true);
+}
+}  // namespace
+
 ProblemDecl WithPlanarQuadsBounds(ProblemDecl d, bool measure_need) {
   // The deviation band (problems/declarations/design_band.h): 1.5% of the
   // diagonal. With today's terms the shared Conjugate net needs 0.65% for
@@ -168,7 +180,9 @@ ProblemDecl WithPlanarQuadsBounds(ProblemDecl d, bool measure_need) {
   // binding (docs/methods/design_band.md), and with measure_need the report
   // gives the deviation the same run reaches without the band.
   // Flatness in millimetres beside δ_PQ,n (problems/declarations/flatness.h).
-  return WithDesignBand(WithFlatness(std::move(d)), 0.015, measure_need);
+  // planar_quads itself (measure_need) also gets the band tightening stage.
+  return WithDesignBand(WithFlatness(std::move(d)), 0.015, measure_need,
+                        measure_need ? BandTighteningIf(&NearConjugate) : BandTighteningIf());
 }
 
 ProblemDecl planar_quads() {
