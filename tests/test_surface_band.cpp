@@ -189,7 +189,7 @@ TEST(SurfaceBand, PlanarQuadsHoldsTheBand) {
 // band: the rounds at the band stall above the planarity tolerance; the
 // band tightening reaches it inside the band from the planar state the open
 // band gives, with E not above the input's (exit 0). The deviation is
-// measured again here against the input surface.
+// measured again here against the input surface, and by MeasureFiles.
 class BandTightening : public ScratchDirTest {};
 
 TEST_F(BandTightening, BubbleMeetsPlanarityInsideThreeTenthsPercent) {
@@ -207,6 +207,11 @@ TEST_F(BandTightening, BubbleMeetsPlanarityInsideThreeTenthsPercent) {
   const ReferenceSurface reference(original);
   const Metrics m = ComputeMetrics(output, &reference, &original);
   EXPECT_LE(m.surface_distance_max / PrincipalBoxDiagonal(original), 0.003 + 1e-9);
+  // `archgeo measure OUT --reference IN` gives the report's relative
+  // deviation: both relative to the input's diagonal.
+  const RunResult measured = MeasureFiles(Path("out.obj"), input, false, false);
+  EXPECT_NEAR(measured.report.at("metrics").at("surface_distance_max_relative").get<double>(),
+              tightened.report.at("after").at("surface_distance_max_relative").get<double>(), 1e-9);
   EXPECT_TRUE(tightened.report.at("details").at("surface_band").contains("tightening"));
   EXPECT_TRUE(tightened.report.at("tolerances")
                   .at("tolerance.energy_not_above_input")

@@ -938,15 +938,22 @@ RunResult MeasureFiles(const std::string& mesh_path, const std::string& referenc
     validity_text = what + (v.valid() ? ": every hard check passed\n" : ": NOT valid\n" + v.Reason());
     if (!v.Warnings().empty()) validity_text += "warnings:\n" + v.Warnings();
   }
+  // Relative figures: to the reference's diagonal when there is one (the
+  // design's, as `solve` gives them for an output and its input), else to
+  // the mesh's own.
+  const double diagonal = reference_read ? PrincipalBoxDiagonal(*reference_read) : metrics.bbox_diagonal;
   run.report = {{"schema_version", kReportSchemaVersion},
                 {"archgeo", "measure"},
                 {"mesh", mesh_path},
                 {"reference", reference_path},
                 {"units", {{"lengths", "file units"},
-                           {"relative", "file units / bounding-box diagonal of the mesh"},
+                           {"relative", reference_read
+                                            ? "file units / bounding-box diagonal of the reference"
+                                            : "file units / bounding-box diagonal of the mesh"},
+                           {"bbox_diagonal", diagonal},
                            {"angles", "degrees"}}},
-                {"metrics", MetricsToJson(metrics, metrics.bbox_diagonal)}};
-  AnalysisToJson(analysis, metrics.bbox_diagonal, run.report["metrics"]);
+                {"metrics", MetricsToJson(metrics, diagonal)}};
+  AnalysisToJson(analysis, diagonal, run.report["metrics"]);
   if (!validity_json.is_null()) run.report["validity"] = validity_json;
   if (arrays) {
     nlohmann::json& a = run.report["arrays"] = {{"face", nlohmann::json::object()},
@@ -954,9 +961,8 @@ RunResult MeasureFiles(const std::string& mesh_path, const std::string& referenc
     PlanarityArrays(mesh, local.scale, a["face"]);
     if (input) DisplacementArray(mesh, *input, local.scale, a["vertex"]);
   }
-  run.summary = FormatMetrics(metrics, nullptr, metrics.bbox_diagonal) +
-                FormatAnalysis(all ? analysis : RowsThatApply(mesh, analysis), nullptr,
-                               metrics.bbox_diagonal) +
+  run.summary = FormatMetrics(metrics, nullptr, diagonal) +
+                FormatAnalysis(all ? analysis : RowsThatApply(mesh, analysis), nullptr, diagonal) +
                 validity_text;
   return run;
 }
