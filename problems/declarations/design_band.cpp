@@ -23,13 +23,17 @@ namespace {
 // from the tangent plane, which the surface may curve towards).
 constexpr double kAtBand = 0.8;
 
+// The input's bounding-box diagonal (principal axes) in canonical lengths.
+double CanonicalDiagonal(const HookContext& c) {
+  return PrincipalBoxDiagonal(*c.input) / c.frame.scale;
+}
+
 // The band in canonical lengths (input mean edge lengths); 0 = none.
 double CanonicalBand(const HookContext& c) {
   const Settings& s = *c.settings;
   const double absolute = s.Number("tolerance.surface_distance");
   if (absolute > 0) return absolute / c.frame.scale;
-  return s.Number("tolerance.surface_distance_max") * PrincipalBoxDiagonal(*c.input) /
-         c.frame.scale;
+  return s.Number("tolerance.surface_distance_max") * CanonicalDiagonal(c);
 }
 
 // The bound as the loop tests it: in file units when given so, else relative.
@@ -95,10 +99,6 @@ constexpr int kStepRounds = 4;
 // The continued weights restart at this scale: where the first rounds of
 // the shared nets are nearly planar (the rounds before end far stiffer).
 constexpr double kTightenScale = 1e3;
-
-double CanonicalDiagonal(const HookContext& c) {
-  return PrincipalBoxDiagonal(*c.input) / c.frame.scale;
-}
 
 // After a round of the stages at the band: whether it pressed against it.
 void RecordPressed(HookContext& c) {
