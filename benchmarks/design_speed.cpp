@@ -121,7 +121,16 @@ double MovePercent(const Run& r) {
 // with one sparse Cholesky per step, by LeanSolve or Ceres) or CG steps.
 std::string LinearSolves(const Json& r) {
   const double pcg = Get(r, "/pcg/rounds"), iters = Get(r, "/iterations/inner");
-  if (!(pcg > 0)) return Fmt("%.0f factorisations", iters);
+  if (!(pcg > 0)) {
+    // The report's count and flops (an archgeo that writes them); else one
+    // factorisation per iteration.
+    const Json factored = r.value("cholesky_factorisations", Json());
+    if (!factored.is_object() || factored.value("count", 0) == 0) {
+      return Fmt("%.0f factorisations", iters);
+    }
+    const int count = factored.value("count", 0);
+    return Fmt("%d factorisations of %.0f Mflop", count, 1e3 * factored.value("gflop", 0.0) / count);
+  }
   const double rounds = Get(r, "/iterations/outer");
   return Fmt("%.0f CG steps", Get(r, "/pcg/cg_iterations")) +
          (pcg < rounds ? Fmt(" (%.0f of %.0f rounds)", pcg, rounds) : "");
@@ -289,7 +298,8 @@ int Main(int argc, char** argv) {
          "peak memory) for the size; CPU: user + system seconds of the process; peak MB: its\n"
          "maximum resident set (wait4 ru_maxrss, MiB); iterations: rounds (outer) / iterations\n"
          "(inner, accepted and rejected steps); linear solves: factorisations when every round\n"
-         "was solved with one sparse Cholesky per step, else the CG steps of the PCG rounds;\n"
+         "was solved with one sparse Cholesky per step (with CHOLMOD's flops of one, on average),\n"
+         "else the CG steps of the PCG rounds;\n"
          "E (input): the output's E = Σ ℓ ℓ* and the input's; max move: the largest vertex\n"
          "displacement, % of the bounding-box diagonal; panels: non-convex panels of the output\n"
          "and the report's validity; these figures are the first run's. exit: every run's exit\n"

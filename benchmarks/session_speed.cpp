@@ -282,7 +282,8 @@ int Main(int argc, char** argv) {
         projection.push_back(At(s, "projection"));
         around.push_back(At(s, "total") - At(s, "solve"));
         api.push_back(w.wall - At(s, "total"));
-        if (w.report.value("cholesky_rounds", 0) > 0) factorisations += int(At(w.report, "iterations", "inner"));
+        const auto factored = w.report.find("cholesky_factorisations");
+        if (factored != w.report.end()) factorisations += factored->value("count", 0);
         analyses += w.report.value("cholesky_analyses", 0);
         // Planar to the tolerance, within the band, valid (a drag may raise E
         // above the dragged start's: tolerance.energy_not_above_input, exit 4).

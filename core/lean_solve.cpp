@@ -399,6 +399,9 @@ SolveSummary LeanSolve(const ceres::Solver::Options& options, const Residuals& r
         ++out.analyses;
       }
       solved = kept.cholesky->Solve(kept, damping, gradient, &delta);
+      ++out.factorisations;
+      out.factor_flops += kept.cholesky->FactorFlops();
+      out.factor_nonzeros = std::max(out.factor_nonzeros, kept.cholesky->FactorNonzeros());
       if (!solved) delta.setZero(gradient.size());
     } else {
       it.linear_solver_iterations =

@@ -119,6 +119,9 @@ struct SolveSummary {
   int iterations = 0;  // accepted and rejected steps, as Ceres counts them
   int cg_iterations = 0;
   int analyses = 0;  // sparse Cholesky analyses made (ordering, symbolic factorisation)
+  int factorisations = 0;          // numeric sparse Cholesky factorisations attempted
+  double factor_flops = 0;         // their floating-point operations (CHOLMOD's count), summed
+  double factor_nonzeros = 0;      // nonzeros of the largest factor L
   double seconds = 0, linear_solver_seconds = 0, jacobian_seconds = 0, residual_seconds = 0;
   double initial_cost = 0, final_cost = 0;  // ½ Σ ρ(‖r‖²)
   double trust_region_radius = 0;  // LeanSolve's at the end (0: Ceres solved it)

@@ -439,6 +439,10 @@ class Loop {
     }
     result_.cholesky_rounds += summary.cholesky;
     result_.cholesky_analyses += summary.analyses;
+    result_.cholesky_factorisations += summary.factorisations;
+    result_.cholesky_flops += summary.factor_flops;
+    result_.cholesky_factor_nonzeros =
+        std::max(result_.cholesky_factor_nonzeros, summary.factor_nonzeros);
     if (summary.trust_region_radius > 0) result_.trust_region_radius = summary.trust_region_radius;
     StepResult step;
     step.iterations = summary.iterations;

@@ -109,6 +109,11 @@ struct LoopResult {
   // structure of the residuals (0 when a kept pattern, LoopOptions::pattern,
   // fits every round).
   int cholesky_analyses = 0;
+  // Those rounds' numeric factorisations (one per step, rejected steps
+  // included), their floating-point operations summed and the nonzeros of
+  // the largest factor: CHOLMOD's counts.
+  int cholesky_factorisations = 0;
+  double cholesky_flops = 0, cholesky_factor_nonzeros = 0;
   std::map<std::string, double> objective;  // ½ Σ w r² per part and "total", final state
   std::map<std::string, double> seconds;    // "solver" (Ceres or PCG), "linear_solver", "jacobian",
                                             // "residual", "projection"

@@ -108,6 +108,8 @@ NormalCholesky::NormalCholesky(const NormalPattern& p, CholeskyOrdering ordering
 
 double NormalCholesky::FactorFlops() const { return impl_->common.fl; }
 
+double NormalCholesky::FactorNonzeros() const { return impl_->common.lnz; }
+
 NormalCholesky::~NormalCholesky() {
   Impl& m = *impl_;
   cholmod_free_factor(&m.factor, &m.common);

@@ -38,6 +38,8 @@ class NormalCholesky {
   // Floating-point operations of one numeric factorisation (the analysis'
   // count, by the ordering it used).
   double FactorFlops() const;
+  // Nonzeros of the factor L (the analysis' count, supernodal zeros included).
+  double FactorNonzeros() const;
   ~NormalCholesky();
   NormalCholesky(const NormalCholesky&) = delete;
   NormalCholesky& operator=(const NormalCholesky&) = delete;

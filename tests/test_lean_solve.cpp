@@ -937,6 +937,27 @@ TEST(LeanSolve, CholeskyAnalysisIsKeptWithThePattern) {
   EXPECT_LT(other.final_cost, other.initial_cost);
 }
 
+// The summary counts each numeric factorisation (one per step, rejected
+// steps included) with CHOLMOD's flops of it, and the factor's nonzeros: a
+// solve's flops are its factorisations times the analysis' count, and the
+// factor holds at least the diagonal and H's upper triangle.
+TEST(LeanSolve, SummaryCountsFactorisationsAndTheirFlops) {
+  Membrane m(12);
+  NormalPattern pattern;
+  const SolveSummary s = LeanSolve(Tight(), m.residuals, &pattern, LeanStep::kCholesky);
+  ASSERT_TRUE(s.usable) << s.message;
+  ASSERT_NE(pattern.cholesky, nullptr);
+  EXPECT_GT(s.iterations, 0);
+  EXPECT_EQ(s.factorisations, s.iterations);
+  EXPECT_NEAR(s.factor_flops, s.factorisations * pattern.cholesky->FactorFlops(),
+              1e-12 * s.factor_flops);
+  EXPECT_EQ(s.factor_nonzeros, pattern.cholesky->FactorNonzeros());
+  EXPECT_GE(s.factor_nonzeros, double(m.x.size()));
+  const SolveSummary pcg = LeanSolve(Tight(), m.residuals, &pattern, LeanStep::kPcg);
+  EXPECT_EQ(pcg.factorisations, 0);
+  EXPECT_EQ(pcg.factor_flops, 0.0);
+}
+
 // solver.ordering metis: the analysis orders by METIS' nested dissection,
 // whose factorisation of a 120 × 120 membrane takes fewer flops than AMD's
 // (1.6e7 against 2.1e7), and the steps reach the same optimum.
@@ -1068,6 +1089,13 @@ TEST_F(LeanSolveCli, PlanarQuadsRoundsAreLeanCholeskyUnlessBackEndCeres) {
   EXPECT_EQ(lean["cholesky_rounds"].get<int>(), lean["iterations"]["outer"].get<int>());
   EXPECT_GT(lean["cholesky_rounds"].get<int>(), 0);
   EXPECT_EQ(ceres["cholesky_rounds"].get<int>(), 0);
+  // One factorisation per step of every round, with its flops.
+  const nlohmann::json& factored = lean["cholesky_factorisations"];
+  EXPECT_EQ(factored["count"].get<int>(), lean["iterations"]["inner"].get<int>());
+  EXPECT_GT(factored["gflop"].get<double>(), 0.0);
+  EXPECT_GE(factored["largest_factor_nonzeros"].get<double>(), lean["variables"].get<double>());
+  EXPECT_EQ(ceres["cholesky_factorisations"]["count"].get<int>(), 0);
+  EXPECT_EQ(ceres["cholesky_factorisations"]["gflop"].get<double>(), 0.0);
   for (const nlohmann::json* r : {&lean, &ceres}) {
     EXPECT_LE((*r)["after"]["pq_normalized_max"].get<double>(), 1e-3);
   }

@@ -421,6 +421,9 @@ class SpecRun {
     rep["residuals"] = solved.residuals;
     rep["cholesky_rounds"] = solved.cholesky_rounds;
     rep["cholesky_analyses"] = solved.cholesky_analyses;
+    rep["cholesky_factorisations"] = {{"count", solved.cholesky_factorisations},
+                                      {"gflop", solved.cholesky_flops * 1e-9},
+                                      {"largest_factor_nonzeros", solved.cholesky_factor_nonzeros}};
     rep["pcg"] = {{"rounds", solved.pcg_rounds}, {"cg_iterations", solved.cg_iterations}};
     rep["iterations"] = {{"outer", solved.rounds}, {"inner", solved.iterations}};
     rep["objective"] = solved.objective;

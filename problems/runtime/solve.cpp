@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "problems/runtime/solve.h"
 
+#include <algorithm>
 #include <glog/logging.h>
 
 #include <chrono>
@@ -109,6 +110,10 @@ void AddEarlierLevels(const LoopResult& earlier, LoopResult* level) {
   level->cg_iterations += earlier.cg_iterations;
   level->cholesky_rounds += earlier.cholesky_rounds;
   level->cholesky_analyses += earlier.cholesky_analyses;
+  level->cholesky_factorisations += earlier.cholesky_factorisations;
+  level->cholesky_flops += earlier.cholesky_flops;
+  level->cholesky_factor_nonzeros =
+      std::max(level->cholesky_factor_nonzeros, earlier.cholesky_factor_nonzeros);
   for (const auto& [k, v] : earlier.seconds) level->seconds[k] += v;
 }
 
