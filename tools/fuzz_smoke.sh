@@ -33,18 +33,32 @@ for name in "${harnesses[@]}"; do targets+=("fuzz_$name"); done
 cmake --build "$build" -j "$(nproc)" --target "${targets[@]}"
 
 artifacts=$(mktemp -d "${TMPDIR:-/tmp}/archgeo_fuzz_smoke.XXXXXX")
-status=0
-for name in "${harnesses[@]}"; do
-  work="$artifacts/$name-corpus"
+# One harness: ${seconds} s from its corpus; exit non-zero on a finding.
+fuzz() {
+  local name=$1 work="$artifacts/$1-corpus"
   mkdir -p "$work"
-  echo "== fuzz_$name: ${seconds} s on fuzz/corpus/$name"
   # -timeout: one input may take at most 10 s; -rss_limit_mb: 2 GB (also the
   # largest single allocation allowed).
-  if ! ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=0 \
-      UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
-      "$build/fuzz/fuzz_$name" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
-        -print_final_stats=1 -artifact_prefix="$artifacts/$name-" \
-        "$work" "fuzz/corpus/$name" 2>"$artifacts/$name.log"; then
+  ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=0 \
+    UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
+    "$build/fuzz/fuzz_$name" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+      -print_final_stats=1 -artifact_prefix="$artifacts/$name-" \
+      "$work" "fuzz/corpus/$name" 2>"$artifacts/$name.log"
+  local status=$?
+  rm -rf "$work"
+  return "$status"
+}
+# The harnesses run nproc at a time (each is one process on one core).
+declare -A pid
+for name in "${harnesses[@]}"; do
+  while [ "$(jobs -rp | wc -l)" -ge "$(nproc)" ]; do wait -n || true; done
+  fuzz "$name" &
+  pid[$name]=$!
+done
+status=0
+for name in "${harnesses[@]}"; do
+  echo "== fuzz_$name: ${seconds} s on fuzz/corpus/$name"
+  if ! wait "${pid[$name]}"; then
     status=1
     tail -n 60 "$artifacts/$name.log"
     echo "fuzz_$name: FINDING (reproducer and log in $artifacts)"
@@ -52,7 +66,6 @@ for name in "${harnesses[@]}"; do
     grep -E "^stat::(number_of_executed_units|peak_rss_mb)|cov: .* ft: .* corp:" \
       "$artifacts/$name.log" | tail -n 3
   fi
-  rm -rf "$work"
 done
 if [ "$status" -eq 0 ]; then
   rm -rf "$artifacts"
