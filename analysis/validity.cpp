@@ -16,6 +16,7 @@
 #include "core/newell.h"
 #include "core/solver_options.h"
 #include "geometry/reference.h"
+#include "mesh/topology.h"
 
 namespace archgeo {
 namespace {
@@ -288,11 +289,7 @@ PanelShapes MeasurePanelShapes(const Mesh& mesh) {
 
 Validity CheckValidity(const Mesh& out, const Mesh* input, const ValidityLimits& limits,
                        bool full) {
-  const bool same = input && input->number_of_vertices() == out.number_of_vertices() &&
-                    input->number_of_faces() == out.number_of_faces() &&
-                    input->number_of_edges() == out.number_of_edges() &&
-                    input->num_faces() == out.num_faces() && input->num_edges() == out.num_edges();
-  const Mesh* in = same ? input : nullptr;
+  const Mesh* in = input && SameConnectivity(*input, out) ? input : nullptr;
   ValidityCheck finite{"finite", true, 0, 0, 0, "non-finite vertices"};
   ValidityCheck reflex{"reflex_corners", true, 0, 0, limits.max_reflex_degrees, "degrees bent inward"};
   ValidityCheck bow_ties{"bow_ties", true, 0, 0, 0, "self-intersecting panels"};

@@ -39,20 +39,36 @@ V3 RmFaceNormal(const Mesh& m, HalfedgeIndex h) {
   return (b - a).cross(c - a);
 }
 
+// Whether a triangle whose area vector was `before` is turned over or
+// flattened when it becomes `after` (its longest edge then `longest`):
+// reversed, or below 1e-3 of its old length and of its longest edge squared.
+bool RmSpoiled(const V3& before, const V3& after, double longest) {
+  return after.dot(before) <= 0 || after.norm() < 1e-3 * std::min(before.norm(), longest * longest);
+}
+
+// The longest edge of a triangle.
+double RmLongest(const V3& a, const V3& b, const V3& c) {
+  return std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+}
+
 struct RmState {
   Mesh mesh;
   // boundary: on the border; feature: on a feature edge; corner: kept.
   Mesh::Property_map<VertexIndex, bool> corner, boundary, feature;
-  Mesh::Property_map<EdgeIndex, bool> feature_edge;
+  // The feature chain of an edge, and of a feature vertex that is not a
+  // corner: −1 for none. A chain is a run of the input's feature edges
+  // between corners (or a closed loop of them).
+  Mesh::Property_map<EdgeIndex, int> edge_chain;
+  Mesh::Property_map<VertexIndex, int> chain;
   Mesh::Property_map<VertexIndex, double> size;  // target edge length at the vertex
   const ReferenceSurface* surface = nullptr;
-  std::vector<std::pair<V3, V3>> feature_segments;  // the input's feature edges
+  std::vector<std::vector<std::pair<V3, V3>>> chains;  // each chain's input edges
   std::vector<double> input_size;  // per vertex of surface->Triangles(): its target length
   // An edge between a and b is long beyond 4/3 and short below 4/5 of the
   // mean of their targets.
   double Target(VertexIndex a, VertexIndex b) const { return 0.5 * (size[a] + size[b]); }
   bool Curve(VertexIndex v) const { return boundary[v] || feature[v]; }
-  bool CurveEdge(EdgeIndex e) const { return mesh.is_border(e) || feature_edge[e]; }
+  bool CurveEdge(EdgeIndex e) const { return mesh.is_border(e) || edge_chain[e] >= 0; }
 };
 
 // Distance from q to the segment ab.
@@ -81,6 +97,39 @@ int RmCurveAlong(const std::vector<std::vector<Vec3>>& curves, double tolerance,
   return -1;
 }
 
+// The chains of the feature edges marked (edge_chain 0): from each edge not
+// yet in a chain, through the feature vertices that are not corners (each
+// has two feature edges), in both directions; the vertices passed take the
+// chain.
+void RmMarkChains(RmState& s) {
+  Mesh& m = s.mesh;
+  for (EdgeIndex e : m.edges()) {
+    if (s.edge_chain[e] == 0) s.edge_chain[e] = -2;  // a feature edge without its chain yet
+  }
+  for (EdgeIndex start : m.edges()) {
+    if (s.edge_chain[start] != -2) continue;
+    const int c = int(s.chains.size());
+    s.chains.emplace_back();
+    std::vector<EdgeIndex> stack{start};
+    s.edge_chain[start] = c;
+    while (!stack.empty()) {
+      const EdgeIndex e = stack.back();
+      stack.pop_back();
+      const HalfedgeIndex h = m.halfedge(e);
+      s.chains.back().emplace_back(Rp(m, m.source(h)), Rp(m, m.target(h)));
+      for (VertexIndex v : {m.source(h), m.target(h)}) {
+        if (s.corner[v]) continue;
+        s.chain[v] = c;
+        for (HalfedgeIndex g : CGAL::halfedges_around_target(m.halfedge(v), m)) {
+          if (s.edge_chain[m.edge(g)] != -2) continue;
+          s.edge_chain[m.edge(g)] = c;
+          stack.push_back(m.edge(g));
+        }
+      }
+    }
+  }
+}
+
 // Feature edges: interior edges of the input whose faces' normals differ by
 // more than the angle, or that lie along a feature curve (counted per curve
 // in `curve_edges`). Feature vertices with other than two feature edges
@@ -100,8 +149,7 @@ int RmMarkFeatures(RmState& s, const RemeshOptions& options, std::vector<int>& c
                                    Rp(m, m.source(h)), Rp(m, m.target(h)));
     if (curve >= 0) ++curve_edges[size_t(curve)];
     if (n1.dot(n2) >= limit && curve < 0) continue;
-    s.feature_edge[e] = true;
-    s.feature_segments.emplace_back(Rp(m, m.source(h)), Rp(m, m.target(h)));
+    s.edge_chain[e] = 0;  // a feature edge; its chain below
     for (VertexIndex v : {m.source(h), m.target(h)}) {
       s.feature[v] = true;
       ++count[v.idx()];
@@ -114,14 +162,15 @@ int RmMarkFeatures(RmState& s, const RemeshOptions& options, std::vector<int>& c
       ++corners;
     }
   }
+  RmMarkChains(s);
   return corners;
 }
 
-// The closest point of the input's feature edges to q.
-V3 RmOnFeature(const RmState& s, const V3& q) {
+// The closest point to q of the input edges of feature chain `chain`.
+V3 RmOnFeature(const RmState& s, int chain, const V3& q) {
   V3 best = q;
   double best_d = INFINITY;
-  for (const auto& [a, b] : s.feature_segments) {
+  for (const auto& [a, b] : s.chains[size_t(chain)]) {
     const V3 ab = b - a;
     const double t = std::clamp(ab.dot(q - a) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
     const V3 p = a + t * ab;
@@ -132,6 +181,20 @@ V3 RmOnFeature(const RmState& s, const V3& q) {
     }
   }
   return best;
+}
+
+// q put on the input where vertex v belongs: a corner's q as it is, a
+// boundary vertex's on the input's boundary, a feature vertex's on its
+// chain, any other's on the input surface (closest points).
+V3 RmOnInput(const RmState& s, VertexIndex v, const V3& q) {
+  if (s.corner[v]) return q;
+  if (s.boundary[v]) {
+    const auto on = s.surface->ClosestOnBoundary({q.x(), q.y(), q.z()});
+    return on ? V3(on->point[0], on->point[1], on->point[2]) : q;
+  }
+  if (s.chain[v] >= 0) return RmOnFeature(s, s.chain[v], q);
+  const ReferenceSurface::SurfacePoint on = s.surface->Closest({q.x(), q.y(), q.z()});
+  return {on.point[0], on.point[1], on.point[2]};
 }
 
 // Corners: boundary vertices where the boundary turns by more than the angle.
@@ -161,20 +224,33 @@ int RmSplitLong(RmState& s) {
     HalfedgeIndex h = m.halfedge(edges[i]);
     if (RmLength(m, h) <= 4.0 / 3.0 * s.Target(m.source(h), m.target(h))) continue;
     const bool on_boundary = m.is_border(m.edge(h));
-    const bool on_feature = s.feature_edge[m.edge(h)];
+    const int chain = s.edge_chain[m.edge(h)];
+    const bool on_feature = chain >= 0;
     const V3 mid = 0.5 * (Rp(m, m.source(h)) + Rp(m, m.target(h)));
     const HalfedgeIndex hnew = CGAL::Euler::split_edge(h, m);  // target(hnew): the new vertex
     const VertexIndex v = m.target(hnew);
     const double size = s.Target(m.source(hnew), m.target(h));
-    SetRp(m, v, mid);
     s.size[v] = size;
     s.corner[v] = false;
     s.boundary[v] = on_boundary;
     s.feature[v] = on_feature;
-    s.feature_edge[m.edge(hnew)] = on_feature;
+    s.chain[v] = chain;
+    s.edge_chain[m.edge(hnew)] = chain;
+    SetRp(m, v, mid);
     if (!m.is_border(h)) CGAL::Euler::split_face(hnew, m.next(h), m);
     const HalfedgeIndex o = m.opposite(h);
     if (!m.is_border(o)) CGAL::Euler::split_face(o, m.next(m.opposite(hnew)), m);
+    // On the input where v belongs, unless that turns over or flattens one
+    // of its (up to four) triangles: then the chord's midpoint.
+    std::vector<std::pair<HalfedgeIndex, V3>> around;
+    for (HalfedgeIndex g : CGAL::halfedges_around_target(m.halfedge(v), m)) {
+      if (!m.is_border(g)) around.emplace_back(g, RmFaceNormal(m, g));
+    }
+    SetRp(m, v, RmOnInput(s, v, mid));
+    for (const auto& [g, before] : around) {
+      const V3 a = Rp(m, m.source(g)), b = Rp(m, m.target(g)), c = Rp(m, m.target(m.next(g)));
+      if (RmSpoiled(before, RmFaceNormal(m, g), RmLongest(a, b, c))) SetRp(m, v, mid);
+    }
     ++splits;
     // The two halves may still be long.
     edges.push_back(m.edge(hnew));
@@ -202,7 +278,7 @@ bool RmCollapseKeepsShape(const RmState& s, HalfedgeIndex h, const V3& at) {
       const V3 p2 = (m.source(g) == a || m.source(g) == b) ? at : p;
       const V3 r2 = (m.target(m.next(g)) == a || m.target(m.next(g)) == b) ? at : r;
       const V3 after = (q - p2).cross(r2 - p2);
-      if (before.dot(after) <= 0 || after.norm() < 1e-12 * before.norm()) return false;
+      if (RmSpoiled(before, after, RmLongest(p2, q, r2))) return false;
     }
   }
   return true;
@@ -226,9 +302,11 @@ int RmCollapseShort(RmState& s) {
       std::swap(a, b);
     }
     // Where the kept vertex goes: a corner or a boundary or feature vertex
-    // (of an edge off its curve) stays; else the midpoint (projected by the
-    // relaxation).
-    const V3 at = (s.corner[b] || (s.Curve(b) && !curve_edge)) ? Rp(m, b) : 0.5 * (Rp(m, a) + Rp(m, b));
+    // (of an edge off its curve) stays; else the midpoint, on the input
+    // where b belongs.
+    const V3 at = (s.corner[b] || (s.Curve(b) && !curve_edge))
+                      ? Rp(m, b)
+                      : RmOnInput(s, b, 0.5 * (Rp(m, a) + Rp(m, b)));
     if (!CGAL::Euler::does_satisfy_link_condition(e, m)) continue;
     // No triangle flattened into its neighbour: the far vertices of the two
     // vanishing faces keep at least 4 edges.
@@ -238,12 +316,14 @@ int RmCollapseShort(RmState& s) {
     }
     if (thin || !RmCollapseKeepsShape(s, h, at)) continue;
     const bool corner = s.corner[b], boundary = s.boundary[b], feature = s.feature[b];
+    const int chain = s.chain[b];
     const double size = std::min(s.size[a], s.size[b]);
     const VertexIndex kept = CGAL::Euler::collapse_edge(e, m);
     SetRp(m, kept, at);
     s.corner[kept] = corner;
     s.boundary[kept] = boundary;
     s.feature[kept] = feature;
+    s.chain[kept] = chain;
     s.size[kept] = size;
     ++collapses;
   }
@@ -269,11 +349,15 @@ int RmFlipForValence(RmState& s) {
     const int before = dev(a, 0) + dev(b, 0) + dev(c, 0) + dev(d, 0);
     const int after = dev(a, -1) + dev(b, -1) + dev(c, 1) + dev(d, 1);
     if (after >= before) continue;
-    // The two new triangles (c, d, b) and (d, c, a) must face the old ones' way.
+    // The two new triangles (c, d, b) and (d, c, a) must face the old ones'
+    // way, and neither may be flat.
     const V3 pa = Rp(m, a), pb = Rp(m, b), pc = Rp(m, c), pd = Rp(m, d);
     const V3 n = RmFaceNormal(m, h) + RmFaceNormal(m, o);
     const V3 n1 = (pd - pc).cross(pb - pc), n2 = (pc - pd).cross(pa - pd);
-    if (n1.dot(n) <= 0 || n2.dot(n) <= 0 || n1.dot(n2) <= 0) continue;
+    if (RmSpoiled(n, n1, RmLongest(pc, pd, pb)) || RmSpoiled(n, n2, RmLongest(pd, pc, pa)) ||
+        n1.dot(n2) <= 0) {
+      continue;
+    }
     CGAL::Euler::flip_edge(h, m);
     ++flips;
   }
@@ -286,6 +370,42 @@ V3 RmVertexNormal(const Mesh& m, VertexIndex v) {
     if (!m.is_border(g)) n += RmFaceNormal(m, g);
   }
   return n.normalized();
+}
+
+// Moves every vertex of `moves` to its position, then puts back, until
+// none is left, the moved vertices of every triangle the moves turned over
+// or flattened (its area vector reversed, or below 1e-3 of its old length
+// and of its longest edge squared): the tangent plane and the closest
+// point can send two neighbours to one point of a bent surface.
+void RmMoveKeepingFaces(Mesh& m, const std::vector<std::pair<VertexIndex, V3>>& moves) {
+  std::vector<V3> old(m.number_of_vertices() + m.number_of_removed_vertices());
+  std::vector<char> moved(old.size(), 0);
+  std::vector<std::pair<FaceIndex, V3>> faces;  // around a moved vertex, with the old area vector
+  for (const auto& [v, p] : moves) {
+    old[v.idx()] = Rp(m, v);
+    moved[v.idx()] = 1;
+  }
+  for (const auto& [v, p] : moves) {
+    for (HalfedgeIndex g : CGAL::halfedges_around_target(m.halfedge(v), m)) {
+      if (!m.is_border(g)) faces.emplace_back(m.face(g), RmFaceNormal(m, g));
+    }
+  }
+  for (const auto& [v, p] : moves) SetRp(m, v, p);
+  for (bool again = true; again;) {
+    again = false;
+    for (const auto& [f, before] : faces) {
+      const HalfedgeIndex h = m.halfedge(f);
+      const V3 after = RmFaceNormal(m, h);
+      const V3 a = Rp(m, m.source(h)), b = Rp(m, m.target(h)), c = Rp(m, m.target(m.next(h)));
+      if (!RmSpoiled(before, after, RmLongest(a, b, c))) continue;
+      for (VertexIndex w : CGAL::vertices_around_face(h, m)) {
+        if (!moved[w.idx()]) continue;
+        SetRp(m, w, old[w.idx()]);
+        moved[w.idx()] = 0;
+        again = true;
+      }
+    }
+  }
 }
 
 void RmRelax(RmState& s) {
@@ -311,17 +431,17 @@ void RmRelax(RmState& s) {
       if (!on) continue;
       target = {on->point[0], on->point[1], on->point[2]};
     } else if (s.feature[v]) {
-      // The midpoint of its two feature neighbours, on the input's features.
+      // The midpoint of its two neighbours along its chain, on the chain's
+      // input edges (on no other feature: two chains meet at corners only).
       V3 sum = V3::Zero();
       int count = 0;
       for (HalfedgeIndex g : CGAL::halfedges_around_target(m.halfedge(v), m)) {
-        if (s.feature_edge[m.edge(g)]) {
+        if (s.edge_chain[m.edge(g)] == s.chain[v]) {
           sum += Rp(m, m.source(g));
           ++count;
         }
       }
-      if (count != 2) continue;
-      target = RmOnFeature(s, 0.5 * sum);
+      target = RmOnFeature(s, s.chain[v], count == 2 ? V3(0.5 * sum) : p);
     } else {
       V3 centroid = V3::Zero();
       double area = 0;
@@ -341,7 +461,7 @@ void RmRelax(RmState& s) {
     }
     moves.emplace_back(v, target);
   }
-  for (const auto& [v, p] : moves) SetRp(m, v, p);
+  RmMoveKeepingFaces(m, moves);
 }
 
 // Curvature-adaptive targets (Dunyach et al. 2013, "Adaptive remeshing for
@@ -399,14 +519,15 @@ RemeshResult IsotropicRemesh(const Mesh& input, const RemeshOptions& options) {
   s.corner = s.mesh.add_property_map<VertexIndex, bool>("v:rm_corner", false).first;
   s.boundary = s.mesh.add_property_map<VertexIndex, bool>("v:rm_boundary", false).first;
   s.feature = s.mesh.add_property_map<VertexIndex, bool>("v:rm_feature", false).first;
-  s.feature_edge = s.mesh.add_property_map<EdgeIndex, bool>("e:rm_feature", false).first;
+  s.edge_chain = s.mesh.add_property_map<EdgeIndex, int>("e:rm_chain", -1).first;
+  s.chain = s.mesh.add_property_map<VertexIndex, int>("v:rm_chain", -1).first;
   s.size = s.mesh.add_property_map<VertexIndex, double>("v:rm_size", options.target_edge_length).first;
   RmInputSizes(s, options);
   RmUpdateSizes(s);
   RemeshResult result;
   result.corners = RmMarkCorners(s, options.corner_angle_degrees);
   result.corners += RmMarkFeatures(s, options, result.curve_edges);
-  result.feature_edges = int(s.feature_segments.size());
+  for (const auto& chain : s.chains) result.feature_edges += int(chain.size());
   for (int it = 0; it < options.iterations; ++it) {
     result.splits += RmSplitLong(s);
     result.collapses += RmCollapseShort(s);
@@ -418,7 +539,8 @@ RemeshResult IsotropicRemesh(const Mesh& input, const RemeshOptions& options) {
   s.mesh.remove_property_map(s.corner);
   s.mesh.remove_property_map(s.boundary);
   s.mesh.remove_property_map(s.feature);
-  s.mesh.remove_property_map(s.feature_edge);
+  s.mesh.remove_property_map(s.edge_chain);
+  s.mesh.remove_property_map(s.chain);
   s.mesh.remove_property_map(s.size);
   s.mesh.collect_garbage();
   result.mesh = std::move(s.mesh);

@@ -21,7 +21,9 @@
 // junctions of features, features meeting the boundary) keep their input
 // position and are never removed; boundary and feature edges are split and
 // collapsed only along their curve (vertices relaxed along it and projected
-// back onto the input's boundary or features), never flipped.
+// back onto the input's boundary or their own feature chain), never
+// flipped. Split and collapsed vertices go onto the input at once, and no
+// split, collapse, flip or relaxation move turns over or flattens a triangle.
 #pragma once
 
 #include <vector>

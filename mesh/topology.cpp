@@ -44,6 +44,29 @@ HalfedgeIndex Continuation(const Mesh& mesh, const std::vector<bool>& boundary, 
 
 }  // namespace
 
+bool SameConnectivity(const Mesh& a, const Mesh& b) {
+  if (a.number_of_vertices() != b.number_of_vertices() ||
+      a.number_of_faces() != b.number_of_faces() || a.number_of_edges() != b.number_of_edges() ||
+      a.num_vertices() != b.num_vertices() || a.num_faces() != b.num_faces() ||
+      a.num_edges() != b.num_edges()) {
+    return false;
+  }
+  std::vector<VertexIndex> cycle, other;
+  for (FaceIndex f : a.faces()) {
+    if (b.is_removed(f)) return false;
+    cycle.clear();
+    other.clear();
+    for (VertexIndex v : CGAL::vertices_around_face(a.halfedge(f), a)) cycle.push_back(v);
+    for (VertexIndex v : CGAL::vertices_around_face(b.halfedge(f), b)) other.push_back(v);
+    if (other.size() != cycle.size()) return false;
+    const auto first = std::find(other.begin(), other.end(), cycle[0]);
+    if (first == other.end()) return false;
+    std::rotate(other.begin(), first, other.end());
+    if (other != cycle) return false;
+  }
+  return true;
+}
+
 std::vector<bool> BoundaryVertices(const Mesh& mesh) {
   std::vector<bool> boundary(mesh.num_vertices(), false);
   for (HalfedgeIndex h : mesh.halfedges()) {

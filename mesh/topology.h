@@ -10,6 +10,12 @@
 
 namespace archgeo {
 
+// Whether a and b are one mesh, perhaps moved: the same vertex, edge and
+// face index ranges, and every face the same cycle of vertex indices (from
+// any corner). Equal counts alone do not say it: a remeshed closed surface
+// can have the input's counts.
+bool SameConnectivity(const Mesh& a, const Mesh& b);
+
 // true for each vertex (indexed by vertex index) on a boundary.
 std::vector<bool> BoundaryVertices(const Mesh& mesh);
 

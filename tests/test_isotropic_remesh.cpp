@@ -13,8 +13,11 @@
 
 #include <gtest/gtest.h>
 
+#include "analysis/validity.h"
+#include "generators/smoothness_surfaces.h"
 #include "geometry/isotropic_remesh.h"
 #include "geometry/reference.h"
+#include "mesh/topology.h"
 #include "tests/closed_meshes.h"
 #include "tests/make_mesh.h"
 
@@ -207,6 +210,62 @@ TEST(IsotropicRemesh, SphereStaysClosedOnTheInputWithEvenEdges) {
   EXPECT_LE(q.edge_cv, 0.10);
   EXPECT_NEAR(q.edge_mean, 0.2, 0.02);
   EXPECT_LE(ValenceDeviation(r.mesh), 0.3);  // 0.19 with the flips, 0.38 without
+}
+
+// A coarse torus (10 × 5 quads, R = 3, r = 1) whose every edge bends by
+// 36–72°: with features at 30° it is a net of feature chains through
+// corners, as a tessellated CAD part is. Remeshed coarser than it is, every
+// vertex stays on the input (a feature vertex on its own chain, not on a
+// chain nearby), no two vertices meet and no triangle folds onto another:
+// the output passes the validity checks on its own (no short edge, no
+// self-intersection). Projecting a relaxed feature vertex onto the nearest
+// of all the features, and placing split and collapsed vertices at chord
+// midpoints, left coincident vertices and intersecting triangles here.
+TEST(IsotropicRemesh, CoarseFeatureNetStaysOnItsChainsWithoutFoldsOrCoincidentVertices) {
+  const Mesh input = TorusPrincipalQuads(3, 1, 10, 5);
+  const ReferenceSurface surface(input);
+  for (const double factor : {1.3, 1.5}) {
+    SCOPED_TRACE(factor);
+    RemeshOptions o;
+    o.target_edge_length = factor * MeanEdgeLength(input);
+    o.feature_angle_degrees = 30;
+    const RemeshResult r = IsotropicRemesh(input, o);
+    EXPECT_GT(r.feature_edges, 0);
+    double off = 0;
+    for (VertexIndex x : r.mesh.vertices()) {
+      const Eigen::Vector3d p = Pos(r.mesh, x);
+      const auto c = surface.Closest({p.x(), p.y(), p.z()});
+      off = std::max(off, (p - Eigen::Vector3d(c.point[0], c.point[1], c.point[2])).norm());
+    }
+    EXPECT_LE(off, 1e-9);
+    const Validity alone = CheckValidity(r.mesh, nullptr, ValidityLimits{}, true);
+    EXPECT_TRUE(alone.valid()) << alone.Reason();
+    EXPECT_GT(MeasureTriangles(r.mesh).min_angle_degrees, 5);
+  }
+}
+
+// A mesh with its input's vertex, edge and face counts is not always the
+// input moved: a remeshed closed surface can have them (2V − 4 faces at the
+// same vertex count). The validity checks compare faces of the same index
+// only when every face has the input's vertices; here the same sphere with
+// its faces listed in reverse order, whose face i is another face than the
+// input's, is valid, where comparing by index would call most faces turned.
+TEST(IsotropicRemesh, AMeshWithTheInputsCountsButOtherFacesIsNotComparedFaceByFace) {
+  const Mesh input = OctaSphere(3);
+  Mesh other;
+  for (VertexIndex v : input.vertices()) other.add_vertex(input.point(v));
+  std::vector<FaceIndex> faces(input.faces().begin(), input.faces().end());
+  for (auto f = faces.rbegin(); f != faces.rend(); ++f) {
+    std::vector<VertexIndex> corners;
+    for (VertexIndex v : CGAL::vertices_around_face(input.halfedge(*f), input)) corners.push_back(v);
+    other.add_face(corners);
+  }
+  ASSERT_EQ(other.number_of_faces(), input.number_of_faces());
+  ASSERT_EQ(other.number_of_edges(), input.number_of_edges());
+  EXPECT_FALSE(SameConnectivity(input, other));
+  EXPECT_TRUE(SameConnectivity(input, input));
+  const Validity v = CheckValidity(other, &input, ValidityLimits{}, true);
+  EXPECT_TRUE(v.valid()) << v.Reason();
 }
 
 // Curvature-adaptive targets: on the unit sphere (κ = 1 everywhere) a chord

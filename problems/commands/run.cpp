@@ -26,6 +26,7 @@
 #include "io/output_files.h"
 #include "geometry/reference.h"
 #include "mesh/similarity.h"
+#include "mesh/topology.h"
 #include "analysis/validity.h"
 #include "problems/report/analysis.h"
 #include "problems/report/colors.h"
@@ -236,8 +237,7 @@ MeasuredValidity ValidityAsMeasured(const Mesh& mesh, const Mesh* reference,
                                     const ValidityLimits& limits) {
   const Similarity local = LocalFrame(mesh);
   MeasuredValidity out;
-  out.paired = reference && reference->number_of_vertices() == mesh.number_of_vertices() &&
-               reference->number_of_faces() == mesh.number_of_faces();
+  out.paired = reference && SameConnectivity(*reference, mesh);
   const Mesh in_frame = InFrame(local, mesh);
   if (!out.paired) {
     out.validity = CheckValidity(in_frame, nullptr, limits, true);
