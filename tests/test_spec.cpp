@@ -85,6 +85,18 @@ TEST_F(SpecTest, EmptyOutputsAreNotWritten) {
   EXPECT_TRUE(s.settings.String("output.report").empty());
 }
 
+// An optional input file an example gives is dropped by an empty --set
+// (e.g. examples/conjugate_field.yaml's constraints, one row per face of
+// its own mesh, on another mesh); `mesh` itself cannot be emptied.
+TEST_F(SpecTest, AnEmptySetDropsAnOptionalInputFile) {
+  const std::string text =
+      "mesh: a.obj\nproblem: conjugate_field\nfield: {constraints: c.dmat}\n";
+  const ProblemSpec s = ReadSpec(Write(text), {"field.constraints="});
+  EXPECT_TRUE(s.settings.String("field.constraints").empty());
+  EXPECT_NE(ReadSpec(Write(text), {}).settings.String("field.constraints"), "");
+  EXPECT_EQ(Error(text, {"mesh="}).key(), "mesh");
+}
+
 TEST_F(SpecTest, SetPathsAreRelativeToTheCurrentFolder) {
   const ProblemSpec s = ReadSpec(Write("mesh: a.obj\n"), {"output.mesh=x/y.obj"});
   EXPECT_EQ(s.settings.String("output.mesh"), (fs::current_path() / "x/y.obj").string());

@@ -245,7 +245,11 @@ class Reader {
   }
 
   std::string Path(const Key& k, const YAML::Node& node) const {
-    if (node.IsNull() && k.type == Type::kOutputPath) return "";  // `mesh:` writes nothing
+    // `mesh:` writes nothing; an optional input file left empty (`--set
+    // field.constraints=`, dropping one an example gives) is not read.
+    if (node.IsNull() && (k.type == Type::kOutputPath || (k.name != "mesh" && !k.required))) {
+      return "";
+    }
     if (!node.IsScalar()) Fail(node, k.name, "expected a file path, got " + Describe(node));
     const std::string value = node.Scalar();
     if (value.empty()) {
