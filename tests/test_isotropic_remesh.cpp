@@ -72,6 +72,17 @@ double ValenceDeviation(const Mesh& m) {
   return sum / count;
 }
 
+// The largest distance of a vertex of `mesh` from `surface`.
+double FarthestFrom(const ReferenceSurface& surface, const Mesh& mesh) {
+  double off = 0;
+  for (VertexIndex x : mesh.vertices()) {
+    const Eigen::Vector3d p = Pos(mesh, x);
+    const auto c = surface.Closest({p.x(), p.y(), p.z()});
+    off = std::max(off, (p - Eigen::Vector3d(c.point[0], c.point[1], c.point[2])).norm());
+  }
+  return off;
+}
+
 // Distance of p from the folded plate's two half-planes.
 double OffFold(const Eigen::Vector3d& p, double fold) {
   const Eigen::Vector3d n(-std::sin(fold), 0, std::cos(fold));  // normal of the risen half
@@ -197,14 +208,7 @@ TEST(IsotropicRemesh, SphereStaysClosedOnTheInputWithEvenEdges) {
   const long v = long(r.mesh.number_of_vertices()), e = long(r.mesh.number_of_edges()),
              f = long(r.mesh.number_of_faces());
   EXPECT_EQ(v - e + f, 2);
-  const ReferenceSurface surface(input);
-  double off = 0;
-  for (VertexIndex x : r.mesh.vertices()) {
-    const Eigen::Vector3d p = Pos(r.mesh, x);
-    const auto c = surface.Closest({p.x(), p.y(), p.z()});
-    off = std::max(off, (p - Eigen::Vector3d(c.point[0], c.point[1], c.point[2])).norm());
-  }
-  EXPECT_LE(off, 1e-9);
+  EXPECT_LE(FarthestFrom(ReferenceSurface(input), r.mesh), 1e-9);
   const TriangleQuality q = MeasureTriangles(r.mesh);
   EXPECT_GE(q.min_angle_30_fraction, 0.99);
   EXPECT_LE(q.edge_cv, 0.10);
@@ -218,9 +222,7 @@ TEST(IsotropicRemesh, SphereStaysClosedOnTheInputWithEvenEdges) {
 // vertex stays on the input (a feature vertex on its own chain, not on a
 // chain nearby), no two vertices meet and no triangle folds onto another:
 // the output passes the validity checks on its own (no short edge, no
-// self-intersection). Projecting a relaxed feature vertex onto the nearest
-// of all the features, and placing split and collapsed vertices at chord
-// midpoints, left coincident vertices and intersecting triangles here.
+// self-intersection).
 TEST(IsotropicRemesh, CoarseFeatureNetStaysOnItsChainsWithoutFoldsOrCoincidentVertices) {
   const Mesh input = TorusPrincipalQuads(3, 1, 10, 5);
   const ReferenceSurface surface(input);
@@ -231,13 +233,7 @@ TEST(IsotropicRemesh, CoarseFeatureNetStaysOnItsChainsWithoutFoldsOrCoincidentVe
     o.feature_angle_degrees = 30;
     const RemeshResult r = IsotropicRemesh(input, o);
     EXPECT_GT(r.feature_edges, 0);
-    double off = 0;
-    for (VertexIndex x : r.mesh.vertices()) {
-      const Eigen::Vector3d p = Pos(r.mesh, x);
-      const auto c = surface.Closest({p.x(), p.y(), p.z()});
-      off = std::max(off, (p - Eigen::Vector3d(c.point[0], c.point[1], c.point[2])).norm());
-    }
-    EXPECT_LE(off, 1e-9);
+    EXPECT_LE(FarthestFrom(surface, r.mesh), 1e-9);
     const Validity alone = CheckValidity(r.mesh, nullptr, ValidityLimits{}, true);
     EXPECT_TRUE(alone.valid()) << alone.Reason();
     EXPECT_GT(MeasureTriangles(r.mesh).min_angle_degrees, 5);
