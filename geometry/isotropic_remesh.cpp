@@ -414,35 +414,24 @@ void RmRelax(RmState& s) {
   for (VertexIndex v : m.vertices()) {
     if (s.corner[v]) continue;
     const V3 p = Rp(m, v);
-    V3 target;
-    if (s.boundary[v]) {
-      // The midpoint of its two boundary neighbours, on the input's boundary.
+    V3 q;  // where v would go, before it is put on the input (RmOnInput)
+    if (s.Curve(v)) {
+      // The midpoint of its two neighbours along its curve: the boundary,
+      // or its own feature chain (on no other feature: chains meet at
+      // corners only).
       V3 sum = V3::Zero();
       int count = 0;
       for (HalfedgeIndex g : CGAL::halfedges_around_target(m.halfedge(v), m)) {
-        if (m.is_border(m.edge(g))) {
+        const EdgeIndex e = m.edge(g);
+        if (s.boundary[v] ? m.is_border(e) : s.edge_chain[e] == s.chain[v]) {
           sum += Rp(m, m.source(g));
           ++count;
         }
       }
-      if (count != 2) continue;
-      const V3 q = 0.5 * sum;
-      const auto on = s.surface->ClosestOnBoundary({q.x(), q.y(), q.z()});
-      if (!on) continue;
-      target = {on->point[0], on->point[1], on->point[2]};
-    } else if (s.feature[v]) {
-      // The midpoint of its two neighbours along its chain, on the chain's
-      // input edges (on no other feature: two chains meet at corners only).
-      V3 sum = V3::Zero();
-      int count = 0;
-      for (HalfedgeIndex g : CGAL::halfedges_around_target(m.halfedge(v), m)) {
-        if (s.edge_chain[m.edge(g)] == s.chain[v]) {
-          sum += Rp(m, m.source(g));
-          ++count;
-        }
-      }
-      target = RmOnFeature(s, s.chain[v], count == 2 ? V3(0.5 * sum) : p);
+      if (count != 2 && s.boundary[v]) continue;
+      q = count == 2 ? V3(0.5 * sum) : p;
     } else {
+      // Its tangent plane's step to the area-weighted centroid of its ring.
       V3 centroid = V3::Zero();
       double area = 0;
       for (HalfedgeIndex g : CGAL::halfedges_around_target(m.halfedge(v), m)) {
@@ -455,11 +444,9 @@ void RmRelax(RmState& s) {
       if (area <= 0) continue;
       centroid /= area;
       const V3 n = RmVertexNormal(m, v);
-      const V3 q = p + (centroid - p) - n * n.dot(centroid - p);
-      const ReferenceSurface::SurfacePoint on = s.surface->Closest({q.x(), q.y(), q.z()});
-      target = {on.point[0], on.point[1], on.point[2]};
+      q = p + (centroid - p) - n * n.dot(centroid - p);
     }
-    moves.emplace_back(v, target);
+    moves.emplace_back(v, RmOnInput(s, v, q));
   }
   RmMoveKeepingFaces(m, moves);
 }
