@@ -588,6 +588,27 @@ TEST(LevelSets, Equation7MakesTheLevelSetsMoreConjugate) {
 
 class ConjugateLayoutTest : public ScratchDirTest {};
 
+// Level sets that give no layout are no result, not bad input: on the unit
+// icosphere (4 splits) at 200 target faces the rounded values violate the
+// jump conditions, so `output.layout` cannot be written — exit 3 (nothing
+// written, the reason in the summary), where the run once threw an input
+// error (exit 2) from the writer. Without `output.layout` the level sets are
+// the result (exit 0).
+TEST_F(ConjugateLayoutTest, LevelSetsWithoutALayoutAreNoResultNotBadInput) {
+  const std::string mesh = Path("sphere.obj");
+  WriteMesh(mesh, TriangulatedEllipsoid(1, 1, 1, 4));
+  const std::string spec = "mesh: sphere.obj\nproblem: level_sets\nlevel_sets: {target_faces: 200}\n";
+  const RunResult no_layout =
+      RunSpec(ReadSpec(WriteFile("a.yaml", spec + "output: {layout: l.obj, report: r.json}\n")), {});
+  EXPECT_EQ(no_layout.exit_code, 3) << no_layout.summary;
+  EXPECT_NE(no_layout.summary.find("violate the jump conditions"), std::string::npos)
+      << no_layout.summary;
+  EXPECT_FALSE(fs::exists(Path("l.obj")));
+  EXPECT_FALSE(fs::exists(Path("r.json")));
+  const RunResult functions = RunSpec(ReadSpec(WriteFile("b.yaml", spec + "output: {report: r.json}\n")), {});
+  EXPECT_EQ(functions.exit_code, 0) << functions.summary;
+}
+
 // The whole pipeline on the inspired mesh: the PQ step reaches δ_PQ,n ≤ 1e-3
 // moving no vertex by more than 0.5% of the diagonal (issue 11), the result
 // is valid, and every output is written.

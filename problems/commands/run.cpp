@@ -21,6 +21,7 @@
 
 #include "core/solver_options.h"
 #include "core/input_error.h"
+#include "core/no_result.h"
 #include "io/io.h"
 #include "analysis/metrics.h"
 #include "io/output_files.h"
@@ -265,7 +266,11 @@ class SpecRun {
   RunResult Run() {
     StageOutputs();
     ReadInputs();
-    SolveAndMeasureInput();
+    try {
+      SolveAndMeasureInput();
+    } catch (const NoResult& e) {
+      return NothingMade(e.what());
+    }
     ReportSolve();
     if (!solution_->loop.usable) return NotUsable();
     if (!Valid()) return run_;
@@ -434,6 +439,15 @@ class SpecRun {
     rep["tolerances"] = tolerances;
     rep["before"] = MetricsToJson(before_, scale_);
     AnalysisToJson(extra_before_, scale_, rep["before"]);
+  }
+
+  // A step found nothing to solve or write for an input that is fine
+  // (core/no_result.h): exit 3, nothing written.
+  RunResult NothingMade(const std::string& message) {
+    run_.exit_code = 3;
+    run_.report["message"] = message;
+    run_.summary = "archgeo: no valid result: " + message + "\nnothing was written.\n";
+    return run_;
   }
 
   RunResult NotUsable() {

@@ -50,6 +50,7 @@
 #include <Eigen/Geometry>
 
 #include "analysis/validity.h"
+#include "core/no_result.h"
 #include "core/problem.h"
 #include "fields/field_io.h"
 #include "core/input_error.h"
@@ -197,8 +198,8 @@ void Net(HookContext& c) {
       },
       &avoidance);
   if (!result->layout.ok) {
-    throw s.Error("level_sets", "the layout could not be extracted from the level sets: " +
-                                    result->layout.error);
+    throw NoResult("the layout could not be extracted from the level sets: " +
+                   result->layout.error);
   }
   UseLayoutAsNet(c, result, "conjugate layout");
   c.net.details["field"] = result->field->details;

@@ -653,12 +653,21 @@ void FinishLevelSets(HookContext& c) {
   c.level_sets = result;
 }
 
+// The problem's own validity (ProblemDecl::invalid): a layout asked for
+// (output.layout) that the level sets do not give — the rounded values
+// violate the jump conditions, or the extraction failed — is no result
+// (exit 3, nothing written), not bad input. Empty during the rounds (the
+// layout is made by `finish`).
+std::string LayoutMissing(HookContext& c) {
+  const auto& result = c.level_sets;
+  if (!result || result->layout.ok || c.settings->String("output.layout").empty()) return "";
+  return "no layout (output.layout): " + result->layout.error + "\n";
+}
+
 void WriteLevelSets(HookContext& c) {
   const auto& result = c.level_sets;
   if (const auto it = c.temporaries.find("layout"); it != c.temporaries.end()) {
-    if (!result->layout.ok) {
-      throw c.settings->Error("output.layout", "no layout to write: " + result->layout.error);
-    }
+    CHECK(result->layout.ok) << "level_sets: no layout to write (LayoutMissing lets none through)";
     WriteMesh(it->second, InFileUnits(result->layout.mesh, c.frame));
   }
   if (const auto it = c.temporaries.find("field"); it != c.temporaries.end()) {
@@ -709,6 +718,7 @@ ProblemDecl level_sets() {
   d.finish = &FinishLevelSets;
   d.output_keys = {"layout", "field"};
   d.write = &WriteLevelSets;
+  d.invalid = &LayoutMissing;
   d.colors = "none";  // the mesh is not changed: the functions and the layout are the result
   return d;
 }

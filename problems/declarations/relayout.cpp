@@ -17,6 +17,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "core/no_result.h"
 #include "fields/layout_cleanup.h"
 #include "mesh/similarity.h"
 #include "problems/declarations/field_pipeline.h"
@@ -67,8 +68,8 @@ void Relayout(HookContext& c) {
   const std::shared_ptr<const LevelSetResult> result =
       LayOutNet(s, net, faces, c.progress);
   if (!result->layout.ok) {
-    throw s.Error("relayout", "the net's surface could not be laid out anew (relayout: auto): " +
-                                  result->layout.error);
+    throw NoResult("the net's surface could not be laid out anew (relayout: auto): " +
+                   result->layout.error);
   }
   const int split =
       UseLayoutAsNet(c, result, "conjugate layout of the input's surface (relayout: auto)");
