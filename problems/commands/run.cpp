@@ -736,11 +736,15 @@ class SpecRun {
     char objective[128];
     std::snprintf(objective, sizeof objective, "objective (canonical frame): %.6e\n",
                   solved.objective.count("total") ? solved.objective.at("total") : 0.0);
+    // Without a solve (remesh, subdivide, extract: the net made is the
+    // result) "before" would repeat "after": one column.
+    const bool solved_any = solved.variables > 0;
     return head + solution_->net.headline + ToleranceLines() + ValidityLines() +
            fabrication_headline_ +
            solution_->headline + MeasureHeadline(solved) + objective +
-           FormatMetrics(before_, &after_, scale_) +
-           FormatAnalysis(extra_before_, &extra_after_, scale_);
+           (solved_any ? FormatMetrics(before_, &after_, scale_) : FormatMetrics(after_, nullptr, scale_)) +
+           (solved_any ? FormatAnalysis(extra_before_, &extra_after_, scale_)
+                       : FormatAnalysis(extra_after_, nullptr, scale_));
   }
 
   // Hard-check defects the input had too (accepted or not).

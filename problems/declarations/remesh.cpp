@@ -12,6 +12,7 @@
 #include "core/problem.h"
 #include "geometry/curves.h"
 #include "geometry/isotropic_remesh.h"
+#include "geometry/reference.h"
 #include "problems/runtime/model.h"
 
 namespace archgeo::problems {
@@ -59,14 +60,19 @@ void RemeshNet(HookContext& c) {
                          "input's edges, within 5% of their mean length");
   }
   const TriangleQuality q = MeasureTriangles(r.mesh);
-  char line[512];
+  const Mesh input_triangles = TriangulatedCopy(*c.input);
+  const TriangleQuality in = MeasureTriangles(input_triangles);
+  char line[768];
   std::snprintf(line, sizeof line,
-                "isotropic remeshing to edge length %.4g (%.3g × the input's mean edge %.4g), %d iterations: "
-                "%zu vertices, %zu triangles; %.2f%% of triangles with every angle ≥ 30° (smallest %.1f°), "
-                "edge length mean %.4g, coefficient of variation %.3f; %d input feature edges, %d corners kept\n",
+                "isotropic remeshing to edge length %.4g (%.3g × the input's mean edge %.4g), %d iterations, "
+                "%d input feature edges, %d corners kept\n"
+                "triangles: input %zu, %.2f%% with every angle ≥ 30° (smallest %.1f°), edge length CV %.3f; "
+                "output %zu (%zu vertices), %.2f%% (smallest %.1f°), edge length mean %.4g, CV %.3f\n",
                 options.target_edge_length, s.Number("remesh.edge_length"), input_mean, options.iterations,
-                size_t(r.mesh.number_of_vertices()), size_t(r.mesh.number_of_faces()),
-                100 * q.min_angle_30_fraction, q.min_angle_degrees, q.edge_mean, q.edge_cv, r.feature_edges, r.corners);
+                r.feature_edges, r.corners, size_t(input_triangles.number_of_faces()),
+                100 * in.min_angle_30_fraction, in.min_angle_degrees, in.edge_cv,
+                size_t(r.mesh.number_of_faces()), size_t(r.mesh.number_of_vertices()),
+                100 * q.min_angle_30_fraction, q.min_angle_degrees, q.edge_mean, q.edge_cv);
   c.details["remesh"] = {{"target_edge_length", options.target_edge_length},
                          {"input_mean_edge_length", input_mean},
                          {"iterations", options.iterations},
@@ -81,6 +87,11 @@ void RemeshNet(HookContext& c) {
                          {"min_angle_degrees", q.min_angle_degrees},
                          {"edge_length_mean", q.edge_mean},
                          {"edge_length_cv", q.edge_cv},
+                         {"input", {{"triangles", input_triangles.number_of_faces()},
+                                    {"min_angle_30_fraction", in.min_angle_30_fraction},
+                                    {"min_angle_degrees", in.min_angle_degrees},
+                                    {"edge_length_mean", in.edge_mean},
+                                    {"edge_length_cv", in.edge_cv}}},
                          {"output", {{"vertices", r.mesh.number_of_vertices()},
                                      {"faces", r.mesh.number_of_faces()}}}};
   c.net.mesh = std::move(r.mesh);
