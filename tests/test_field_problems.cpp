@@ -1148,9 +1148,16 @@ TEST_F(FieldInputTest, QuadMeshesFaceIdsAndTargetFaceCountsAreChecked) {
   ExpectInputError("mesh: top.obj\nproblem: level_sets\nterms: {level_set_conjugacy: 1}\n",
                    "terms.level_set_alignment");
   // A closed tetrahedron: the level sets cut out no face; said, not a crash
-  // in the PQ step's frame (issue 48, item 2).
+  // in the PQ step's frame (issue 48, item 2) — no valid result (exit 3,
+  // nothing written), the input itself being a fine mesh.
   WriteFile("tet.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n");
-  ExpectInputError("mesh: tet.obj\nproblem: conjugate_layout\n", "level_sets");
+  const RunResult tet = RunSpec(ReadSpec(WriteFile(
+      "tet.yaml", "mesh: tet.obj\nproblem: conjugate_layout\noutput: {report: r.json, field: f.ply}\n")), {});
+  EXPECT_EQ(tet.exit_code, 3) << tet.summary;
+  EXPECT_NE(tet.summary.find("the layout could not be extracted from the level sets"), std::string::npos)
+      << tet.summary;
+  EXPECT_FALSE(fs::exists(Path("r.json")));
+  EXPECT_FALSE(fs::exists(Path("f.ply")));
   // A 14-byte DMAT whose header promises 10^10 numbers: refused before the
   // matrix is allocated (it was std::bad_alloc; issue 48, item 2).
   WriteFile("huge.dmat", "100000 100000\n");
