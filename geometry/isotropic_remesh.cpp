@@ -61,6 +61,10 @@ struct RmState {
   Mesh::Property_map<EdgeIndex, int> edge_chain;
   Mesh::Property_map<VertexIndex, int> chain;
   Mesh::Property_map<VertexIndex, double> size;  // target edge length at the vertex
+  // The input's (interpolated) normal where the vertex lies: from the
+  // closest point that placed it; a boundary or feature vertex keeps the
+  // one it had (or its edge's ends' mean, when split off).
+  Mesh::Property_map<VertexIndex, V3> normal;
   const ReferenceSurface* surface = nullptr;
   std::vector<std::vector<std::pair<V3, V3>>> chains;  // each chain's input edges
   std::vector<double> input_size;  // per vertex of surface->Triangles(): its target length
@@ -70,6 +74,23 @@ struct RmState {
   bool Curve(VertexIndex v) const { return boundary[v] || feature[v]; }
   bool CurveEdge(EdgeIndex e) const { return mesh.is_border(e) || edge_chain[e] >= 0; }
 };
+
+// Whether the triangle abc faces the input's way where its corners lie
+// (its normal less than 90° from the sum of their input normals na, nb,
+// nc). Each operation's own check (RmSpoiled) lets a face turn by less than
+// 90°; this one keeps a face from turning over by steps, on an input whose
+// faces lie close together (a thin plate's top and bottom one edge apart,
+// tessellated CAD parts).
+bool RmFacesInput(const V3& a, const V3& b, const V3& c, const V3& na, const V3& nb, const V3& nc) {
+  return (b - a).cross(c - a).dot(na + nb + nc) > 0;
+}
+
+// RmFacesInput for the triangle of h as it is.
+bool RmFacesInput(const RmState& s, HalfedgeIndex h) {
+  const Mesh& m = s.mesh;
+  const VertexIndex a = m.source(h), b = m.target(h), c = m.target(m.next(h));
+  return RmFacesInput(Rp(m, a), Rp(m, b), Rp(m, c), s.normal[a], s.normal[b], s.normal[c]);
+}
 
 // Distance from q to the segment ab.
 double RmSegmentDistance(const V3& q, const V3& a, const V3& b) {
@@ -183,18 +204,29 @@ V3 RmOnFeature(const RmState& s, int chain, const V3& q) {
   return best;
 }
 
+// A vertex's place: its position and the input's normal there.
+struct RmPlace {
+  V3 p, n;
+};
+
 // q put on the input where vertex v belongs: a corner's q as it is, a
 // boundary vertex's on the input's boundary, a feature vertex's on its
-// chain, any other's on the input surface (closest points).
-V3 RmOnInput(const RmState& s, VertexIndex v, const V3& q) {
-  if (s.corner[v]) return q;
+// chain (these keep the normal n), any other's on the input surface
+// (closest points, with the input's normal there).
+RmPlace RmOnInput(const RmState& s, VertexIndex v, const V3& q, const V3& n) {
+  if (s.corner[v]) return {q, n};
   if (s.boundary[v]) {
     const auto on = s.surface->ClosestOnBoundary({q.x(), q.y(), q.z()});
-    return on ? V3(on->point[0], on->point[1], on->point[2]) : q;
+    return {on ? V3(on->point[0], on->point[1], on->point[2]) : q, n};
   }
-  if (s.chain[v] >= 0) return RmOnFeature(s, s.chain[v], q);
+  if (s.chain[v] >= 0) return {RmOnFeature(s, s.chain[v], q), n};
   const ReferenceSurface::SurfacePoint on = s.surface->Closest({q.x(), q.y(), q.z()});
-  return {on.point[0], on.point[1], on.point[2]};
+  return {{on.point[0], on.point[1], on.point[2]}, {on.normal[0], on.normal[1], on.normal[2]}};
+}
+
+void SetPlace(RmState& s, VertexIndex v, const RmPlace& place) {
+  SetRp(s.mesh, v, place.p);
+  s.normal[v] = place.n;
 }
 
 // Corners: boundary vertices where the boundary turns by more than the angle.
@@ -226,7 +258,8 @@ int RmSplitLong(RmState& s) {
     const bool on_boundary = m.is_border(m.edge(h));
     const int chain = s.edge_chain[m.edge(h)];
     const bool on_feature = chain >= 0;
-    const V3 mid = 0.5 * (Rp(m, m.source(h)) + Rp(m, m.target(h)));
+    const RmPlace mid = {0.5 * (Rp(m, m.source(h)) + Rp(m, m.target(h))),
+                         (s.normal[m.source(h)] + s.normal[m.target(h)]).normalized()};
     const HalfedgeIndex hnew = CGAL::Euler::split_edge(h, m);  // target(hnew): the new vertex
     const VertexIndex v = m.target(hnew);
     const double size = s.Target(m.source(hnew), m.target(h));
@@ -236,7 +269,7 @@ int RmSplitLong(RmState& s) {
     s.feature[v] = on_feature;
     s.chain[v] = chain;
     s.edge_chain[m.edge(hnew)] = chain;
-    SetRp(m, v, mid);
+    SetPlace(s, v, mid);
     if (!m.is_border(h)) CGAL::Euler::split_face(hnew, m.next(h), m);
     const HalfedgeIndex o = m.opposite(h);
     if (!m.is_border(o)) CGAL::Euler::split_face(o, m.next(m.opposite(hnew)), m);
@@ -246,10 +279,12 @@ int RmSplitLong(RmState& s) {
     for (HalfedgeIndex g : CGAL::halfedges_around_target(m.halfedge(v), m)) {
       if (!m.is_border(g)) around.emplace_back(g, RmFaceNormal(m, g));
     }
-    SetRp(m, v, RmOnInput(s, v, mid));
+    SetPlace(s, v, RmOnInput(s, v, mid.p, mid.n));
     for (const auto& [g, before] : around) {
       const V3 a = Rp(m, m.source(g)), b = Rp(m, m.target(g)), c = Rp(m, m.target(m.next(g)));
-      if (RmSpoiled(before, RmFaceNormal(m, g), RmLongest(a, b, c))) SetRp(m, v, mid);
+      if (RmSpoiled(before, RmFaceNormal(m, g), RmLongest(a, b, c)) || !RmFacesInput(s, g)) {
+        SetPlace(s, v, mid);
+      }
     }
     ++splits;
     // The two halves may still be long.
@@ -304,9 +339,10 @@ int RmCollapseShort(RmState& s) {
     // Where the kept vertex goes: a corner or a boundary or feature vertex
     // (of an edge off its curve) stays; else the midpoint, on the input
     // where b belongs.
-    const V3 at = (s.corner[b] || (s.Curve(b) && !curve_edge))
-                      ? Rp(m, b)
-                      : RmOnInput(s, b, 0.5 * (Rp(m, a) + Rp(m, b)));
+    const RmPlace at = (s.corner[b] || (s.Curve(b) && !curve_edge))
+                           ? RmPlace{Rp(m, b), s.normal[b]}
+                           : RmOnInput(s, b, 0.5 * (Rp(m, a) + Rp(m, b)),
+                                       (s.normal[a] + s.normal[b]).normalized());
     if (!CGAL::Euler::does_satisfy_link_condition(e, m)) continue;
     // No triangle flattened into its neighbour: the far vertices of the two
     // vanishing faces keep at least 4 edges.
@@ -314,12 +350,12 @@ int RmCollapseShort(RmState& s) {
     for (HalfedgeIndex g : {h, m.opposite(h)}) {
       if (!m.is_border(g) && m.degree(m.target(m.next(g))) <= 3) thin = true;
     }
-    if (thin || !RmCollapseKeepsShape(s, h, at)) continue;
+    if (thin || !RmCollapseKeepsShape(s, h, at.p)) continue;
     const bool corner = s.corner[b], boundary = s.boundary[b], feature = s.feature[b];
     const int chain = s.chain[b];
     const double size = std::min(s.size[a], s.size[b]);
     const VertexIndex kept = CGAL::Euler::collapse_edge(e, m);
-    SetRp(m, kept, at);
+    SetPlace(s, kept, at);
     s.corner[kept] = corner;
     s.boundary[kept] = boundary;
     s.feature[kept] = feature;
@@ -355,7 +391,8 @@ int RmFlipForValence(RmState& s) {
     const V3 n = RmFaceNormal(m, h) + RmFaceNormal(m, o);
     const V3 n1 = (pd - pc).cross(pb - pc), n2 = (pc - pd).cross(pa - pd);
     if (RmSpoiled(n, n1, RmLongest(pc, pd, pb)) || RmSpoiled(n, n2, RmLongest(pd, pc, pa)) ||
-        n1.dot(n2) <= 0) {
+        n1.dot(n2) <= 0 || !RmFacesInput(pc, pd, pb, s.normal[c], s.normal[d], s.normal[b]) ||
+        !RmFacesInput(pd, pc, pa, s.normal[d], s.normal[c], s.normal[a])) {
       continue;
     }
     CGAL::Euler::flip_edge(h, m);
@@ -375,32 +412,34 @@ V3 RmVertexNormal(const Mesh& m, VertexIndex v) {
 // Moves every vertex of `moves` to its position, then puts back, until
 // none is left, the moved vertices of every triangle the moves turned over
 // or flattened (its area vector reversed, or below 1e-3 of its old length
-// and of its longest edge squared): the tangent plane and the closest
-// point can send two neighbours to one point of a bent surface.
-void RmMoveKeepingFaces(Mesh& m, const std::vector<std::pair<VertexIndex, V3>>& moves) {
-  std::vector<V3> old(m.number_of_vertices() + m.number_of_removed_vertices());
+// and of its longest edge squared) or turned against the input
+// (RmFacesInput): the tangent plane and the closest point can send two
+// neighbours to one point of a bent surface.
+void RmMoveKeepingFaces(RmState& s, const std::vector<std::pair<VertexIndex, RmPlace>>& moves) {
+  Mesh& m = s.mesh;
+  std::vector<RmPlace> old(m.number_of_vertices() + m.number_of_removed_vertices());
   std::vector<char> moved(old.size(), 0);
   std::vector<std::pair<FaceIndex, V3>> faces;  // around a moved vertex, with the old area vector
-  for (const auto& [v, p] : moves) {
-    old[v.idx()] = Rp(m, v);
+  for (const auto& [v, place] : moves) {
+    old[v.idx()] = {Rp(m, v), s.normal[v]};
     moved[v.idx()] = 1;
   }
-  for (const auto& [v, p] : moves) {
+  for (const auto& [v, place] : moves) {
     for (HalfedgeIndex g : CGAL::halfedges_around_target(m.halfedge(v), m)) {
       if (!m.is_border(g)) faces.emplace_back(m.face(g), RmFaceNormal(m, g));
     }
   }
-  for (const auto& [v, p] : moves) SetRp(m, v, p);
+  for (const auto& [v, place] : moves) SetPlace(s, v, place);
   for (bool again = true; again;) {
     again = false;
     for (const auto& [f, before] : faces) {
       const HalfedgeIndex h = m.halfedge(f);
       const V3 after = RmFaceNormal(m, h);
       const V3 a = Rp(m, m.source(h)), b = Rp(m, m.target(h)), c = Rp(m, m.target(m.next(h)));
-      if (!RmSpoiled(before, after, RmLongest(a, b, c))) continue;
+      if (!RmSpoiled(before, after, RmLongest(a, b, c)) && RmFacesInput(s, h)) continue;
       for (VertexIndex w : CGAL::vertices_around_face(h, m)) {
         if (!moved[w.idx()]) continue;
-        SetRp(m, w, old[w.idx()]);
+        SetPlace(s, w, old[w.idx()]);
         moved[w.idx()] = 0;
         again = true;
       }
@@ -410,7 +449,7 @@ void RmMoveKeepingFaces(Mesh& m, const std::vector<std::pair<VertexIndex, V3>>& 
 
 void RmRelax(RmState& s) {
   Mesh& m = s.mesh;
-  std::vector<std::pair<VertexIndex, V3>> moves;
+  std::vector<std::pair<VertexIndex, RmPlace>> moves;
   for (VertexIndex v : m.vertices()) {
     if (s.corner[v]) continue;
     const V3 p = Rp(m, v);
@@ -446,9 +485,9 @@ void RmRelax(RmState& s) {
       const V3 n = RmVertexNormal(m, v);
       q = p + (centroid - p) - n * n.dot(centroid - p);
     }
-    moves.emplace_back(v, RmOnInput(s, v, q));
+    moves.emplace_back(v, RmOnInput(s, v, q, s.normal[v]));
   }
-  RmMoveKeepingFaces(m, moves);
+  RmMoveKeepingFaces(s, moves);
 }
 
 // Curvature-adaptive targets (Dunyach et al. 2013, "Adaptive remeshing for
@@ -509,6 +548,11 @@ RemeshResult IsotropicRemesh(const Mesh& input, const RemeshOptions& options) {
   s.edge_chain = s.mesh.add_property_map<EdgeIndex, int>("e:rm_chain", -1).first;
   s.chain = s.mesh.add_property_map<VertexIndex, int>("v:rm_chain", -1).first;
   s.size = s.mesh.add_property_map<VertexIndex, double>("v:rm_size", options.target_edge_length).first;
+  s.normal = s.mesh.add_property_map<VertexIndex, V3>("v:rm_normal", V3::Zero()).first;
+  for (VertexIndex v : s.mesh.vertices()) {
+    const Vec3 n = surface.Closest(ToVec3(s.mesh.point(v))).normal;
+    s.normal[v] = {n[0], n[1], n[2]};
+  }
   RmInputSizes(s, options);
   RmUpdateSizes(s);
   RemeshResult result;
@@ -529,6 +573,7 @@ RemeshResult IsotropicRemesh(const Mesh& input, const RemeshOptions& options) {
   s.mesh.remove_property_map(s.edge_chain);
   s.mesh.remove_property_map(s.chain);
   s.mesh.remove_property_map(s.size);
+  s.mesh.remove_property_map(s.normal);
   s.mesh.collect_garbage();
   result.mesh = std::move(s.mesh);
   return result;

@@ -17,6 +17,7 @@
 #include "generators/smoothness_surfaces.h"
 #include "geometry/isotropic_remesh.h"
 #include "geometry/reference.h"
+#include "io/io.h"
 #include "mesh/topology.h"
 #include "tests/closed_meshes.h"
 #include "tests/make_mesh.h"
@@ -238,6 +239,25 @@ TEST(IsotropicRemesh, CoarseFeatureNetStaysOnItsChainsWithoutFoldsOrCoincidentVe
     EXPECT_TRUE(alone.valid()) << alone.Reason();
     EXPECT_GT(MeasureTriangles(r.mesh).min_angle_degrees, 5);
   }
+}
+
+// A tessellated CAD part (a crop of Directional's 129110__sf.obj, MPL-2.0,
+// tests/data): a plate 2.5 thick with a countersunk hole, long slivers,
+// remeshed at the whole part's mean edge length with features at 30°. Each
+// split, collapse, flip and relaxation step turns a face by less than 90°,
+// yet steps in a row turned faces over around the hole (91 intersecting face
+// pairs, coincident vertices); a face must also face the input's way where
+// its corners lie (the sum of the input's normals there).
+TEST(IsotropicRemesh, ThinPartWithAHoleKeepsEveryFaceTheInputsWay) {
+  const Mesh input = ReadMesh(std::string(ARCHGEO_SOURCE_DIR) + "/tests/data/directional_129110_sf_crop.obj");
+  ASSERT_EQ(input.number_of_faces(), 375u);
+  RemeshOptions o;
+  o.target_edge_length = 3.0596;
+  o.feature_angle_degrees = 30;
+  const RemeshResult r = IsotropicRemesh(input, o);
+  EXPECT_LE(FarthestFrom(ReferenceSurface(input), r.mesh), 1e-9);
+  const Validity alone = CheckValidity(r.mesh, nullptr, ValidityLimits{}, true);
+  EXPECT_TRUE(alone.valid()) << alone.Reason();
 }
 
 // A mesh with its input's vertex, edge and face counts is not always the
