@@ -65,6 +65,11 @@ struct RmState {
   // closest point that placed it; a boundary or feature vertex keeps the
   // one it had (or its edge's ends' mean, when split off).
   Mesh::Property_map<VertexIndex, V3> normal;
+  // The input triangle a vertex lies on, from the closest-point query that
+  // put it there (the next query's start); −1 where not known: a boundary
+  // or feature vertex moved along its curve, a vertex off the input (a
+  // chord midpoint).
+  Mesh::Property_map<VertexIndex, int> face;
   const ReferenceSurface* surface = nullptr;
   std::vector<std::vector<std::pair<V3, V3>>> chains;  // each chain's input edges
   std::vector<double> input_size;  // per vertex of surface->Triangles(): its target length
@@ -204,29 +209,44 @@ V3 RmOnFeature(const RmState& s, int chain, const V3& q) {
   return best;
 }
 
-// A vertex's place: its position and the input's normal there.
+// A vertex's place: its position, the input's normal there and the input
+// triangle it lies on (−1: not known).
 struct RmPlace {
   V3 p, n;
+  int face = -1;
 };
+
+RmPlace RmPlaceOf(const RmState& s, VertexIndex v) { return {Rp(s.mesh, v), s.normal[v], s.face[v]}; }
 
 // q put on the input where vertex v belongs: a corner's q as it is, a
 // boundary vertex's on the input's boundary, a feature vertex's on its
 // chain (these keep the normal n), any other's on the input surface
-// (closest points, with the input's normal there).
-RmPlace RmOnInput(const RmState& s, VertexIndex v, const V3& q, const V3& n) {
+// (closest points, with the input's normal there; the search starts from
+// `near` when it lies on a known input triangle).
+RmPlace RmOnInput(const RmState& s, VertexIndex v, const V3& q, const V3& n, const RmPlace& near) {
   if (s.corner[v]) return {q, n};
   if (s.boundary[v]) {
     const auto on = s.surface->ClosestOnBoundary({q.x(), q.y(), q.z()});
     return {on ? V3(on->point[0], on->point[1], on->point[2]) : q, n};
   }
   if (s.chain[v] >= 0) return {RmOnFeature(s, s.chain[v], q), n};
-  const ReferenceSurface::SurfacePoint on = s.surface->Closest({q.x(), q.y(), q.z()});
-  return {{on.point[0], on.point[1], on.point[2]}, {on.normal[0], on.normal[1], on.normal[2]}};
+  const Vec3 query = {q.x(), q.y(), q.z()};
+  const ReferenceSurface::SurfacePoint on =
+      near.face >= 0 ? s.surface->Closest(query, {{near.p.x(), near.p.y(), near.p.z()}, {}, near.face})
+                     : s.surface->Closest(query);
+  return {{on.point[0], on.point[1], on.point[2]}, {on.normal[0], on.normal[1], on.normal[2]}, on.face};
+}
+
+// Where a closest-point search near the edge ab starts: an end on a known
+// input triangle.
+RmPlace RmNear(const RmState& s, VertexIndex a, VertexIndex b) {
+  return RmPlaceOf(s, s.face[a] >= 0 ? a : b);
 }
 
 void SetPlace(RmState& s, VertexIndex v, const RmPlace& place) {
   SetRp(s.mesh, v, place.p);
   s.normal[v] = place.n;
+  s.face[v] = place.face;
 }
 
 // Corners: boundary vertices where the boundary turns by more than the angle.
@@ -258,6 +278,7 @@ int RmSplitLong(RmState& s) {
     const bool on_boundary = m.is_border(m.edge(h));
     const int chain = s.edge_chain[m.edge(h)];
     const bool on_feature = chain >= 0;
+    const RmPlace near = RmNear(s, m.source(h), m.target(h));
     const RmPlace mid = {0.5 * (Rp(m, m.source(h)) + Rp(m, m.target(h))),
                          (s.normal[m.source(h)] + s.normal[m.target(h)]).normalized()};
     const HalfedgeIndex hnew = CGAL::Euler::split_edge(h, m);  // target(hnew): the new vertex
@@ -279,7 +300,7 @@ int RmSplitLong(RmState& s) {
     for (HalfedgeIndex g : CGAL::halfedges_around_target(m.halfedge(v), m)) {
       if (!m.is_border(g)) around.emplace_back(g, RmFaceNormal(m, g));
     }
-    SetPlace(s, v, RmOnInput(s, v, mid.p, mid.n));
+    SetPlace(s, v, RmOnInput(s, v, mid.p, mid.n, near));
     for (const auto& [g, before] : around) {
       const V3 a = Rp(m, m.source(g)), b = Rp(m, m.target(g)), c = Rp(m, m.target(m.next(g)));
       if (RmSpoiled(before, RmFaceNormal(m, g), RmLongest(a, b, c)) || !RmFacesInput(s, g)) {
@@ -340,9 +361,9 @@ int RmCollapseShort(RmState& s) {
     // (of an edge off its curve) stays; else the midpoint, on the input
     // where b belongs.
     const RmPlace at = (s.corner[b] || (s.Curve(b) && !curve_edge))
-                           ? RmPlace{Rp(m, b), s.normal[b]}
+                           ? RmPlaceOf(s, b)
                            : RmOnInput(s, b, 0.5 * (Rp(m, a) + Rp(m, b)),
-                                       (s.normal[a] + s.normal[b]).normalized());
+                                       (s.normal[a] + s.normal[b]).normalized(), RmNear(s, a, b));
     if (!CGAL::Euler::does_satisfy_link_condition(e, m)) continue;
     // No triangle flattened into its neighbour: the far vertices of the two
     // vanishing faces keep at least 4 edges.
@@ -421,7 +442,7 @@ void RmMoveKeepingFaces(RmState& s, const std::vector<std::pair<VertexIndex, RmP
   std::vector<char> moved(old.size(), 0);
   std::vector<std::pair<FaceIndex, V3>> faces;  // around a moved vertex, with the old area vector
   for (const auto& [v, place] : moves) {
-    old[v.idx()] = {Rp(m, v), s.normal[v]};
+    old[v.idx()] = RmPlaceOf(s, v);
     moved[v.idx()] = 1;
   }
   for (const auto& [v, place] : moves) {
@@ -485,7 +506,7 @@ void RmRelax(RmState& s) {
       const V3 n = RmVertexNormal(m, v);
       q = p + (centroid - p) - n * n.dot(centroid - p);
     }
-    moves.emplace_back(v, RmOnInput(s, v, q, s.normal[v]));
+    moves.emplace_back(v, RmOnInput(s, v, q, s.normal[v], RmPlaceOf(s, v)));
   }
   RmMoveKeepingFaces(s, moves);
 }
@@ -495,12 +516,14 @@ void RmRelax(RmState& s) {
 // curvature κ deviates from it by ε when ℓ = √(6ε/κ − 3ε²); κ at an input
 // vertex is the largest normal curvature its edges estimate,
 // 2|n·(q − p)|/|q − p|². Targets stay within [L/16, L]. Without a tolerance
-// every target is L.
+// every target is L (the vertices' own, s.size) and there are none per
+// input vertex.
 void RmInputSizes(RmState& s, const RemeshOptions& o) {
   const Mesh& tri = s.surface->Triangles();
   const double L = o.target_edge_length, eps = o.tolerance;
-  s.input_size.assign(tri.number_of_vertices() + tri.number_of_removed_vertices(), L);
+  s.input_size.clear();
   if (!(eps > 0)) return;
+  s.input_size.assign(tri.number_of_vertices() + tri.number_of_removed_vertices(), L);
   for (VertexIndex v : tri.vertices()) {
     if (tri.is_isolated(v)) continue;
     const V3 n = RmVertexNormal(tri, v), p = Rp(tri, v);
@@ -549,9 +572,11 @@ RemeshResult IsotropicRemesh(const Mesh& input, const RemeshOptions& options) {
   s.chain = s.mesh.add_property_map<VertexIndex, int>("v:rm_chain", -1).first;
   s.size = s.mesh.add_property_map<VertexIndex, double>("v:rm_size", options.target_edge_length).first;
   s.normal = s.mesh.add_property_map<VertexIndex, V3>("v:rm_normal", V3::Zero()).first;
+  s.face = s.mesh.add_property_map<VertexIndex, int>("v:rm_face", -1).first;
   for (VertexIndex v : s.mesh.vertices()) {
-    const Vec3 n = surface.Closest(ToVec3(s.mesh.point(v))).normal;
-    s.normal[v] = {n[0], n[1], n[2]};
+    const ReferenceSurface::SurfacePoint on = surface.Closest(ToVec3(s.mesh.point(v)));
+    s.normal[v] = {on.normal[0], on.normal[1], on.normal[2]};
+    s.face[v] = on.face;
   }
   RmInputSizes(s, options);
   RmUpdateSizes(s);
@@ -574,6 +599,7 @@ RemeshResult IsotropicRemesh(const Mesh& input, const RemeshOptions& options) {
   s.mesh.remove_property_map(s.chain);
   s.mesh.remove_property_map(s.size);
   s.mesh.remove_property_map(s.normal);
+  s.mesh.remove_property_map(s.face);
   s.mesh.collect_garbage();
   result.mesh = std::move(s.mesh);
   return result;

@@ -266,8 +266,19 @@ ReferenceSurface::~ReferenceSurface() = default;
 ReferenceSurface::ReferenceSurface(ReferenceSurface&&) noexcept = default;
 
 ReferenceSurface::SurfacePoint ReferenceSurface::Closest(const Vec3& query) const {
-  const Mesh& tri = impl_->triangles;
   const auto [point, face] = impl_->triangle_tree.closest_point_and_primitive(ToPoint(query));
+  return At(point, face);
+}
+
+ReferenceSurface::SurfacePoint ReferenceSurface::Closest(const Vec3& query,
+                                                         const SurfacePoint& near) const {
+  const auto hint = std::make_pair(ToPoint(near.point), FaceIndex(near.face));
+  const auto [point, face] = impl_->triangle_tree.closest_point_and_primitive(ToPoint(query), hint);
+  return At(point, face);
+}
+
+ReferenceSurface::SurfacePoint ReferenceSurface::At(const Point& point, FaceIndex face) const {
+  const Mesh& tri = impl_->triangles;
   const HalfedgeIndex h = tri.halfedge(face);
   const std::array<VertexIndex, 3> v = {tri.source(h), tri.target(h), tri.target(tri.next(h))};
   const std::array<double, 3> w =

@@ -29,6 +29,10 @@ class ReferenceSurface {
     int face = -1;  // its triangle: a face index of Triangles()
   };
   SurfacePoint Closest(const Vec3& query) const;
+  // The same closest point, the search started from `near`, a point of the
+  // reference on its triangle `near.face` (e.g. where a vertex that moves a
+  // little was): much faster when it is close to the answer.
+  SurfacePoint Closest(const Vec3& query, const SurfacePoint& near) const;
 
   struct CurvePoint {
     Vec3 point;    // closest point on the boundary polylines
@@ -42,6 +46,7 @@ class ReferenceSurface {
   const Mesh& Triangles() const;
 
  private:
+  SurfacePoint At(const Point& point, FaceIndex face) const;  // with its interpolated normal
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
