@@ -603,6 +603,8 @@ TEST_F(ConjugateLayoutTest, LevelSetsWithoutALayoutAreNoResultNotBadInput) {
   EXPECT_EQ(no_layout.exit_code, 3) << no_layout.summary;
   EXPECT_NE(no_layout.summary.find("violate the jump conditions"), std::string::npos)
       << no_layout.summary;
+  // No validity check failed: the summary does not send the user to their limits.
+  EXPECT_EQ(no_layout.summary.find("validity.* keys"), std::string::npos) << no_layout.summary;
   EXPECT_FALSE(fs::exists(Path("l.obj")));
   EXPECT_FALSE(fs::exists(Path("r.json")));
   const RunResult functions = RunSpec(ReadSpec(WriteFile("b.yaml", spec + "output: {report: r.json}\n")), {});

@@ -529,7 +529,9 @@ class SpecRun {
     run_.report["message"] = "the result is not valid";
     run_.summary = "archgeo: the result is not valid (nothing was written):\n" +
                    validity_.Reason() + own +
-                   "(limits: validity.* keys; the report's validity section lists every check)\n";
+                   (validity_.valid() ? ""
+                                      : "(limits: validity.* keys; the report's validity section "
+                                        "lists every check)\n");
     const nlohmann::json& details = solution_->details;
     if (details.contains("suitability") && details["suitability"].contains("warning")) {
       run_.summary += "WARNING (input suitability): " +
