@@ -216,7 +216,9 @@ struct RmPlace {
   int face = -1;
 };
 
-RmPlace RmPlaceOf(const RmState& s, VertexIndex v) { return {Rp(s.mesh, v), s.normal[v], s.face[v]}; }
+RmPlace RmPlaceOf(const RmState& s, VertexIndex v) {
+  return {Rp(s.mesh, v), s.normal[v], s.face[v]};
+}
 
 // q put on the input where vertex v belongs: a corner's q as it is, a
 // boundary vertex's on the input's boundary, a feature vertex's on its
@@ -231,10 +233,12 @@ RmPlace RmOnInput(const RmState& s, VertexIndex v, const V3& q, const V3& n, con
   }
   if (s.chain[v] >= 0) return {RmOnFeature(s, s.chain[v], q), n};
   const Vec3 query = {q.x(), q.y(), q.z()};
-  const ReferenceSurface::SurfacePoint on =
-      near.face >= 0 ? s.surface->Closest(query, {{near.p.x(), near.p.y(), near.p.z()}, {}, near.face})
-                     : s.surface->Closest(query);
-  return {{on.point[0], on.point[1], on.point[2]}, {on.normal[0], on.normal[1], on.normal[2]}, on.face};
+  const Vec3 start = {near.p.x(), near.p.y(), near.p.z()};
+  const ReferenceSurface::SurfacePoint on = near.face >= 0
+                                                ? s.surface->Closest(query, {start, {}, near.face})
+                                                : s.surface->Closest(query);
+  const V3 normal(on.normal[0], on.normal[1], on.normal[2]);
+  return {{on.point[0], on.point[1], on.point[2]}, normal, on.face};
 }
 
 // Where a closest-point search near the edge ab starts: an end on a known

@@ -744,7 +744,8 @@ class SpecRun {
     return head + solution_->net.headline + ToleranceLines() + ValidityLines() +
            fabrication_headline_ +
            solution_->headline + MeasureHeadline(solved) + objective +
-           (solved_any ? FormatMetrics(before_, &after_, scale_) : FormatMetrics(after_, nullptr, scale_)) +
+           (solved_any ? FormatMetrics(before_, &after_, scale_)
+                       : FormatMetrics(after_, nullptr, scale_)) +
            (solved_any ? FormatAnalysis(extra_before_, &extra_after_, scale_)
                        : FormatAnalysis(extra_after_, nullptr, scale_));
   }
