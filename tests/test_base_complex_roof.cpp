@@ -13,6 +13,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "geometry/isotropic_remesh.h"
+#include "geometry/reference.h"
 #include "io/io.h"
 #include "tests/scratch_dir.h"
 #include "tests/shell.h"
@@ -74,6 +76,22 @@ TEST_F(BaseComplexRoof, ThreeStepsKeepTheValenceSevenNodesThePerimeterAndBalance
   const nlohmann::json r = Details("remeshed").at("remesh");
   EXPECT_GE(r.at("min_angle_30_fraction").get<double>(), 0.99);
   EXPECT_LE(r.at("edge_length_cv").get<double>(), 0.12);
+  // Beside them, the input's own (the vault as read, triangulated).
+  const Mesh vault_triangles = TriangulatedCopy(vault);
+  const TriangleQuality in = MeasureTriangles(vault_triangles);
+  const nlohmann::json& input = r.at("input");
+  EXPECT_EQ(input.at("triangles").get<size_t>(), size_t(vault_triangles.number_of_faces()));
+  EXPECT_DOUBLE_EQ(input.at("min_angle_degrees").get<double>(), in.min_angle_degrees);
+  EXPECT_DOUBLE_EQ(input.at("edge_length_cv").get<double>(), in.edge_cv);
+  EXPECT_NE(remeshed.output.find("triangles: input " + std::to_string(vault_triangles.number_of_faces())),
+            std::string::npos)
+      << remeshed.output;
+  // No solve: the metrics table has one column, not a "before" equal to "after".
+  const size_t header = remeshed.output.find("\nmetric ");
+  ASSERT_NE(header, std::string::npos) << remeshed.output;
+  const std::string line = remeshed.output.substr(header + 1, remeshed.output.find('\n', header + 1) - header - 1);
+  EXPECT_NE(line.find("value"), std::string::npos) << line;
+  EXPECT_EQ(line.find("after"), std::string::npos) << line;
 }
 
 // A feature curve along no edge of the input is refused naming the file and
