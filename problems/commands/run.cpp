@@ -826,15 +826,16 @@ class SpecRun {
                " were welded on reading (limits.weld_distance; the report's input section)\n";
     }
     if (!solution_->hooks.missed.empty()) {
-      lines += "WARNING: the problem's goal was missed (exit 4): " + solution_->hooks.missed + "\n";
+      lines += std::string("WARNING: the problem's goal was missed") +
+               (run_.exit_code == 4 ? " (exit 4)" : "") + ": " + solution_->hooks.missed + "\n";
     }
     if (!design_band_met_) {
       char line[240];
       std::snprintf(line, sizeof line,
-                    "WARNING: the result leaves the deviation band around the design surface "
-                    "(exit 4): %.4g > %.4g file units (the loop keeps the band around the net "
+                    "WARNING: the result leaves the deviation band around the design surface"
+                    "%s: %.4g > %.4g file units (the loop keeps the band around the net "
                     "it solved)\n",
-                    design_distance_, design_band_);
+                    run_.exit_code == 4 ? " (exit 4)" : "", design_distance_, design_band_);
       lines += line;
     }
     if (solved.restored_valid) {

@@ -26,6 +26,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "core/no_result.h"
 #include "core/problem.h"
 #include "core/input_error.h"
 #include "mesh/similarity.h"
@@ -58,10 +59,12 @@ void BcArrays(const Mesh& mesh, std::vector<Eigen::Vector3d>& points,
 }
 
 // The design mesh decimated to `target` vertices (spectral/decimate.h) as
-// the base complex; its figures into `details`.
+// the base complex; its figures into `details`. Where no collapse is left
+// above the target, the complex is the one reached and `missed` says so
+// (the run ends exit 4 with that line, the layout made from it).
 UserBaseComplex DecimatedBaseComplex(const Settings& s, const std::vector<Eigen::Vector3d>& points,
                                      const std::vector<std::array<int, 3>>& triangles, int target,
-                                     nlohmann::json& details) {
+                                     nlohmann::json& details, std::string& missed) {
   DecimateOptions options;
   options.target_vertices = target;
   const auto start = std::chrono::steady_clock::now();
@@ -73,11 +76,10 @@ UserBaseComplex DecimatedBaseComplex(const Settings& s, const std::vector<Eigen:
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!r.reached) {
-    throw s.Error("base_complex.decimate",
-                  "decimation stopped at " + std::to_string(r.nodes.size()) + " vertices for " +
-                      std::to_string(target) +
-                      ": no collapse left keeps the surface manifold, its normals within bounds "
-                      "and its valences at least 3; give more vertices");
+    missed = "base_complex.decimate: decimated to " + std::to_string(r.nodes.size()) +
+             " vertices, " + std::to_string(target) +
+             " asked (no collapse left keeps the surface manifold, its normals within bounds and "
+             "its valences at least 3)";
   }
   const FeatureProximity near = MeasureFeatureProximity(points, triangles, r);
   // The base triangles' shapes (straight between their nodes): slivers give thin charts.
@@ -96,6 +98,7 @@ UserBaseComplex DecimatedBaseComplex(const Settings& s, const std::vector<Eigen:
   }
   details = {{"target_vertices", target},
              {"vertices", r.nodes.size()},
+             {"reached", r.reached},
              {"triangles", r.triangles.size()},
              {"boundary_corners", r.corners},
              {"feature_corners", r.feature_corners},
@@ -136,8 +139,9 @@ void BcNet(HookContext& c) {
   const int decimate = int(s.Integer("base_complex.decimate"));
   UserBaseComplex user;
   nlohmann::json decimation;
+  std::string missed;
   if (decimate > 0) {
-    user = DecimatedBaseComplex(s, points, triangles, decimate, decimation);
+    user = DecimatedBaseComplex(s, points, triangles, decimate, decimation, missed);
   } else {
     user = ReadUserBaseComplex(s, points, diagonal);
   }
@@ -146,18 +150,19 @@ void BcNet(HookContext& c) {
     step = RunChartStep(s, design, points, triangles, user.complex, false);
   } catch (const BaseComplexError& e) {
     if (decimate > 0) {
-      throw s.Error("base_complex.decimate",
-                    "the decimated base complex (" + std::to_string(user.complex.nodes.size()) +
-                        " vertices) cannot be charted: " + e.what() +
-                        ". The charts join the base vertices by shortest paths on the design "
-                        "mesh's edges that share no vertex, even on the mesh split twice; try "
-                        "another vertex count, or give the base complex with base_complex.mesh");
+      throw NoResult("the decimated base complex (" + std::to_string(user.complex.nodes.size()) +
+                     " vertices) cannot be charted: " + e.what() +
+                     ". The charts join the base vertices by shortest paths on the design "
+                     "mesh's edges that share no vertex, even on the mesh split twice; try "
+                     "another base_complex.decimate, or give the base complex with "
+                     "base_complex.mesh");
     }
     throw InputError(user.file, 0, user.key, e.what());
   } catch (const std::invalid_argument& e) {
     throw s.Error("charts.n", e.what());
   }
   c.State<BcState>().invalid = step.invalid;
+  c.missed = missed;
   c.net.derived = true;
   c.net.mesh = std::move(step.mesh);
   c.net.source.clear();  // output vertices are not input vertices
