@@ -335,7 +335,8 @@ TEST_F(BaseComplexQuads_, ExampleSphereFromOctahedron) {
 // input: the unit sphere (examples/sphere.obj) stops at 8 base vertices
 // when 4 are asked (no collapse left keeps the normals within bounds); the
 // layout of those 8 is made and written, exit 4 naming the miss; asked 8,
-// the same complex, exit 0.
+// the same complex, exit 0; asked 3, the 8 reached are more than twice the
+// count asked: refused (exit 2) naming them.
 TEST_F(BaseComplexQuads_, AnUnreachableVertexCountChartsTheComplexReachedAndSaysSo) {
   const std::string sphere = std::string(ARCHGEO_SOURCE_DIR) + "/examples/sphere.obj";
   const Outcome o = Solve("--set mesh=" + sphere + " --set base_complex.mesh= --set base_complex.decimate=4");
@@ -349,6 +350,10 @@ TEST_F(BaseComplexQuads_, AnUnreachableVertexCountChartsTheComplexReachedAndSays
   EXPECT_EQ(ReadMesh(Path("out.obj")).number_of_faces(), 12u * 3 * 16);
   const Outcome eight = Solve("--set mesh=" + sphere + " --set base_complex.mesh= --set base_complex.decimate=8");
   EXPECT_EQ(eight.code, 0) << eight.output;
+  // Asked 3, the 8 reached are more than twice as many: refused, naming them.
+  const Outcome three = Solve("--set mesh=" + sphere + " --set base_complex.mesh= --set base_complex.decimate=3");
+  EXPECT_EQ(three.code, 2) << three.output;
+  EXPECT_NE(three.output.find("base_complex.decimate of at least 8"), std::string::npos) << three.output;
 }
 
 TEST_F(BaseComplexQuads_, SphereWithMeanValueWeights) {

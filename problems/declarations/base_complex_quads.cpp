@@ -61,7 +61,10 @@ void BcArrays(const Mesh& mesh, std::vector<Eigen::Vector3d>& points,
 // The design mesh decimated to `target` vertices (spectral/decimate.h) as
 // the base complex; its figures into `details`. Where no collapse is left
 // above the target, the complex is the one reached and `missed` says so
-// (the run ends exit 4 with that line, the layout made from it).
+// (the run ends exit 4 with that line, the layout made from it) — up to
+// twice the target: a complex larger than that is far from the coarse one
+// asked for (a tessellated part stops at thousands) and its charts would take
+// minutes, so the count is refused, naming the one reached.
 UserBaseComplex DecimatedBaseComplex(const Settings& s, const std::vector<Eigen::Vector3d>& points,
                                      const std::vector<std::array<int, 3>>& triangles, int target,
                                      nlohmann::json& details, std::string& missed) {
@@ -75,6 +78,15 @@ UserBaseComplex DecimatedBaseComplex(const Settings& s, const std::vector<Eigen:
     throw s.Error("base_complex.decimate", e.what());
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!r.reached && r.nodes.size() > 2 * size_t(target)) {
+    throw s.Error("base_complex.decimate",
+                  "decimation stopped at " + std::to_string(r.nodes.size()) + " vertices for " +
+                      std::to_string(target) +
+                      ": no collapse left keeps the surface manifold, its normals within bounds "
+                      "and its valences at least 3; a complex more than twice the count asked "
+                      "is not charted: give base_complex.decimate of at least " +
+                      std::to_string(r.nodes.size()));
+  }
   if (!r.reached) {
     missed = "base_complex.decimate: decimated to " + std::to_string(r.nodes.size()) +
              " vertices, " + std::to_string(target) +
