@@ -441,22 +441,23 @@ class SpecRun {
     AnalysisToJson(extra_before_, scale_, rep["before"]);
   }
 
-  // A step found nothing to solve or write for an input that is fine
-  // (core/no_result.h): exit 3, nothing written.
-  RunResult NothingMade(const std::string& message) {
+  // Exit 3, nothing written: `why` (e.g. "the solver found no usable
+  // solution") and the message in the summary, the message in the report.
+  RunResult NothingWritten(const std::string& why, const std::string& message) {
     run_.exit_code = 3;
     run_.report["message"] = message;
-    run_.summary = "archgeo: no valid result: " + message + "\nnothing was written.\n";
+    run_.summary = "archgeo: " + why + ": " + message + "\nnothing was written.\n";
     return run_;
   }
 
+  // A step found nothing to solve or write for an input that is fine
+  // (core/no_result.h).
+  RunResult NothingMade(const std::string& message) {
+    return NothingWritten("no valid result", message);
+  }
+
   RunResult NotUsable() {
-    const std::string& message = solution_->loop.message;
-    run_.exit_code = 3;
-    run_.report["message"] = message;
-    run_.summary = "archgeo: the solver found no usable solution: " + message +
-                   "\nnothing was written.\n";
-    return run_;
+    return NothingWritten("the solver found no usable solution", solution_->loop.message);
   }
 
   // A net the problem made from the input (a layout: its vertices are not

@@ -25,6 +25,7 @@
 // of the input surface.
 #include <chrono>
 #include <cmath>
+#include <string>
 
 #include "core/no_result.h"
 #include "core/problem.h"
@@ -39,6 +40,10 @@ namespace archgeo::problems {
 namespace {
 
 constexpr double kSliverDegrees = 20;  // a base triangle with a smaller angle is a sliver
+// Why a decimation stops above its target.
+const std::string kDecimationStop =
+    "no collapse left keeps the surface manifold, its normals within bounds and its valences at "
+    "least 3";
 
 struct BcState : ProblemState {
   std::string invalid;  // ChartStep::invalid
@@ -82,16 +87,14 @@ UserBaseComplex DecimatedBaseComplex(const Settings& s, const std::vector<Eigen:
     throw s.Error("base_complex.decimate",
                   "decimation stopped at " + std::to_string(r.nodes.size()) + " vertices for " +
                       std::to_string(target) +
-                      ": no collapse left keeps the surface manifold, its normals within bounds "
-                      "and its valences at least 3; a complex more than twice the count asked "
+                      ": " + kDecimationStop + "; a complex more than twice the count asked "
                       "is not charted: give base_complex.decimate of at least " +
                       std::to_string(r.nodes.size()));
   }
   if (!r.reached) {
     missed = "base_complex.decimate: decimated to " + std::to_string(r.nodes.size()) +
              " vertices, " + std::to_string(target) +
-             " asked (no collapse left keeps the surface manifold, its normals within bounds and "
-             "its valences at least 3)";
+             " asked (" + kDecimationStop + ")";
   }
   const FeatureProximity near = MeasureFeatureProximity(points, triangles, r);
   // The base triangles' shapes (straight between their nodes): slivers give thin charts.
